@@ -1,0 +1,53 @@
+//! The three-branch hysteresis loop shared by every bond law.
+//!
+//! In terms of a non-negative loading measure `x` with history maximum
+//! `x_max >= x` (compression: `s(delta)`; tension: `-delta`; twisting and
+//! bending: `|theta|`), spec eq. 6 and its torque analogues all read
+//!
+//! ```text
+//! h(x) = k x                        x >= x_max            (virgin loading)
+//!        ku x + (k - ku) x_max      c x_max <= x < x_max  (unloading)
+//!       -kc x                       0 <= x < c x_max      (reverse)
+//! with c = (ku - k) / (ku + kc)
+//! ```
+//!
+//! `c` makes the law continuous at `c x_max`; at `x_max` continuity holds by
+//! construction. Comparing `x` against `c x_max` instead of computing the
+//! spec's `delta_c1 = c^2 delta_max` avoids a square root and is the same
+//! test, because `s` is monotonic.
+
+/// Loading, unloading and reverse stiffnesses of one law, with the branch
+/// ratio `c` precomputed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Loop {
+    pub k: f64,
+    pub ku: f64,
+    pub kc: f64,
+    pub c: f64,
+}
+
+impl Loop {
+    pub fn new(k: f64, ku: f64, kc: f64) -> Self {
+        // ku + kc = 0 only when all three are zero: the law is identically
+        // zero and any ratio will do.
+        let c = if ku + kc > 0.0 { (ku - k) / (ku + kc) } else { 0.0 };
+        Self { k, ku, kc, c }
+    }
+
+    /// `h(x)` for `0 <= x <= x_max`.
+    #[inline(always)]
+    pub fn value(&self, x: f64, x_max: f64) -> f64 {
+        if x >= x_max {
+            self.k * x
+        } else if x >= self.c * x_max {
+            self.ku * x + (self.k - self.ku) * x_max
+        } else {
+            -self.kc * x
+        }
+    }
+
+    /// The largest slope `|dh/dx|` anywhere on the loop.
+    pub fn max_slope(&self) -> f64 {
+        self.k.max(self.ku).max(self.kc)
+    }
+}

@@ -1,0 +1,92 @@
+//! A validated bond type: the laws built from [`BondParams`] and the kernel
+//! chosen for its switches.
+
+use super::breakage::StressLimits;
+use super::hysteresis::Loop;
+use super::kernel::{self, BatchKernel, Kernel};
+use super::normal_law::NormalLaw;
+use super::params::{BondParams, ParameterError};
+
+#[derive(Clone, Debug)]
+pub struct BondModel {
+    pub params: BondParams,
+    pub normal: NormalLaw,
+    pub twist: Loop,
+    pub bend: Loop,
+    pub stress_break: bool,
+    pub limits: StressLimits,
+    /// Bits of [`kernel`] (`TENSION`, `SHEAR`, ...) actually compiled in.
+    pub features: u32,
+    pub(crate) single: Kernel,
+    pub(crate) batch: BatchKernel,
+}
+
+impl BondModel {
+    pub fn new(params: BondParams) -> Result<Self, ParameterError> {
+        params.validate()?;
+        let on = BondParams::switch;
+        let p = &params;
+        let mut features = 0;
+        for (flag, bit) in [
+            (p.tension, kernel::TENSION),
+            (p.compression, kernel::COMPRESSION),
+            (p.shear, kernel::SHEAR),
+            (p.twist, kernel::TWIST),
+            (p.bend, kernel::BEND),
+        ] {
+            if on(flag) {
+                features |= bit;
+            }
+        }
+        // Damping with every ratio zero changes nothing: leave it out.
+        let any_eta = p.eta_fn > 0.0 || p.eta_ft > 0.0 || p.eta_tn > 0.0 || p.eta_tt > 0.0;
+        if on(p.damping) && any_eta {
+            features |= kernel::DAMPING;
+            if on(p.damping_smooth) {
+                features |= kernel::SMOOTH;
+            }
+        }
+        Ok(Self {
+            params,
+            normal: NormalLaw::new(
+                Loop::new(p.k_fn1, p.ku_fn1, p.kc_fn1),
+                Loop::new(p.k_fn2, p.ku_fn2, p.kc_fn2),
+                p.compression_linear_below,
+                on(p.history_reset),
+            ),
+            twist: Loop::new(p.k_tn, p.ku_tn, p.kc_tn),
+            bend: Loop::new(p.k_tt, p.ku_tt, p.kc_tt),
+            stress_break: on(p.stress_break),
+            limits: StressLimits {
+                max_sigma: p.max_sigma,
+                max_tau: p.max_tau,
+                tension_factor: if on(p.use_ratio) {
+                    p.tension_compression_ratio
+                } else {
+                    1.0
+                },
+            },
+            features,
+            single: kernel::single_kernel(features),
+            batch: kernel::batch_kernel(features),
+        })
+    }
+
+    /// The largest centre distance an intact bond of rest length `r0` can
+    /// reach: engines must keep pairs this far apart in their neighbour
+    /// lists. Distance mode: `max_distance`. Stress mode: the stretch at which
+    /// the tensile stress of the virgin tension line alone reaches its limit
+    /// (`gamma sigma_max / k_fn2`); infinite when that never happens.
+    pub fn max_bond_distance(&self, r0: f64) -> f64 {
+        if self.stress_break {
+            let k = self.params.k_fn2;
+            if k > 0.0 && (self.features & kernel::TENSION) != 0 {
+                r0 + self.limits.max_sigma * self.limits.tension_factor / k
+            } else {
+                f64::INFINITY
+            }
+        } else {
+            self.params.max_distance
+        }
+    }
+}

@@ -1,0 +1,86 @@
+//! Normal force of the bond: square-root law in compression, linear in
+//! tension, six branches with load history (spec eq. 4-6).
+
+use super::hysteresis::Loop;
+
+/// The six-branch normal law of one bond type.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NormalLaw {
+    pub compression: Loop,
+    pub tension: Loop,
+    /// `delta_eps`: below it the square root is continued linearly (0 = off).
+    pub linear_below: f64,
+    /// `1 / sqrt(delta_eps)`, the slope of that linear continuation.
+    inv_sqrt_eps: f64,
+    pub history_reset: bool,
+}
+
+impl NormalLaw {
+    pub fn new(compression: Loop, tension: Loop, linear_below: f64, history_reset: bool) -> Self {
+        let inv_sqrt_eps = if linear_below > 0.0 {
+            1.0 / linear_below.sqrt()
+        } else {
+            0.0
+        };
+        Self {
+            compression,
+            tension,
+            linear_below,
+            inv_sqrt_eps,
+            history_reset,
+        }
+    }
+
+    /// `s(delta)`: `sqrt(delta)`, or `delta / sqrt(delta_eps)` below
+    /// `delta_eps` (continuous at `delta_eps`, finite slope at 0).
+    #[inline(always)]
+    pub fn root(&self, delta: f64) -> f64 {
+        if delta < self.linear_below {
+            delta * self.inv_sqrt_eps
+        } else {
+            delta.sqrt()
+        }
+    }
+
+    /// Spec eq. 4, applied before the law so `delta_min <= delta <= delta_max`.
+    /// With `history_reset` (the reference code's behaviour) a sign change of
+    /// `delta` forgets the extreme of the other sign.
+    #[inline(always)]
+    pub fn update_history(&self, delta: f64, delta_max: f64, delta_min: f64) -> (f64, f64) {
+        let (mut hi, mut lo) = (delta_max, delta_min);
+        if self.history_reset {
+            if delta < 0.0 {
+                hi = 0.0;
+            }
+            if delta > 0.0 {
+                lo = 0.0;
+            }
+        }
+        (hi.max(delta), lo.min(delta))
+    }
+
+    /// Normal stress `Fn / A` (positive = repulsive) for an up-to-date history.
+    /// `tension` / `compression` switch the halves of the law off; kernels
+    /// pass constants, so the switched-off half is compiled out.
+    #[inline(always)]
+    pub fn stress(
+        &self,
+        delta: f64,
+        delta_max: f64,
+        delta_min: f64,
+        tension: bool,
+        compression: bool,
+    ) -> f64 {
+        if delta >= 0.0 {
+            if compression {
+                self.compression.value(self.root(delta), self.root(delta_max))
+            } else {
+                0.0
+            }
+        } else if tension {
+            -self.tension.value(-delta, -delta_min)
+        } else {
+            0.0
+        }
+    }
+}

@@ -1,0 +1,119 @@
+//! Per-bond state: a plain `#[repr(C)]` struct of `f64`, which engines store
+//! as a flat array described by [`BOND_SLOTS`].
+
+use crate::state_layout::{slot, StateSlot};
+
+/// Lifecycle of a pair's bond, stored as a number in slot 0.
+#[repr(i32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BondStatus {
+    /// Never bonded (fresh, all-zero history).
+    Unbonded = 0,
+    Intact = 1,
+    Broken = 2,
+}
+
+impl BondStatus {
+    #[inline(always)]
+    pub fn from_slot(v: f64) -> Self {
+        if v == 1.0 {
+            BondStatus::Intact
+        } else if v == 2.0 {
+            BondStatus::Broken
+        } else {
+            BondStatus::Unbonded
+        }
+    }
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BondState {
+    /// [`BondStatus`] as a number.
+    pub status: f64,
+    /// Centre distance at creation.
+    pub r0: f64,
+    pub delta_max: f64,
+    pub delta_min: f64,
+    /// Undamped shear spring force on `i`.
+    pub shear_force: [f64; 3],
+    /// Accumulated relative rotation about the axis (parallel to `n`).
+    pub twist_angle: [f64; 3],
+    /// Accumulated relative rotation across the axis (normal to `n`).
+    pub bend_angle: [f64; 3],
+    pub twist_max: f64,
+    pub bend_max: f64,
+}
+
+pub const BOND_STATE_LEN: usize = 15;
+
+/// Names and swap rules of the slots of [`BondState`], in memory order.
+pub const BOND_SLOTS: [StateSlot; BOND_STATE_LEN] = [
+    slot("status", false),
+    slot("r0", false),
+    slot("delta_max", false),
+    slot("delta_min", false),
+    slot("shear_force_x", true),
+    slot("shear_force_y", true),
+    slot("shear_force_z", true),
+    slot("twist_angle_x", true),
+    slot("twist_angle_y", true),
+    slot("twist_angle_z", true),
+    slot("bend_angle_x", true),
+    slot("bend_angle_y", true),
+    slot("bend_angle_z", true),
+    slot("twist_max", false),
+    slot("bend_max", false),
+];
+
+const _: () = assert!(std::mem::size_of::<BondState>() == BOND_STATE_LEN * 8);
+
+impl BondState {
+    pub fn status(&self) -> BondStatus {
+        BondStatus::from_slot(self.status)
+    }
+
+    /// A freshly created bond of rest length `r0`: no load history.
+    pub fn created(r0: f64) -> Self {
+        Self {
+            status: BondStatus::Intact as i32 as f64,
+            r0,
+            ..Self::default()
+        }
+    }
+
+    pub fn as_slots(&self) -> &[f64; BOND_STATE_LEN] {
+        // SAFETY: repr(C) struct of exactly BOND_STATE_LEN f64 (checked above).
+        unsafe { &*(self as *const Self as *const [f64; BOND_STATE_LEN]) }
+    }
+
+    pub fn from_slots(slots: &[f64; BOND_STATE_LEN]) -> &Self {
+        // SAFETY: same layout, f64 alignment.
+        unsafe { &*(slots as *const [f64; BOND_STATE_LEN] as *const Self) }
+    }
+
+    pub fn from_slots_mut(slots: &mut [f64; BOND_STATE_LEN]) -> &mut Self {
+        // SAFETY: same layout, f64 alignment.
+        unsafe { &mut *(slots as *mut [f64; BOND_STATE_LEN] as *mut Self) }
+    }
+}
+
+/// What one bond step produced. `force_j = -force_i`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BondOutput {
+    pub force_i: [f64; 3],
+    pub torque_i: [f64; 3],
+    pub torque_j: [f64; 3],
+    /// Undamped normal force, positive = repulsive.
+    pub normal_force: f64,
+    /// Section stresses of the undamped loads (spec eq. 14).
+    pub sigma: f64,
+    pub tau: f64,
+    /// `delta = r0 - r` (compression positive).
+    pub delta: f64,
+    /// [`BondStatus`] after the step.
+    pub status: i32,
+    /// [`super::BreakMode`]: non-zero only in the step the bond broke.
+    pub break_mode: i32,
+}

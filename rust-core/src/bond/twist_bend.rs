@@ -1,0 +1,41 @@
+//! Twisting and bending torques (spec eq. 9-10): accumulated relative
+//! rotations about and across the bond axis, with the hysteresis loop applied
+//! to their magnitudes so the torque does not depend on the coordinate axes.
+
+use super::hysteresis::Loop;
+use crate::vector::{tangential_part, Vec3};
+
+/// Splits the relative angular velocity into its part along `n` (twisting)
+/// and across it (bending).
+#[inline(always)]
+pub fn split_relative_spin(w_rel: Vec3, n: Vec3) -> (Vec3, Vec3) {
+    let along = n * w_rel.dot(&n);
+    (along, w_rel - along)
+}
+
+/// Twisting angle: kept parallel to the current axis, then advanced.
+#[inline(always)]
+pub fn advance_twist(theta: Vec3, w_along: Vec3, n: Vec3, dt: f64) -> Vec3 {
+    n * theta.dot(&n) + w_along * dt
+}
+
+/// Bending angle: kept in the current tangent plane, then advanced.
+#[inline(always)]
+pub fn advance_bend(theta: Vec3, w_across: Vec3, n: Vec3, dt: f64) -> Vec3 {
+    tangential_part(theta, n) + w_across * dt
+}
+
+/// Torque on `i` for the angle `theta` with history maximum `theta_max`
+/// (already updated): `-h(|theta|) * moment * theta/|theta|`. Returns the
+/// torque and the new history maximum.
+#[inline(always)]
+pub fn restoring_torque(theta: Vec3, theta_max: f64, law: &Loop, moment: f64) -> (Vec3, f64) {
+    let magnitude = theta.norm();
+    let new_max = theta_max.max(magnitude);
+    if magnitude > 0.0 {
+        let h = law.value(magnitude, new_max);
+        (theta * (-h * moment / magnitude), new_max)
+    } else {
+        (Vec3::zeros(), new_max)
+    }
+}

@@ -1,0 +1,108 @@
+//! Bonds to walls. The wall plays sphere `j`: a sphere of the particle's
+//! radius behind the wall, touching it at the contact point of the bond's
+//! creation. As in the reference, that point is fixed to the wall: it moves
+//! with the wall's velocity and does not spin. Its centre is kept in three
+//! extra state slots, after the pair slots. (The reference measures `r` to
+//! the contact point itself and doubles it only for creation; the mirror
+//! sphere gives the same `r` throughout and lever arms of `R_i` on both
+//! sides, so the shear and its torque see the same contact point.)
+
+use super::model::BondModel;
+use super::state::{BondOutput, BondState, BOND_SLOTS, BOND_STATE_LEN};
+use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
+use crate::state_layout::{slot, StateSlot};
+use crate::vector::{direction_or_zero, v3};
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct WallBondState {
+    pub bond: BondState,
+    /// Centre of the wall's stand-in sphere.
+    pub partner: [f64; 3],
+}
+
+pub const WALL_BOND_STATE_LEN: usize = BOND_STATE_LEN + 3;
+
+const _: () = assert!(std::mem::size_of::<WallBondState>() == WALL_BOND_STATE_LEN * 8);
+
+/// Pair slots, then the partner centre (a position, so it never flips: a
+/// wall bond is only ever seen from the particle).
+pub const WALL_BOND_SLOTS: [StateSlot; WALL_BOND_STATE_LEN] = {
+    let mut s = [slot("", false); WALL_BOND_STATE_LEN];
+    let mut i = 0;
+    while i < BOND_STATE_LEN {
+        s[i] = BOND_SLOTS[i];
+        i += 1;
+    }
+    s[BOND_STATE_LEN] = slot("partner_x", false);
+    s[BOND_STATE_LEN + 1] = slot("partner_y", false);
+    s[BOND_STATE_LEN + 2] = slot("partner_z", false);
+    s
+};
+
+/// Centre of the stand-in sphere for a particle at `x_i` touching the wall
+/// at `contact_point`: the mirror image of the particle's surface point,
+/// `c - R_i (x_i - c)/|x_i - c|`.
+pub fn wall_partner(x_i: [f64; 3], radius_i: f64, contact_point: [f64; 3]) -> [f64; 3] {
+    let c = v3(contact_point);
+    let outward = direction_or_zero(v3(x_i) - c);
+    (c - outward * radius_i).into()
+}
+
+/// The pair seen by the bond laws: the stand-in sphere moves with the wall.
+pub fn wall_kinematics(
+    sphere: &SphereKinematics,
+    partner: [f64; 3],
+    wall_velocity: [f64; 3],
+) -> PairKinematics {
+    PairKinematics {
+        x_i: sphere.x,
+        x_j: partner,
+        v_i: sphere.v,
+        v_j: wall_velocity,
+        w_i: sphere.w,
+        w_j: [0.0; 3],
+        radius_i: sphere.radius,
+        radius_j: sphere.radius,
+    }
+}
+
+impl BondModel {
+    /// Bonds `sphere` to the wall it touches at `contact_point`, under the
+    /// same rules as a pair (the centre distance is twice the distance to the
+    /// contact point).
+    pub fn try_create_wall(
+        &self,
+        sphere: &SphereKinematics,
+        contact_point: [f64; 3],
+        step: i64,
+        state: &mut WallBondState,
+    ) -> Result<bool, KinematicsError> {
+        let partner = wall_partner(sphere.x, sphere.radius, contact_point);
+        let kin = wall_kinematics(sphere, partner, [0.0; 3]);
+        let created = self.try_create(&kin, step, &mut state.bond)?;
+        if created {
+            state.partner = partner;
+        }
+        Ok(created)
+    }
+
+    /// Advances a wall bond by `dt`; the stand-in sphere then moves with the
+    /// wall. `force_i`/`torque_i` act on the particle.
+    pub fn step_wall(
+        &self,
+        sphere: &SphereKinematics,
+        wall_velocity: [f64; 3],
+        dt: f64,
+        state: &mut WallBondState,
+        out: &mut BondOutput,
+    ) -> Result<(), KinematicsError> {
+        let kin = wall_kinematics(sphere, state.partner, wall_velocity);
+        self.step(&kin, dt, &mut state.bond, out)?;
+        if !wall_velocity.iter().all(|c| c.is_finite()) {
+            return Err(KinematicsError::NonFinite);
+        }
+        state.partner = (v3(state.partner) + v3(wall_velocity) * dt).into();
+        Ok(())
+    }
+}

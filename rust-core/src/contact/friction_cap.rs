@@ -1,0 +1,24 @@
+//! The Coulomb-type cap shared by the tangential spring and the rolling
+//! spring: a trial load `-k x - gamma v` is limited to `limit` in magnitude,
+//! keeping its direction, and the spring is reset to be consistent with the
+//! capped load so it cannot grow without bound while slipping.
+
+use crate::vector::Vec3;
+
+/// Returns the (possibly capped) load, the spring elongation to store and
+/// whether the cap was hit.
+#[inline(always)]
+pub fn capped_spring(elongation: Vec3, rate: Vec3, k: f64, gamma: f64, limit: f64) -> (Vec3, Vec3, bool) {
+    let trial = -(elongation * k) - rate * gamma;
+    let magnitude = trial.norm();
+    if magnitude <= limit {
+        return (trial, elongation, false);
+    }
+    let load = trial * (limit / magnitude);
+    let reset = if k > 0.0 {
+        -(load + rate * gamma) / k
+    } else {
+        elongation
+    };
+    (load, reset, true)
+}

@@ -1,0 +1,15 @@
+//! `voigt`: linear spring-dashpot contact with Cundall-Strack tangential
+//! history, Coulomb friction and Iwashita-Oda rolling resistance
+//! (spec: voigt-contact.md).
+
+pub mod friction_cap;
+pub mod model;
+pub mod normal;
+pub mod params;
+pub mod rolling;
+pub mod state;
+pub mod tangential;
+
+pub use model::{BodyVelocities, ContactGeometry, Plane, VoigtModel};
+pub use params::{VoigtParams, VOIGT_PARAMETERS};
+pub use state::{ContactOutput, ContactState, CONTACT_SLOTS, CONTACT_STATE_LEN};

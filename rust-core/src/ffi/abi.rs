@@ -1,0 +1,96 @@
+//! ABI version and the layout check adapters run at start-up.
+
+use super::error::{Failure, Status};
+use super::guard::{call, reference};
+use crate::bond::{BondOutput, BondParams, BOND_STATE_LEN, WALL_BOND_STATE_LEN};
+use crate::contact::{ContactOutput, Plane, VoigtParams, CONTACT_STATE_LEN};
+use crate::ffi::bond::SphereKinematics;
+use crate::kinematics::PairKinematics;
+use std::mem::size_of;
+
+/// Bumped whenever a struct, a function or a meaning changes.
+pub const GRANBOND_ABI_VERSION: u32 = 1;
+
+/// What the caller was compiled against: fill it with the header's version
+/// and `sizeof` of each struct, and pass it to `granbond_check_layout`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Layout {
+    pub abi_version: u32,
+    pub bond_params: usize,
+    pub voigt_params: usize,
+    pub pair_kinematics: usize,
+    pub sphere_kinematics: usize,
+    pub plane: usize,
+    pub bond_output: usize,
+    pub contact_output: usize,
+    pub bond_state_len: usize,
+    pub wall_bond_state_len: usize,
+    pub contact_state_len: usize,
+}
+
+/// The layout of this library.
+pub fn library_layout() -> Layout {
+    Layout {
+        abi_version: GRANBOND_ABI_VERSION,
+        bond_params: size_of::<BondParams>(),
+        voigt_params: size_of::<VoigtParams>(),
+        pair_kinematics: size_of::<PairKinematics>(),
+        sphere_kinematics: size_of::<SphereKinematics>(),
+        plane: size_of::<Plane>(),
+        bond_output: size_of::<BondOutput>(),
+        contact_output: size_of::<ContactOutput>(),
+        bond_state_len: BOND_STATE_LEN,
+        wall_bond_state_len: WALL_BOND_STATE_LEN,
+        contact_state_len: CONTACT_STATE_LEN,
+    }
+}
+
+/// ABI version of the loaded library.
+#[no_mangle]
+pub extern "C" fn granbond_abi_version() -> u32 {
+    GRANBOND_ABI_VERSION
+}
+
+/// Compares the caller's view of the ABI with the library's; on mismatch the
+/// message names the first differing item.
+///
+/// # Safety
+/// `expected` must be null or point to a `GbLayout`.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Status {
+    call("granbond_check_layout", || {
+        let e = reference(expected, "expected")?;
+        let l = library_layout();
+        let items: [(&str, usize, usize); 11] = [
+            ("abi_version", e.abi_version as usize, l.abi_version as usize),
+            ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
+            ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
+            ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
+            (
+                "sizeof(GbSphereKinematics)",
+                e.sphere_kinematics,
+                l.sphere_kinematics,
+            ),
+            ("sizeof(GbPlane)", e.plane, l.plane),
+            ("sizeof(GbBondOutput)", e.bond_output, l.bond_output),
+            ("sizeof(GbContactOutput)", e.contact_output, l.contact_output),
+            ("bond state length", e.bond_state_len, l.bond_state_len),
+            (
+                "wall bond state length",
+                e.wall_bond_state_len,
+                l.wall_bond_state_len,
+            ),
+            ("contact state length", e.contact_state_len, l.contact_state_len),
+        ];
+        for (name, caller, library) in items {
+            if caller != library {
+                return Err(Failure::new(
+                    Status::LayoutMismatch,
+                    format!("{name} is {caller} in the caller but {library} in the library: rebuild the adapter against this header"),
+                ));
+            }
+        }
+        Ok(())
+    })
+}

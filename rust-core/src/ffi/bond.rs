@@ -1,0 +1,303 @@
+//! `extern "C"` surface of `bond/nonlinear`.
+
+use super::error::{Failure, Status};
+use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut, vector3};
+use crate::bond::{
+    BondModel, BondOutput, BondParams, BondState, WallBondState, BOND_STATE_LEN, PARAMETERS,
+    WALL_BOND_STATE_LEN,
+};
+use crate::kinematics::PairKinematics;
+pub use crate::kinematics::SphereKinematics;
+use std::ffi::{c_char, CString};
+use std::sync::OnceLock;
+
+/// Fills `params` with the defaults (switches as in the reference, no
+/// stiffness, no breakage).
+///
+/// # Safety
+/// `params` must be null or valid for writes.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_params_default(params: *mut BondParams) -> Status {
+    call("granbond_bond_params_default", || {
+        *reference_mut(params, "params")? = BondParams::default();
+        Ok(())
+    })
+}
+
+/// Validates `params` and builds a model. On `InvalidParameter` the message
+/// names the parameter (LAMMPS keyword and LIGGGHTS name) and its range, and
+/// `granbond_last_error_parameter` gives its id.
+///
+/// # Safety
+/// `params` must be null or point to a `GbBondParams`; `model` null or valid
+/// for writes. Free the model with `granbond_bond_model_free`.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_model_new(
+    params: *const BondParams,
+    model: *mut *mut BondModel,
+) -> Status {
+    call("granbond_bond_model_new", || {
+        let out = reference_mut(model, "model")?;
+        *out = std::ptr::null_mut();
+        let m = BondModel::new(*reference(params, "params")?)?;
+        *out = Box::into_raw(Box::new(m));
+        Ok(())
+    })
+}
+
+/// Frees a model from `granbond_bond_model_new` (null is ignored).
+///
+/// # Safety
+/// `model` must come from `granbond_bond_model_new` and not be used again.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_model_free(model: *mut BondModel) {
+    if !model.is_null() {
+        drop(Box::from_raw(model));
+    }
+}
+
+/// Number of rows in the bond parameter table (ids of
+/// `granbond_last_error_parameter`).
+#[no_mangle]
+pub extern "C" fn granbond_bond_parameter_count() -> usize {
+    PARAMETERS.len()
+}
+
+fn parameter_names() -> &'static [(CString, CString)] {
+    static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
+    NAMES.get_or_init(|| {
+        PARAMETERS
+            .iter()
+            .map(|p| {
+                (
+                    CString::new(p.name).expect("no NUL"),
+                    CString::new(p.liggghts_name).expect("no NUL"),
+                )
+            })
+            .collect()
+    })
+}
+
+/// LAMMPS keyword and LIGGGHTS name of bond parameter `id` (static storage).
+///
+/// # Safety
+/// `keyword` and `liggghts_name` must be null or valid for writes.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_parameter_name(
+    id: usize,
+    keyword: *mut *const c_char,
+    liggghts_name: *mut *const c_char,
+) -> Status {
+    call("granbond_bond_parameter_name", || {
+        let keyword = reference_mut(keyword, "keyword")?;
+        let liggghts_name = reference_mut(liggghts_name, "liggghts_name")?;
+        let (k, l) = parameter_names().get(id).ok_or_else(|| {
+            Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range"))
+        })?;
+        *keyword = k.as_ptr();
+        *liggghts_name = l.as_ptr();
+        Ok(())
+    })
+}
+
+/// The bond state as a struct view of a caller's `double[GRANBOND_BOND_STATE_LEN]`.
+unsafe fn bond_state<'a>(state: *mut f64, name: &str) -> Result<&'a mut BondState, Failure> {
+    let slots = reference_mut(state as *mut [f64; BOND_STATE_LEN], name)?;
+    Ok(BondState::from_slots_mut(slots))
+}
+
+unsafe fn wall_state<'a>(state: *mut f64) -> Result<&'a mut WallBondState, Failure> {
+    let slots = reference_mut(state as *mut [f64; WALL_BOND_STATE_LEN], "state")?;
+    // SAFETY: WallBondState is repr(C) of exactly WALL_BOND_STATE_LEN f64.
+    Ok(&mut *(slots as *mut [f64; WALL_BOND_STATE_LEN] as *mut WallBondState))
+}
+
+/// Creates the bond in `state` (`double[GRANBOND_BOND_STATE_LEN]`, all zero
+/// for a pair never bonded) if the creation rules allow it at `step`;
+/// `*created` tells whether it did.
+///
+/// # Safety
+/// Pointers must be null or valid for the sizes above.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_try_create(
+    model: *const BondModel,
+    kinematics: *const PairKinematics,
+    step: i64,
+    state: *mut f64,
+    created: *mut i32,
+) -> Status {
+    call("granbond_bond_try_create", || {
+        let m = reference(model, "model")?;
+        let k = reference(kinematics, "kinematics")?;
+        let s = bond_state(state, "state")?;
+        let c = reference_mut(created, "created")?;
+        *c = m.try_create(k, step, s)? as i32;
+        Ok(())
+    })
+}
+
+/// Advances one bond by `dt`, updating `state` in place and writing the
+/// loads, stresses and status to `out`. A bond that is not intact exerts
+/// nothing; `out->break_mode` is non-zero in the one step a bond breaks.
+///
+/// # Safety
+/// Pointers must be null or valid; `state` holds `GRANBOND_BOND_STATE_LEN` doubles.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_compute(
+    model: *const BondModel,
+    kinematics: *const PairKinematics,
+    dt: f64,
+    state: *mut f64,
+    out: *mut BondOutput,
+) -> Status {
+    call("granbond_bond_compute", || {
+        let m = reference(model, "model")?;
+        let k = reference(kinematics, "kinematics")?;
+        let s = bond_state(state, "state")?;
+        let o = reference_mut(out, "out")?;
+        check_dt(dt)?;
+        m.step(k, dt, s, o)?;
+        Ok(())
+    })
+}
+
+/// `granbond_bond_compute` over `count` bonds: `kinematics[count]`,
+/// `states[count * GRANBOND_BOND_STATE_LEN]`, `out[count]`. Stops at the
+/// first bad input and writes its index to `failed_index` (if not null).
+///
+/// # Safety
+/// Pointers must be null or valid for the sizes above.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_compute_batch(
+    model: *const BondModel,
+    count: usize,
+    kinematics: *const PairKinematics,
+    dt: f64,
+    states: *mut f64,
+    out: *mut BondOutput,
+    failed_index: *mut usize,
+) -> Status {
+    call("granbond_bond_compute_batch", || {
+        let m = reference(model, "model")?;
+        let k = slice(kinematics, count, "kinematics")?;
+        let s = slice_mut(states as *mut BondState, count, "states")?;
+        let o = slice_mut(out, count, "out")?;
+        check_dt(dt)?;
+        m.step_batch(k, dt, s, o).map_err(|(index, e)| {
+            if !failed_index.is_null() {
+                *failed_index = index;
+            }
+            let f = Failure::from(e);
+            Failure::new(f.status, format!("bond {index}: {}", f.message))
+        })
+    })
+}
+
+/// Bonds a sphere to a wall it touches at `contact_point` (`double[3]`)
+/// under the pair rules; `state` holds `GRANBOND_WALL_BOND_STATE_LEN` doubles.
+///
+/// # Safety
+/// Pointers must be null or valid for the sizes above.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_wall_bond_try_create(
+    model: *const BondModel,
+    sphere: *const SphereKinematics,
+    contact_point: *const f64,
+    step: i64,
+    state: *mut f64,
+    created: *mut i32,
+) -> Status {
+    call("granbond_wall_bond_try_create", || {
+        let m = reference(model, "model")?;
+        let sp = reference(sphere, "sphere")?;
+        let c = vector3(contact_point, "contact_point")?;
+        let s = wall_state(state)?;
+        let done = reference_mut(created, "created")?;
+        *done = m.try_create_wall(sp, c, step, s)? as i32;
+        Ok(())
+    })
+}
+
+/// Advances a wall bond; the wall moves with `wall_velocity` (`double[3]`).
+///
+/// # Safety
+/// Pointers must be null or valid; `state` holds `GRANBOND_WALL_BOND_STATE_LEN` doubles.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_wall_bond_compute(
+    model: *const BondModel,
+    sphere: *const SphereKinematics,
+    wall_velocity: *const f64,
+    dt: f64,
+    state: *mut f64,
+    out: *mut BondOutput,
+) -> Status {
+    call("granbond_wall_bond_compute", || {
+        let m = reference(model, "model")?;
+        let sp = reference(sphere, "sphere")?;
+        let wv = vector3(wall_velocity, "wall_velocity")?;
+        let s = wall_state(state)?;
+        let o = reference_mut(out, "out")?;
+        check_dt(dt)?;
+        m.step_wall(sp, wv, dt, s, o)?;
+        Ok(())
+    })
+}
+
+/// Largest centre distance an intact bond of rest length `r0` reaches
+/// before it breaks (infinite if it never does): the neighbour-list range
+/// the engine must keep.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_max_distance(
+    model: *const BondModel,
+    r0: f64,
+    out: *mut f64,
+) -> Status {
+    call("granbond_bond_max_distance", || {
+        let m = reference(model, "model")?;
+        *reference_mut(out, "out")? = m.max_bond_distance(r0);
+        Ok(())
+    })
+}
+
+/// Critical time step of a bond of this type between spheres of the given
+/// radii and masses (see the crate docs for the modes considered).
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_critical_timestep(
+    model: *const BondModel,
+    radius_i: f64,
+    radius_j: f64,
+    mass_i: f64,
+    mass_j: f64,
+    out: *mut f64,
+) -> Status {
+    call("granbond_bond_critical_timestep", || {
+        let m = reference(model, "model")?;
+        let o = reference_mut(out, "out")?;
+        check_bodies(radius_i, radius_j, mass_i, mass_j)?;
+        *o = m.critical_timestep(radius_i, radius_j, mass_i, mass_j);
+        Ok(())
+    })
+}
+
+pub(crate) fn check_bodies(radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> Result<(), Failure> {
+    for (name, x) in [
+        ("radius_i", radius_i),
+        ("radius_j", radius_j),
+        ("mass_i", mass_i),
+        ("mass_j", mass_j),
+    ] {
+        if !(x.is_finite() && x > 0.0) {
+            return Err(Failure::new(
+                Status::InvalidArgument,
+                format!("{name} must be finite and > 0; got {x}"),
+            ));
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,109 @@
+//! The one wrapper every fallible `extern "C"` function goes through, and
+//! the pointer checks they share.
+
+use super::error::{clear, record, Failure, Status};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// Runs `body`, turning its error or its panic into a [`Status`] and a
+/// recorded message naming `function`.
+pub fn call(function: &str, body: impl FnOnce() -> Result<(), Failure>) -> Status {
+    let failure = match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(())) => {
+            clear();
+            return Status::Ok;
+        }
+        Ok(Err(f)) => f,
+        Err(panic) => {
+            let what = panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown".into());
+            Failure::new(
+                Status::Panic,
+                format!("internal error (panic: {what}); please report"),
+            )
+        }
+    };
+    record(function, &failure);
+    failure.status
+}
+
+fn check<T>(ptr: *const T, name: &str) -> Result<(), Failure> {
+    if ptr.is_null() {
+        return Err(Failure::new(
+            Status::NullPointer,
+            format!("argument `{name}` is null"),
+        ));
+    }
+    if (ptr as usize) % std::mem::align_of::<T>() != 0 {
+        return Err(Failure::new(
+            Status::NullPointer,
+            format!("argument `{name}` is misaligned"),
+        ));
+    }
+    Ok(())
+}
+
+/// `&*ptr` after checking it is non-null and aligned.
+///
+/// # Safety
+/// A non-null `ptr` must point to a valid `T` for the returned lifetime.
+pub unsafe fn reference<'a, T>(ptr: *const T, name: &str) -> Result<&'a T, Failure> {
+    check(ptr, name)?;
+    Ok(&*ptr)
+}
+
+/// `&mut *ptr` after checking it is non-null and aligned.
+///
+/// # Safety
+/// A non-null `ptr` must point to a valid, unaliased `T`.
+pub unsafe fn reference_mut<'a, T>(ptr: *mut T, name: &str) -> Result<&'a mut T, Failure> {
+    check(ptr, name)?;
+    Ok(&mut *ptr)
+}
+
+/// A slice of `len` elements at `ptr` (any pointer allowed when `len` is 0).
+///
+/// # Safety
+/// A non-null `ptr` must point to `len` valid elements.
+pub unsafe fn slice<'a, T>(ptr: *const T, len: usize, name: &str) -> Result<&'a [T], Failure> {
+    if len == 0 {
+        return Ok(&[]);
+    }
+    check(ptr, name)?;
+    Ok(std::slice::from_raw_parts(ptr, len))
+}
+
+/// Mutable counterpart of [`slice`].
+///
+/// # Safety
+/// A non-null `ptr` must point to `len` valid, unaliased elements.
+pub unsafe fn slice_mut<'a, T>(ptr: *mut T, len: usize, name: &str) -> Result<&'a mut [T], Failure> {
+    if len == 0 {
+        return Ok(&mut []);
+    }
+    check(ptr, name)?;
+    Ok(std::slice::from_raw_parts_mut(ptr, len))
+}
+
+/// A time step must be finite and non-negative.
+pub fn check_dt(dt: f64) -> Result<(), Failure> {
+    if dt.is_finite() && dt >= 0.0 {
+        Ok(())
+    } else {
+        Err(Failure::new(
+            Status::InvalidArgument,
+            format!("time step dt must be finite and >= 0; got {dt}"),
+        ))
+    }
+}
+
+/// Three doubles at `ptr`.
+///
+/// # Safety
+/// A non-null `ptr` must point to three doubles.
+pub unsafe fn vector3(ptr: *const f64, name: &str) -> Result<[f64; 3], Failure> {
+    let s = slice(ptr, 3, name)?;
+    Ok([s[0], s[1], s[2]])
+}

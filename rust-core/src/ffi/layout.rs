@@ -1,0 +1,92 @@
+//! Run-time description of the state arrays, for adapters that register
+//! them with their engine (names for restart files and dumps, swap rules
+//! for the engine's history transfer).
+
+use super::error::{Failure, Status};
+use super::guard::{call, reference_mut};
+use crate::bond::{BOND_SLOTS, WALL_BOND_SLOTS};
+use crate::contact::CONTACT_SLOTS;
+use crate::state_layout::StateSlot;
+use std::ffi::{c_char, CString};
+use std::sync::OnceLock;
+
+/// Which state array.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StateKind {
+    Bond = 0,
+    WallBond = 1,
+    Contact = 2,
+}
+
+fn slots(kind: StateKind) -> &'static [StateSlot] {
+    match kind {
+        StateKind::Bond => &BOND_SLOTS,
+        StateKind::WallBond => &WALL_BOND_SLOTS,
+        StateKind::Contact => &CONTACT_SLOTS,
+    }
+}
+
+fn c_names(kind: StateKind) -> &'static [CString] {
+    static TABLES: [OnceLock<Vec<CString>>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    TABLES[kind as usize].get_or_init(|| {
+        slots(kind)
+            .iter()
+            .map(|s| CString::new(s.name).expect("slot names have no NUL"))
+            .collect()
+    })
+}
+
+fn kind_from(raw: i32) -> Result<StateKind, Failure> {
+    match raw {
+        0 => Ok(StateKind::Bond),
+        1 => Ok(StateKind::WallBond),
+        2 => Ok(StateKind::Contact),
+        _ => Err(Failure::new(
+            Status::InvalidArgument,
+            format!("unknown state kind {raw}"),
+        )),
+    }
+}
+
+/// Number of `double` slots in a state array of `kind` (a `GbStateKind`
+/// value; 0 for an unknown kind).
+#[no_mangle]
+pub extern "C" fn granbond_state_len(kind: i32) -> usize {
+    match kind_from(kind) {
+        Ok(k) => slots(k).len(),
+        Err(_) => 0,
+    }
+}
+
+/// Name of slot `index` of state `kind` (a `GbStateKind`; static storage) and whether it changes sign when
+/// the pair is seen from the other sphere (1) or is copied unchanged (0).
+///
+/// # Safety
+/// `name` and `flips_on_swap` must be null or valid for writes.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_state_slot(
+    kind: i32,
+    index: usize,
+    name: *mut *const c_char,
+    flips_on_swap: *mut i32,
+) -> Status {
+    call("granbond_state_slot", || {
+        let k = kind_from(kind)?;
+        let name = reference_mut(name, "name")?;
+        let flips = reference_mut(flips_on_swap, "flips_on_swap")?;
+        let table = slots(k);
+        if index >= table.len() {
+            return Err(Failure::new(
+                Status::InvalidArgument,
+                format!(
+                    "slot index {index} out of range (state has {} slots)",
+                    table.len()
+                ),
+            ));
+        }
+        *name = c_names(k)[index].as_ptr();
+        *flips = table[index].flips_on_swap as i32;
+        Ok(())
+    })
+}

@@ -1,0 +1,26 @@
+//! Symplectic Euler (spec "Time integration"): velocities from the current
+//! loads, then positions from the new velocities. The engines integrate for
+//! themselves; this is for the crate's own scene runner and tests.
+
+use crate::vector::Vec3;
+
+/// Translational and rotational state of one sphere. `rotation` accumulates
+/// `dt w` (a rotation vector for small angles; for output only).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Body {
+    pub x: Vec3,
+    pub v: Vec3,
+    pub w: Vec3,
+    pub rotation: Vec3,
+    pub mass: f64,
+    pub inertia: f64,
+}
+
+/// `v += dt F/m; w += dt T/I; x += dt v; theta += dt w`.
+#[inline]
+pub fn symplectic_euler(body: &mut Body, force: Vec3, torque: Vec3, dt: f64) {
+    body.v += force * (dt / body.mass);
+    body.w += torque * (dt / body.inertia);
+    body.x += body.v * dt;
+    body.rotation += body.w * dt;
+}

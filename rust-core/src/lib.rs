@@ -1,0 +1,18 @@
+//! granbond: a nonlinear hysteretic DEM bond (`bond/nonlinear`) and a Voigt
+//! contact model, written once in Rust and driven from LIGGGHTS / LAMMPS
+//! through the C ABI in [`ffi`].
+//!
+//! Every formula of the normative specs (`shared/spec/*.md`) lives in one
+//! module of [`bond`] or [`contact`]; the engine adapters and the scene runner
+//! only call them.
+
+pub mod bond;
+pub mod contact;
+pub mod ffi;
+pub mod integrate;
+pub mod kinematics;
+pub mod parameters;
+pub mod scene;
+pub mod stability;
+pub mod state_layout;
+pub mod vector;
