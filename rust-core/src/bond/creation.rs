@@ -9,16 +9,26 @@ use crate::kinematics::{centre_line, KinematicsError, PairKinematics};
 /// either this is step `create_step` or bonds are created every step. An
 /// intact bond is kept; a broken one comes back only under `create_always`.
 pub fn may_create(params: &BondParams, status: BondStatus, r: f64, step: i64) -> bool {
-    let always = BondParams::switch(params.create_always);
     let allowed = match status {
         BondStatus::Intact => false,
-        BondStatus::Broken => always,
-        BondStatus::Unbonded => always || step == params.create_step,
+        BondStatus::Broken => BondParams::switch(params.create_always),
+        BondStatus::Unbonded => creates_at(params, step),
     };
     allowed && r < params.create_distance
 }
 
+/// Whether bonds may form at `step` at all.
+pub fn creates_at(params: &BondParams, step: i64) -> bool {
+    BondParams::switch(params.create_always) || step == params.create_step
+}
+
 impl BondModel {
+    /// Whether bonds may form at `step` (callers skip the pair search
+    /// otherwise).
+    pub fn creates_at(&self, step: i64) -> bool {
+        creates_at(&self.params, step)
+    }
+
     /// Creates the bond in `state` if the rules allow it at `step`; returns
     /// whether it did. The rest length is the current centre distance.
     pub fn try_create(

@@ -87,6 +87,11 @@ impl BondState {
         unsafe { &*(self as *const Self as *const [f64; BOND_STATE_LEN]) }
     }
 
+    pub fn as_slots_mut(&mut self) -> &mut [f64; BOND_STATE_LEN] {
+        // SAFETY: as above.
+        unsafe { &mut *(self as *mut Self as *mut [f64; BOND_STATE_LEN]) }
+    }
+
     pub fn from_slots(slots: &[f64; BOND_STATE_LEN]) -> &Self {
         // SAFETY: same layout, f64 alignment.
         unsafe { &*(slots as *const [f64; BOND_STATE_LEN] as *const Self) }

@@ -1,1 +1,11 @@
+//! A small standalone DEM driver (pairs, chains, clusters) with the
+//! symplectic Euler integrator, so studies and examples can run the models
+//! without an engine. Not a replacement for LIGGGHTS/LAMMPS: no MPI, no
+//! walls other than planes, O(N) cell-list contact search.
 
+pub mod builders;
+pub mod cells;
+pub mod csv;
+pub mod runner;
+
+pub use runner::{Scene, SceneError, Sphere, StepReport};
