@@ -7,5 +7,6 @@ pub mod builders;
 pub mod cells;
 pub mod csv;
 pub mod runner;
+pub mod vtk;
 
 pub use runner::{Scene, SceneError, Sphere, StepReport};

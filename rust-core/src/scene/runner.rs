@@ -301,3 +301,34 @@ impl Scene {
             .sum()
     }
 }
+
+impl Scene {
+    /// Sizes of the groups of spheres held together by intact bonds,
+    /// largest first (isolated spheres are fragments of size 1).
+    pub fn fragment_sizes(&self) -> Vec<usize> {
+        let n = self.spheres.len();
+        let mut parent: Vec<usize> = (0..n).collect();
+        fn root(parent: &mut [usize], mut i: usize) -> usize {
+            while parent[i] != i {
+                parent[i] = parent[parent[i]];
+                i = parent[i];
+            }
+            i
+        }
+        for b in self
+            .bonds
+            .iter()
+            .filter(|b| b.state.status() == BondStatus::Intact)
+        {
+            let (ri, rj) = (root(&mut parent, b.i), root(&mut parent, b.j));
+            parent[ri] = rj;
+        }
+        let mut sizes: HashMap<usize, usize> = HashMap::new();
+        for i in 0..n {
+            *sizes.entry(root(&mut parent, i)).or_default() += 1;
+        }
+        let mut v: Vec<usize> = sizes.into_values().collect();
+        v.sort_unstable_by(|a, b| b.cmp(a));
+        v
+    }
+}
