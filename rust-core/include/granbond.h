@@ -483,6 +483,18 @@ enum GbStatus granbond_wall_bond_compute(const struct GbBondModel *model,
 enum GbStatus granbond_bond_max_distance(const struct GbBondModel *model, double r0, double *out);
 
 /**
+ * Neighbour-list reach, as a multiple of `2 min_radius`, that keeps every
+ * intact bond of this type in the engine's lists (infinite if a bond can
+ * stretch without limit; the adapter must then refuse the setup).
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_contact_distance_factor(const struct GbBondModel *model,
+                                                    double min_radius,
+                                                    double *out);
+
+/**
  * Critical time step of a bond of this type between spheres of the given
  * radii and masses (see the crate docs for the modes considered).
  *

@@ -246,3 +246,33 @@ fn a_wall_bond_acts_like_a_bond_to_a_mirror_sphere() {
         .unwrap();
     assert!((wall.partner[0] - 5e-4).abs() < 1e-15);
 }
+
+#[test]
+fn neighbour_reach_covers_the_longest_intact_bond() {
+    // Distance mode: max_distance, plus 10%.
+    let m = model(BondParams {
+        max_distance: 3.0 * RADIUS,
+        ..params()
+    });
+    assert!((m.contact_distance_factor(RADIUS) - 1.1 * 1.5).abs() < 1e-12);
+    // Stress mode: creation distance plus gamma sigma / k_fn2.
+    let p = BondParams {
+        stress_break: 1,
+        max_sigma: 1e6,
+        use_ratio: 1,
+        tension_compression_ratio: 0.5,
+        ..params()
+    };
+    let stretch = 0.5 * 1e6 / p.k_fn2;
+    let expected = 1.1 * (p.create_distance + stretch) / (2.0 * RADIUS);
+    assert!((model(p).contact_distance_factor(RADIUS) - expected).abs() < 1e-12);
+    // Unbounded stretch is reported as such.
+    assert!(model(BondParams {
+        stress_break: 1,
+        tension: 0,
+        ..p
+    })
+    .contact_distance_factor(RADIUS)
+    .is_infinite());
+    assert!(model(params()).contact_distance_factor(RADIUS).is_infinite());
+}

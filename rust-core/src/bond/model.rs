@@ -89,4 +89,20 @@ impl BondModel {
             self.params.max_distance
         }
     }
+
+    /// Neighbour-list reach an engine needs so no intact bond drops out of
+    /// its lists, as a multiple of the contact distance `2 min_radius` of the
+    /// smallest spheres, with a 10% margin: the largest bonded centre distance
+    /// is `max_distance` (distance mode) or the creation distance plus the
+    /// largest tensile stretch (stress mode). Infinite when a bond can stretch
+    /// without limit (distance mode with `max_distance = inf`, or stress mode
+    /// with tension switched off or an infinite strength).
+    pub fn contact_distance_factor(&self, min_radius: f64) -> f64 {
+        let reach = if self.stress_break {
+            self.max_bond_distance(self.params.create_distance)
+        } else {
+            self.params.max_distance
+        };
+        (1.1 * reach / (2.0 * min_radius)).max(1.0)
+    }
 }

@@ -262,6 +262,32 @@ pub unsafe extern "C" fn granbond_bond_max_distance(
     })
 }
 
+/// Neighbour-list reach, as a multiple of `2 min_radius`, that keeps every
+/// intact bond of this type in the engine's lists (infinite if a bond can
+/// stretch without limit; the adapter must then refuse the setup).
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_contact_distance_factor(
+    model: *const BondModel,
+    min_radius: f64,
+    out: *mut f64,
+) -> Status {
+    call("granbond_bond_contact_distance_factor", || {
+        let m = reference(model, "model")?;
+        let o = reference_mut(out, "out")?;
+        if !(min_radius.is_finite() && min_radius > 0.0) {
+            return Err(Failure::new(
+                Status::InvalidArgument,
+                format!("min_radius must be finite and > 0; got {min_radius}"),
+            ));
+        }
+        *o = m.contact_distance_factor(min_radius);
+        Ok(())
+    })
+}
+
 /// Critical time step of a bond of this type between spheres of the given
 /// radii and masses (see the crate docs for the modes considered).
 ///
