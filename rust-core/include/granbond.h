@@ -134,6 +134,8 @@ typedef struct GbLayout {
   size_t plane;
   size_t bond_output;
   size_t contact_output;
+  size_t contact_frame;
+  size_t tangential_output;
   size_t bond_state_len;
   size_t wall_bond_state_len;
   size_t contact_state_len;
@@ -337,6 +339,42 @@ typedef struct GbPlane {
   double normal[3];
   double velocity[3];
 } GbPlane;
+
+/**
+ * Where and how deep two bodies touch, how far from each centre the
+ * contact point lies, and how the bodies move: everything a contact law
+ * needs, for a sphere pair or a sphere on a wall alike.
+ */
+typedef struct GbContactFrame {
+  /**
+   * Unit normal from `j` to `i`.
+   */
+  double n[3];
+  /**
+   * `delta_n > 0` when touching.
+   */
+  double overlap;
+  double lever_i;
+  double lever_j;
+  /**
+   * `R*` of the rolling cap.
+   */
+  double r_eff;
+  double v_i[3];
+  double v_j[3];
+  double w_i[3];
+  double w_j[3];
+} GbContactFrame;
+
+/**
+ * Tangential part of one Voigt step.
+ */
+typedef struct GbTangentialOutput {
+  double force_i[3];
+  double torque_i[3];
+  double torque_j[3];
+  int32_t sliding;
+} GbTangentialOutput;
 
 #ifdef __cplusplus
 extern "C" {
@@ -577,6 +615,67 @@ enum GbStatus granbond_voigt_compute_plane(const struct GbVoigtModel *model,
                                            double dt,
                                            double *state,
                                            struct GbContactOutput *out);
+
+/**
+ * The contact frame (normal, overlap, levers, velocities) of two spheres,
+ * for engines that evaluate the Voigt parts separately.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_contact_frame_pair(const struct GbPairKinematics *kinematics,
+                                          struct GbContactFrame *frame);
+
+/**
+ * The contact frame of a sphere on a plane wall.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_contact_frame_plane(const struct GbSphereKinematics *sphere,
+                                           const struct GbPlane *plane,
+                                           struct GbContactFrame *frame);
+
+/**
+ * Voigt normal force `k_n delta_n - gamma_n v_n` (clamped at zero when the
+ * model has no attraction) for a touching frame.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_voigt_normal_force(const struct GbVoigtModel *model,
+                                          const struct GbContactFrame *frame,
+                                          double *normal_force);
+
+/**
+ * Cundall-Strack tangential force with the Coulomb cap `mu |normal_force|`;
+ * `spring` (3 doubles, zero for a new contact) is updated in place.
+ *
+ * # Safety
+ * Pointers must be null or valid; `spring` holds 3 doubles.
+ */
+enum GbStatus granbond_voigt_tangential(const struct GbVoigtModel *model,
+                                        const struct GbContactFrame *frame,
+                                        double normal_force,
+                                        double dt,
+                                        double *spring,
+                                        struct GbTangentialOutput *out);
+
+/**
+ * Iwashita-Oda rolling torque on `i` (apply its negative to `j`); `angle`
+ * (3 doubles, zero for a new contact) is updated in place; `*slip` is 1
+ * when the torque sits on its cap.
+ *
+ * # Safety
+ * Pointers must be null or valid; `angle` and `torque_i` hold 3 doubles.
+ */
+enum GbStatus granbond_voigt_rolling(const struct GbVoigtModel *model,
+                                     const struct GbContactFrame *frame,
+                                     double normal_force,
+                                     double dt,
+                                     double *angle,
+                                     double *torque_i,
+                                     int32_t *slip);
 
 /**
  * Critical time step of a contact of this type between spheres of the

@@ -10,6 +10,6 @@ pub mod rolling;
 pub mod state;
 pub mod tangential;
 
-pub use model::{BodyVelocities, ContactGeometry, Plane, VoigtModel};
+pub use model::{ContactFrame, Plane, TangentialLoad, VoigtModel};
 pub use params::{VoigtParams, VOIGT_PARAMETERS};
 pub use state::{ContactOutput, ContactState, CONTACT_SLOTS, CONTACT_STATE_LEN};

@@ -6,32 +6,29 @@ use super::params::VoigtParams;
 use super::rolling::{effective_radius, rolling_spin};
 use super::state::{ContactOutput, ContactState};
 use super::tangential::carry_spring;
-use crate::kinematics::{centre_line, slip_velocity, KinematicsError, PairKinematics};
+use crate::kinematics::{centre_line, slip_velocity, KinematicsError, PairKinematics, SphereKinematics};
 use crate::parameters::ParameterError;
 use crate::stability::{oscillator_limit, sphere_inertia};
 use crate::vector::{tangential_part, v3, Vec3};
 
-/// Where and how deep two bodies touch, and how far from each centre the
-/// contact point lies.
-#[derive(Clone, Copy, Debug)]
-pub struct ContactGeometry {
+/// Where and how deep two bodies touch, how far from each centre the
+/// contact point lies, and how the bodies move: everything a contact law
+/// needs, for a sphere pair or a sphere on a wall alike.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ContactFrame {
     /// Unit normal from `j` to `i`.
-    pub n: Vec3,
+    pub n: [f64; 3],
     /// `delta_n > 0` when touching.
     pub overlap: f64,
     pub lever_i: f64,
     pub lever_j: f64,
     /// `R*` of the rolling cap.
     pub r_eff: f64,
-}
-
-/// Velocities of the two bodies.
-#[derive(Clone, Copy, Debug)]
-pub struct BodyVelocities {
-    pub v_i: Vec3,
-    pub v_j: Vec3,
-    pub w_i: Vec3,
-    pub w_j: Vec3,
+    pub v_i: [f64; 3],
+    pub v_j: [f64; 3],
+    pub w_i: [f64; 3],
+    pub w_j: [f64; 3],
 }
 
 /// A plane wall: a point on it, its unit normal towards the particles, and
@@ -44,48 +41,46 @@ pub struct Plane {
     pub velocity: [f64; 3],
 }
 
-pub fn sphere_sphere(kin: &PairKinematics) -> Result<(ContactGeometry, BodyVelocities), KinematicsError> {
+pub fn sphere_sphere(kin: &PairKinematics) -> Result<ContactFrame, KinematicsError> {
     kin.check()?;
     let line = centre_line(kin)?;
-    let geometry = ContactGeometry {
-        n: line.n,
+    Ok(ContactFrame {
+        n: line.n.into(),
         overlap: kin.radius_i + kin.radius_j - line.r,
         lever_i: kin.radius_i,
         lever_j: kin.radius_j,
         r_eff: effective_radius(kin.radius_i, Some(kin.radius_j)),
-    };
-    let velocities = BodyVelocities {
-        v_i: v3(kin.v_i),
-        v_j: v3(kin.v_j),
-        w_i: v3(kin.w_i),
-        w_j: v3(kin.w_j),
-    };
-    Ok((geometry, velocities))
+        v_i: kin.v_i,
+        v_j: kin.v_j,
+        w_i: kin.w_i,
+        w_j: kin.w_j,
+    })
 }
 
-pub fn sphere_plane(
-    x_i: [f64; 3],
-    v_i: [f64; 3],
-    w_i: [f64; 3],
-    radius_i: f64,
-    plane: &Plane,
-) -> (ContactGeometry, BodyVelocities) {
+pub fn sphere_plane(sphere: &SphereKinematics, plane: &Plane) -> ContactFrame {
     let n = v3(plane.normal);
-    let gap = (v3(x_i) - v3(plane.point)).dot(&n);
-    let geometry = ContactGeometry {
-        n,
-        overlap: radius_i - gap,
-        lever_i: radius_i,
+    let gap = (v3(sphere.x) - v3(plane.point)).dot(&n);
+    ContactFrame {
+        n: plane.normal,
+        overlap: sphere.radius - gap,
+        lever_i: sphere.radius,
         lever_j: 0.0,
-        r_eff: effective_radius(radius_i, None),
-    };
-    let velocities = BodyVelocities {
-        v_i: v3(v_i),
-        v_j: v3(plane.velocity),
-        w_i: v3(w_i),
-        w_j: Vec3::zeros(),
-    };
-    (geometry, velocities)
+        r_eff: effective_radius(sphere.radius, None),
+        v_i: sphere.v,
+        v_j: plane.velocity,
+        w_i: sphere.w,
+        w_j: [0.0; 3],
+    }
+}
+
+/// Tangential load of one step: the force on `i` and the torques its couple
+/// puts on both bodies.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TangentialLoad {
+    pub force: Vec3,
+    pub torque_i: Vec3,
+    pub torque_j: Vec3,
+    pub sliding: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -118,76 +113,92 @@ impl VoigtModel {
         state: &mut ContactState,
         out: &mut ContactOutput,
     ) -> Result<(), KinematicsError> {
-        let (g, v) = sphere_sphere(kin)?;
-        self.step_geometry(&g, &v, dt, state, out);
+        let frame = sphere_sphere(kin)?;
+        self.step_frame(&frame, dt, state, out);
         Ok(())
     }
 
-    /// One step of any contact, given its geometry. Apart spheres exert
-    /// nothing and forget their history.
+    /// One step of any contact. Bodies apart exert nothing and forget their
+    /// history.
     #[inline]
-    pub fn step_geometry(
-        &self,
-        g: &ContactGeometry,
-        v: &BodyVelocities,
-        dt: f64,
-        state: &mut ContactState,
-        out: &mut ContactOutput,
-    ) {
-        if self.rolling {
-            self.kernel::<true>(g, v, dt, state, out)
-        } else {
-            self.kernel::<false>(g, v, dt, state, out)
-        }
-    }
-
-    #[inline(always)]
-    fn kernel<const ROLLING: bool>(
-        &self,
-        g: &ContactGeometry,
-        v: &BodyVelocities,
-        dt: f64,
-        state: &mut ContactState,
-        out: &mut ContactOutput,
-    ) {
+    pub fn step_frame(&self, f: &ContactFrame, dt: f64, state: &mut ContactState, out: &mut ContactOutput) {
         *out = ContactOutput {
-            overlap: g.overlap,
+            overlap: f.overlap,
             ..ContactOutput::default()
         };
-        if !(g.overlap > 0.0) {
+        if !(f.overlap > 0.0) {
             *state = ContactState::default();
             return;
         }
-        let p = &self.params;
-        let n = g.n;
-        let v_rel = v.v_i - v.v_j;
-        let f_n = normal_force(p.k_n, p.gamma_n, g.overlap, v_rel.dot(&n), self.no_attraction);
-
-        let slip = slip_velocity(v_rel, v.w_i, v.w_j, n, g.lever_i, g.lever_j);
-        let spring = carry_spring(v3(state.tangential_spring), n) + slip * dt;
-        let (f_t, spring, sliding) = capped_spring(spring, slip, p.k_t, p.gamma_t, p.mu * f_n.abs());
-        state.tangential_spring = spring.into();
-
-        let arm = n.cross(&f_t);
-        let mut torque_i = -arm * g.lever_i;
-        let mut torque_j = -arm * g.lever_j;
-        if ROLLING {
-            let spin = rolling_spin(v.w_i, v.w_j, n);
-            let angle = tangential_part(v3(state.rolling_angle), n) + spin * dt;
-            let limit = p.mu_r * f_n.abs() * g.r_eff;
-            let (t_r, angle, rolling_slip) = capped_spring(angle, spin, p.k_r, p.gamma_r, limit);
-            state.rolling_angle = angle.into();
-            let t_r = t_r - spin * p.eta_r;
+        let f_n = self.normal_force(f);
+        let t = self.tangential(f, f_n, dt, &mut state.tangential_spring);
+        let (mut torque_i, mut torque_j) = (t.torque_i, t.torque_j);
+        if self.rolling {
+            let (t_r, slip) = self.rolling_torque(f, f_n, dt, &mut state.rolling_angle);
             torque_i += t_r;
             torque_j -= t_r;
-            out.rolling_slip = rolling_slip as i32;
+            out.rolling_slip = slip as i32;
         }
-        out.force_i = (n * f_n + f_t).into();
+        out.force_i = (v3(f.n) * f_n + t.force).into();
         out.torque_i = torque_i.into();
         out.torque_j = torque_j.into();
         out.normal_force = f_n;
         out.touching = 1;
-        out.sliding = sliding as i32;
+        out.sliding = t.sliding as i32;
+    }
+
+    /// `Fn = k_n delta_n - gamma_n v_n` (clamped at zero without attraction).
+    #[inline(always)]
+    pub fn normal_force(&self, f: &ContactFrame) -> f64 {
+        let v_n = (v3(f.v_i) - v3(f.v_j)).dot(&v3(f.n));
+        normal_force(
+            self.params.k_n,
+            self.params.gamma_n,
+            f.overlap,
+            v_n,
+            self.no_attraction,
+        )
+    }
+
+    /// Cundall-Strack spring with the Coulomb cap `mu |Fn|`; updates the
+    /// spring elongation in place.
+    #[inline(always)]
+    pub fn tangential(&self, f: &ContactFrame, f_n: f64, dt: f64, spring: &mut [f64; 3]) -> TangentialLoad {
+        let p = &self.params;
+        let n = v3(f.n);
+        let slip = slip_velocity(
+            v3(f.v_i) - v3(f.v_j),
+            v3(f.w_i),
+            v3(f.w_j),
+            n,
+            f.lever_i,
+            f.lever_j,
+        );
+        let trial = carry_spring(v3(*spring), n) + slip * dt;
+        let (force, kept, sliding) = capped_spring(trial, slip, p.k_t, p.gamma_t, p.mu * f_n.abs());
+        *spring = kept.into();
+        let arm = n.cross(&force);
+        TangentialLoad {
+            force,
+            torque_i: -arm * f.lever_i,
+            torque_j: -arm * f.lever_j,
+            sliding,
+        }
+    }
+
+    /// Iwashita-Oda rolling torque on `i` (`-` of it on `j`): spring and
+    /// dashpot capped at `mu_r |Fn| R*`, plus the uncapped viscous term.
+    /// Updates the rolling angle in place; reports whether the cap was hit.
+    #[inline(always)]
+    pub fn rolling_torque(&self, f: &ContactFrame, f_n: f64, dt: f64, angle: &mut [f64; 3]) -> (Vec3, bool) {
+        let p = &self.params;
+        let n = v3(f.n);
+        let spin = rolling_spin(v3(f.w_i), v3(f.w_j), n);
+        let trial = tangential_part(v3(*angle), n) + spin * dt;
+        let limit = p.mu_r * f_n.abs() * f.r_eff;
+        let (t_r, kept, slip) = capped_spring(trial, spin, p.k_r, p.gamma_r, limit);
+        *angle = kept.into();
+        (t_r - spin * p.eta_r, slip)
     }
 
     /// Critical step between spheres of the given radii and masses: normal

@@ -3,8 +3,9 @@
 use super::error::{Failure, Status};
 use super::guard::{call, reference};
 use crate::bond::{BondOutput, BondParams, BOND_STATE_LEN, WALL_BOND_STATE_LEN};
-use crate::contact::{ContactOutput, Plane, VoigtParams, CONTACT_STATE_LEN};
+use crate::contact::{ContactFrame, ContactOutput, Plane, VoigtParams, CONTACT_STATE_LEN};
 use crate::ffi::bond::SphereKinematics;
+use crate::ffi::contact::TangentialOutput;
 use crate::kinematics::PairKinematics;
 use std::mem::size_of;
 
@@ -24,6 +25,8 @@ pub struct Layout {
     pub plane: usize,
     pub bond_output: usize,
     pub contact_output: usize,
+    pub contact_frame: usize,
+    pub tangential_output: usize,
     pub bond_state_len: usize,
     pub wall_bond_state_len: usize,
     pub contact_state_len: usize,
@@ -40,6 +43,8 @@ pub fn library_layout() -> Layout {
         plane: size_of::<Plane>(),
         bond_output: size_of::<BondOutput>(),
         contact_output: size_of::<ContactOutput>(),
+        contact_frame: size_of::<ContactFrame>(),
+        tangential_output: size_of::<TangentialOutput>(),
         bond_state_len: BOND_STATE_LEN,
         wall_bond_state_len: WALL_BOND_STATE_LEN,
         contact_state_len: CONTACT_STATE_LEN,
@@ -62,7 +67,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
     call("granbond_check_layout", || {
         let e = reference(expected, "expected")?;
         let l = library_layout();
-        let items: [(&str, usize, usize); 11] = [
+        let items: [(&str, usize, usize); 13] = [
             ("abi_version", e.abi_version as usize, l.abi_version as usize),
             ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
             ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
@@ -75,6 +80,12 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
             ("sizeof(GbPlane)", e.plane, l.plane),
             ("sizeof(GbBondOutput)", e.bond_output, l.bond_output),
             ("sizeof(GbContactOutput)", e.contact_output, l.contact_output),
+            ("sizeof(GbContactFrame)", e.contact_frame, l.contact_frame),
+            (
+                "sizeof(GbTangentialOutput)",
+                e.tangential_output,
+                l.tangential_output,
+            ),
             ("bond state length", e.bond_state_len, l.bond_state_len),
             (
                 "wall bond state length",

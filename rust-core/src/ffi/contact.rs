@@ -3,8 +3,10 @@
 use super::bond::check_bodies;
 use super::error::{Failure, Status};
 use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut};
-use crate::contact::model::sphere_plane;
-use crate::contact::{ContactOutput, ContactState, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN};
+use crate::contact::model::{sphere_plane, sphere_sphere};
+use crate::contact::{
+    ContactFrame, ContactOutput, ContactState, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN,
+};
 use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
 
 /// Fills `params` with Table 1 of the seed.
@@ -114,6 +116,43 @@ pub unsafe extern "C" fn granbond_voigt_compute_batch(
     })
 }
 
+fn check_plane(sp: &SphereKinematics, pl: &Plane) -> Result<(), Failure> {
+    let numbers =
+        sp.x.iter()
+            .chain(&sp.v)
+            .chain(&sp.w)
+            .chain(&pl.point)
+            .chain(&pl.normal)
+            .chain(&pl.velocity);
+    if !numbers.chain(std::iter::once(&sp.radius)).all(|x| x.is_finite()) {
+        return Err(KinematicsError::NonFinite.into());
+    }
+    if !(sp.radius > 0.0) {
+        return Err(KinematicsError::NonPositiveRadius.into());
+    }
+    check_unit(&pl.normal, "plane normal")
+}
+
+fn check_unit(n: &[f64; 3], what: &str) -> Result<(), Failure> {
+    let len = n.iter().map(|c| c * c).sum::<f64>().sqrt();
+    if (len - 1.0).abs() > 1e-9 {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!("{what} must be a unit vector; |n| = {len}"),
+        ));
+    }
+    Ok(())
+}
+
+fn check_frame(f: &ContactFrame) -> Result<(), Failure> {
+    let numbers = f.n.iter().chain(&f.v_i).chain(&f.v_j).chain(&f.w_i).chain(&f.w_j);
+    let scalars = [f.overlap, f.lever_i, f.lever_j, f.r_eff];
+    if !numbers.chain(scalars.iter()).all(|x| x.is_finite()) {
+        return Err(KinematicsError::NonFinite.into());
+    }
+    check_unit(&f.n, "frame normal")
+}
+
 /// Advances a sphere-plane contact (the plane's normal points towards the
 /// sphere's side and must be a unit vector).
 ///
@@ -135,28 +174,140 @@ pub unsafe extern "C" fn granbond_voigt_compute_plane(
         let s = contact_state(state)?;
         let o = reference_mut(out, "out")?;
         check_dt(dt)?;
-        let numbers =
-            sp.x.iter()
-                .chain(&sp.v)
-                .chain(&sp.w)
-                .chain(&pl.point)
-                .chain(&pl.normal)
-                .chain(&pl.velocity);
-        if !numbers.chain(std::iter::once(&sp.radius)).all(|x| x.is_finite()) {
-            return Err(KinematicsError::NonFinite.into());
-        }
-        if !(sp.radius > 0.0) {
-            return Err(KinematicsError::NonPositiveRadius.into());
-        }
-        let len = pl.normal.iter().map(|c| c * c).sum::<f64>().sqrt();
-        if (len - 1.0).abs() > 1e-9 {
-            return Err(Failure::new(
-                Status::InvalidArgument,
-                format!("plane normal must be a unit vector; |n| = {len}"),
-            ));
-        }
-        let (g, v) = sphere_plane(sp.x, sp.v, sp.w, sp.radius, pl);
-        m.step_geometry(&g, &v, dt, s, o);
+        check_plane(sp, pl)?;
+        m.step_frame(&sphere_plane(sp, pl), dt, s, o);
+        Ok(())
+    })
+}
+
+/// The contact frame (normal, overlap, levers, velocities) of two spheres,
+/// for engines that evaluate the Voigt parts separately.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_contact_frame_pair(
+    kinematics: *const PairKinematics,
+    frame: *mut ContactFrame,
+) -> Status {
+    call("granbond_contact_frame_pair", || {
+        let k = reference(kinematics, "kinematics")?;
+        let f = reference_mut(frame, "frame")?;
+        *f = sphere_sphere(k)?;
+        Ok(())
+    })
+}
+
+/// The contact frame of a sphere on a plane wall.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_contact_frame_plane(
+    sphere: *const SphereKinematics,
+    plane: *const Plane,
+    frame: *mut ContactFrame,
+) -> Status {
+    call("granbond_contact_frame_plane", || {
+        let sp = reference(sphere, "sphere")?;
+        let pl = reference(plane, "plane")?;
+        let f = reference_mut(frame, "frame")?;
+        check_plane(sp, pl)?;
+        *f = sphere_plane(sp, pl);
+        Ok(())
+    })
+}
+
+/// Voigt normal force `k_n delta_n - gamma_n v_n` (clamped at zero when the
+/// model has no attraction) for a touching frame.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_normal_force(
+    model: *const VoigtModel,
+    frame: *const ContactFrame,
+    normal_force: *mut f64,
+) -> Status {
+    call("granbond_voigt_normal_force", || {
+        let m = reference(model, "model")?;
+        let f = reference(frame, "frame")?;
+        let o = reference_mut(normal_force, "normal_force")?;
+        check_frame(f)?;
+        *o = m.normal_force(f);
+        Ok(())
+    })
+}
+
+/// Tangential part of one Voigt step.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TangentialOutput {
+    pub force_i: [f64; 3],
+    pub torque_i: [f64; 3],
+    pub torque_j: [f64; 3],
+    pub sliding: i32,
+}
+
+/// Cundall-Strack tangential force with the Coulomb cap `mu |normal_force|`;
+/// `spring` (3 doubles, zero for a new contact) is updated in place.
+///
+/// # Safety
+/// Pointers must be null or valid; `spring` holds 3 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_tangential(
+    model: *const VoigtModel,
+    frame: *const ContactFrame,
+    normal_force: f64,
+    dt: f64,
+    spring: *mut f64,
+    out: *mut TangentialOutput,
+) -> Status {
+    call("granbond_voigt_tangential", || {
+        let m = reference(model, "model")?;
+        let f = reference(frame, "frame")?;
+        let s = reference_mut(spring as *mut [f64; 3], "spring")?;
+        let o = reference_mut(out, "out")?;
+        check_dt(dt)?;
+        check_frame(f)?;
+        let t = m.tangential(f, normal_force, dt, s);
+        *o = TangentialOutput {
+            force_i: t.force.into(),
+            torque_i: t.torque_i.into(),
+            torque_j: t.torque_j.into(),
+            sliding: t.sliding as i32,
+        };
+        Ok(())
+    })
+}
+
+/// Iwashita-Oda rolling torque on `i` (apply its negative to `j`); `angle`
+/// (3 doubles, zero for a new contact) is updated in place; `*slip` is 1
+/// when the torque sits on its cap.
+///
+/// # Safety
+/// Pointers must be null or valid; `angle` and `torque_i` hold 3 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_rolling(
+    model: *const VoigtModel,
+    frame: *const ContactFrame,
+    normal_force: f64,
+    dt: f64,
+    angle: *mut f64,
+    torque_i: *mut f64,
+    slip: *mut i32,
+) -> Status {
+    call("granbond_voigt_rolling", || {
+        let m = reference(model, "model")?;
+        let f = reference(frame, "frame")?;
+        let a = reference_mut(angle as *mut [f64; 3], "angle")?;
+        let t = reference_mut(torque_i as *mut [f64; 3], "torque_i")?;
+        let sl = reference_mut(slip, "slip")?;
+        check_dt(dt)?;
+        check_frame(f)?;
+        let (torque, capped) = m.rolling_torque(f, normal_force, dt, a);
+        *t = torque.into();
+        *sl = capped as i32;
         Ok(())
     })
 }

@@ -5,7 +5,7 @@ use crate::bond::{BondModel, BondOutput, BondState, BondStatus, BreakMode};
 use crate::contact::model::{sphere_plane, sphere_sphere};
 use crate::contact::{ContactOutput, ContactState, Plane, VoigtModel};
 use crate::integrate::{symplectic_euler, Body};
-use crate::kinematics::{KinematicsError, PairKinematics};
+use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
 use crate::stability::sphere_inertia;
 use crate::vector::{v3, Vec3};
 use std::collections::HashMap;
@@ -223,17 +223,17 @@ impl Scene {
                     }
                 }
                 let (a, b) = (&self.spheres[i], &self.spheres[j]);
-                let (g, v) = sphere_sphere(&kinematics(a, b)).map_err(|error| SceneError::Kinematics {
+                let frame = sphere_sphere(&kinematics(a, b)).map_err(|error| SceneError::Kinematics {
                     i,
                     j,
                     error,
                 })?;
-                if g.overlap <= 0.0 {
+                if frame.overlap <= 0.0 {
                     continue;
                 }
                 let mut state = self.contacts.get(&(i, j)).copied().unwrap_or_default();
                 let mut out = ContactOutput::default();
-                model.step_geometry(&g, &v, self.dt, &mut state, &mut out);
+                model.step_frame(&frame, self.dt, &mut state, &mut out);
                 touching.insert((i, j), state);
                 let f = v3(out.force_i);
                 self.forces[i] += f;
@@ -247,14 +247,19 @@ impl Scene {
             let mut touching_planes = HashMap::new();
             for (p, plane) in self.planes.iter().enumerate() {
                 for (i, s) in self.spheres.iter().enumerate() {
-                    let (g, v) =
-                        sphere_plane(s.body.x.into(), s.body.v.into(), s.body.w.into(), s.radius, plane);
-                    if g.overlap <= 0.0 {
+                    let sphere = SphereKinematics {
+                        x: s.body.x.into(),
+                        v: s.body.v.into(),
+                        w: s.body.w.into(),
+                        radius: s.radius,
+                    };
+                    let frame = sphere_plane(&sphere, plane);
+                    if frame.overlap <= 0.0 {
                         continue;
                     }
                     let mut state = self.plane_contacts.get(&(i, p)).copied().unwrap_or_default();
                     let mut out = ContactOutput::default();
-                    model.step_geometry(&g, &v, self.dt, &mut state, &mut out);
+                    model.step_frame(&frame, self.dt, &mut state, &mut out);
                     touching_planes.insert((i, p), state);
                     self.forces[i] += v3(out.force_i);
                     self.torques[i] += v3(out.torque_i);
