@@ -17,7 +17,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 1
+#define GRANBOND_ABI_VERSION 2
 
 /**
  * Lifecycle of a pair's bond, stored as a number in slot 0.
@@ -127,6 +127,11 @@ typedef struct GbVoigtModel GbVoigtModel;
  */
 typedef struct GbLayout {
   uint32_t abi_version;
+  /**
+   * `sizeof(GbLayout)`: read before anything else, so a caller with a
+   * shorter or longer struct is refused without reading past its end.
+   */
+  size_t layout_size;
   size_t bond_params;
   size_t voigt_params;
   size_t pair_kinematics;
@@ -690,6 +695,21 @@ enum GbStatus granbond_voigt_critical_timestep(const struct GbVoigtModel *model,
                                                double mass_i,
                                                double mass_j,
                                                double *out);
+
+/**
+ * Number of rows in the Voigt parameter table.
+ */
+size_t granbond_voigt_parameter_count(void);
+
+/**
+ * LAMMPS keyword and LIGGGHTS name of Voigt parameter `id` (static storage).
+ *
+ * # Safety
+ * `keyword` and `liggghts_name` must be null or valid for writes.
+ */
+enum GbStatus granbond_voigt_parameter_name(size_t id,
+                                            const char **keyword,
+                                            const char **liggghts_name);
 
 /**
  * Message of the last failed call on this thread ("" after a success).

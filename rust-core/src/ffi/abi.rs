@@ -10,7 +10,7 @@ use crate::kinematics::PairKinematics;
 use std::mem::size_of;
 
 /// Bumped whenever a struct, a function or a meaning changes.
-pub const GRANBOND_ABI_VERSION: u32 = 1;
+pub const GRANBOND_ABI_VERSION: u32 = 2;
 
 /// What the caller was compiled against: fill it with the header's version
 /// and `sizeof` of each struct, and pass it to `granbond_check_layout`.
@@ -18,6 +18,9 @@ pub const GRANBOND_ABI_VERSION: u32 = 1;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Layout {
     pub abi_version: u32,
+    /// `sizeof(GbLayout)`: read before anything else, so a caller with a
+    /// shorter or longer struct is refused without reading past its end.
+    pub layout_size: usize,
     pub bond_params: usize,
     pub voigt_params: usize,
     pub pair_kinematics: usize,
@@ -32,10 +35,18 @@ pub struct Layout {
     pub contact_state_len: usize,
 }
 
+/// The first two fields of every version of [`Layout`].
+#[repr(C)]
+struct LayoutHead {
+    abi_version: u32,
+    layout_size: usize,
+}
+
 /// The layout of this library.
 pub fn library_layout() -> Layout {
     Layout {
         abi_version: GRANBOND_ABI_VERSION,
+        layout_size: size_of::<Layout>(),
         bond_params: size_of::<BondParams>(),
         voigt_params: size_of::<VoigtParams>(),
         pair_kinematics: size_of::<PairKinematics>(),
@@ -65,10 +76,19 @@ pub extern "C" fn granbond_abi_version() -> u32 {
 #[no_mangle]
 pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Status {
     call("granbond_check_layout", || {
-        let e = reference(expected, "expected")?;
         let l = library_layout();
-        let items: [(&str, usize, usize); 13] = [
-            ("abi_version", e.abi_version as usize, l.abi_version as usize),
+        let head = reference(expected as *const LayoutHead, "expected")?;
+        if head.abi_version != l.abi_version || head.layout_size != l.layout_size {
+            return Err(Failure::new(
+                Status::LayoutMismatch,
+                format!(
+                    "abi_version {} / sizeof(GbLayout) {} in the caller but {} / {} in the library: rebuild the adapter against this header",
+                    head.abi_version, head.layout_size, l.abi_version, l.layout_size
+                ),
+            ));
+        }
+        let e = reference(expected, "expected")?;
+        let items: [(&str, usize, usize); 12] = [
             ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
             ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
             ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),

@@ -1,7 +1,10 @@
 //! `extern "C"` surface of `bond/nonlinear`.
 
 use super::error::{Failure, Status};
-use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut, vector3};
+use super::guard::{
+    call, check_dt, parameter_c_names, reference, reference_mut, slice, slice_mut, vector3,
+    write_parameter_name,
+};
 use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
@@ -63,21 +66,6 @@ pub extern "C" fn granbond_bond_parameter_count() -> usize {
     PARAMETERS.len()
 }
 
-fn parameter_names() -> &'static [(CString, CString)] {
-    static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
-    NAMES.get_or_init(|| {
-        PARAMETERS
-            .iter()
-            .map(|p| {
-                (
-                    CString::new(p.name).expect("no NUL"),
-                    CString::new(p.liggghts_name).expect("no NUL"),
-                )
-            })
-            .collect()
-    })
-}
-
 /// LAMMPS keyword and LIGGGHTS name of bond parameter `id` (static storage).
 ///
 /// # Safety
@@ -89,14 +77,9 @@ pub unsafe extern "C" fn granbond_bond_parameter_name(
     liggghts_name: *mut *const c_char,
 ) -> Status {
     call("granbond_bond_parameter_name", || {
-        let keyword = reference_mut(keyword, "keyword")?;
-        let liggghts_name = reference_mut(liggghts_name, "liggghts_name")?;
-        let (k, l) = parameter_names().get(id).ok_or_else(|| {
-            Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range"))
-        })?;
-        *keyword = k.as_ptr();
-        *liggghts_name = l.as_ptr();
-        Ok(())
+        static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
+        let names = NAMES.get_or_init(|| parameter_c_names(PARAMETERS));
+        write_parameter_name(names, id, keyword, liggghts_name)
     })
 }
 
@@ -257,6 +240,12 @@ pub unsafe extern "C" fn granbond_bond_max_distance(
 ) -> Status {
     call("granbond_bond_max_distance", || {
         let m = reference(model, "model")?;
+        if !(r0.is_finite() && r0 > 0.0) {
+            return Err(Failure::new(
+                Status::InvalidArgument,
+                format!("r0 must be finite and > 0; got {r0}"),
+            ));
+        }
         *reference_mut(out, "out")? = m.max_bond_distance(r0);
         Ok(())
     })

@@ -3,11 +3,15 @@
 use super::bond::check_bodies;
 use super::error::{Failure, Status};
 use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut};
+use super::guard::{parameter_c_names, write_parameter_name};
 use crate::contact::model::{sphere_plane, sphere_sphere};
 use crate::contact::{
     ContactFrame, ContactOutput, ContactState, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN,
+    VOIGT_PARAMETERS,
 };
 use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
+use std::ffi::{c_char, CString};
+use std::sync::OnceLock;
 
 /// Fills `params` with Table 1 of the seed.
 ///
@@ -144,6 +148,17 @@ fn check_unit(n: &[f64; 3], what: &str) -> Result<(), Failure> {
     Ok(())
 }
 
+fn check_finite(x: f64, name: &str) -> Result<(), Failure> {
+    if x.is_finite() {
+        Ok(())
+    } else {
+        Err(Failure::new(
+            Status::NonFiniteInput,
+            format!("{name} must be finite; got {x}"),
+        ))
+    }
+}
+
 fn check_frame(f: &ContactFrame) -> Result<(), Failure> {
     let numbers = f.n.iter().chain(&f.v_i).chain(&f.v_j).chain(&f.w_i).chain(&f.w_j);
     let scalars = [f.overlap, f.lever_i, f.lever_j, f.r_eff];
@@ -270,6 +285,7 @@ pub unsafe extern "C" fn granbond_voigt_tangential(
         let o = reference_mut(out, "out")?;
         check_dt(dt)?;
         check_frame(f)?;
+        check_finite(normal_force, "normal_force")?;
         let t = m.tangential(f, normal_force, dt, s);
         *o = TangentialOutput {
             force_i: t.force.into(),
@@ -305,6 +321,14 @@ pub unsafe extern "C" fn granbond_voigt_rolling(
         let sl = reference_mut(slip, "slip")?;
         check_dt(dt)?;
         check_frame(f)?;
+        check_finite(normal_force, "normal_force")?;
+        if !m.rolling() {
+            // Rolling resistance is off in this model: no torque, no memory.
+            *a = [0.0; 3];
+            *t = [0.0; 3];
+            *sl = 0;
+            return Ok(());
+        }
         let (torque, capped) = m.rolling_torque(f, normal_force, dt, a);
         *t = torque.into();
         *sl = capped as i32;
@@ -332,5 +356,28 @@ pub unsafe extern "C" fn granbond_voigt_critical_timestep(
         check_bodies(radius_i, radius_j, mass_i, mass_j)?;
         *o = m.critical_timestep(radius_i, radius_j, mass_i, mass_j);
         Ok(())
+    })
+}
+
+/// Number of rows in the Voigt parameter table.
+#[no_mangle]
+pub extern "C" fn granbond_voigt_parameter_count() -> usize {
+    VOIGT_PARAMETERS.len()
+}
+
+/// LAMMPS keyword and LIGGGHTS name of Voigt parameter `id` (static storage).
+///
+/// # Safety
+/// `keyword` and `liggghts_name` must be null or valid for writes.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_parameter_name(
+    id: usize,
+    keyword: *mut *const c_char,
+    liggghts_name: *mut *const c_char,
+) -> Status {
+    call("granbond_voigt_parameter_name", || {
+        static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
+        let names = NAMES.get_or_init(|| parameter_c_names(VOIGT_PARAMETERS));
+        write_parameter_name(names, id, keyword, liggghts_name)
     })
 }

@@ -2,6 +2,8 @@
 //! the pointer checks they share.
 
 use super::error::{clear, record, Failure, Status};
+use crate::parameters::ParameterInfo;
+use std::ffi::{c_char, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 /// Runs `body`, turning its error or its panic into a [`Status`] and a
@@ -106,4 +108,37 @@ pub fn check_dt(dt: f64) -> Result<(), Failure> {
 pub unsafe fn vector3(ptr: *const f64, name: &str) -> Result<[f64; 3], Failure> {
     let s = slice(ptr, 3, name)?;
     Ok([s[0], s[1], s[2]])
+}
+
+/// C strings of a parameter table's names, built once per table.
+pub fn parameter_c_names<T>(table: &[ParameterInfo<T>]) -> Vec<(CString, CString)> {
+    table
+        .iter()
+        .map(|p| {
+            (
+                CString::new(p.name).expect("no NUL"),
+                CString::new(p.liggghts_name).expect("no NUL"),
+            )
+        })
+        .collect()
+}
+
+/// Writes row `id` of `names` to the caller's pointers.
+///
+/// # Safety
+/// `keyword` and `liggghts_name` must be null or valid for writes.
+pub unsafe fn write_parameter_name(
+    names: &'static [(CString, CString)],
+    id: usize,
+    keyword: *mut *const c_char,
+    liggghts_name: *mut *const c_char,
+) -> Result<(), Failure> {
+    let keyword = reference_mut(keyword, "keyword")?;
+    let liggghts_name = reference_mut(liggghts_name, "liggghts_name")?;
+    let (k, l) = names
+        .get(id)
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?;
+    *keyword = k.as_ptr();
+    *liggghts_name = l.as_ptr();
+    Ok(())
 }

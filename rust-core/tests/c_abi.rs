@@ -1,0 +1,240 @@
+//! The C test bed: `tests/c/abi_harness.c` calls every function of
+//! `include/granbond.h` from C. This test compiles it with the C compiler
+//! cc-rs finds for this target, links it against the crate's static library,
+//! runs it, and also compiles it as C++ to prove the header is C++-clean.
+//!
+//! Which `libgranbond.a`: cargo builds the `staticlib` crate type together
+//! with the `rlib` whenever it builds the library, but the copy in
+//! `target/<profile>/` is only refreshed ("uplifted") when the library is
+//! itself a root of the cargo command (`cargo build`), never by
+//! `cargo test --test c_abi`. After a source change that copy is stale, and
+//! in a fresh target directory it does not exist. The library built for this
+//! very run is `target/<profile>/deps/libgranbond-<hash>.a`, written by the
+//! same rustc invocation as the `.rlib` this test executable was linked
+//! with; there may be several hashes (`cargo build` and `cargo test` resolve
+//! features differently), so [`static_library`] takes the newest one that is
+//! not newer than this executable.
+
+use std::ffi::OsStr;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::SystemTime;
+
+const HARNESS: &str = "tests/c/abi_harness.c";
+const LIBRARY_STEM: &str = "libgranbond";
+
+fn crate_dir() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Scratch directory under `target/tmp` for the harness executable.
+fn work_dir() -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("c_abi");
+    std::fs::create_dir_all(&dir).expect("create the scratch directory under CARGO_TARGET_TMPDIR");
+    dir
+}
+
+/// The compiler configuration a build script of this crate would get.
+fn build(cpp: bool) -> cc::Build {
+    let mut b = cc::Build::new();
+    b.target(env!("GRANBOND_TARGET"))
+        .host(env!("GRANBOND_HOST"))
+        .opt_level(0)
+        .debug(false)
+        .cpp(cpp)
+        .cargo_metadata(false)
+        .cargo_warnings(false)
+        .out_dir(work_dir());
+    b
+}
+
+fn modified(path: &Path) -> SystemTime {
+    std::fs::metadata(path)
+        .and_then(|m| m.modified())
+        .unwrap_or_else(|e| panic!("mtime of {}: {e}", path.display()))
+}
+
+/// Static libraries of this crate next to the test executable:
+/// `deps/libgranbond-<hash>.a` and the uplifted `libgranbond.a`.
+fn candidates(deps: &Path, profile_dir: &Path) -> Vec<(SystemTime, PathBuf)> {
+    let mut found = Vec::new();
+    for (dir, hashed) in [(deps, true), (profile_dir, false)] {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            continue;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            let Some(name) = path.file_name().and_then(OsStr::to_str) else {
+                continue;
+            };
+            let matches = if hashed {
+                name.starts_with(&format!("{LIBRARY_STEM}-")) && name.ends_with(".a")
+            } else {
+                name == format!("{LIBRARY_STEM}.a")
+            };
+            if matches && path.is_file() {
+                found.push((modified(&path), path));
+            }
+        }
+    }
+    found
+}
+
+/// The `libgranbond.a` built with the code this test executable runs (see
+/// the module docs).
+fn static_library() -> PathBuf {
+    let exe = std::env::current_exe().expect("path of the test executable");
+    let deps = exe.parent().expect("target/<profile>/deps");
+    let profile_dir = deps.parent().expect("target/<profile>");
+    let found = candidates(deps, profile_dir);
+    assert!(
+        !found.is_empty(),
+        "no {LIBRARY_STEM}*.a in {} or {}: the lib target must keep crate-type \"staticlib\"",
+        deps.display(),
+        profile_dir.display()
+    );
+    let exe_time = modified(&exe);
+    // The library this executable was linked with was built before it; a
+    // newer one comes from a later, unrelated build in the same target dir.
+    let linked = found
+        .iter()
+        .filter(|(t, _)| *t <= exe_time)
+        .max_by_key(|(t, _)| *t);
+    let (_, path) = linked
+        .or_else(|| found.iter().max_by_key(|(t, _)| *t))
+        .expect("at least one candidate");
+    path.clone()
+}
+
+fn run(mut cmd: Command, what: &str) {
+    let shown = format!("{cmd:?}");
+    let out = cmd
+        .output()
+        .unwrap_or_else(|e| panic!("{what}: cannot run {shown}: {e}"));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success(),
+        "{what} failed ({}):\n$ {shown}\n--- stdout ---\n{stdout}\n--- stderr ---\n{stderr}",
+        out.status
+    );
+}
+
+#[test]
+fn c_harness_passes_against_the_static_library() {
+    let library = static_library();
+    println!("static library: {}", library.display());
+
+    let compiler = build(false).get_compiler();
+    assert!(
+        !compiler.is_like_msvc(),
+        "the C test bed expects a GCC-style compiler driver, got {}",
+        compiler.path().display()
+    );
+    // One executable per process: concurrent `cargo test` runs in the same
+    // target directory must not overwrite (or fail to link over) each other's.
+    let exe = work_dir().join(format!("abi_harness-{}", std::process::id()));
+    let mut cmd = compiler.to_command();
+    cmd.args(["-std=c99", "-pedantic-errors", "-Wall", "-Wextra", "-Werror"])
+        .arg("-I")
+        .arg(crate_dir().join("include"))
+        .arg(crate_dir().join(HARNESS))
+        .arg(&library)
+        .args(["-lpthread", "-ldl", "-lm"])
+        .arg("-o")
+        .arg(&exe);
+    run(cmd, "compiling and linking the C harness");
+
+    let out = Command::new(&exe).output();
+    // Rebuilt on every run (the source and the command above reproduce it).
+    let _ = std::fs::remove_file(&exe);
+    let out = out.unwrap_or_else(|e| panic!("cannot run {}: {e}", exe.display()));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success(),
+        "C harness failed ({}):\n--- stdout ---\n{stdout}\n--- stderr ---\n{stderr}",
+        out.status
+    );
+    let last = stdout.lines().last().unwrap_or("");
+    assert!(
+        last.starts_with("abi_harness: all ") && last.ends_with(" checks passed"),
+        "C harness did not run to the end:\n{stdout}\n{stderr}"
+    );
+    println!("{last}");
+}
+
+#[test]
+fn header_compiles_as_cpp() {
+    let Ok(compiler) = build(true).try_get_compiler() else {
+        println!(
+            "no C++ compiler configured for {}; skipped",
+            env!("GRANBOND_TARGET")
+        );
+        return;
+    };
+    let available = Command::new(compiler.path())
+        .arg("--version")
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false);
+    if !available || compiler.is_like_msvc() {
+        println!("no usable C++ compiler ({}); skipped", compiler.path().display());
+        return;
+    }
+    let mut cmd = compiler.to_command();
+    cmd.args([
+        "-x",
+        "c++",
+        "-std=c++11",
+        "-pedantic-errors",
+        "-Wall",
+        "-Wextra",
+        "-Werror",
+    ])
+    .arg("-fsyntax-only")
+    .arg("-I")
+    .arg(crate_dir().join("include"))
+    .arg(crate_dir().join(HARNESS));
+    run(cmd, "compiling the C harness as C++11");
+}
+
+/// Names of the functions `include/granbond.h` declares.
+fn header_functions() -> Vec<String> {
+    let header = std::fs::read_to_string(crate_dir().join("include/granbond.h")).expect("read granbond.h");
+    let mut names = Vec::new();
+    for line in header.lines().map(str::trim) {
+        if line.starts_with('*') || line.starts_with('/') || line.starts_with('#') {
+            continue;
+        }
+        let Some(start) = line.find("granbond_") else {
+            continue;
+        };
+        let rest = &line[start..];
+        let end = rest
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .unwrap_or(rest.len());
+        if rest[end..].starts_with('(') {
+            names.push(rest[..end].to_string());
+        }
+    }
+    names
+}
+
+#[test]
+fn harness_calls_every_header_function() {
+    let functions = header_functions();
+    assert!(
+        functions.len() >= 20,
+        "found only {functions:?} in granbond.h: the header parser is out of date"
+    );
+    let harness = std::fs::read_to_string(crate_dir().join(HARNESS)).expect("read the C harness");
+    let missing: Vec<&String> = functions
+        .iter()
+        .filter(|f| !harness.contains(&format!("{f}(")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "{HARNESS} does not call {missing:?}: every function of granbond.h must be exercised from C"
+    );
+}
