@@ -95,11 +95,15 @@ pub(crate) fn record(function: &str, failure: &Failure) {
     });
 }
 
+/// Called after every successful call: must not allocate on the hot path,
+/// so an already clear record is left alone.
 pub(crate) fn clear() {
     LAST.with(|l| {
         let mut l = l.borrow_mut();
-        l.message = CString::default();
-        l.parameter = -1;
+        if !l.message.as_bytes().is_empty() || l.parameter != -1 {
+            l.message = CString::default();
+            l.parameter = -1;
+        }
     });
 }
 
