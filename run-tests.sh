@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
-# Every test: the Rust core's unit, property, physics and C-ABI tests.
+# Every test: the Rust core's unit, property, physics and C-ABI tests, then
+# the engine adapters built with CMake and their engine-level tests (ctest).
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/install-deps.sh
 cargo test --workspace
+cmake -S . -B build
+cmake --build build -j2
+ctest --test-dir build --output-on-failure

@@ -7,9 +7,21 @@ if ! command -v cargo >/dev/null 2>&1; then
     echo "install-deps: cargo not found; install Rust (https://rustup.rs) first" >&2
     exit 1
 fi
-if ! command -v cc >/dev/null 2>&1; then
-    echo "install-deps: installing a C compiler (apt)"
-    apt-get update -qq && apt-get install -y -qq gcc g++ >/dev/null
+# Debian packages: compilers, CMake, and the stock LIGGGHTS 3.8 (engine,
+# headers, MPI) that the adapter in cpp-adapter/liggghts is built against.
+apt_packages="gcc g++ make cmake python3 liggghts libliggghts-dev libopenmpi-dev openmpi-bin"
+missing=""
+for p in $apt_packages; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing="$missing $p"
+    fi
+done
+if [ -n "$missing" ]; then
+    echo "install-deps: installing (apt):$missing"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    # shellcheck disable=SC2086
+    apt-get install -y -qq --no-install-recommends $missing >/dev/null
 fi
 if ! python3 -c "import matplotlib, numpy" >/dev/null 2>&1; then
     echo "install-deps: installing matplotlib and numpy (pip)"

@@ -1,0 +1,24 @@
+// liggghts-granbond: drop-in replacement for the stock `liggghts` executable
+// (same command line: -in, -echo, -log, -var, ...; run it under mpirun the
+// same way) that carries the granbond contact models.
+#include <mpi.h>
+#include <cstdio>
+#include "lammps.h"
+#include "input.h"
+
+extern "C" int granbond_liggghts_registered(void);
+
+int main(int argc, char **argv)
+{
+    MPI_Init(&argc, &argv);
+    // referencing the adapter keeps the linker from dropping it (--as-needed);
+    // its global constructor has already registered the models
+    if (granbond_liggghts_registered() <= 0)
+        std::fprintf(stderr, "granbond: warning: no model combination registered\n");
+    LAMMPS_NS::LAMMPS *lmp = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
+    lmp->input->file();
+    delete lmp;
+    MPI_Barrier(MPI_COMM_WORLD);
+    MPI_Finalize();
+    return 0;
+}

@@ -1,0 +1,59 @@
+// Deck -> core translation for `cohesion bond/nonlinear`: the on/off switches
+// of `pair_style gran ... cohesion bond/nonlinear`, the `fix property/global`
+// values named in spec/bond-nonlinear.md ("Input-deck interface"), and one
+// validated GbBondModel per atom-type pair built from them.
+#ifndef GRANBOND_LIGGGHTS_BOND_NONLINEAR_PARAMETERS_H
+#define GRANBOND_LIGGGHTS_BOND_NONLINEAR_PARAMETERS_H
+
+#include "liggghts_engine.h"
+#include "granbond.h"
+
+#include <vector>
+
+namespace granbond {
+namespace liggghts {
+
+class BondNonlinearParameters : protected LAMMPS_NS::Pointers {
+public:
+    explicit BondNonlinearParameters(LAMMPS_NS::LAMMPS *lmp);
+    ~BondNonlinearParameters();
+
+    void registerSettings(::Settings &settings);
+
+    // Connects the properties the switches ask for, builds the models (any
+    // core validation error ends the run naming the property) and registers
+    // the neighbour-list reach that keeps stretched bonds in the lists.
+    void connectToProperties(::PropertyRegistry &registry);
+
+    // Model of the type pair, or null if none was built (not yet connected).
+    const GbBondModel *model(int itype, int jtype) const
+    {
+        if (itype < 1 || jtype < 1 || itype > ntypes_ || jtype > ntypes_) return 0;
+        return models_[itype * (ntypes_ + 1) + jtype];
+    }
+
+private:
+    BondNonlinearParameters(const BondNonlinearParameters &);
+    BondNonlinearParameters &operator=(const BondNonlinearParameters &);
+
+    void freeModels();
+    void connectPerTypePair(::PropertyRegistry &registry, size_t index);
+    void buildModels(::PropertyRegistry &registry);
+    void registerContactDistanceFactor(::PropertyRegistry &registry);
+
+    // switches (registered with the engine's Settings)
+    bool stressBreak_, tension_, compression_, shear_, twist_, bend_;
+    bool createAlways_, damping_, dampingSmooth_, useRatio_, historyReset_;
+
+    // connected property storage, indexed like the property table
+    std::vector<double **> perTypePair_;
+    double createStep_;
+
+    int ntypes_;
+    std::vector<GbBondModel *> models_;
+};
+
+}
+}
+
+#endif

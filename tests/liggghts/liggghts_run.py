@@ -1,0 +1,67 @@
+"""Runs a LIGGGHTS deck for the engine-level tests (Python 3 stdlib only)."""
+
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DECKS = os.path.join(HERE, "decks")
+
+# A deck that hangs is a failure too; every deck here runs in well under this.
+TIMEOUT_S = 120
+
+
+class Failure(Exception):
+    pass
+
+
+def run_deck(command, deck, workdir, variables=None, env=None, log="log.lammps"):
+    """Runs `command -in deck -log log -var k v ...` in `workdir`.
+
+    Returns (exit code, screen output + log text). A run ended by a signal
+    is always a failure, whatever the test expects."""
+    os.makedirs(workdir, exist_ok=True)
+    args = list(command) + ["-in", os.path.join(DECKS, deck), "-log", log]
+    variables = dict({"decks": DECKS}, **(variables or {}))
+    for key, value in variables.items():
+        args += ["-var", key, str(value)]
+    full_env = dict(os.environ)
+    full_env.update(env or {})
+    proc = subprocess.run(args, cwd=workdir, env=full_env, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, timeout=TIMEOUT_S, check=False)
+    screen = proc.stdout.decode("utf-8", "replace")
+    log_path = os.path.join(workdir, log)
+    log_text = ""
+    if os.path.exists(log_path):
+        with open(log_path, encoding="utf-8", errors="replace") as f:
+            log_text = f.read()
+    if proc.returncode < 0 or proc.returncode >= 128:
+        raise Failure(f"{' '.join(args)} ended by a signal (exit {proc.returncode}):\n{screen[-3000:]}")
+    return proc.returncode, screen + "\n" + log_text
+
+
+def run_ok(command, deck, workdir, variables=None, env=None):
+    rc, text = run_deck(command, deck, workdir, variables, env)
+    if rc != 0:
+        raise Failure(f"{deck} exited with {rc}:\n{text[-3000:]}")
+    return text
+
+
+def read_table(path):
+    """Rows of floats from a whitespace table, skipping '#' lines."""
+    rows = []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if line.strip() and not line.lstrip().startswith("#"):
+                rows.append([float(v) for v in line.split()])
+    return rows
+
+
+def main(check):
+    """Runs `check()`, printing the failure and exiting non-zero on Failure."""
+    try:
+        check()
+    except Failure as e:
+        print(f"FAIL: {e}")
+        sys.exit(1)
+    print("PASS")
