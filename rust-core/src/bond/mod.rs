@@ -4,6 +4,7 @@
 pub mod breakage;
 pub mod creation;
 pub mod damping;
+pub mod energy;
 pub mod hysteresis;
 pub mod kernel;
 pub mod model;
@@ -17,6 +18,7 @@ pub mod twist_bend;
 pub mod wall;
 
 pub use breakage::BreakMode;
+pub use energy::BondEnergy;
 pub use model::BondModel;
 pub use params::{BondParams, ParameterError, PARAMETERS};
 pub use state::{BondOutput, BondState, BondStatus, BOND_SLOTS, BOND_STATE_LEN};

@@ -6,6 +6,8 @@
 pub mod builders;
 pub mod cells;
 pub mod csv;
+/// cbindgen:ignore
+pub mod reference;
 pub mod runner;
 pub mod vtk;
 

@@ -17,6 +17,8 @@ pub struct Sphere {
     pub body: Body,
     pub radius: f64,
     pub fixed: bool,
+    /// Constant external force (N) added every step (a tip load, say).
+    pub external_force: Vec3,
 }
 
 impl Sphere {
@@ -33,6 +35,7 @@ impl Sphere {
             },
             radius,
             fixed: false,
+            external_force: Vec3::zeros(),
         }
     }
 }
@@ -177,8 +180,11 @@ impl Scene {
         let n = self.spheres.len();
         self.forces.clear();
         self.torques.clear();
-        self.forces
-            .extend(self.spheres.iter().map(|s| self.gravity * s.body.mass));
+        self.forces.extend(
+            self.spheres
+                .iter()
+                .map(|s| self.gravity * s.body.mass + s.external_force),
+        );
         self.torques.resize(n, Vec3::zeros());
 
         if let Some(model) = &self.bond_model {
@@ -290,6 +296,22 @@ impl Scene {
             .iter()
             .map(|s| {
                 0.5 * s.body.mass * s.body.v.norm_squared() + 0.5 * s.body.inertia * s.body.w.norm_squared()
+            })
+            .sum()
+    }
+
+    /// Elastic energy of the intact bonds (loading curves, see
+    /// `bond::energy`) at the positions of the last step, which is where
+    /// their stored shear force and angles stand.
+    pub fn bond_energy(&self) -> f64 {
+        let Some(model) = &self.bond_model else {
+            return 0.0;
+        };
+        self.bonds
+            .iter()
+            .map(|b| {
+                let (ri, rj) = (self.spheres[b.i].radius, self.spheres[b.j].radius);
+                model.elastic_energy(&b.state, b.last.delta, ri, rj).total()
             })
             .sum()
     }
