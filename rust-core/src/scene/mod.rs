@@ -9,6 +9,7 @@ pub mod csv;
 /// cbindgen:ignore
 pub mod reference;
 pub mod runner;
+pub mod sweep;
 pub mod vtk;
 
 pub use runner::{Scene, SceneError, Sphere, StepReport};
