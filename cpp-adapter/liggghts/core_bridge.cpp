@@ -34,26 +34,11 @@ void endRunOnThisRank(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const 
     lmp->error->one(file, line, lastMessage().c_str());
 }
 
-// A field added to GbLayout must be filled below.
-static_assert(sizeof(GbLayout) == 14 * sizeof(size_t), "GbLayout changed: update checkCoreLayout");
-
 void checkCoreLayout(LAMMPS_NS::Error *error)
 {
-    GbLayout expected = GbLayout();
-    expected.abi_version = GRANBOND_ABI_VERSION;
-    expected.layout_size = sizeof(GbLayout);
-    expected.bond_params = sizeof(GbBondParams);
-    expected.voigt_params = sizeof(GbVoigtParams);
-    expected.pair_kinematics = sizeof(GbPairKinematics);
-    expected.sphere_kinematics = sizeof(GbSphereKinematics);
-    expected.plane = sizeof(GbPlane);
-    expected.bond_output = sizeof(GbBondOutput);
-    expected.contact_output = sizeof(GbContactOutput);
-    expected.contact_frame = sizeof(GbContactFrame);
-    expected.tangential_output = sizeof(GbTangentialOutput);
-    expected.bond_state_len = GRANBOND_BOND_STATE_LEN;
-    expected.wall_bond_state_len = GRANBOND_WALL_BOND_STATE_LEN;
-    expected.contact_state_len = GRANBOND_CONTACT_STATE_LEN;
+    // Filled in this translation unit by the header, so it records the sizes
+    // this adapter was compiled with.
+    GbLayout expected = granbond_header_layout();
     if (granbond_check_layout(&expected) != GB_STATUS_OK) {
         endRun(error, FLERR, std::string("granbond: the adapter was built against another granbond.h than "
                                          "the core it links: ") + granbond_last_error_message());

@@ -276,3 +276,22 @@ fn neighbour_reach_covers_the_longest_intact_bond() {
     .is_infinite());
     assert!(model(params()).contact_distance_factor(RADIUS).is_infinite());
 }
+
+#[test]
+fn immediate_creation_skips_the_step_rule_but_not_the_others() {
+    let m = model(BondParams {
+        create_distance: 2.1 * RADIUS,
+        create_step: 5,
+        ..params()
+    });
+    let mut s = BondState::default();
+    assert!(!m.create_now(&pair_at(2.2 * RADIUS), &mut s).unwrap(), "too far");
+    assert!(m.create_now(&pair_at(2.05 * RADIUS), &mut s).unwrap(), "any step");
+    assert_eq!(s.r0, 2.05 * RADIUS);
+    s.delta_max = 1e-6;
+    assert!(
+        !m.create_now(&pair_at(2.0 * RADIUS), &mut s).unwrap(),
+        "an intact bond is kept"
+    );
+    assert_eq!(s.delta_max, 1e-6);
+}

@@ -22,6 +22,14 @@ pub fn creates_at(params: &BondParams, step: i64) -> bool {
     BondParams::switch(params.create_always) || step == params.create_step
 }
 
+/// Bonds formed by an engine's own rule (e.g. the spheres of one clump
+/// inserted with `bonded yes`) skip the step rule but keep the others: an
+/// intact bond is kept, and the centres must be closer than
+/// `create_distance`.
+pub fn may_create_now(params: &BondParams, status: BondStatus, r: f64) -> bool {
+    status != BondStatus::Intact && r < params.create_distance
+}
+
 impl BondModel {
     /// Whether bonds may form at `step` (callers skip the pair search
     /// otherwise).
@@ -40,6 +48,19 @@ impl BondModel {
         kin.check()?;
         let line = centre_line(kin)?;
         if may_create(&self.params, state.status(), line.r, step) {
+            *state = BondState::created(line.r);
+            Ok(true)
+        } else {
+            Ok(false)
+        }
+    }
+
+    /// Creates the bond now if the pair is unbonded (or broken) and closer
+    /// than `create_distance`, whatever the step; returns whether it did.
+    pub fn create_now(&self, kin: &PairKinematics, state: &mut BondState) -> Result<bool, KinematicsError> {
+        kin.check()?;
+        let line = centre_line(kin)?;
+        if may_create_now(&self.params, state.status(), line.r) {
             *state = BondState::created(line.r);
             Ok(true)
         } else {

@@ -119,6 +119,29 @@ pub unsafe extern "C" fn granbond_bond_try_create(
     })
 }
 
+/// Creates the bond now, skipping the step rule (for bonds an engine forms
+/// by its own rule, such as the spheres of a `bonded yes` clump): only if
+/// the pair is not bonded and closer than `create_distance`.
+///
+/// # Safety
+/// Pointers must be null or valid; `state` holds `GRANBOND_BOND_STATE_LEN` doubles.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_create_now(
+    model: *const BondModel,
+    kinematics: *const PairKinematics,
+    state: *mut f64,
+    created: *mut i32,
+) -> Status {
+    call("granbond_bond_create_now", || {
+        let m = reference(model, "model")?;
+        let k = reference(kinematics, "kinematics")?;
+        let s = bond_state(state, "state")?;
+        let c = reference_mut(created, "created")?;
+        *c = m.create_now(k, s)? as i32;
+        Ok(())
+    })
+}
+
 /// Advances one bond by `dt`, updating `state` in place and writing the
 /// loads, stresses and status to `out`. A bond that is not intact exerts
 /// nothing; `out->break_mode` is non-zero in the one step a bond breaks.

@@ -319,23 +319,7 @@ static unsigned char sentinel_object[16];
 
 static GbLayout caller_layout(void)
 {
-    GbLayout l;
-    memset(&l, 0, sizeof l);
-    l.abi_version = GRANBOND_ABI_VERSION;
-    l.layout_size = sizeof(GbLayout);
-    l.bond_params = sizeof(GbBondParams);
-    l.voigt_params = sizeof(GbVoigtParams);
-    l.pair_kinematics = sizeof(GbPairKinematics);
-    l.sphere_kinematics = sizeof(GbSphereKinematics);
-    l.plane = sizeof(GbPlane);
-    l.bond_output = sizeof(GbBondOutput);
-    l.contact_output = sizeof(GbContactOutput);
-    l.contact_frame = sizeof(GbContactFrame);
-    l.tangential_output = sizeof(GbTangentialOutput);
-    l.bond_state_len = GRANBOND_BOND_STATE_LEN;
-    l.wall_bond_state_len = GRANBOND_WALL_BOND_STATE_LEN;
-    l.contact_state_len = GRANBOND_CONTACT_STATE_LEN;
-    return l;
+    return granbond_header_layout();
 }
 
 struct layout_item {
@@ -755,6 +739,19 @@ static int create_bond(const GbBondModel *m, double *state)
     int32_t created = -1;
     memset(state, 0, GRANBOND_BOND_STATE_LEN * sizeof(double));
     pair_at(&k, R0_NOMINAL, R_I, R_J);
+    {
+        /* Immediate creation ignores the step, not the distance. */
+        double fresh[GRANBOND_BOND_STATE_LEN] = {0};
+        int32_t now = -1;
+        EXPECT_OK(granbond_bond_create_now(m, &k, fresh, &now), "granbond_bond_create_now");
+        CHECK(now == 1 && fresh[0] == 1.0, "granbond_bond_create_now bonds at any step");
+        EXPECT_OK(granbond_bond_create_now(m, &k, fresh, &now), "granbond_bond_create_now, intact");
+        CHECK(now == 0, "granbond_bond_create_now keeps an intact bond");
+        EXPECT_NULL_ARG(granbond_bond_create_now(NULL, &k, fresh, &now), "granbond_bond_create_now", "model");
+        EXPECT_NULL_ARG(granbond_bond_create_now(m, NULL, fresh, &now), "granbond_bond_create_now", "kinematics");
+        EXPECT_NULL_ARG(granbond_bond_create_now(m, &k, NULL, &now), "granbond_bond_create_now", "state");
+        EXPECT_NULL_ARG(granbond_bond_create_now(m, &k, fresh, NULL), "granbond_bond_create_now", "created");
+    }
     EXPECT_OK(granbond_bond_try_create(m, &k, CREATE_STEP, state, &created), "granbond_bond_try_create");
     CHECK(created == 1, "bond created");
     return 0;
