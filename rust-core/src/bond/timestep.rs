@@ -85,15 +85,17 @@ impl BondModel {
     }
 
     /// Compression below which the plain square root (no
-    /// `compression_linear_below`) is unstable at step `dt`, times four: its
-    /// local stiffness `k_n1 A / (2 sqrt d)` reaches the limit `4 m_eff / dt^2`
-    /// at `d_c = (k A dt^2 / (8 m_eff))^2`. Measured (docs/speed-accuracy.md):
-    /// bonds whose compression stays below `d_c` are not integrated, they
-    /// rattle; the rattle gains energy until its amplitude is about `2 d_c`
-    /// and stays bounded there, so this returns `4 d_c` (compressions above
-    /// it are resolved). Zero when the law is regularised
-    /// (`compression_linear_below > 0`: bounded stiffness, which
-    /// [`BondModel::critical_timestep`] covers) or compression is off.
+    /// `compression_linear_below`) is not integrated at step `dt` but
+    /// rattles. Its local stiffness `k_n1 A / (2 sqrt d)` reaches the limit
+    /// `4 m_eff / dt^2` at `d_c = (k A dt^2 / (8 m_eff))^2` (`k` the stiffest
+    /// compression slope); a bond left below `d_c` gains energy from round-off
+    /// until it rattles with an amplitude of 2-4 `d_c` (measured, elastic and
+    /// hysteretic, docs/speed-accuracy.md), then stays bounded. This returns
+    /// `16 d_c`, where the local step is half the local limit: compressions
+    /// above it are resolved, below it they are noise of at most this size.
+    /// Zero when the law is regularised (`compression_linear_below > 0`:
+    /// bounded stiffness, which [`BondModel::critical_timestep`] covers) or
+    /// compression is off.
     pub fn compression_noise_floor(
         &self,
         dt: f64,
@@ -108,6 +110,6 @@ impl BondModel {
         let sec = section(self.params.lambda, radius_i, radius_j);
         let m_eff = mass_i * mass_j / (mass_i + mass_j);
         let root = self.normal.compression.max_slope() * sec.area * dt * dt / (8.0 * m_eff);
-        4.0 * root * root
+        16.0 * root * root
     }
 }

@@ -214,7 +214,9 @@ fn classify(mut scene: Scene, steps: u64, flagged: bool, floor: f64) -> (Verdict
         Verdict::Detected => {
             format!("compression rattle {deepest:.2e} m within the reported noise floor {floor:.2e} m")
         }
-        Verdict::SilentlyWrong => format!("energy x{gain:.2e}, no report"),
+        Verdict::SilentlyWrong => format!(
+            "energy x{gain:.2e}, no report (deepest compression {deepest:.2e} m, floor {floor:.2e} m)"
+        ),
     };
     (verdict, gain, note)
 }
