@@ -47,19 +47,24 @@ void checkCoreLayout(LAMMPS_NS::Error *error)
 
 int registerStateSlots(LIGGGHTS::IContactHistorySetup *hsetup, GbStateKind kind, LAMMPS_NS::Error *error)
 {
-    const size_t n = granbond_state_len(kind);
-    int first = -1;
-    for (size_t k = 0; k < n; k++) {
+    return registerStateSlots(hsetup, kind, error, 0, granbond_state_len(kind), "");
+}
+
+int registerStateSlots(LIGGGHTS::IContactHistorySetup *hsetup, GbStateKind kind, LAMMPS_NS::Error *error,
+                       size_t first, size_t count, const char *prefix)
+{
+    int offset = -1;
+    for (size_t k = first; k < first + count; k++) {
         const char *name = 0;
         int32_t flips = 0;
         if (granbond_state_slot(kind, k, &name, &flips) != GB_STATUS_OK) {
             endRun(error, FLERR, std::string("granbond: ") + granbond_last_error_message());
         }
         // "1": the engine negates the value when the pair is seen from the other atom
-        const int offset = hsetup->add_history_value(name, flips ? "1" : "0");
-        if (k == 0) first = offset;
+        const int at = hsetup->add_history_value(std::string(prefix) + name, flips ? "1" : "0");
+        if (k == first) offset = at;
     }
-    return first;
+    return offset;
 }
 
 }

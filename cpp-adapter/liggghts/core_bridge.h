@@ -23,6 +23,11 @@ void checkCoreLayout(LAMMPS_NS::Error *error);
 // (names and sign-flip flags from the core); returns the offset of the first.
 int registerStateSlots(LIGGGHTS::IContactHistorySetup *hsetup, GbStateKind kind, LAMMPS_NS::Error *error);
 
+// The same for slots [first, first + count) only, their names prefixed by
+// `prefix` (sub-models that each own part of one state).
+int registerStateSlots(LIGGGHTS::IContactHistorySetup *hsetup, GbStateKind kind, LAMMPS_NS::Error *error,
+                       size_t first, size_t count, const char *prefix);
+
 }
 }
 

@@ -1,0 +1,502 @@
+#include "voigt_contact.h"
+#include "core_bridge.h"
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+using namespace LIGGGHTS::ContactModels;
+
+namespace granbond {
+namespace liggghts {
+
+// ------------------------------------------------------------ model table
+
+void VoigtModelTable::build(LAMMPS_NS::Error *error, const char *who, int ntypes,
+                            const std::vector<GbVoigtParams> &params)
+{
+    checkCoreLayout(error);
+    clear();
+    stride_ = ntypes + 1;
+    models_.assign(stride_ * stride_, static_cast<GbVoigtModel *>(0));
+    for (int a = 1; a <= ntypes; a++)
+        for (int b = 1; b <= ntypes; b++) {
+            GbVoigtModel *model = 0;
+            if (granbond_voigt_model_new(&params[a * stride_ + b], &model) != GB_STATUS_OK) {
+                char where[64];
+                std::snprintf(where, sizeof where, " (fix property/global, atom types %d %d)", a, b);
+                const std::string msg = std::string(who) + ": " + granbond_last_error_message() + where;
+                clear();
+                endRun(error, FLERR, msg);
+            }
+            models_[a * stride_ + b] = model;
+        }
+}
+
+void VoigtModelTable::clear()
+{
+    for (size_t k = 0; k < models_.size(); k++)
+        granbond_voigt_model_free(models_[k]);
+    models_.clear();
+}
+
+namespace {
+
+// Parameters of every type pair, `fill` writing a sub-model's own values
+// over the core defaults; `rolling` switches the rolling part of the model.
+template<class Fill>
+std::vector<GbVoigtParams> typePairParams(int ntypes, bool rolling, Fill fill)
+{
+    const int stride = ntypes + 1;
+    GbVoigtParams defaults;
+    granbond_voigt_params_default(&defaults);
+    std::vector<GbVoigtParams> params(stride * stride, defaults);
+    for (int a = 1; a <= ntypes; a++)
+        for (int b = 1; b <= ntypes; b++) {
+            GbVoigtParams &p = params[a * stride + b];
+            fill(p, a, b);
+            p.rolling = rolling ? 1 : 0;
+        }
+    return params;
+}
+
+std::map<const void *, VoigtContactShare *> &shares()
+{
+    static std::map<const void *, VoigtContactShare *> all;
+    return all;
+}
+
+// The core's state slots of the Voigt contact: 0-2 tangential spring, 3-5
+// rolling angle.
+const size_t TANGENTIAL_SLOTS = 0, ROLLING_SLOTS = 3;
+
+}
+
+// ------------------------------------------------------------ shared state
+
+VoigtContactShare::VoigtContactShare() :
+    frame(), normal(false), tangential_offset(-1), rolling_offset(-1), users_(0), stride_(0)
+{}
+
+VoigtContactShare *VoigtContactShare::attach(const void *owner, bool *first)
+{
+    VoigtContactShare *&share = shares()[owner];
+    *first = !share;
+    if (!share) share = new VoigtContactShare();
+    share->users_++;
+    return share;
+}
+
+void VoigtContactShare::detach(const void *owner)
+{
+    std::map<const void *, VoigtContactShare *>::iterator it = shares().find(owner);
+    if (it != shares().end() && --it->second->users_ == 0) {
+        delete it->second;
+        shares().erase(it);
+    }
+}
+
+void VoigtContactShare::resize(int ntypes)
+{
+    if (ntypes + 1 == stride_) return;
+    stride_ = ntypes + 1;
+    GbVoigtParams defaults;
+    granbond_voigt_params_default(&defaults);
+    params_.assign(stride_ * stride_, defaults);
+}
+
+void VoigtContactShare::rebuild(LAMMPS_NS::Error *error)
+{
+    if (!fused()) return;
+    for (size_t k = 0; k < params_.size(); k++)
+        params_[k].rolling = fusedRolling() ? 1 : 0;
+    table_.build(error, "voigt contact", stride_ - 1, params_);
+}
+
+// ------------------------------------------------------------ translation
+
+namespace {
+
+// Sphere i of a wall contact, and the plane through the contact point.
+void wallKinematics(const SurfacesIntersectData &d, GbSphereKinematics &sphere, GbPlane &plane)
+{
+    for (int k = 0; k < 3; k++) {
+        sphere.x[k] = d.delta[k];
+        sphere.v[k] = d.v_i[k];
+        sphere.w[k] = d.omega_i[k];
+        plane.point[k] = 0.0;
+        plane.normal[k] = d.en[k];
+        plane.velocity[k] = d.v_j ? d.v_j[k] : 0.0;
+    }
+    sphere.radius = d.radi;
+}
+
+void pairKinematics(const SurfacesIntersectData &d, GbPairKinematics &pair)
+{
+    for (int k = 0; k < 3; k++) {
+        pair.x_i[k] = d.delta[k];
+        pair.x_j[k] = 0.0;
+        pair.v_i[k] = d.v_i[k];
+        pair.v_j[k] = d.v_j[k];
+        pair.w_i[k] = d.omega_i[k];
+        pair.w_j[k] = d.omega_j[k];
+    }
+    pair.radius_i = d.radi;
+    pair.radius_j = d.radj;
+}
+
+// The whole Voigt contact (normal, tangential, rolling as the model says).
+GbStatus wholeContactStep(const GbVoigtModel *model, const SurfacesIntersectData &d, double dt, double *state,
+                          GbContactOutput *out)
+{
+    if (d.is_wall) {
+        GbSphereKinematics sphere;
+        GbPlane plane;
+        wallKinematics(d, sphere, plane);
+        return granbond_voigt_compute_plane(model, &sphere, &plane, dt, state, out);
+    }
+    GbPairKinematics pair;
+    pairKinematics(d, pair);
+    return granbond_voigt_compute(model, &pair, dt, state, out);
+}
+
+}
+
+GbStatus contactFrame(const SurfacesIntersectData &d, GbContactFrame *frame)
+{
+    if (d.is_wall) {
+        GbSphereKinematics sphere;
+        GbPlane plane;
+        wallKinematics(d, sphere, plane);
+        return granbond_contact_frame_plane(&sphere, &plane, frame);
+    }
+    GbPairKinematics pair;
+    pairKinematics(d, pair);
+    return granbond_contact_frame_pair(&pair, frame);
+}
+
+void addLoads(const SurfacesIntersectData &d, ForceData &i_forces, ForceData &j_forces, const double *force_i,
+              const double *torque_i, const double *torque_j)
+{
+    if (d.is_wall) {
+        // a wall element may carry only part of the contact (multicontact)
+        const double share = d.area_ratio;
+        for (int k = 0; k < 3; k++) {
+            i_forces.delta_F[k] += share * force_i[k];
+            i_forces.delta_torque[k] += share * torque_i[k];
+        }
+        return;
+    }
+    for (int k = 0; k < 3; k++) {
+        i_forces.delta_F[k] += force_i[k];
+        j_forces.delta_F[k] -= force_i[k];
+        i_forces.delta_torque[k] += torque_i[k];
+        j_forces.delta_torque[k] += torque_j[k];
+    }
+}
+
+void voigtFailed(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const char *who)
+{
+    char where[160];
+    if (d.is_wall)
+        std::snprintf(where, sizeof where, "atom %ld and a wall", static_cast<long>(lmp->atom->tag[d.i]));
+    else
+        std::snprintf(where, sizeof where, "atoms %ld and %ld", static_cast<long>(lmp->atom->tag[d.i]),
+                      static_cast<long>(lmp->atom->tag[d.j]));
+    endRunOnThisRank(lmp, FLERR,
+                     std::string(who) + ": failed for " + where + " at step " +
+                         std::to_string(static_cast<long long>(lmp->update->ntimestep)) + ": " +
+                         granbond_last_error_message());
+}
+
+// ------------------------------------------------------------ model voigt
+//
+//   pair_style gran model voigt [noAttraction on|off] tangential ...
+//
+// Properties (fix property/global, peratomtypepair, as hooke/stiffness with
+// absolute_damping on): kn, gamman_abs (its own law), kt, gammat_abs (handed
+// to whichever tangential/rolling model follows through sidata, so stock
+// `tangential history` works after it). noAttraction (default on): clamp the
+// normal force at zero.
+
+VoigtNormal::VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup, ContactModelBase *cmb) :
+    NormalModelBase(lmp, hsetup, cmb),
+    owner_(cmb),
+    k_n_(0),
+    k_t_(0),
+    gamma_n_(0),
+    gamma_t_(0),
+    no_attraction_(true)
+{
+    bool first;
+    share_ = VoigtContactShare::attach(owner_, &first);
+    share_->normal = true;
+}
+
+VoigtNormal::~VoigtNormal() { VoigtContactShare::detach(owner_); }
+
+void VoigtNormal::registerSettings(::Settings &settings)
+{
+    settings.registerOnOff("noAttraction", no_attraction_, true);
+}
+
+void VoigtNormal::connectToProperties(::PropertyRegistry &registry)
+{
+    const char *caller = "model voigt";
+    registry.registerProperty("k_n", &MODEL_PARAMS::createKn);
+    registry.registerProperty("k_t", &MODEL_PARAMS::createKt);
+    registry.registerProperty("gamman_abs", &MODEL_PARAMS::createGammanAbs);
+    registry.registerProperty("gammat_abs", &MODEL_PARAMS::createGammatAbs);
+    registry.connect("k_n", k_n_, caller);
+    registry.connect("k_t", k_t_, caller);
+    registry.connect("gamman_abs", gamma_n_, caller);
+    registry.connect("gammat_abs", gamma_t_, caller);
+    double **kn = k_n_, **gn = gamma_n_;
+    const int no_attraction = no_attraction_ ? 1 : 0;
+    // k_t and gamma_t are only handed on (sidata); the tangential model that
+    // uses them checks them
+    auto own = [=](GbVoigtParams &p, int a, int b) {
+        p.k_n = kn[a][b];
+        p.gamma_n = gn[a][b];
+        p.no_attraction = no_attraction;
+    };
+    const int ntypes = registry.max_type();
+    models_.build(error, caller, ntypes, typePairParams(ntypes, false, own));
+    share_->contribute(error, ntypes, own);
+}
+
+void VoigtNormal::surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+{
+    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    const int a = sidata.itype, b = sidata.jtype;
+    // what the stock tangential, rolling and cohesion models read
+    sidata.kn = k_n_[a][b];
+    sidata.kt = k_t_[a][b];
+    sidata.gamman = gamma_n_[a][b];
+    sidata.gammat = gamma_t_[a][b];
+    if (share_->fused())
+        wholeContact(sidata, i_forces, j_forces);
+    else
+        normalPart(sidata, i_forces, j_forces);
+}
+
+void VoigtNormal::normalPart(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+{
+    GbContactFrame &frame = share_->frame;
+    GbStatus status = contactFrame(sidata, &frame);
+    double fn = 0.0;
+    if (status == GB_STATUS_OK)
+        status = granbond_voigt_normal_force(models_.at(sidata.itype, sidata.jtype), &frame, &fn);
+    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "model voigt");
+    sidata.Fn = fn;
+    const double force_i[3] = {fn * frame.n[0], fn * frame.n[1], fn * frame.n[2]};
+    const double none[3] = {0.0, 0.0, 0.0};
+    addLoads(sidata, i_forces, j_forces, force_i, none, none);
+}
+
+// normal + tangential (+ rolling) voigt in one core call; the tangential and
+// rolling voigt models then add nothing themselves
+void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+{
+    double *const stored = &sidata.contact_history[share_->tangential_offset];
+    const bool rolling = share_->fusedRolling();
+    // the history moves on only in a real force step (not at setup or for a
+    // per-contact output pass)
+    const bool advance = sidata.computeflag && sidata.shearupdate;
+    double scratch[GRANBOND_CONTACT_STATE_LEN] = {0.0};
+    double *state = stored;
+    if (!advance || !rolling) {
+        // the core writes 6 slots; without rolling voigt only 3 are ours
+        for (int k = 0; k < (rolling ? 6 : 3); k++)
+            scratch[k] = stored[k];
+        state = scratch;
+    }
+    GbContactOutput out;
+    const GbStatus status =
+        wholeContactStep(share_->fusedModel(sidata.itype, sidata.jtype), sidata, update->dt, state, &out);
+    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "model voigt");
+    if (advance && !rolling)
+        for (int k = 0; k < 3; k++)
+            stored[k] = scratch[k];
+    sidata.Fn = out.normal_force;
+    addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
+}
+
+// ------------------------------------------------------------ tangential and rolling
+
+template<class EngineBase>
+VoigtHistoryModel<EngineBase>::VoigtHistoryModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
+                                                 ContactModelBase *cmb, size_t firstSlot, const char *offsetName,
+                                                 int contactFlag) :
+    EngineBase(lmp, hsetup, cmb), owner_(cmb), contactFlag_(contactFlag)
+{
+    share_ = VoigtContactShare::attach(owner_, &computesFrame_);
+    offset_ = registerStateSlots(hsetup, GB_STATE_KIND_CONTACT, lmp->error, firstSlot, 3, "voigt_");
+    cmb->add_history_offset(offsetName, offset_);
+}
+
+template<class EngineBase>
+VoigtHistoryModel<EngineBase>::~VoigtHistoryModel()
+{
+    VoigtContactShare::detach(owner_);
+}
+
+template<class EngineBase>
+double *VoigtHistoryModel<EngineBase>::begin(const SurfacesIntersectData &sidata, bool always, double *scratch,
+                                              GbStatus *status)
+{
+    *status = (computesFrame_ || always) ? contactFrame(sidata, &share_->frame) : GB_STATUS_OK;
+    double *const stored = &sidata.contact_history[offset_];
+    if (sidata.computeflag && sidata.shearupdate) return stored;
+    for (int k = 0; k < 3; k++)
+        scratch[k] = stored[k];
+    return scratch;
+}
+
+template<class EngineBase>
+void VoigtHistoryModel<EngineBase>::surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
+{
+    // apart: the contact is over and its history forgotten
+    if (scdata.contact_flags) *scdata.contact_flags &= ~contactFlag_;
+    if (!scdata.contact_history) return;
+    double *const slots = &scdata.contact_history[offset_];
+    slots[0] = slots[1] = slots[2] = 0.0;
+}
+
+template class VoigtHistoryModel<TangentialModelBase>;
+template class VoigtHistoryModel<RollingModelBase>;
+
+// ------------------------------------------------------------ tangential voigt
+//
+// Cundall-Strack spring-dashpot with the Coulomb cap, after any normal model
+// (the cap uses the normal force it left in sidata.Fn). Properties: kt,
+// gammat_abs, coefficientFriction. History: the spring elongation.
+
+VoigtTangential::VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
+                                 ContactModelBase *cmb) :
+    VoigtHistoryModel<TangentialModelBase>(lmp, hsetup, cmb, TANGENTIAL_SLOTS, "voigt_tangential_spring",
+                                           CONTACT_TANGENTIAL_MODEL),
+    k_t_(0),
+    gamma_t_(0),
+    mu_(0)
+{
+    share_->tangential_offset = offset_;
+}
+
+void VoigtTangential::connectToProperties(::PropertyRegistry &registry)
+{
+    const char *caller = "tangential voigt";
+    registry.registerProperty("k_t", &MODEL_PARAMS::createKt);
+    registry.registerProperty("gammat_abs", &MODEL_PARAMS::createGammatAbs);
+    registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict);
+    registry.connect("k_t", k_t_, caller);
+    registry.connect("gammat_abs", gamma_t_, caller);
+    registry.connect("coeffFrict", mu_, caller);
+    double **kt = k_t_, **gt = gamma_t_, **mu = mu_;
+    auto own = [=](GbVoigtParams &p, int a, int b) {
+        p.k_t = kt[a][b];
+        p.gamma_t = gt[a][b];
+        p.mu = mu[a][b];
+    };
+    const int ntypes = registry.max_type();
+    models_.build(error, caller, ntypes, typePairParams(ntypes, false, own));
+    share_->contribute(error, ntypes, own);
+}
+
+void VoigtTangential::surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces,
+                                        ForceData &j_forces)
+{
+    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
+    if (share_->fused()) return;   // model voigt did the whole contact
+    double scratch[3];
+    GbStatus status;
+    double *const spring = begin(sidata, false, scratch, &status);
+    GbTangentialOutput out;
+    if (status == GB_STATUS_OK)
+        status = granbond_voigt_tangential(models_.at(sidata.itype, sidata.jtype), &share_->frame, sidata.Fn,
+                                           update->dt, spring, &out);
+    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "tangential voigt");
+    addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
+}
+
+// ------------------------------------------------------------ rolling_friction voigt
+//
+// Iwashita-Oda rolling resistance (spring, dashpot, cap mu_r |Fn| R*, plus
+// viscous rolling resistance), after any normal model. Properties:
+// coefficientRollingFriction (mu_r), rollingStiffness (k_r, N m/rad),
+// rollingDamping (gamma_r, N m s/rad), rollingViscousDamping (eta_r, N m s).
+// History: the rolling angle.
+
+namespace {
+MatrixProperty *createRollingStiffness(PropertyRegistry &registry, const char *caller, bool)
+{
+    return MODEL_PARAMS::createPerTypePairProperty(registry, "rollingStiffness", caller);
+}
+MatrixProperty *createRollingDamping(PropertyRegistry &registry, const char *caller, bool)
+{
+    return MODEL_PARAMS::createPerTypePairProperty(registry, "rollingDamping", caller);
+}
+MatrixProperty *createRollingViscousDamping(PropertyRegistry &registry, const char *caller, bool)
+{
+    return MODEL_PARAMS::createPerTypePairProperty(registry, "rollingViscousDamping", caller);
+}
+}
+
+VoigtRolling::VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
+                           ContactModelBase *cmb) :
+    VoigtHistoryModel<RollingModelBase>(lmp, hsetup, cmb, ROLLING_SLOTS, "voigt_rolling_angle",
+                                        CONTACT_ROLLING_MODEL),
+    mu_r_(0),
+    k_r_(0),
+    gamma_r_(0),
+    eta_r_(0)
+{
+    share_->rolling_offset = offset_;
+}
+
+void VoigtRolling::connectToProperties(::PropertyRegistry &registry)
+{
+    const char *caller = "rolling_friction voigt";
+    // registry keys of our own, so they cannot meet the stock scalar
+    // "rollingStiffness" of other rolling models
+    registry.registerProperty("coeffRollFrict", &MODEL_PARAMS::createCoeffRollFrict);
+    registry.registerProperty("voigt_rollingStiffness", &createRollingStiffness);
+    registry.registerProperty("voigt_rollingDamping", &createRollingDamping);
+    registry.registerProperty("voigt_rollingViscousDamping", &createRollingViscousDamping);
+    registry.connect("coeffRollFrict", mu_r_, caller);
+    registry.connect("voigt_rollingStiffness", k_r_, caller);
+    registry.connect("voigt_rollingDamping", gamma_r_, caller);
+    registry.connect("voigt_rollingViscousDamping", eta_r_, caller);
+    double **mu_r = mu_r_, **k_r = k_r_, **gamma_r = gamma_r_, **eta_r = eta_r_;
+    auto own = [=](GbVoigtParams &p, int a, int b) {
+        p.mu_r = mu_r[a][b];
+        p.k_r = k_r[a][b];
+        p.gamma_r = gamma_r[a][b];
+        p.eta_r = eta_r[a][b];
+    };
+    const int ntypes = registry.max_type();
+    models_.build(error, caller, ntypes, typePairParams(ntypes, true, own));
+    share_->contribute(error, ntypes, own);
+}
+
+void VoigtRolling::surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+{
+    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_ROLLING_MODEL;
+    if (share_->fusedRolling()) return;   // model voigt did the whole contact
+    double scratch[3];
+    GbStatus status;
+    // the fused normal model leaves no frame behind
+    double *const angle = begin(sidata, share_->fused(), scratch, &status);
+    double torque_i[3];
+    int32_t slip = 0;
+    if (status == GB_STATUS_OK)
+        status = granbond_voigt_rolling(models_.at(sidata.itype, sidata.jtype), &share_->frame, sidata.Fn,
+                                        update->dt, angle, torque_i, &slip);
+    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "rolling_friction voigt");
+    const double none[3] = {0.0, 0.0, 0.0};
+    const double torque_j[3] = {-torque_i[0], -torque_i[1], -torque_i[2]};
+    addLoads(sidata, i_forces, j_forces, none, torque_i, torque_j);
+}
+
+}
+}

@@ -1,0 +1,197 @@
+// The engine-facing half of the Voigt contact (spec: voigt-contact.md) as
+// three LIGGGHTS sub-models, `model voigt`, `tangential voigt` and
+// `rolling_friction voigt`, each usable with stock models in the other
+// slots. No physics here: see rust-core (src/contact).
+//
+// Compiled once (voigt_contact.cpp); the NormalModel<> / TangentialModel<> /
+// RollingModel<> specialisations in *_model_voigt.h only inherit from these.
+//
+// The sub-models of one ContactModel (one pair style or one wall fix) share a
+// VoigtContactShare: the contact frame of the contact at hand (computed by
+// the first voigt sub-model the engine calls, read by the later ones) and,
+// when normal and tangential are both voigt, one core model per type pair
+// with all their parameters, so `model voigt` advances the whole contact in
+// a single core call and the other two add nothing.
+#ifndef GRANBOND_LIGGGHTS_VOIGT_CONTACT_H
+#define GRANBOND_LIGGGHTS_VOIGT_CONTACT_H
+
+#include "liggghts_engine.h"
+#include "normal_model_base.h"
+#include "tangential_model_base.h"
+#include "rolling_model_base.h"
+#include "granbond.h"
+
+#include <vector>
+
+namespace granbond {
+namespace liggghts {
+
+using LIGGGHTS::ContactModels::ForceData;
+using LIGGGHTS::ContactModels::SurfacesCloseData;
+using LIGGGHTS::ContactModels::SurfacesIntersectData;
+
+// One validated core model per atom-type pair.
+class VoigtModelTable {
+public:
+    VoigtModelTable() : stride_(0) {}
+    ~VoigtModelTable() { clear(); }
+
+    // params[a * (ntypes + 1) + b] for types a, b in 1..ntypes; a refusal by
+    // the core ends the run with its message (which names the property).
+    void build(LAMMPS_NS::Error *error, const char *who, int ntypes, const std::vector<GbVoigtParams> &params);
+    const GbVoigtModel *at(int itype, int jtype) const { return models_[itype * stride_ + jtype]; }
+
+private:
+    VoigtModelTable(const VoigtModelTable &);
+    VoigtModelTable &operator=(const VoigtModelTable &);
+    void clear();
+
+    int stride_;
+    std::vector<GbVoigtModel *> models_;
+};
+
+class VoigtContactShare {
+public:
+    // Joins the share of ContactModel `owner`; `*first` tells whether the
+    // caller is the first voigt sub-model constructed for it.
+    static VoigtContactShare *attach(const void *owner, bool *first);
+    static void detach(const void *owner);
+
+    // Writes each type pair's parameters owned by the caller into the
+    // combined set, and rebuilds the combined models when they are used.
+    // Every sub-model has validated its own parameters by then.
+    template<class Fill>
+    void contribute(LAMMPS_NS::Error *error, int ntypes, Fill fill)
+    {
+        resize(ntypes);
+        for (int a = 1; a <= ntypes; a++)
+            for (int b = 1; b <= ntypes; b++)
+                fill(params_[a * stride_ + b], a, b);
+        rebuild(error);
+    }
+
+    // The whole contact in one core call: normal and tangential voigt, with
+    // the rolling history right after the tangential one when rolling is
+    // voigt too (the engine gives consecutive offsets to consecutive
+    // sub-models, and only cohesion registers between normal and tangential).
+    bool fused() const { return normal && tangential_offset >= 0; }
+    bool fusedRolling() const { return fused() && rolling_offset == tangential_offset + 3; }
+    const GbVoigtModel *fusedModel(int itype, int jtype) const { return table_.at(itype, jtype); }
+
+    GbContactFrame frame;
+    bool normal;               // model voigt present
+    int tangential_offset;     // history offset of tangential voigt, -1 if absent
+    int rolling_offset;        // history offset of rolling_friction voigt, -1 if absent
+
+private:
+    VoigtContactShare();
+    void resize(int ntypes);
+    void rebuild(LAMMPS_NS::Error *error);
+
+    int users_;
+    int stride_;
+    std::vector<GbVoigtParams> params_;
+    VoigtModelTable table_;
+};
+
+// The engine's description of a touching contact as the core's frame: a
+// pair as two spheres (centre of j at the origin, of i at x_i - x_j, the
+// engine's minimum-image difference), a wall contact as a sphere on the
+// plane through the contact point with the engine's normal, moving with the
+// wall velocity there.
+GbStatus contactFrame(const SurfacesIntersectData &d, GbContactFrame *frame);
+
+// Adds a force on i (and its opposite on j for a pair) and the torques.
+void addLoads(const SurfacesIntersectData &d, ForceData &i_forces, ForceData &j_forces, const double *force_i,
+              const double *torque_i, const double *torque_j);
+
+// Ends the run on this rank with the core's message.
+void voigtFailed(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const char *who);
+
+class VoigtNormal : public LIGGGHTS::ContactModels::NormalModelBase {
+public:
+    VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
+                LIGGGHTS::ContactModels::ContactModelBase *cmb);
+    ~VoigtNormal();
+
+    void registerSettings(::Settings &settings);
+    void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *) {}
+    void connectToProperties(::PropertyRegistry &registry);
+    double stressStrainExponent() { return 1.0; }
+    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    void surfacesClose(SurfacesCloseData &, ForceData &, ForceData &) {}
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+private:
+    void normalPart(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    void wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+
+    const void *owner_;
+    VoigtContactShare *share_;
+    VoigtModelTable models_;
+    double **k_n_, **k_t_, **gamma_n_, **gamma_t_;
+    bool no_attraction_;
+};
+
+// What tangential and rolling voigt have in common: three slots of the
+// core's contact state (forgotten when the contact ends), the contact frame
+// they compute or read, and their own validated models. Instantiated (in
+// voigt_contact.cpp) for TangentialModelBase and RollingModelBase.
+template<class EngineBase>
+class VoigtHistoryModel : public EngineBase {
+public:
+    VoigtHistoryModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
+                      LIGGGHTS::ContactModels::ContactModelBase *cmb, size_t firstSlot, const char *offsetName,
+                      int contactFlag);
+    ~VoigtHistoryModel();
+
+    void registerSettings(::Settings &) {}
+    void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *) {}
+    void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &);
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+protected:
+    // Marks the contact, fills share_->frame if this model computes it
+    // (`always`: also when another voigt model would have), and returns the
+    // three slots to advance: the stored ones in a real force step, else a
+    // copy in `scratch` (setup pass, per-contact output).
+    double *begin(const SurfacesIntersectData &sidata, bool always, double *scratch, GbStatus *status);
+
+    const void *owner_;
+    VoigtContactShare *share_;
+    bool computesFrame_;
+    int offset_;
+    const int contactFlag_;
+    VoigtModelTable models_;
+};
+
+class VoigtTangential : public VoigtHistoryModel<LIGGGHTS::ContactModels::TangentialModelBase> {
+public:
+    VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
+                    LIGGGHTS::ContactModels::ContactModelBase *cmb);
+
+    void connectToProperties(::PropertyRegistry &registry);
+    void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+
+private:
+    double **k_t_, **gamma_t_, **mu_;
+};
+
+class VoigtRolling : public VoigtHistoryModel<LIGGGHTS::ContactModels::RollingModelBase> {
+public:
+    VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
+                 LIGGGHTS::ContactModels::ContactModelBase *cmb);
+
+    void connectToProperties(::PropertyRegistry &registry);
+    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+
+private:
+    double **mu_r_, **k_r_, **gamma_r_, **eta_r_;
+};
+
+}
+}
+
+#endif
