@@ -7,6 +7,7 @@
 #include "input.h"
 
 extern "C" int granbond_liggghts_registered(void);
+extern "C" void granbond_liggghts_register_styles(void *lmp);
 
 int main(int argc, char **argv)
 {
@@ -16,6 +17,8 @@ int main(int argc, char **argv)
     if (granbond_liggghts_registered() <= 0)
         std::fprintf(stderr, "granbond: warning: no model combination registered\n");
     LAMMPS_NS::LAMMPS *lmp = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
+    // compute bond/counter, fix bond/breaklog: usable before pair_style too
+    granbond_liggghts_register_styles(lmp);
     lmp->input->file();
     delete lmp;
     MPI_Barrier(MPI_COMM_WORLD);

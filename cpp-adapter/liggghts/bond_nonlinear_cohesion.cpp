@@ -1,9 +1,14 @@
 #include "bond_nonlinear_cohesion.h"
 #include "core_bridge.h"
 
+#include "fix_property_atom.h"
+
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <string>
+#include <vector>
 
 using namespace LIGGGHTS::ContactModels;
 
@@ -27,6 +32,21 @@ void readAtom(const LAMMPS_NS::Atom *atom, int i, double *x, double *v, double *
     copy3(w, atom->omega[i]);
 }
 
+// Adapter-side history after the core's state: the loads of the latest
+// force pass, so `compute pair/gran/local ... history` (and `wall/gran/local`)
+// can dump them and the per-contact output pass reports the applied forces.
+// Stored so that the engine's sign flip gives the values seen from the other
+// atom: force_i flips; of the torques, T_i + T_j stays and T_i - T_j flips.
+const struct {
+    const char *name;
+    const char *flips;
+} kOutputSlots[] = {
+    {"bond_force_x", "1"},       {"bond_force_y", "1"},       {"bond_force_z", "1"},
+    {"bond_torque_sum_x", "0"},  {"bond_torque_sum_y", "0"},  {"bond_torque_sum_z", "0"},
+    {"bond_torque_diff_x", "1"}, {"bond_torque_diff_y", "1"}, {"bond_torque_diff_z", "1"},
+    {"bond_sigma", "0"},         {"bond_tau", "0"},
+};
+
 void setContactFlag(SurfacesCloseData &d, bool keep)
 {
     if (!d.contact_flags) return;   // walls have none
@@ -44,12 +64,143 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     parameters_(lmp),
     isWall_(cmb->is_wall()),
     stateLen_(granbond_state_len(cmb->is_wall() ? GB_STATE_KIND_WALL_BOND : GB_STATE_KIND_BOND)),
-    offset_(-1)
+    offset_(-1),
+    outputOffset_(-1),
+    clumpIds_(0),
+    checkedNatoms_(-1),
+    warnedCritical_(0.0)
 {
     checkCoreLayout(error);
     offset_ = registerStateSlots(hsetup, isWall_ ? GB_STATE_KIND_WALL_BOND : GB_STATE_KIND_BOND, error);
+    for (size_t k = 0; k < sizeof(kOutputSlots) / sizeof(kOutputSlots[0]); k++) {
+        const int o = hsetup->add_history_value(kOutputSlots[k].name, kOutputSlots[k].flips);
+        if (k == 0) outputOffset_ = o;
+    }
     // the name the reference publishes, so per-contact tools can find the slots
     cmb->add_history_offset("bondnonlinear_contactflag", offset_);
+    cmb->add_history_offset("bondnonlinear_output", outputOffset_);
+    tally_.wall = isWall_;
+    BondBook::of(lmp).add(&tally_);
+    registerBondStyles(lmp);
+}
+
+BondNonlinearCohesion::~BondNonlinearCohesion() { BondBook::of(lmp).remove(&tally_); }
+
+void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
+{
+    parameters_.connectToProperties(registry);
+    // `bonded yes` stores a clump id per atom under this name (the reference
+    // looked for "bondnonlinear_random_id", which nothing creates)
+    clumpIds_ = isWall_ ? 0
+                        : static_cast<LAMMPS_NS::FixPropertyAtom *>(modify->find_fix_property(
+                              "bond_random_id", "property/atom", "scalar", 0, 0, "cohesion bond/nonlinear", false));
+    checkTimestep();
+}
+
+void BondNonlinearCohesion::beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
+{
+    if (atom->natoms != checkedNatoms_) checkTimestep();
+}
+
+void BondNonlinearCohesion::checkTimestep()
+{
+    checkedNatoms_ = atom->natoms;
+    const int ntypes = atom->ntypes;
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> local(2 * (ntypes + 1), inf), least(2 * (ntypes + 1), inf);
+    for (int i = 0; i < atom->nlocal; i++) {
+        const int t = atom->type[i];
+        if (t < 1 || t > ntypes) continue;
+        local[2 * t] = std::min(local[2 * t], atom->radius[i]);
+        local[2 * t + 1] = std::min(local[2 * t + 1], atom->rmass[i]);
+    }
+    MPI_Allreduce(local.data(), least.data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_MIN, world);
+
+    double critical = inf, recommended = inf;
+    int ta = 0, tb = 0;
+    for (int a = 1; a <= ntypes; a++)
+        for (int b = a; b <= ntypes; b++) {
+            const GbBondModel *m = parameters_.model(a, b);
+            const double ra = least[2 * a], ma = least[2 * a + 1], rb = least[2 * b], mb = least[2 * b + 1];
+            if (!m || !std::isfinite(ra * ma * rb * mb)) continue;   // type not present
+            double c = inf, r = inf;
+            if (granbond_bond_critical_timestep(m, ra, rb, ma, mb, &c) != GB_STATUS_OK ||
+                granbond_bond_recommended_timestep(m, ra, rb, ma, mb, &r) != GB_STATUS_OK)
+                continue;
+            if (r < recommended) {
+                critical = c;
+                recommended = r;
+                ta = a;
+                tb = b;
+            }
+        }
+    const double dt = update->dt;
+    if (!(dt > recommended) || comm->me != 0) return;
+    if (warnedCritical_ == critical) return;   // said already
+    warnedCritical_ = critical;
+    char msg[700];
+    snprintf(msg, sizeof msg,
+             "cohesion bond/nonlinear%s: time step %g s %s the %s step %g s of the stiffest bond (atom types %d "
+             "and %d, smallest radius %g / %g m, lightest mass %g / %g kg; critical step %g s). Use "
+             "timestep <= %g s (the core's recommended step)",
+             isWall_ ? " (wall)" : "", dt, dt > critical ? "EXCEEDS" : "exceeds",
+             dt > critical ? "critical" : "recommended", dt > critical ? critical : recommended, ta, tb,
+             least[2 * ta], least[2 * tb], least[2 * ta + 1], least[2 * tb + 1], critical, recommended);
+    error->warning(FLERR, msg);
+}
+
+bool BondNonlinearCohesion::countsHere(const SurfacesCloseData &d) const
+{
+    // walls: only the particle's owner computes the contact; pairs: once
+    // per pair, even where the pair straddles two ranks
+    return isWall_ || d.j < atom->nlocal || atom->tag[d.i] < atom->tag[d.j];
+}
+
+void BondNonlinearCohesion::storeOutput(double *slots, const GbBondOutput &out) const
+{
+    copy3(slots, out.force_i);
+    for (int c = 0; c < 3; c++) {
+        slots[3 + c] = out.torque_i[c] + out.torque_j[c];
+        slots[6 + c] = out.torque_i[c] - out.torque_j[c];
+    }
+    slots[9] = out.sigma;
+    slots[10] = out.tau;
+}
+
+void BondNonlinearCohesion::loadOutput(const double *slots, GbBondOutput &out) const
+{
+    copy3(out.force_i, slots);
+    for (int c = 0; c < 3; c++) {
+        out.torque_i[c] = 0.5 * (slots[3 + c] + slots[6 + c]);
+        out.torque_j[c] = 0.5 * (slots[3 + c] - slots[6 + c]);
+    }
+    out.sigma = slots[9];
+    out.tau = slots[10];
+    out.status = GB_BOND_STATUS_INTACT;
+    out.break_mode = GB_BREAK_MODE_NONE;
+}
+
+void BondNonlinearCohesion::account(const SurfacesCloseData &d, const double *state, bool created,
+                                    const GbBondOutput &out, const double *bondCentre)
+{
+    if (!countsHere(d)) return;
+    if (created) tally_.created++;
+    if (state[0] == GB_BOND_STATUS_INTACT) tally_.intact++;
+    if (out.break_mode == GB_BREAK_MODE_NONE) return;
+    tally_.broken++;
+    BondBook &book = BondBook::of(lmp);
+    if (!book.logging()) return;
+    BreakEvent e;
+    e.step = static_cast<double>(update->ntimestep);
+    const double ti = static_cast<double>(atom->tag[d.i]);
+    const double tj = isWall_ ? 0.0 : static_cast<double>(atom->tag[d.j]);
+    e.tag_i = isWall_ ? ti : std::min(ti, tj);
+    e.tag_j = isWall_ ? 0.0 : std::max(ti, tj);
+    copy3(e.x, bondCentre);
+    e.mode = out.break_mode;
+    e.sigma = out.sigma;
+    e.tau = out.tau;
+    book.record(e);
 }
 
 void BondNonlinearCohesion::failed(const SurfacesCloseData &d, const char *call)
@@ -74,21 +225,43 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out)
         return false;
     }
     double *const history = d.contact_history + offset_;
-    // The engine asks for forces without advancing state too (setup pass,
-    // per-contact output): then the bond steps on a copy.
-    const bool advanceState = d.computeflag && d.shearupdate;
-    double scratch[GRANBOND_WALL_BOND_STATE_LEN];
-    double *state = history;
-    if (!advanceState) {
-        std::memcpy(scratch, history, stateLen_ * sizeof(double));
-        state = scratch;
+    double *const outputSlots = d.contact_history + outputOffset_;
+    // Passes that must not advance the state: the setup pass of a run
+    // (computeflag, no shearupdate) and the per-contact output pass
+    // (compute pair/gran/local, wall/gran/local). Both report what the last
+    // force pass applied, so a run continued (or restarted) starts from the
+    // same forces as an uninterrupted one.
+    if (!d.computeflag || !d.shearupdate) {
+        if (history[0] != GB_BOND_STATUS_INTACT) return false;
+        loadOutput(outputSlots, out);
+        if (d.computeflag) {
+            BondBook::of(lmp).beginPassIfNew(tally_, update);
+            if (countsHere(d)) tally_.intact++;
+        }
+        return true;
     }
-    return isWall_ ? advanceWall(d, model, state, advanceState, out)
-                   : advancePair(d, model, state, advanceState, out);
+    BondBook::of(lmp).beginPassIfNew(tally_, update);
+    double *const state = history;
+    std::memset(&out, 0, sizeof out);
+    bool created = false;
+    const bool intact = isWall_ ? advanceWall(d, model, state, true, out, created)
+                                : advancePair(d, model, state, true, out, created);
+    if (intact) storeOutput(outputSlots, out);
+    double centre[3];
+    const double *xi = atom->x[d.i];
+    if (isWall_) {
+        for (int c = 0; c < 3; c++) centre[c] = xi[c] - d.delta[c];
+    } else {
+        const double *xj = atom->x[d.j];
+        const double w = d.radj / (d.radi + d.radj);
+        for (int c = 0; c < 3; c++) centre[c] = xj[c] + w * (xi[c] - xj[c]);
+    }
+    account(d, state, created, out, centre);
+    return intact;
 }
 
 bool BondNonlinearCohesion::advancePair(SurfacesCloseData &d, const GbBondModel *model, double *state,
-                                        bool advanceState, GbBondOutput &out)
+                                        bool advanceState, GbBondOutput &out, bool &created)
 {
     // atom->omega, not d.omega_i/j: in surfacesClose those are left over
     // from the previous overlapping pair
@@ -99,9 +272,18 @@ bool BondNonlinearCohesion::advancePair(SurfacesCloseData &d, const GbBondModel 
     k.radius_j = d.radj;
 
     if (advanceState) {
-        int32_t created = 0;
-        if (granbond_bond_try_create(model, &k, update->ntimestep, state, &created) != GB_STATUS_OK)
+        int32_t made = 0;
+        if (granbond_bond_try_create(model, &k, update->ntimestep, state, &made) != GB_STATUS_OK)
             failed(d, "granbond_bond_try_create");
+        // spheres of one `bonded yes` clump, in the first force pass after
+        // their insertion (the id is the insertion step plus a fraction)
+        if (!made && clumpIds_ && state[0] == GB_BOND_STATUS_UNBONDED) {
+            const double *ids = clumpIds_->vector_atom;
+            if (ids[d.i] >= 0.0 && ids[d.i] == ids[d.j] && static_cast<double>(update->ntimestep) < ids[d.i] &&
+                granbond_bond_create_now(model, &k, state, &made) != GB_STATUS_OK)
+                failed(d, "granbond_bond_create_now");
+        }
+        created = made != 0;
     }
     if (state[0] != GB_BOND_STATUS_INTACT) return false;
     if (granbond_bond_compute(model, &k, update->dt, state, &out) != GB_STATUS_OK)
@@ -110,7 +292,7 @@ bool BondNonlinearCohesion::advancePair(SurfacesCloseData &d, const GbBondModel 
 }
 
 bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state,
-                                        bool advanceState, GbBondOutput &out)
+                                        bool advanceState, GbBondOutput &out, bool &created)
 {
     GbSphereKinematics s;
     readAtom(atom, d.i, s.x, s.v, s.w);
@@ -121,10 +303,11 @@ bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel 
     if (advanceState) {
         // delta runs from the wall's contact point to the sphere centre
         const double contactPoint[3] = {s.x[0] - d.delta[0], s.x[1] - d.delta[1], s.x[2] - d.delta[2]};
-        int32_t created = 0;
-        if (granbond_wall_bond_try_create(model, &s, contactPoint, update->ntimestep, state, &created) !=
+        int32_t made = 0;
+        if (granbond_wall_bond_try_create(model, &s, contactPoint, update->ntimestep, state, &made) !=
             GB_STATUS_OK)
             failed(d, "granbond_wall_bond_try_create");
+        created = made != 0;
     }
     if (state[0] != GB_BOND_STATUS_INTACT) return false;
     if (granbond_wall_bond_compute(model, &s, wallVelocity, update->dt, state, &out) != GB_STATUS_OK)

@@ -7,6 +7,7 @@
 #include "liggghts_engine.h"
 #include "pair_gran_base.h"
 #include "fix_wall_gran_base.h"
+#include "combination_check.h"
 
 namespace granbond {
 namespace liggghts {
@@ -27,6 +28,7 @@ void registerCombination()
     typedef ContactModels::ContactModel<Style> Model;
     PairStyles::Factory::instance().addStyle("gran", Style::HASHCODE, &makePair<PairStyles::Granular<Model> >);
     Walls::Factory::instance().addStyle("gran", Style::HASHCODE, &makeWall<Walls::Granular<Model> >);
+    noteRegisteredCombination(Style::HASHCODE);
 }
 
 }

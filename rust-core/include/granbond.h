@@ -577,6 +577,22 @@ enum GbStatus granbond_bond_critical_timestep(const struct GbBondModel *model,
                                               double *out);
 
 /**
+ * Recommended time step of a bond of this type between spheres of the
+ * given radii and masses: the core's safety fraction (0.2, measured in
+ * docs/speed-accuracy.md) of `granbond_bond_critical_timestep`. Engines warn
+ * above it.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_recommended_timestep(const struct GbBondModel *model,
+                                                 double radius_i,
+                                                 double radius_j,
+                                                 double mass_i,
+                                                 double mass_j,
+                                                 double *out);
+
+/**
  * Fills `params` with Table 1 of the seed.
  *
  * # Safety

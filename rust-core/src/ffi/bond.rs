@@ -323,6 +323,31 @@ pub unsafe extern "C" fn granbond_bond_critical_timestep(
     })
 }
 
+/// Recommended time step of a bond of this type between spheres of the
+/// given radii and masses: the core's safety fraction (0.2, measured in
+/// docs/speed-accuracy.md) of `granbond_bond_critical_timestep`. Engines warn
+/// above it.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_recommended_timestep(
+    model: *const BondModel,
+    radius_i: f64,
+    radius_j: f64,
+    mass_i: f64,
+    mass_j: f64,
+    out: *mut f64,
+) -> Status {
+    call("granbond_bond_recommended_timestep", || {
+        let m = reference(model, "model")?;
+        let o = reference_mut(out, "out")?;
+        check_bodies(radius_i, radius_j, mass_i, mass_j)?;
+        *o = m.recommended_timestep(radius_i, radius_j, mass_i, mass_j);
+        Ok(())
+    })
+}
+
 pub(crate) fn check_bodies(radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> Result<(), Failure> {
     for (name, x) in [
         ("radius_i", radius_i),

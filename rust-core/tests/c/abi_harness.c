@@ -1322,6 +1322,23 @@ static int test_bond_limits(void)
     EXPECT_NULL_ARG(granbond_bond_critical_timestep(m, R_I, R_J, mass_i, mass_j, NULL),
                     "granbond_bond_critical_timestep", "out");
 
+    {
+        double recommended = 0.0;
+        EXPECT_OK(granbond_bond_critical_timestep(m, R_I, R_J, mass_i, mass_j, &dt),
+                  "granbond_bond_critical_timestep");
+        EXPECT_OK(granbond_bond_recommended_timestep(m, R_I, R_J, mass_i, mass_j, &recommended),
+                  "granbond_bond_recommended_timestep");
+        CHECK(recommended > 0.0 && recommended < dt,
+              say("recommended step %.6g s is below the critical step %.6g s", recommended, dt));
+        EXPECT(granbond_bond_recommended_timestep(m, R_I, R_J, 0.0, mass_j, &recommended),
+               GB_STATUS_INVALID_ARGUMENT, "granbond_bond_recommended_timestep, mass_i = 0");
+        EXPECT_MESSAGE("mass_i");
+        EXPECT_NULL_ARG(granbond_bond_recommended_timestep(NULL, R_I, R_J, mass_i, mass_j, &recommended),
+                        "granbond_bond_recommended_timestep", "model");
+        EXPECT_NULL_ARG(granbond_bond_recommended_timestep(m, R_I, R_J, mass_i, mass_j, NULL),
+                        "granbond_bond_recommended_timestep", "out");
+    }
+
     granbond_bond_model_free(unbreakable);
     granbond_bond_model_free(stress);
     granbond_bond_model_free(m);

@@ -1,0 +1,249 @@
+#include "bond_book.h"
+#include "core_bridge.h"
+#include "combination_check.h"
+
+#include "compute.h"
+#include "fix.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+
+namespace granbond {
+namespace liggghts {
+
+BondBook &BondBook::of(LAMMPS_NS::LAMMPS *lmp)
+{
+    static std::map<LAMMPS_NS::LAMMPS *, BondBook> books;
+    return books[lmp];
+}
+
+void BondBook::remove(BondTally *t)
+{
+    tallies_.erase(std::remove(tallies_.begin(), tallies_.end(), t), tallies_.end());
+}
+
+void BondBook::beginPassIfNew(BondTally &t, LAMMPS_NS::Update *update)
+{
+    const long long pass = 2 * static_cast<long long>(update->ntimestep) + (update->setupflag ? 1 : 0);
+    if (pass == t.pass) return;
+    t.pass = pass;
+    t.passStep = update->ntimestep;
+    t.intact = 0;
+}
+
+void BondBook::localTotals(double out[6], bigint step) const
+{
+    for (int k = 0; k < 6; k++) out[k] = 0.0;
+    for (const BondTally *t : tallies_) {
+        double *o = out + (t->wall ? 3 : 0);
+        o[0] += static_cast<double>(t->created);
+        o[1] += static_cast<double>(t->broken);
+        if (t->passStep == step) o[2] += static_cast<double>(t->intact);
+    }
+}
+
+namespace {
+
+using LAMMPS_NS::LAMMPS;
+
+// ---------------------------------------------------------------- compute
+// compute ID group bond/counter [cumulative yes|no]
+//
+// Global vector of 6: pair bonds created, broken, intact; wall bonds
+// created, broken, intact. As in LIGGGHTS-INL, created/broken count the
+// events since this compute's previous output (`cumulative yes`: since the
+// start of the run series); intact is the number of intact bonds at the step
+// of the output. Summed over all ranks.
+class ComputeBondCounter : public LAMMPS_NS::Compute {
+public:
+    ComputeBondCounter(LAMMPS *lmp, int &iarg, int narg, char **arg) :
+        Compute(lmp, iarg, narg, arg), cumulative_(false), lastStep_(-1)
+    {
+        while (iarg < narg) {
+            if (strcmp(arg[iarg], "cumulative") == 0 && iarg + 1 < narg) {
+                if (strcmp(arg[iarg + 1], "yes") == 0)
+                    cumulative_ = true;
+                else if (strcmp(arg[iarg + 1], "no") == 0)
+                    cumulative_ = false;
+                else
+                    error->all(FLERR, "compute bond/counter: cumulative takes yes or no");
+                iarg += 2;
+            } else {
+                endRun(error, FLERR, std::string("compute bond/counter: unknown keyword '") + arg[iarg] +
+                                         "' (the only one is: cumulative yes|no)");
+            }
+        }
+        vector_flag = 1;
+        size_vector = 6;
+        extvector = 1;
+        vector = values_;
+        for (int k = 0; k < 6; k++) values_[k] = reported_[k] = 0.0;
+    }
+
+    void init() {}
+
+    void compute_vector()
+    {
+        invoked_vector = update->ntimestep;
+        double local[6], total[6];
+        BondBook::of(lmp).localTotals(local, update->ntimestep);
+        MPI_Allreduce(local, total, 6, MPI_DOUBLE, MPI_SUM, world);
+        for (int k = 0; k < 6; k++) values_[k] = total[k];
+        if (!cumulative_) {
+            for (int k : {0, 1, 3, 4}) values_[k] = total[k] - reported_[k];
+            if (update->ntimestep != lastStep_)
+                for (int k = 0; k < 6; k++) reported_[k] = total[k];
+            else
+                for (int k : {0, 1, 3, 4}) values_[k] = lastValues_[k];
+        }
+        lastStep_ = update->ntimestep;
+        for (int k = 0; k < 6; k++) lastValues_[k] = values_[k];
+    }
+
+private:
+    bool cumulative_;
+    bigint lastStep_;
+    double values_[6], reported_[6], lastValues_[6];
+};
+
+// ------------------------------------------------------------------- fix
+// fix ID group bond/breaklog FILE [every N]
+//
+// One line per broken bond: step, atom ids (0 for a wall), bond position,
+// mode (distance / tension / compression / shear), sigma and tau of the
+// undamped loads in the last intact step. Rank 0 writes, every N steps (default
+// 100) and at the end of each run, sorted by step and ids so the file does not
+// depend on the number of ranks.
+class FixBondBreakLog : public LAMMPS_NS::Fix {
+public:
+    FixBondBreakLog(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), file_(0)
+    {
+        if (narg < 4) error->all(FLERR, "Illegal fix bond/breaklog command: fix ID group bond/breaklog FILE [every N]");
+        nevery = 100;
+        for (int iarg = 4; iarg < narg; iarg += 2) {
+            if (strcmp(arg[iarg], "every") == 0 && iarg + 1 < narg) {
+                nevery = atoi(arg[iarg + 1]);
+                if (nevery < 1) error->all(FLERR, "fix bond/breaklog: every must be >= 1");
+            } else {
+                endRun(error, FLERR, std::string("fix bond/breaklog: unknown keyword '") + arg[iarg] +
+                                         "' (the only one is: every N)");
+            }
+        }
+        if (comm->me == 0) {
+            file_ = fopen(arg[3], "w");
+            if (!file_) endRunOnThisRank(lmp, FLERR, std::string("fix bond/breaklog: cannot open ") + arg[3]);
+            fprintf(file_, "# step id_i id_j x y z mode sigma tau   (id_j 0: a wall bond)\n");
+            fflush(file_);
+        }
+        BondBook::of(lmp).addLogUser();
+    }
+
+    ~FixBondBreakLog()
+    {
+        BondBook::of(lmp).removeLogUser();
+        if (file_) fclose(file_);
+    }
+
+    int setmask() { return LAMMPS_NS::FixConst::END_OF_STEP | LAMMPS_NS::FixConst::POST_RUN; }
+    void end_of_step() { flush(); }
+    void post_run() { flush(); }
+
+private:
+    static const char *modeName(double mode)
+    {
+        switch (static_cast<int>(mode)) {
+        case GB_BREAK_MODE_DISTANCE: return "distance";
+        case GB_BREAK_MODE_TENSION: return "tension";
+        case GB_BREAK_MODE_COMPRESSION: return "compression";
+        case GB_BREAK_MODE_SHEAR: return "shear";
+        default: return "unknown";
+        }
+    }
+
+    void flush()
+    {
+        std::vector<BreakEvent> &mine = BondBook::of(lmp).events();
+        const int fields = sizeof(BreakEvent) / sizeof(double);
+        int count = static_cast<int>(mine.size()) * fields;
+        std::vector<int> counts(comm->nprocs), offsets(comm->nprocs);
+        MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+        int total = 0;
+        if (comm->me == 0)
+            for (int p = 0; p < comm->nprocs; p++) {
+                offsets[p] = total;
+                total += counts[p];
+            }
+        std::vector<BreakEvent> all(comm->me == 0 ? total / fields : 0);
+        MPI_Gatherv(reinterpret_cast<double *>(mine.data()), count, MPI_DOUBLE,
+                    reinterpret_cast<double *>(all.data()), counts.data(), offsets.data(), MPI_DOUBLE, 0, world);
+        mine.clear();
+        if (comm->me != 0 || all.empty()) return;
+        std::sort(all.begin(), all.end(), [](const BreakEvent &a, const BreakEvent &b) {
+            if (a.step != b.step) return a.step < b.step;
+            if (a.tag_i != b.tag_i) return a.tag_i < b.tag_i;
+            return a.tag_j < b.tag_j;
+        });
+        for (const BreakEvent &e : all)
+            fprintf(file_, "%.0f %.0f %.0f %.10g %.10g %.10g %s %.6g %.6g\n", e.step, e.tag_i, e.tag_j, e.x[0],
+                    e.x[1], e.x[2], modeName(e.mode), e.sigma, e.tau);
+        fflush(file_);
+    }
+
+    FILE *file_;
+};
+
+LAMMPS_NS::Compute *createCounter(LAMMPS *lmp, int iarg, int narg, char **arg)
+{
+    return new ComputeBondCounter(lmp, iarg, narg, arg);
+}
+
+LAMMPS_NS::Fix *createBreakLog(LAMMPS *lmp, int narg, char **arg) { return new FixBondBreakLog(lmp, narg, arg); }
+
+// Modify keeps its style tables private; this is the standard-conforming way
+// to name a private member (explicit instantiation may take its address).
+typedef LAMMPS_NS::Compute *(*ComputeCreator)(LAMMPS *, int, int, char **);
+typedef LAMMPS_NS::Fix *(*FixCreator)(LAMMPS *, int, char **);
+typedef std::map<std::string, ComputeCreator> *LAMMPS_NS::Modify::*ComputeMapMember;
+typedef std::map<std::string, FixCreator> *LAMMPS_NS::Modify::*FixMapMember;
+
+template<typename Tag, typename Tag::type Member>
+struct Expose {
+    friend typename Tag::type member(Tag) { return Member; }
+};
+struct ComputeMapTag {
+    typedef ComputeMapMember type;
+    friend type member(ComputeMapTag);
+};
+struct FixMapTag {
+    typedef FixMapMember type;
+    friend type member(FixMapTag);
+};
+template struct Expose<ComputeMapTag, &LAMMPS_NS::Modify::compute_map>;
+template struct Expose<FixMapTag, &LAMMPS_NS::Modify::fix_map>;
+
+}
+
+void registerBondStyles(LAMMPS_NS::LAMMPS *lmp)
+{
+    if (!lmp || !lmp->modify) return;
+    std::map<std::string, ComputeCreator> *computes = lmp->modify->*member(ComputeMapTag());
+    std::map<std::string, FixCreator> *fixes = lmp->modify->*member(FixMapTag());
+    if (computes) (*computes)["bond/counter"] = &createCounter;
+    if (fixes) (*fixes)["bond/breaklog"] = &createBreakLog;
+    // each LAMMPS constructor re-registers the engine's "gran" selector
+    installCombinationCheck();
+}
+
+}
+}
+
+// Exported (adapter.map): the launcher calls it right after constructing
+// LAMMPS, so the styles and the combination check are there before the deck
+// runs (with LD_PRELOAD they arrive with the first bond model).
+extern "C" __attribute__((visibility("default"))) void granbond_liggghts_register_styles(void *lmp)
+{
+    granbond::liggghts::registerBondStyles(static_cast<LAMMPS_NS::LAMMPS *>(lmp));
+}

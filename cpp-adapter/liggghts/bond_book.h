@@ -1,0 +1,75 @@
+// Bond bookkeeping shared by the bond models of one LAMMPS instance and the
+// deck-level tools that report it (`compute bond/counter`,
+// `fix bond/breaklog`): event counters, the intact-bond count of the latest
+// force pass, and the break events not yet written.
+//
+// Counting rule under MPI: a pair whose atoms sit on two ranks is computed
+// on both (half list, newton off); each event and each intact bond is
+// counted only where the pair is seen from its lower-tag atom or where both
+// atoms are owned (`countsHere`). Particle-wall bonds are computed only on
+// the rank that owns the particle. Values are per rank; the tools sum them.
+#ifndef GRANBOND_LIGGGHTS_BOND_BOOK_H
+#define GRANBOND_LIGGGHTS_BOND_BOOK_H
+
+#include "liggghts_engine.h"
+
+#include <vector>
+
+namespace granbond {
+namespace liggghts {
+
+struct BreakEvent {
+    double step;      // time step (as a double: travels with the rest)
+    double tag_i;     // lower atom id of a pair, the particle for a wall bond
+    double tag_j;     // other atom id; 0 for a wall
+    double x[3];      // bond centre (pairs: the point dividing the centres by the radii;
+                      // walls: the wall point the particle was bonded to)
+    double mode;      // GbBreakMode
+    double sigma, tau;
+};
+
+// Counters of one bond model instance (the pair style's, or one wall fix's).
+struct BondTally {
+    bool wall = false;
+    long long created = 0;     // events on this rank since the start of the run series
+    long long broken = 0;
+    long long intact = 0;      // intact bonds seen in the force pass `pass`
+    long long pass = -1;       // 2*ntimestep + setupflag of that pass
+    bigint passStep = -1;
+};
+
+class BondBook {
+public:
+    static BondBook &of(LAMMPS_NS::LAMMPS *lmp);
+
+    void add(BondTally *t) { tallies_.push_back(t); }
+    void remove(BondTally *t);
+
+    // Starts counting intact bonds of `t` for the current pass if it is a new one.
+    void beginPassIfNew(BondTally &t, LAMMPS_NS::Update *update);
+
+    // Sums over this rank's models: [pair created, broken, intact, wall created, broken, intact].
+    // Intact counts only of models whose latest pass is the current step.
+    void localTotals(double out[6], bigint step) const;
+
+    bool logging() const { return logUsers_ > 0; }
+    void addLogUser() { logUsers_++; }
+    void removeLogUser() { logUsers_--; }
+    void record(const BreakEvent &e) { events_.push_back(e); }
+    std::vector<BreakEvent> &events() { return events_; }
+
+private:
+    std::vector<BondTally *> tallies_;
+    std::vector<BreakEvent> events_;
+    int logUsers_ = 0;
+};
+
+// Adds `compute bond/counter` and `fix bond/breaklog` to this instance's
+// style tables (idempotent). Called when a bond model is constructed, and by
+// the launcher right after LAMMPS is constructed.
+void registerBondStyles(LAMMPS_NS::LAMMPS *lmp);
+
+}
+}
+
+#endif
