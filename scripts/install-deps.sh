@@ -7,9 +7,13 @@ if ! command -v cargo >/dev/null 2>&1; then
     echo "install-deps: cargo not found; install Rust (https://rustup.rs) first" >&2
     exit 1
 fi
-# Debian packages: compilers, CMake, and the stock LIGGGHTS 3.8 (engine,
-# headers, MPI) that the adapter in cpp-adapter/liggghts is built against.
+# Debian packages: compilers, CMake, the stock LIGGGHTS 3.8 (engine,
+# headers, MPI) that the adapter in cpp-adapter/liggghts is built against,
+# and the stock LAMMPS (29 Sep 2021; `lmp`, liblammps-dev) for
+# cpp-adapter/lammps (dpkg-dev: `apt-get source` fetches the headers
+# liblammps-dev lacks, see cmake/fetch_lammps_headers.sh).
 apt_packages="gcc g++ make cmake python3 liggghts libliggghts-dev libopenmpi-dev openmpi-bin"
+apt_packages="$apt_packages lammps liblammps-dev dpkg-dev xz-utils"
 missing=""
 for p in $apt_packages; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

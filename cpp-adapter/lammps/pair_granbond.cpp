@@ -1,0 +1,683 @@
+#include "pair_granbond.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_neigh_history.h"
+#include "force.h"
+#include "lammpsplugin.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "update.h"
+#include "utils.h"
+#include "version.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+
+using namespace LAMMPS_NS;
+
+namespace granbond {
+namespace lammps {
+
+namespace {
+
+const char *const kFixDummy = "NEIGH_HISTORY_GRANBOND_DUMMY";
+const char *const kFix = "NEIGH_HISTORY_GRANBOND";
+
+// Deck keyword -> field of GbBondParams. The keywords are the core's
+// (granbond_bond_parameter_name); checkBondKeywords() verifies the two agree.
+struct DoubleField {
+    const char *keyword;
+    double GbBondParams::*field;
+};
+struct SwitchField {
+    const char *keyword;
+    int32_t GbBondParams::*field;
+};
+
+const DoubleField kDoubles[] = {
+    {"lambda", &GbBondParams::lambda},
+    {"k_fn1", &GbBondParams::k_fn1},
+    {"ku_fn1", &GbBondParams::ku_fn1},
+    {"kc_fn1", &GbBondParams::kc_fn1},
+    {"k_fn2", &GbBondParams::k_fn2},
+    {"ku_fn2", &GbBondParams::ku_fn2},
+    {"kc_fn2", &GbBondParams::kc_fn2},
+    {"k_ft", &GbBondParams::k_ft},
+    {"k_tn", &GbBondParams::k_tn},
+    {"ku_tn", &GbBondParams::ku_tn},
+    {"kc_tn", &GbBondParams::kc_tn},
+    {"k_tt", &GbBondParams::k_tt},
+    {"ku_tt", &GbBondParams::ku_tt},
+    {"kc_tt", &GbBondParams::kc_tt},
+    {"eta_fn", &GbBondParams::eta_fn},
+    {"eta_ft", &GbBondParams::eta_ft},
+    {"eta_tn", &GbBondParams::eta_tn},
+    {"eta_tt", &GbBondParams::eta_tt},
+    {"max_distance", &GbBondParams::max_distance},
+    {"max_sigma", &GbBondParams::max_sigma},
+    {"max_tau", &GbBondParams::max_tau},
+    {"tension_compression_ratio", &GbBondParams::tension_compression_ratio},
+    {"create_distance", &GbBondParams::create_distance},
+    {"smooth_velocity", &GbBondParams::smooth_velocity},
+    {"smooth_angular_velocity", &GbBondParams::smooth_angular_velocity},
+    {"compression_linear_below", &GbBondParams::compression_linear_below},
+};
+const SwitchField kSwitches[] = {
+    {"stress_break", &GbBondParams::stress_break},
+    {"use_ratio", &GbBondParams::use_ratio},
+    {"create_always", &GbBondParams::create_always},
+    {"history_reset", &GbBondParams::history_reset},
+    {"damping", &GbBondParams::damping},
+    {"damping_smooth", &GbBondParams::damping_smooth},
+    {"smooth_damping", &GbBondParams::damping_smooth},   // the spelling
+    {"tension", &GbBondParams::tension},
+    {"compression", &GbBondParams::compression},
+    {"shear", &GbBondParams::shear},
+    {"twist", &GbBondParams::twist},
+    {"bend", &GbBondParams::bend},
+};
+
+const DoubleField *findDouble(const std::string &kw)
+{
+    for (const DoubleField &f : kDoubles)
+        if (kw == f.keyword) return &f;
+    return nullptr;
+}
+
+const SwitchField *findSwitch(const std::string &kw)
+{
+    for (const SwitchField &f : kSwitches)
+        if (kw == f.keyword) return &f;
+    return nullptr;
+}
+
+std::string knownBondKeywords()
+{
+    std::string s;
+    for (const DoubleField &f : kDoubles) s += std::string(f.keyword) + " ";
+    s += "create_step break history_reset smooth_damping tension compression shear twist bend";
+    return s;
+}
+
+// Every keyword of the core's parameter table must be settable from a deck.
+void checkBondKeywords(Error *error)
+{
+    const size_t n = granbond_bond_parameter_count();
+    for (size_t id = 0; id < n; id++) {
+        const char *keyword = nullptr, *liggghtsName = nullptr;
+        if (granbond_bond_parameter_name(id, &keyword, &liggghtsName) != GB_STATUS_OK || !keyword)
+            error->all(FLERR, "pair granbond: granbond_bond_parameter_name failed");
+        const std::string kw(keyword);
+        if (!findDouble(kw) && !findSwitch(kw) && kw != "create_step")
+            error->all(FLERR, "pair granbond: the core's bond parameter '" + kw +
+                                  "' has no deck keyword in this adapter (rebuild the adapter)");
+    }
+}
+
+void copy3(double *to, const double *from)
+{
+    to[0] = from[0];
+    to[1] = from[1];
+    to[2] = from[2];
+}
+
+}
+
+PairGranbond::PairGranbond(LAMMPS *lmp) :
+    Pair(lmp),
+    contactLen_(granbond_state_len(GB_STATE_KIND_CONTACT)),
+    bondLen_(granbond_state_len(GB_STATE_KIND_BOND)),
+    sizeHistory_(0),
+    anyBond_(false),
+    fixHistory_(nullptr)
+{
+    single_enable = 0;
+    no_virial_fdotr_compute = 1;
+    centroidstressflag = CENTROID_NOTAVAIL;
+    restartinfo = 1;
+    // history is kept beyond contact (bonds) and transferred by us
+    beyond_contact = 1;
+    nondefault_history_transfer = 1;
+
+    const GbLayout expected = granbond_header_layout();
+    if (granbond_check_layout(&expected) != GB_STATUS_OK)
+        error->all(FLERR, std::string("pair granbond: the adapter was built against another granbond.h "
+                                      "than the core it links: ") +
+                              granbond_last_error_message());
+
+    // placeholder, replaced by fix neigh/history in init_style(), so the
+    // fix keeps the place of the pair_style command in the fix list
+    modify->add_fix(std::string(kFixDummy) + " all DUMMY");
+}
+
+PairGranbond::~PairGranbond()
+{
+    if (!fixHistory_)
+        modify->delete_fix(kFixDummy);
+    else
+        modify->delete_fix(kFix);
+    freeModels();
+    if (allocated) {
+        memory->destroy(setflag);
+        memory->destroy(cutsq);
+    }
+}
+
+size_t PairGranbond::at(int i, int j) const
+{
+    return static_cast<size_t>(i) * (atom->ntypes + 1) + j;
+}
+
+void PairGranbond::freeModels()
+{
+    for (GbVoigtModel *m : voigt_) granbond_voigt_model_free(m);
+    for (GbBondModel *m : bond_) granbond_bond_model_free(m);
+    std::fill(voigt_.begin(), voigt_.end(), nullptr);
+    std::fill(bond_.begin(), bond_.end(), nullptr);
+}
+
+void PairGranbond::allocate()
+{
+    allocated = 1;
+    const int n = atom->ntypes;
+    memory->create(setflag, n + 1, n + 1, "pair:setflag");
+    for (int i = 0; i <= n; i++)
+        for (int j = 0; j <= n; j++) setflag[i][j] = 0;
+    memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+    const size_t m = static_cast<size_t>(n + 1) * (n + 1);
+    pairs_.assign(m, TypePair());
+    voigt_.assign(m, nullptr);
+    bond_.assign(m, nullptr);
+}
+
+void PairGranbond::settings(int narg, char **arg)
+{
+    if (narg != 0)
+        error->all(FLERR, std::string("pair_style granbond takes no arguments (got '") + arg[0] +
+                              "'); the models are set per type pair with pair_coeff");
+}
+
+// ------------------------------------------------------------ pair_coeff
+
+namespace {
+
+class Args {
+public:
+    Args(int narg, char **arg, Error *error) : narg_(narg), arg_(arg), error_(error), at_(2) {}
+    bool done() const { return at_ >= narg_; }
+    std::string peek() const { return done() ? std::string() : std::string(arg_[at_]); }
+    std::string word(const std::string &what)
+    {
+        if (done()) fail("missing " + what);
+        return arg_[at_++];
+    }
+    double number(const std::string &what)
+    {
+        const std::string s = word(what);
+        errno = 0;
+        char *end = nullptr;
+        const double v = std::strtod(s.c_str(), &end);
+        if (end == s.c_str() || *end != '\0' || errno == ERANGE)
+            fail(what + " expects a number, got '" + s + "'");
+        return v;
+    }
+    int64_t integer(const std::string &what)
+    {
+        const std::string s = word(what);
+        errno = 0;
+        char *end = nullptr;
+        const long long v = std::strtoll(s.c_str(), &end, 10);
+        if (end == s.c_str() || *end != '\0' || errno == ERANGE)
+            fail(what + " expects an integer, got '" + s + "'");
+        return v;
+    }
+    int32_t onOff(const std::string &what)
+    {
+        const std::string s = word(what);
+        if (s == "yes" || s == "on") return 1;
+        if (s == "no" || s == "off") return 0;
+        fail(what + " expects yes|no (or on|off), got '" + s + "'");
+    }
+    [[noreturn]] void fail(const std::string &what)
+    {
+        error_->all(FLERR, "pair_coeff granbond: " + what);
+        std::abort();   // not reached
+    }
+
+private:
+    int narg_;
+    char **arg_;
+    Error *error_;
+    int at_;
+};
+
+void parseBond(Args &a, GbBondParams &p)
+{
+    while (!a.done()) {
+        const std::string kw = a.word("bond/nonlinear keyword");
+        const std::string what = "bond/nonlinear " + kw;
+        if (kw == "break") {
+            const std::string mode = a.word("break mode (distance|stress)");
+            if (mode == "distance") {
+                p.stress_break = 0;
+                p.max_distance = a.number("break distance <rmax>");
+            } else if (mode == "stress") {
+                p.stress_break = 1;
+                p.max_sigma = a.number("break stress <sigma_max>");
+                p.max_tau = a.number("break stress <tau_max>");
+                if (a.peek() == "ratio") {
+                    a.word("ratio");
+                    p.use_ratio = 1;
+                    p.tension_compression_ratio = a.number("break stress ratio <gamma>");
+                }
+            } else {
+                a.fail("bond/nonlinear break expects distance or stress, got '" + mode + "'");
+            }
+        } else if (kw == "create_step") {
+            p.create_step = a.integer(what);
+            p.create_always = 0;
+        } else if (const DoubleField *f = findDouble(kw)) {
+            p.*(f->field) = a.number(what);
+        } else if (const SwitchField *s = findSwitch(kw)) {
+            p.*(s->field) = a.onOff(what);
+        } else {
+            a.fail("unknown bond/nonlinear keyword '" + kw + "' (known: " + knownBondKeywords() + ")");
+        }
+    }
+}
+
+}
+
+void PairGranbond::coeff(int narg, char **arg)
+{
+    if (!allocated) allocate();
+    if (narg < 3) error->all(FLERR, "pair_coeff granbond: expected I J voigt <kn> <gamman> <kt> <gammat> <mu> ...");
+    int ilo, ihi, jlo, jhi;
+    utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+    utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+    Args a(narg, arg, error);
+    TypePair tp;
+    std::memset(&tp, 0, sizeof tp);
+    granbond_voigt_params_default(&tp.voigt);
+    granbond_bond_params_default(&tp.bond);
+    tp.hasBond = 0;
+
+    const std::string model = a.word("model (voigt)");
+    if (model != "voigt") a.fail("unknown model '" + model + "' (expected voigt)");
+    tp.voigt.k_n = a.number("voigt <kn>");
+    tp.voigt.gamma_n = a.number("voigt <gamman>");
+    tp.voigt.k_t = a.number("voigt <kt>");
+    tp.voigt.gamma_t = a.number("voigt <gammat>");
+    tp.voigt.mu = a.number("voigt <mu>");
+    tp.voigt.rolling = 0;
+    while (!a.done()) {
+        const std::string kw = a.word("keyword");
+        if (kw == "rolling") {
+            tp.voigt.rolling = 1;
+            tp.voigt.k_r = a.number("rolling <kr>");
+            tp.voigt.gamma_r = a.number("rolling <gammar>");
+            tp.voigt.mu_r = a.number("rolling <mur>");
+            tp.voigt.eta_r = a.number("rolling <etar>");
+        } else if (kw == "bond/nonlinear") {
+            checkBondKeywords(error);
+            tp.hasBond = 1;
+            parseBond(a, tp.bond);
+        } else {
+            a.fail("unknown keyword '" + kw + "' (expected rolling or bond/nonlinear)");
+        }
+    }
+
+    int count = 0;
+    for (int ti = ilo; ti <= ihi; ti++)
+        for (int tj = jlo; tj <= jhi; tj++) {
+            const int i = std::min(ti, tj), j = std::max(ti, tj);
+            pairs_[at(i, j)] = tp;
+            pairs_[at(j, i)] = tp;
+            buildModel(i, j);
+            setflag[i][j] = setflag[j][i] = 1;
+            count++;
+        }
+    if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+// Builds the core's models of types (i, j), i <= j, from pairs_ (stored at
+// (i, j) only); the core validates, and its message names the parameter,
+// its range and the value.
+void PairGranbond::buildModel(int i, int j)
+{
+    const size_t k = at(i, j);
+    const TypePair &tp = pairs_[k];
+    granbond_voigt_model_free(voigt_[k]);
+    granbond_bond_model_free(bond_[k]);
+    voigt_[k] = nullptr;
+    bond_[k] = nullptr;
+    if (granbond_voigt_model_new(&tp.voigt, &voigt_[k]) != GB_STATUS_OK)
+        error->all(FLERR, std::string("pair_coeff granbond: voigt: ") + granbond_last_error_message());
+    if (tp.hasBond && granbond_bond_model_new(&tp.bond, &bond_[k]) != GB_STATUS_OK)
+        error->all(FLERR, std::string("pair_coeff granbond: bond/nonlinear: ") + granbond_last_error_message());
+}
+
+// ------------------------------------------------------------ init
+
+void PairGranbond::init_style()
+{
+    if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+        error->all(FLERR, "pair granbond requires atom_style sphere (radius, rmass, omega, torque)");
+    if (comm->ghost_velocity == 0)
+        error->all(FLERR, "pair granbond requires ghost atoms to store velocity (comm_modify vel yes)");
+
+    const int n = atom->ntypes;
+    anyBond_ = false;
+    for (int i = 1; i <= n; i++)
+        for (int j = i; j <= n; j++)
+            if (setflag[i][j] && pairs_[at(i, j)].hasBond) anyBond_ = true;
+
+    // history: the Voigt contact state, then (if any type pair bonds) the
+    // bond state, with the core's sign-flip flags
+    const int size = static_cast<int>(contactLen_ + (anyBond_ ? bondLen_ : 0));
+    transferSign_.assign(size, 1.0);
+    for (int k = 0; k < size; k++) {
+        const bool contact = k < static_cast<int>(contactLen_);
+        int32_t flips = 0;
+        const char *name = nullptr;
+        if (granbond_state_slot(contact ? GB_STATE_KIND_CONTACT : GB_STATE_KIND_BOND,
+                                contact ? k : k - contactLen_, &name, &flips) != GB_STATUS_OK)
+            error->all(FLERR, std::string("pair granbond: ") + granbond_last_error_message());
+        transferSign_[k] = flips ? -1.0 : 1.0;
+    }
+
+    // A half list cut by init_one()'s distances, not the size-based list of
+    // pair granular: that one ignores the pair cutoff, so stretched bonds
+    // would drop out of it.
+    const int irequest = neighbor->request(this, instance_me);
+    neighbor->requests[irequest]->history = 1;
+
+    if (fixHistory_ && sizeHistory_ != size)
+        error->all(FLERR, "pair granbond: pair_coeff changed whether bonds exist after a run; "
+                          "use a new pair_style granbond command");
+    if (!fixHistory_) {
+        sizeHistory_ = size;
+        fixHistory_ = static_cast<FixNeighHistory *>(
+            modify->replace_fix(kFixDummy, std::string(kFix) + " all NEIGH_HISTORY " + std::to_string(size), 1));
+        fixHistory_->pair = this;
+    }
+    const int ifix = modify->find_fix(kFix);
+    if (ifix < 0) error->all(FLERR, "pair granbond: fix neigh/history not found");
+    fixHistory_ = static_cast<FixNeighHistory *>(modify->fix[ifix]);
+
+    // per-type radii for the cutoffs (all ranks)
+    std::vector<double> lmax(n + 1, 0.0), lmin(n + 1, std::numeric_limits<double>::infinity());
+    for (int i = 0; i < atom->nlocal; i++) {
+        const int t = atom->type[i];
+        lmax[t] = std::max(lmax[t], atom->radius[i]);
+        lmin[t] = std::min(lmin[t], atom->radius[i]);
+    }
+    maxrad_.assign(n + 1, 0.0);
+    minrad_.assign(n + 1, 0.0);
+    MPI_Allreduce(lmax.data(), maxrad_.data(), n + 1, MPI_DOUBLE, MPI_MAX, world);
+    MPI_Allreduce(lmin.data(), minrad_.data(), n + 1, MPI_DOUBLE, MPI_MIN, world);
+}
+
+double PairGranbond::init_one(int i, int j)
+{
+    if (!setflag[i][j])
+        error->all(FLERR, "pair granbond: no pair_coeff for atom types " + std::to_string(i) + " and " +
+                              std::to_string(j));
+    double cut = maxrad_[i] + maxrad_[j];
+    const GbBondModel *b = bond_[at(std::min(i, j), std::max(i, j))];
+    const double rmin = std::min(minrad_[i], minrad_[j]);
+    if (b && std::isfinite(rmin) && rmin > 0.0) {
+        // the core's neighbour-list reach that keeps every intact bond
+        double factor = 0.0;
+        if (granbond_bond_contact_distance_factor(b, rmin, &factor) != GB_STATUS_OK)
+            error->all(FLERR, std::string("pair granbond: ") + granbond_last_error_message());
+        if (!std::isfinite(factor))
+            error->all(FLERR, "pair granbond: bond/nonlinear of atom types " + std::to_string(i) + " and " +
+                                  std::to_string(j) + " never breaks, so no neighbour list can keep it: "
+                                  "set 'break distance <rmax>' or 'break stress <sigma_max> <tau_max>'");
+        cut = std::max(cut, factor * 2.0 * rmin);
+    }
+    return cut;
+}
+
+void PairGranbond::transfer_history(double *source, double *target)
+{
+    for (int k = 0; k < sizeHistory_; k++) target[k] = transferSign_[k] * source[k];
+}
+
+// ------------------------------------------------------------ compute
+
+void PairGranbond::failPair(int i, int j, const char *call)
+{
+    message_ = "pair granbond: " + std::string(call) + " failed for atoms " +
+               std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
+               std::to_string(static_cast<long long>(atom->tag[j])) + " at step " +
+               std::to_string(static_cast<long long>(update->ntimestep)) + ": " + granbond_last_error_message();
+    // error->one aborts without flushing: write the message first
+    FILE *streams[2] = {screen, logfile};
+    for (FILE *s : streams)
+        if (s) {
+            fprintf(s, "ERROR on proc %d: %s\n", comm->me, message_.c_str());
+            fflush(s);
+        }
+    error->one(FLERR, message_);
+    std::abort();   // not reached
+}
+
+void PairGranbond::compute(int eflag, int vflag)
+{
+    ev_init(eflag, vflag);
+
+    double **x = atom->x;
+    double **v = atom->v;
+    double **f = atom->f;
+    double **omega = atom->omega;
+    double **torque = atom->torque;
+    const double *radius = atom->radius;
+    const int *type = atom->type;
+    const int nlocal = atom->nlocal;
+    const int newton_pair = force->newton_pair;
+    const int ntypes1 = atom->ntypes + 1;
+
+    // setup (run/minimize start) evaluates forces without advancing history
+    const bool advance = !update->setupflag;
+    const double dt = update->dt;
+    const int64_t step = update->ntimestep;
+
+    const int inum = list->inum;
+    const int *ilist = list->ilist;
+    const int *numneigh = list->numneigh;
+    int **firstneigh = list->firstneigh;
+    int **firsttouch = fixHistory_->firstflag;
+    double **firsthistory = fixHistory_->firstvalue;
+    const int size = sizeHistory_;
+
+    double scratch[GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN];
+    GbPairKinematics k;
+
+    for (int ii = 0; ii < inum; ii++) {
+        const int i = ilist[ii];
+        const int itype = type[i];
+        const double radi = radius[i];
+        const int *jlist = firstneigh[i];
+        const int jnum = numneigh[i];
+        int *touch = firsttouch[i];
+        double *allhistory = firsthistory[i];
+
+        for (int jj = 0; jj < jnum; jj++) {
+            const int j = jlist[jj] & NEIGHMASK;
+            const int jtype = type[j];
+            const double delx = x[i][0] - x[j][0];
+            const double dely = x[i][1] - x[j][1];
+            const double delz = x[i][2] - x[j][2];
+            const double rsq = delx * delx + dely * dely + delz * delz;
+            const double radsum = radi + radius[j];
+            const bool touching = rsq < radsum * radsum;
+            const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype
+                                             : static_cast<size_t>(jtype) * ntypes1 + itype;
+            const GbBondModel *bondModel = bond_[tp];
+            double *history = &allhistory[size * jj];
+
+            if (!touching && !bondModel) {   // plain contact, apart
+                touch[jj] = 0;
+                for (int s = 0; s < size; s++) history[s] = 0.0;
+                continue;
+            }
+
+            double *state = history;
+            if (!advance) {
+                std::memcpy(scratch, history, size * sizeof(double));
+                state = scratch;
+            }
+            double *contactState = state;
+            double *bondState = state + contactLen_;
+
+            copy3(k.x_i, x[i]);
+            copy3(k.x_j, x[j]);
+            copy3(k.v_i, v[i]);
+            copy3(k.v_j, v[j]);
+            copy3(k.w_i, omega[i]);
+            copy3(k.w_j, omega[j]);
+            k.radius_i = radi;
+            k.radius_j = radius[j];
+
+            // the bond (created when the creation rules allow), as the
+            // LIGGGHTS adapter: it replaces the contact while intact
+            bool intact = false;
+            GbBondOutput bout;
+            if (bondModel) {
+                if (advance) {
+                    int32_t created = 0;
+                    if (granbond_bond_try_create(bondModel, &k, step, bondState, &created) != GB_STATUS_OK)
+                        failPair(i, j, "granbond_bond_try_create");
+                }
+                if (bondState[0] == GB_BOND_STATUS_INTACT) {
+                    if (granbond_bond_compute(bondModel, &k, dt, bondState, &bout) != GB_STATUS_OK)
+                        failPair(i, j, "granbond_bond_compute");
+                    intact = bout.status == GB_BOND_STATUS_INTACT;
+                }
+            }
+            GbContactOutput cout;
+            if (touching) {
+                if (granbond_voigt_compute(voigt_[tp], &k, dt, contactState, &cout) != GB_STATUS_OK)
+                    failPair(i, j, "granbond_voigt_compute");
+            } else {
+                for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
+            }
+
+            if (!touching && !intact) {
+                // apart and not bonded: the pair is forgotten, as pair granular's
+                touch[jj] = 0;
+                for (int s = 0; s < size; s++) history[s] = 0.0;
+                continue;
+            }
+            touch[jj] = 1;
+
+            const double *fi = intact ? bout.force_i : cout.force_i;
+            const double *ti = intact ? bout.torque_i : cout.torque_i;
+            const double *tj = intact ? bout.torque_j : cout.torque_j;
+            f[i][0] += fi[0];
+            f[i][1] += fi[1];
+            f[i][2] += fi[2];
+            torque[i][0] += ti[0];
+            torque[i][1] += ti[1];
+            torque[i][2] += ti[2];
+            if (newton_pair || j < nlocal) {
+                f[j][0] -= fi[0];
+                f[j][1] -= fi[1];
+                f[j][2] -= fi[2];
+                torque[j][0] += tj[0];
+                torque[j][1] += tj[1];
+                torque[j][2] += tj[2];
+            }
+            if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fi[0], fi[1], fi[2], delx, dely, delz);
+        }
+    }
+}
+
+// ------------------------------------------------------------ restart
+
+void PairGranbond::write_restart(FILE *fp)
+{
+    const int n = atom->ntypes;
+    for (int i = 1; i <= n; i++)
+        for (int j = i; j <= n; j++) {
+            fwrite(&setflag[i][j], sizeof(int), 1, fp);
+            if (setflag[i][j]) fwrite(&pairs_[at(i, j)], sizeof(TypePair), 1, fp);
+        }
+}
+
+void PairGranbond::read_restart(FILE *fp)
+{
+    allocate();
+    const int n = atom->ntypes;
+    const int me = comm->me;
+    for (int i = 1; i <= n; i++)
+        for (int j = i; j <= n; j++) {
+            if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+            MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+            if (!setflag[i][j]) continue;
+            TypePair tp;
+            if (me == 0) utils::sfread(FLERR, &tp, sizeof(TypePair), 1, fp, nullptr, error);
+            MPI_Bcast(&tp, sizeof(TypePair), MPI_BYTE, 0, world);
+            pairs_[at(i, j)] = tp;
+            pairs_[at(j, i)] = tp;
+            setflag[j][i] = 1;
+            buildModel(i, j);
+        }
+}
+
+double PairGranbond::memory_usage()
+{
+    return Pair::memory_usage() + static_cast<double>(pairs_.size() * sizeof(TypePair));
+}
+
+}
+}
+
+// ------------------------------------------------------------ registration
+
+namespace {
+
+LAMMPS_NS::Pair *createPairGranbond(LAMMPS_NS::LAMMPS *lmp)
+{
+    return new granbond::lammps::PairGranbond(lmp);
+}
+
+void *createPairGranbondPlugin(void *lmp)
+{
+    return createPairGranbond(static_cast<LAMMPS_NS::LAMMPS *>(lmp));
+}
+
+}
+
+// Adds pair_style granbond to this LAMMPS instance (the launcher calls it
+// after constructing LAMMPS and after every `clear`).
+extern "C" __attribute__((visibility("default"))) void granbond_lammps_register(void *lmp)
+{
+    (*static_cast<LAMMPS_NS::LAMMPS *>(lmp)->force->pair_map)["granbond"] = &createPairGranbond;
+}
+
+// `plugin load libgranbond_lammps.so` in a LAMMPS built with PLUGIN.
+extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+{
+    lammpsplugin_t plugin;
+    plugin.version = LAMMPS_VERSION;
+    plugin.style = "pair";
+    plugin.name = "granbond";
+    plugin.info = "granbond: voigt contact and bond/nonlinear bond (Rust core)";
+    plugin.author = "granbond";
+    plugin.creator.v1 = &createPairGranbondPlugin;
+    plugin.handle = handle;
+    (*reinterpret_cast<lammpsplugin_regfunc>(regfunc))(&plugin, lmp);
+}

@@ -1,0 +1,75 @@
+// pair_style granbond: the granbond core's `voigt` contact and
+// `bond/nonlinear` bond as one LAMMPS pair style. Translation only: the deck
+// is parsed into the core's parameter structs, the per-pair state lives in
+// fix neigh/history (as pair granular's), and every force comes from the core.
+//
+//   pair_style granbond
+//   pair_coeff I J voigt <kn> <gamman> <kt> <gammat> <mu> &
+//                  [rolling <kr> <gammar> <mur> <etar>] &
+//                  [bond/nonlinear <keyword> <value> ...]
+#ifndef GRANBOND_LAMMPS_PAIR_GRANBOND_H
+#define GRANBOND_LAMMPS_PAIR_GRANBOND_H
+
+#include "pair.h"
+#include "granbond.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+class FixNeighHistory;
+}
+
+namespace granbond {
+namespace lammps {
+
+class PairGranbond : public LAMMPS_NS::Pair {
+public:
+    explicit PairGranbond(LAMMPS_NS::LAMMPS *lmp);
+    ~PairGranbond() override;
+
+    void compute(int eflag, int vflag) override;
+    void settings(int narg, char **arg) override;
+    void coeff(int narg, char **arg) override;
+    void init_style() override;
+    double init_one(int i, int j) override;
+    void write_restart(FILE *fp) override;
+    void read_restart(FILE *fp) override;
+    void reset_dt() override {}
+    // fix neigh/history: the pair seen from the other atom; the core's
+    // sign-flip table says which slots change sign (vectors) and which are
+    // copied (scalars such as r0, dmax, dmin, status)
+    void transfer_history(double *source, double *target) override;
+    double memory_usage() override;
+
+    // Everything pair_coeff set for one type pair (plain data: written to
+    // restart files as is).
+    struct TypePair {
+        GbVoigtParams voigt;
+        GbBondParams bond;
+        int32_t hasBond;
+    };
+
+private:
+    void allocate();
+    void freeModels();
+    void buildModel(int i, int j);
+    [[noreturn]] void failPair(int i, int j, const char *call);
+    size_t at(int i, int j) const;
+
+    std::vector<TypePair> pairs_;
+    std::vector<GbVoigtModel *> voigt_;
+    std::vector<GbBondModel *> bond_;
+    std::vector<double> maxrad_, minrad_;   // per type, over all ranks
+    std::vector<double> transferSign_;      // per history slot: +1 copy, -1 negate
+    size_t contactLen_, bondLen_;
+    int sizeHistory_;
+    bool anyBond_;
+    LAMMPS_NS::FixNeighHistory *fixHistory_;
+    std::string message_;                   // outlives error->one's use
+};
+
+}
+}
+
+#endif

@@ -1,0 +1,376 @@
+"""Engine-level tests of pair_style granbond in LAMMPS (build/bin/lmp-granbond).
+
+Modes (one ctest each):
+  pull-distance, pull-stress, pull-stress-ratio, pull-compression
+      two spheres pulled apart (pushed together) by fix move: every step
+      equals the core's closed forms (the checks of
+      tests/liggghts/check_bond_pull.py: virgin branches, creation at step 1,
+      break step, zero force after) and, with --liggghts, the LIGGGHTS
+      adapter's output for the same motion (tests/liggghts/decks/bond_pull.in)
+      to the last digit printed.
+  cycle
+      sphere 2 wiggled (fix move wiggle, +-4e-5 m, 2.5 periods): the virgin
+      tension branch of the first quarter period equals the closed form, the
+      loop dissipates (the work done on the bond over a whole period is
+      positive), and every step equals the LIGGGHTS adapter's output for the
+      same motion.
+  mpi         the pull and the wiggle on 2 ranks (the pair straddles the
+              rank boundary) give byte-identical output to 1 rank.
+  restart     a wiggle run of 600 steps and one of 300 + write_restart +
+              read_restart + 300 agree byte for byte on steps 301..600
+              (pair coefficients and per-pair history come from the file).
+  clear       a deck that runs, calls `clear` and runs again: the style is
+              registered again after `clear`.
+  bad-input   bad keywords and values end the run with an ERROR line naming
+              the keyword (or the core's parameter), exit code non-zero,
+              never a signal.
+  granular-head-on, granular-oblique
+      voigt against pair_style granular (hooke + damping velocity +
+      limit_damping + tangential linear_history + rolling sds) on the same
+      collision deck. Head-on: positions and velocities agree to 1e-9
+      relative. Oblique: translational motion agrees to 1e-6 relative; the
+      spins differ by the lever arm (granular: R - delta/2, spec: R), so the
+      spin difference is bounded by delta_max/R times the spin.
+
+usage: check_lammps.py --mode MODE --engine LMP_GRANBOND [--stock LMP]
+                       [--liggghts LIGGGHTS_GRANBOND] [--mpiexec MPIEXEC] --workdir DIR
+"""
+
+import argparse
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "liggghts"))
+
+import liggghts_run  # noqa: E402
+from liggghts_run import Failure, main, read_table, run_deck  # noqa: E402
+from check_bond_pull import MODES as PULL_MODES, PARAMS, pair_samples, verify  # noqa: E402
+
+DECKS = os.path.join(HERE, "decks")
+LIGGGHTS_DECKS = os.path.join(HERE, "..", "liggghts", "decks")
+
+# the bond of tests/liggghts/decks/bond_properties.in, in pair_coeff keywords
+BOND = ("lambda 0.5 k_fn1 1e9 ku_fn1 2e9 kc_fn1 5e8 k_fn2 1e9 ku_fn2 2e9 kc_fn2 5e8 "
+        "k_ft 4e8 k_tn 4e8 ku_tn 4e8 kc_tn 4e8 k_tt 4e8 ku_tt 4e8 kc_tt 4e8 "
+        "eta_fn 0 eta_ft 0 eta_tn 0 eta_tt 0 create_distance 2.2e-3 create_step 1")
+VOIGT = "voigt 1e4 0 0 0 0.5"
+BREAK = {
+    "distance": f"break distance {PARAMS['maxdist']}",
+    "stress": f"break stress {PARAMS['sigma']} 1e12",
+    "stress-ratio": f"break stress {PARAMS['sigma']} 1e12 ratio {PARAMS['gamma']}",
+    "compression": "break distance 2.08e-3",
+}
+WIGGLE = {"motion": "wiggle", "amp": 4e-5, "period": 4e-4, "nrun": 1000}
+
+
+def write_model(workdir, lines):
+    os.makedirs(workdir, exist_ok=True)
+    path = os.path.join(workdir, "model.in")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines) + "\n")
+    return path
+
+
+def bond_model(workdir, brk="distance", extra=""):
+    return write_model(workdir, ["pair_style granbond",
+                                 f"pair_coeff * * {VOIGT} bond/nonlinear {BOND} {BREAK[brk]} {extra}"])
+
+
+def run_lammps(command, deck, workdir, variables):
+    """Runs a deck of tests/lammps/decks; (exit code, text)."""
+    liggghts_run.DECKS = DECKS
+    return run_deck(command, deck, workdir, dict(variables, decks=DECKS))
+
+
+def run_lammps_ok(command, deck, workdir, variables):
+    rc, text = run_lammps(command, deck, workdir, variables)
+    if rc != 0:
+        raise Failure(f"{deck} exited with {rc}:\n{text[-3000:]}")
+    return text
+
+
+def run_liggghts(engine, deck_path, workdir, variables):
+    os.makedirs(workdir, exist_ok=True)
+    liggghts_run.DECKS = LIGGGHTS_DECKS
+    rc, text = run_deck([engine], deck_path, workdir, dict(variables, decks=LIGGGHTS_DECKS))
+    if rc != 0:
+        raise Failure(f"LIGGGHTS {deck_path} exited with {rc}:\n{text[-3000:]}")
+    return read_table(os.path.join(workdir, variables["out"]))
+
+
+def pull_variables(mode):
+    v = {"out": "pull.txt", "nrun": PARAMS["nrun"], "vpull": PARAMS["vpull"]}
+    v.update({k: PULL_MODES[mode][k] for k in ("vpull", "nrun") if k in PULL_MODES[mode]})
+    return v
+
+
+def same_rows(label, a, b, skip_step0=True):
+    """Rows equal to the digits printed (both engines print with %.15g)."""
+    a = [r for r in a if not (skip_step0 and r[0] == 0)]
+    b = [r for r in b if not (skip_step0 and r[0] == 0)]
+    if len(a) != len(b):
+        raise Failure(f"{label}: {len(a)} rows against {len(b)}")
+    for ra, rb in zip(a, b):
+        if ra != rb:
+            raise Failure(f"{label}: step {ra[0]:.0f} differs:\n  {ra}\n  {rb}")
+    print(f"{label}: {len(a)} rows identical")
+
+
+def check_pull(a, mode, workdir):
+    brk = mode[len("pull-"):]
+    variables = pull_variables(brk)
+    variables["model"] = bond_model(workdir, brk)
+    run_lammps_ok([a.engine], "pair_move.in", workdir, variables)
+    rows = read_table(os.path.join(workdir, "pull.txt"))
+    print(f"{mode}: {verify(pair_samples(rows), brk)}")
+    if a.liggghts:
+        lig = dict(PARAMS, **variables)
+        lig.update(stress=PULL_MODES[brk]["stress"], ratio=PULL_MODES[brk]["ratio"])
+        lig.pop("model")
+        lrows = run_liggghts(a.liggghts, "bond_pull.in", os.path.join(workdir, "liggghts"), lig)
+        same_rows("lmp-granbond vs liggghts-granbond", rows, lrows)
+
+
+def liggghts_wiggle_deck(workdir):
+    """tests/liggghts/decks/bond_pull.in with fix move wiggle instead of linear."""
+    with open(os.path.join(LIGGGHTS_DECKS, "bond_pull.in"), encoding="utf-8") as f:
+        text = f.read()
+    old = "fix pull g2 move linear ${vpull} 0.0 0.0"
+    if old not in text:
+        raise Failure("tests/liggghts/decks/bond_pull.in no longer has the line " + old)
+    os.makedirs(workdir, exist_ok=True)
+    path = os.path.join(workdir, "bond_wiggle.in")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text.replace(old, "fix pull g2 move wiggle ${amp} 0.0 0.0 ${period}"))
+    return path
+
+
+def check_cycle(a, workdir):
+    variables = dict(WIGGLE, out="pull.txt", model=bond_model(workdir, "compression"))
+    run_lammps_ok([a.engine], "pair_move.in", workdir, variables)
+    rows = read_table(os.path.join(workdir, "pull.txt"))
+    radius = PARAMS["diameter"] / 2
+    area = math.pi * (PARAMS["lambda"] * radius) ** 2
+    quarter = int(WIGGLE["period"] / 1e-6 / 4)
+    r0 = None
+    work = 0.0
+    previous = None
+    for step, r, unit, forces in pair_samples(rows):
+        if step == 1:
+            r0 = r
+        if step == 0:
+            continue
+        fn = forces[0][1][0]            # f2x = Fn * unit_x (unit = +x): > 0 repulsive
+        if 1 <= step <= quarter:        # virgin tension: k_fn2 A delta
+            want = PARAMS["k_fn2"] * area * (r0 - r)
+            if abs(fn - want) > 1e-6 * abs(want) + 1e-300:
+                raise Failure(f"step {step}: virgin tension force {fn!r}, closed form {want!r}")
+        if previous is not None and step <= 1 + int(WIGGLE["period"] / 1e-6):
+            work += 0.5 * (fn + previous[1]) * (r - previous[0])   # work of the bond force on sphere 2
+        previous = (r, fn)
+    # over one closed period the bond force did negative work on the mover:
+    # the loop dissipates
+    if not work < 0:
+        raise Failure(f"work of the bond force over one period is {work}: no hysteresis loop")
+    print(f"cycle: virgin branch matched on {quarter} steps; loop dissipates {-work:.6g} J per period")
+    if a.liggghts:
+        deck = liggghts_wiggle_deck(os.path.join(workdir, "liggghts"))
+        lig = dict(WIGGLE, out="pull.txt", stress="off", ratio="off", maxdist=2.08e-3)
+        lrows = run_liggghts(a.liggghts, deck, os.path.join(workdir, "liggghts"), lig)
+        same_rows("lmp-granbond vs liggghts-granbond (wiggle)", rows, lrows)
+
+
+def mpi_prefix(a):
+    prefix = [a.mpiexec, "-np", "2"]
+    if os.geteuid() == 0:
+        prefix += ["--allow-run-as-root"]
+    return prefix + ["--oversubscribe"]
+
+
+def file_bytes(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def check_mpi(a, workdir):
+    for label, variables in (("pull", dict(pull_variables("distance"))), ("wiggle", dict(WIGGLE))):
+        outputs = []
+        for name, command in (("np1", [a.engine]), ("np2", mpi_prefix(a) + [a.engine])):
+            d = os.path.join(workdir, label, name)
+            v = dict(variables, out="pull.txt", model=bond_model(d, "distance" if label == "pull" else "compression"))
+            text = run_lammps_ok(command, "pair_move.in", d, v)
+            if name == "np2" and "2 by 1 by 1 MPI processor grid" not in text:
+                raise Failure("the 2-rank run did not split the box in 2 along x")
+            outputs.append(file_bytes(os.path.join(d, "pull.txt")))
+        if outputs[0] != outputs[1]:
+            raise Failure(f"{label}: 1 and 2 ranks differ")
+        print(f"{label}: 1 rank == 2 ranks ({len(outputs[0])} bytes)")
+
+
+def check_restart(a, workdir):
+    whole = os.path.join(workdir, "whole")
+    run_lammps_ok([a.engine], "pair_move.in", whole,
+                  dict(WIGGLE, nrun=600, out="pull.txt", model=bond_model(whole, "compression")))
+    part = os.path.join(workdir, "parts")
+    run_lammps_ok([a.engine], "pair_move.in", part,
+                  dict(WIGGLE, nrun=300, out="first.txt", restart="half.restart", writerestart=1,
+                       model=bond_model(part, "compression")))
+    run_lammps_ok([a.engine], "restart_continue.in", part,
+                  dict(WIGGLE, nrun=300, out="second.txt", restart="half.restart"))
+    want = [r for r in read_table(os.path.join(whole, "pull.txt")) if r[0] > 300]
+    got = [r for r in read_table(os.path.join(part, "second.txt")) if r[0] > 300]
+    if not any(r[7] != 0.0 for r in want):
+        raise Failure("no bond force in the second half: the deck does not test the history")
+    same_rows("continuous vs restarted (steps 301..600)", want, got, skip_step0=False)
+
+
+def check_clear(a, workdir):
+    variables = dict(pull_variables("distance"), out="pull.txt", model=bond_model(workdir, "distance"), nrun=50)
+    text = run_lammps_ok([a.engine], "clear_twice.in", workdir, variables)
+    runs = text.count("Loop time of")
+    if runs < 2:
+        raise Failure(f"expected two runs around `clear`, saw {runs}")
+    print(f"clear: pair_style granbond accepted before and after clear ({runs} loop summaries)")
+
+
+BAD = [
+    # (label, pair_coeff arguments after "* *", text the ERROR line must contain)
+    ("unknown bond keyword", f"{VOIGT} bond/nonlinear {BOND} k_fnx 1e9 {BREAK['distance']}", "k_fnx"),
+    ("value not a number", f"{VOIGT} bond/nonlinear {BOND} k_fn2 abc {BREAK['distance']}", "k_fn2"),
+    ("negative stiffness (core)", f"{VOIGT} bond/nonlinear {BOND} k_fn2 -1e9 {BREAK['distance']}", "k_fn2"),
+    ("damping ratio >= 1 (core)", f"{VOIGT} bond/nonlinear {BOND} eta_fn 1.0 {BREAK['distance']}", "eta_fn"),
+    ("ku < k (core)", f"{VOIGT} bond/nonlinear {BOND} ku_fn2 5e8 {BREAK['distance']}", "ku_fn2"),
+    ("lambda 0 (core)", f"{VOIGT} bond/nonlinear {BOND} lambda 0 {BREAK['distance']}", "lambda"),
+    ("switch not yes/no", f"{VOIGT} bond/nonlinear {BOND} history_reset maybe {BREAK['distance']}",
+     "history_reset"),
+    ("unknown break mode", f"{VOIGT} bond/nonlinear {BOND} break strain 1", "strain"),
+    ("a bond that never breaks", f"{VOIGT} bond/nonlinear {BOND}", "break"),
+    ("negative normal stiffness (core, voigt)", "voigt -1e4 0 0 0 0.5", "k_n"),
+    ("unknown model", "hertz 1e4 0 0 0 0.5", "hertz"),
+    ("unknown keyword after voigt", f"{VOIGT} rolling 1 2 3", "rolling"),
+]
+
+
+def check_bad_input(a, workdir):
+    failures = []
+    for index, (label, args, name) in enumerate(BAD):
+        d = os.path.join(workdir, f"case{index}")
+        model = write_model(d, ["pair_style granbond", f"pair_coeff * * {args}"])
+        rc, text = run_lammps([a.engine], "pair_move.in", d, {"model": model, "nrun": 10, "out": "pull.txt"})
+        errors = [line for line in text.splitlines() if line.startswith("ERROR")]
+        if rc == 0:
+            failures.append(f"{label}: the run succeeded")
+        elif not any(name in line for line in errors):
+            failures.append(f"{label}: no ERROR line names {name}; got {errors or text[-1500:]}")
+        else:
+            print(f"ok: {label}: exit {rc}: {errors[0]}")
+    if failures:
+        raise Failure("\n".join(failures))
+
+
+# voigt against pair granular: Table 1 of the seed, gamma_n > 0 (granular
+# scales the tangential dashpot by gamma_n), eta_r = 0 (granular has no
+# viscous rolling term)
+K_N, G_N, K_T, G_T, MU = 1e4, 1e-3, 6e3, 1e-3, 0.5
+K_R, G_R, MU_R = 1e-6, 1e-8, 5e-2
+R_EFF = 0.5e-3                      # R_i R_j / (R_i + R_j) for two R = 1e-3
+
+
+def granular_models(workdir, rolling):
+    ours = f"pair_coeff * * voigt {K_N} {G_N} {K_T} {G_T} {MU}"
+    theirs = (f"pair_coeff * * hooke {K_N} {G_N} damping velocity limit_damping "
+              f"tangential linear_history {K_T} {G_T / G_N} {MU}")
+    if rolling:
+        # granular's rolling spring acts on R* (w x n) dt: k_r = k_roll R*^2
+        ours += f" rolling {K_R} {G_R} {MU_R} 0"
+        theirs += f" rolling sds {K_R / R_EFF ** 2} {G_R / R_EFF ** 2} {MU_R}"
+    return (write_model(os.path.join(workdir, "granbond"), ["pair_style granbond", ours]),
+            write_model(os.path.join(workdir, "granular"), ["pair_style granular", theirs]))
+
+
+def check_granular(a, oblique, workdir):
+    variables = {"out": "collision.txt", "nrun": 400, "vx": -0.5}
+    if oblique:
+        variables.update(vy=0.0, offset=0.5e-3)
+    ours_model, theirs_model = granular_models(workdir, rolling=oblique)
+    tables = []
+    for name, model, command in (("granbond", ours_model, [a.engine]), ("granular", theirs_model, [a.stock])):
+        d = os.path.dirname(model)
+        run_lammps_ok(command, "collision.in", d, dict(variables, model=model))
+        tables.append(read_table(os.path.join(d, "collision.txt")))
+    ours, theirs = tables
+    if len(ours) != len(theirs) or len(ours) < variables["nrun"]:
+        raise Failure(f"row counts {len(ours)} and {len(theirs)}")
+    radius = PARAMS["diameter"] / 2
+    max_overlap = 0.0
+    for r in ours:
+        d = math.dist(r[1:4], r[4:7])
+        max_overlap = max(max_overlap, 2 * radius - d)
+    if max_overlap <= 0:
+        raise Failure("the spheres never touched")
+    scale_v = max(abs(c) for r in theirs for c in r[7:13])
+    scale_x = max(abs(c) for r in theirs for c in r[1:7])
+    worst_x = max(abs(p - q) for r, s in zip(ours, theirs) for p, q in zip(r[1:7], s[1:7])) / scale_x
+    worst_v = max(abs(p - q) for r, s in zip(ours, theirs) for p, q in zip(r[7:13], s[7:13])) / scale_v
+    final_v = ours[-1][7:13]
+    print(f"max overlap {max_overlap:.4g} m (delta/R = {max_overlap / radius:.3g}); "
+          f"final velocity of sphere 2 {final_v[3:6]}")
+    print(f"worst relative difference: positions {worst_x:.3g}, velocities {worst_v:.3g}")
+    if not oblique:
+        if worst_x > 1e-9 or worst_v > 1e-9:
+            raise Failure("head-on collision: granbond voigt and pair granular differ beyond round-off")
+        if any(c != 0.0 for r in ours for c in r[13:19]):
+            raise Failure("head-on collision: a sphere started to spin")
+        return
+    scale_w = max(abs(c) for r in theirs for c in r[13:19])
+    if scale_w == 0:
+        raise Failure("oblique collision: nothing spins: the deck does not test the tangential part")
+    worst_w = max(abs(p - q) for r, s in zip(ours, theirs) for p, q in zip(r[13:19], s[13:19])) / scale_w
+    # the torque lever is R (spec) against R - delta/2 (granular): the
+    # torques differ by a factor delta/(2R) at most; spins, and through the
+    # tangential spring the velocities, by the same order
+    bound = max_overlap / radius
+    print(f"spins: worst relative difference {worst_w:.3g}; lever-arm bound delta_max/R = {bound:.3g}")
+    if worst_w > bound:
+        raise Failure("oblique collision: spins differ by more than the lever-arm difference explains")
+    if worst_w < 1e-12:
+        raise Failure("oblique collision: spins identical: the lever-arm difference should show")
+    if worst_v > bound or worst_x > bound:
+        raise Failure("oblique collision: translation differs by more than the lever-arm difference explains")
+
+
+def run(a):
+    mode = a.mode
+    workdir = os.path.abspath(a.workdir)
+    if mode.startswith("pull-"):
+        check_pull(a, mode, workdir)
+    elif mode == "cycle":
+        check_cycle(a, workdir)
+    elif mode == "mpi":
+        check_mpi(a, workdir)
+    elif mode == "restart":
+        check_restart(a, workdir)
+    elif mode == "clear":
+        check_clear(a, workdir)
+    elif mode == "bad-input":
+        check_bad_input(a, workdir)
+    elif mode == "granular-head-on":
+        check_granular(a, False, workdir)
+    elif mode == "granular-oblique":
+        check_granular(a, True, workdir)
+    else:
+        raise Failure(f"unknown mode {mode}")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--mode", required=True)
+    parser.add_argument("--engine", required=True)
+    parser.add_argument("--stock")
+    parser.add_argument("--liggghts")
+    parser.add_argument("--mpiexec")
+    parser.add_argument("--workdir", required=True)
+    args = parser.parse_args()
+    main(lambda: run(args))
