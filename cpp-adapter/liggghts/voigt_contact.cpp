@@ -115,68 +115,39 @@ void VoigtContactShare::rebuild(LAMMPS_NS::Error *error)
 
 // ------------------------------------------------------------ translation
 
-namespace {
-
-// Sphere i of a wall contact, and the plane through the contact point.
-void wallKinematics(const SurfacesIntersectData &d, GbSphereKinematics &sphere, GbPlane &plane)
+// The engine's description of a touching contact as the core's frame
+// (what granbond_contact_frame_pair / _plane compute, from the geometry the
+// engine has already worked out): for a pair the engine's unit normal en
+// (x_i - x_j over its length) and overlap deltan = radsum - r; for a wall the
+// sphere on the plane through the contact point with normal en, moving with
+// the wall velocity there.
+static inline void engineFrame(const SurfacesIntersectData &d, GbContactFrame &f)
 {
-    for (int k = 0; k < 3; k++) {
-        sphere.x[k] = d.delta[k];
-        sphere.v[k] = d.v_i[k];
-        sphere.w[k] = d.omega_i[k];
-        plane.point[k] = 0.0;
-        plane.normal[k] = d.en[k];
-        plane.velocity[k] = d.v_j ? d.v_j[k] : 0.0;
-    }
-    sphere.radius = d.radi;
-}
-
-void pairKinematics(const SurfacesIntersectData &d, GbPairKinematics &pair)
-{
-    for (int k = 0; k < 3; k++) {
-        pair.x_i[k] = d.delta[k];
-        pair.x_j[k] = 0.0;
-        pair.v_i[k] = d.v_i[k];
-        pair.v_j[k] = d.v_j[k];
-        pair.w_i[k] = d.omega_i[k];
-        pair.w_j[k] = d.omega_j[k];
-    }
-    pair.radius_i = d.radi;
-    pair.radius_j = d.radj;
-}
-
-// The whole Voigt contact (normal, tangential, rolling as the model says).
-GbStatus wholeContactStep(const GbVoigtModel *model, const SurfacesIntersectData &d, double dt, double *state,
-                          GbContactOutput *out)
-{
+    const double *const en = d.en, *const vi = d.v_i, *const wi = d.omega_i;
+    f.n[0] = en[0], f.n[1] = en[1], f.n[2] = en[2];
+    f.v_i[0] = vi[0], f.v_i[1] = vi[1], f.v_i[2] = vi[2];
+    f.w_i[0] = wi[0], f.w_i[1] = wi[1], f.w_i[2] = wi[2];
+    f.lever_i = d.radi;
     if (d.is_wall) {
-        GbSphereKinematics sphere;
-        GbPlane plane;
-        wallKinematics(d, sphere, plane);
-        return granbond_voigt_compute_plane(model, &sphere, &plane, dt, state, out);
+        f.overlap = d.radi - (d.delta[0] * en[0] + d.delta[1] * en[1] + d.delta[2] * en[2]);
+        f.lever_j = 0.0;
+        f.r_eff = d.radi;
+        const double *const vj = d.v_j;
+        f.v_j[0] = vj ? vj[0] : 0.0, f.v_j[1] = vj ? vj[1] : 0.0, f.v_j[2] = vj ? vj[2] : 0.0;
+        f.w_j[0] = f.w_j[1] = f.w_j[2] = 0.0;
+        return;
     }
-    GbPairKinematics pair;
-    pairKinematics(d, pair);
-    return granbond_voigt_compute(model, &pair, dt, state, out);
+    const double *const vj = d.v_j, *const wj = d.omega_j;
+    f.overlap = d.deltan;
+    f.lever_j = d.radj;
+    f.r_eff = d.radi * d.radj / (d.radi + d.radj);
+    f.v_j[0] = vj[0], f.v_j[1] = vj[1], f.v_j[2] = vj[2];
+    f.w_j[0] = wj[0], f.w_j[1] = wj[1], f.w_j[2] = wj[2];
 }
 
-}
-
-GbStatus contactFrame(const SurfacesIntersectData &d, GbContactFrame *frame)
-{
-    if (d.is_wall) {
-        GbSphereKinematics sphere;
-        GbPlane plane;
-        wallKinematics(d, sphere, plane);
-        return granbond_contact_frame_plane(&sphere, &plane, frame);
-    }
-    GbPairKinematics pair;
-    pairKinematics(d, pair);
-    return granbond_contact_frame_pair(&pair, frame);
-}
-
-void addLoads(const SurfacesIntersectData &d, ForceData &i_forces, ForceData &j_forces, const double *force_i,
-              const double *torque_i, const double *torque_j)
+// Adds a force on i (and its opposite on j for a pair) and the torques.
+static inline void addLoads(const SurfacesIntersectData &d, ForceData &i_forces, ForceData &j_forces,
+                            const double *force_i, const double *torque_i, const double *torque_j)
 {
     if (d.is_wall) {
         // a wall element may carry only part of the contact (multicontact)
@@ -226,7 +197,9 @@ VoigtNormal::VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup 
     k_t_(0),
     gamma_n_(0),
     gamma_t_(0),
-    no_attraction_(true)
+    no_attraction_(true),
+    fused_(false),
+    fusedRolling_(false)
 {
     bool first;
     share_ = VoigtContactShare::attach(owner_, &first);
@@ -263,59 +236,60 @@ void VoigtNormal::connectToProperties(::PropertyRegistry &registry)
     const int ntypes = registry.max_type();
     models_.build(error, caller, ntypes, typePairParams(ntypes, false, own));
     share_->contribute(error, ntypes, own);
+    fused_ = share_->fused();   // every sub-model exists by now
+    fusedRolling_ = share_->fusedRolling();
 }
 
-void VoigtNormal::surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+void VoigtNormal::handOn(SurfacesIntersectData &sidata)
 {
-    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     const int a = sidata.itype, b = sidata.jtype;
-    // what the stock tangential, rolling and cohesion models read
     sidata.kn = k_n_[a][b];
     sidata.kt = k_t_[a][b];
     sidata.gamman = gamma_n_[a][b];
     sidata.gammat = gamma_t_[a][b];
-    if (share_->fused())
-        wholeContact(sidata, i_forces, j_forces);
-    else
-        normalPart(sidata, i_forces, j_forces);
 }
 
 void VoigtNormal::normalPart(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
+    handOn(sidata);
     GbContactFrame &frame = share_->frame;
-    GbStatus status = contactFrame(sidata, &frame);
+    engineFrame(sidata, frame);
     double fn = 0.0;
-    if (status == GB_STATUS_OK)
-        status = granbond_voigt_normal_force(models_.at(sidata.itype, sidata.jtype), &frame, &fn);
-    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "model voigt");
+    if (granbond_voigt_normal_force(models_.at(sidata.itype, sidata.jtype), &frame, &fn) != GB_STATUS_OK)
+        voigtFailed(lmp, sidata, "model voigt");
     sidata.Fn = fn;
     const double force_i[3] = {fn * frame.n[0], fn * frame.n[1], fn * frame.n[2]};
     const double none[3] = {0.0, 0.0, 0.0};
     addLoads(sidata, i_forces, j_forces, force_i, none, none);
 }
 
-// normal + tangential (+ rolling) voigt in one core call; the tangential and
-// rolling voigt models then add nothing themselves
+// normal + tangential (+ rolling) voigt in one core call, the hot path of
+// voigt x voigt (x voigt): the frame straight from the engine's data and the
+// core's unchecked entry (the models were validated when built, dt by the
+// engine; a non-finite result is still caught). The tangential and rolling
+// voigt models then add nothing themselves.
 void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
+    // stock rolling models after voigt x voigt read kn, kt, ... (epsd2: kt)
+    if (!fusedRolling_) handOn(sidata);
     double *const stored = &sidata.contact_history[share_->tangential_offset];
-    const bool rolling = share_->fusedRolling();
     // the history moves on only in a real force step (not at setup or for a
     // per-contact output pass)
-    const bool advance = sidata.computeflag && sidata.shearupdate;
-    double scratch[GRANBOND_CONTACT_STATE_LEN] = {0.0};
+    double scratch[GRANBOND_CONTACT_STATE_LEN];
     double *state = stored;
-    if (!advance || !rolling) {
+    if (!(sidata.computeflag && sidata.shearupdate && fusedRolling_)) {
         // the core writes 6 slots; without rolling voigt only 3 are ours
-        for (int k = 0; k < (rolling ? 6 : 3); k++)
-            scratch[k] = stored[k];
+        for (int k = 0; k < GRANBOND_CONTACT_STATE_LEN; k++)
+            scratch[k] = (fusedRolling_ || k < 3) ? stored[k] : 0.0;
         state = scratch;
     }
+    GbContactFrame frame;
+    engineFrame(sidata, frame);
     GbContactOutput out;
-    const GbStatus status =
-        wholeContactStep(share_->fusedModel(sidata.itype, sidata.jtype), sidata, update->dt, state, &out);
-    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "model voigt");
-    if (advance && !rolling)
+    if (granbond_voigt_compute_frame_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), &frame, update->dt,
+                                               state, &out) != GB_STATUS_OK)
+        voigtFailed(lmp, sidata, "model voigt");
+    if (state == scratch && sidata.computeflag && sidata.shearupdate)
         for (int k = 0; k < 3; k++)
             stored[k] = scratch[k];
     sidata.Fn = out.normal_force;
@@ -328,7 +302,7 @@ template<class EngineBase>
 VoigtHistoryModel<EngineBase>::VoigtHistoryModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                                                  ContactModelBase *cmb, size_t firstSlot, const char *offsetName,
                                                  int contactFlag) :
-    EngineBase(lmp, hsetup, cmb), owner_(cmb), contactFlag_(contactFlag)
+    EngineBase(lmp, hsetup, cmb), owner_(cmb), skip_(false), contactFlag_(contactFlag)
 {
     share_ = VoigtContactShare::attach(owner_, &computesFrame_);
     offset_ = registerStateSlots(hsetup, GB_STATE_KIND_CONTACT, lmp->error, firstSlot, 3, "voigt_");
@@ -342,10 +316,9 @@ VoigtHistoryModel<EngineBase>::~VoigtHistoryModel()
 }
 
 template<class EngineBase>
-double *VoigtHistoryModel<EngineBase>::begin(const SurfacesIntersectData &sidata, bool always, double *scratch,
-                                              GbStatus *status)
+double *VoigtHistoryModel<EngineBase>::begin(const SurfacesIntersectData &sidata, bool always, double *scratch)
 {
-    *status = (computesFrame_ || always) ? contactFrame(sidata, &share_->frame) : GB_STATUS_OK;
+    if (computesFrame_ || always) engineFrame(sidata, share_->frame);
     double *const stored = &sidata.contact_history[offset_];
     if (sidata.computeflag && sidata.shearupdate) return stored;
     for (int k = 0; k < 3; k++)
@@ -401,21 +374,17 @@ void VoigtTangential::connectToProperties(::PropertyRegistry &registry)
     const int ntypes = registry.max_type();
     models_.build(error, caller, ntypes, typePairParams(ntypes, false, own));
     share_->contribute(error, ntypes, own);
+    skip_ = share_->fused();   // every sub-model exists by now
 }
 
-void VoigtTangential::surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces,
-                                        ForceData &j_forces)
+void VoigtTangential::intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
-    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
-    if (share_->fused()) return;   // model voigt did the whole contact
     double scratch[3];
-    GbStatus status;
-    double *const spring = begin(sidata, false, scratch, &status);
+    double *const spring = begin(sidata, false, scratch);
     GbTangentialOutput out;
-    if (status == GB_STATUS_OK)
-        status = granbond_voigt_tangential(models_.at(sidata.itype, sidata.jtype), &share_->frame, sidata.Fn,
-                                           update->dt, spring, &out);
-    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "tangential voigt");
+    if (granbond_voigt_tangential(models_.at(sidata.itype, sidata.jtype), &share_->frame, sidata.Fn, update->dt,
+                                  spring, &out) != GB_STATUS_OK)
+        voigtFailed(lmp, sidata, "tangential voigt");
     addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
 }
 
@@ -477,22 +446,19 @@ void VoigtRolling::connectToProperties(::PropertyRegistry &registry)
     const int ntypes = registry.max_type();
     models_.build(error, caller, ntypes, typePairParams(ntypes, true, own));
     share_->contribute(error, ntypes, own);
+    skip_ = share_->fusedRolling();   // every sub-model exists by now
 }
 
-void VoigtRolling::surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+void VoigtRolling::intersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
-    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_ROLLING_MODEL;
-    if (share_->fusedRolling()) return;   // model voigt did the whole contact
     double scratch[3];
-    GbStatus status;
     // the fused normal model leaves no frame behind
-    double *const angle = begin(sidata, share_->fused(), scratch, &status);
+    double *const angle = begin(sidata, share_->fused(), scratch);
     double torque_i[3];
     int32_t slip = 0;
-    if (status == GB_STATUS_OK)
-        status = granbond_voigt_rolling(models_.at(sidata.itype, sidata.jtype), &share_->frame, sidata.Fn,
-                                        update->dt, angle, torque_i, &slip);
-    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "rolling_friction voigt");
+    if (granbond_voigt_rolling(models_.at(sidata.itype, sidata.jtype), &share_->frame, sidata.Fn, update->dt, angle,
+                               torque_i, &slip) != GB_STATUS_OK)
+        voigtFailed(lmp, sidata, "rolling_friction voigt");
     const double none[3] = {0.0, 0.0, 0.0};
     const double torque_j[3] = {-torque_i[0], -torque_i[1], -torque_i[2]};
     addLoads(sidata, i_forces, j_forces, none, torque_i, torque_j);

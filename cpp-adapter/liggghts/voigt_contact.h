@@ -94,17 +94,6 @@ private:
     VoigtModelTable table_;
 };
 
-// The engine's description of a touching contact as the core's frame: a
-// pair as two spheres (centre of j at the origin, of i at x_i - x_j, the
-// engine's minimum-image difference), a wall contact as a sphere on the
-// plane through the contact point with the engine's normal, moving with the
-// wall velocity there.
-GbStatus contactFrame(const SurfacesIntersectData &d, GbContactFrame *frame);
-
-// Adds a force on i (and its opposite on j for a pair) and the torques.
-void addLoads(const SurfacesIntersectData &d, ForceData &i_forces, ForceData &j_forces, const double *force_i,
-              const double *torque_i, const double *torque_j);
-
 // Ends the run on this rank with the core's message.
 void voigtFailed(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const char *who);
 
@@ -118,12 +107,23 @@ public:
     void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *) {}
     void connectToProperties(::PropertyRegistry &registry);
     double stressStrainExponent() { return 1.0; }
-    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    // inline: voigt x voigt goes straight to the one core call
+    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (sidata.contact_flags) *sidata.contact_flags |= LIGGGHTS::ContactModels::CONTACT_NORMAL_MODEL;
+        if (fused_)
+            wholeContact(sidata, i_forces, j_forces);
+        else
+            normalPart(sidata, i_forces, j_forces);
+    }
     void surfacesClose(SurfacesCloseData &, ForceData &, ForceData &) {}
     void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
+    // what the stock tangential, rolling and cohesion models read: kn, kt,
+    // gamman, gammat of the type pair
+    void handOn(SurfacesIntersectData &sidata);
     void normalPart(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
     void wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
 
@@ -132,6 +132,7 @@ private:
     VoigtModelTable models_;
     double **k_n_, **k_t_, **gamma_n_, **gamma_t_;
     bool no_attraction_;
+    bool fused_, fusedRolling_;   // share_->fused(), fusedRolling(), known once connected
 };
 
 // What tangential and rolling voigt have in common: three slots of the
@@ -153,15 +154,16 @@ public:
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 protected:
-    // Marks the contact, fills share_->frame if this model computes it
-    // (`always`: also when another voigt model would have), and returns the
-    // three slots to advance: the stored ones in a real force step, else a
-    // copy in `scratch` (setup pass, per-contact output).
-    double *begin(const SurfacesIntersectData &sidata, bool always, double *scratch, GbStatus *status);
+    // Fills share_->frame if this model computes it (`always`: also when
+    // another voigt model would have), and returns the three slots to
+    // advance: the stored ones in a real force step, else a copy in
+    // `scratch` (setup pass, per-contact output).
+    double *begin(const SurfacesIntersectData &sidata, bool always, double *scratch);
 
     const void *owner_;
     VoigtContactShare *share_;
     bool computesFrame_;
+    bool skip_;   // model voigt does the whole contact
     int offset_;
     const int contactFlag_;
     VoigtModelTable models_;
@@ -173,9 +175,16 @@ public:
                     LIGGGHTS::ContactModels::ContactModelBase *cmb);
 
     void connectToProperties(::PropertyRegistry &registry);
-    void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    // inline: in voigt x voigt the call costs only the flag and the test
+    void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (sidata.contact_flags) *sidata.contact_flags |= LIGGGHTS::ContactModels::CONTACT_TANGENTIAL_MODEL;
+        if (!skip_) intersect(sidata, i_forces, j_forces);
+    }
 
 private:
+    void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+
     double **k_t_, **gamma_t_, **mu_;
 };
 
@@ -185,9 +194,15 @@ public:
                  LIGGGHTS::ContactModels::ContactModelBase *cmb);
 
     void connectToProperties(::PropertyRegistry &registry);
-    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (sidata.contact_flags) *sidata.contact_flags |= LIGGGHTS::ContactModels::CONTACT_ROLLING_MODEL;
+        if (!skip_) intersect(sidata, i_forces, j_forces);
+    }
 
 private:
+    void intersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+
     double **mu_r_, **k_r_, **gamma_r_, **eta_r_;
 };
 

@@ -663,6 +663,28 @@ enum GbStatus granbond_voigt_compute_plane(const struct GbVoigtModel *model,
                                            struct GbContactOutput *out);
 
 /**
+ * `granbond_voigt_compute` / `granbond_voigt_compute_plane` for a contact
+ * whose frame the engine has already built (the same frame
+ * `granbond_contact_frame_pair` / `granbond_contact_frame_plane` give), for
+ * engines that call once per contact and step. The hot path: no pointer or
+ * frame checks, and a success leaves the error record alone. The result is
+ * checked: a non-finite force or torque (non-finite input) gives
+ * `GB_STATUS_NON_FINITE_INPUT` with a message. Same physics, same bits as
+ * the checked calls given the same frame.
+ *
+ * # Safety
+ * None of the pointers may be null. `model` from
+ * `granbond_voigt_model_new`; `frame` a frame with a unit normal and finite
+ * numbers; `state` `GRANBOND_CONTACT_STATE_LEN` doubles; `out` valid for
+ * writes; `dt` finite and >= 0.
+ */
+enum GbStatus granbond_voigt_compute_frame_unchecked(const struct GbVoigtModel *model,
+                                                     const struct GbContactFrame *frame,
+                                                     double dt,
+                                                     double *state,
+                                                     struct GbContactOutput *out);
+
+/**
  * The contact frame (normal, overlap, levers, velocities) of two spheres,
  * for engines that evaluate the Voigt parts separately.
  *

@@ -119,8 +119,9 @@ impl VoigtModel {
     }
 
     /// One step of any contact. Bodies apart exert nothing and forget their
-    /// history.
-    #[inline]
+    /// history. Always inlined: it is the body of the engines' per-contact
+    /// call (`granbond_voigt_compute_frame_unchecked`).
+    #[inline(always)]
     pub fn step_frame(&self, f: &ContactFrame, dt: f64, state: &mut ContactState, out: &mut ContactOutput) {
         *out = ContactOutput {
             overlap: f.overlap,

@@ -1,7 +1,7 @@
 //! `extern "C"` surface of the Voigt contact.
 
 use super::bond::check_bodies;
-use super::error::{Failure, Status};
+use super::error::{record, Failure, Status};
 use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut};
 use super::guard::{parameter_c_names, write_parameter_name};
 use crate::contact::model::{sphere_plane, sphere_sphere};
@@ -193,6 +193,44 @@ pub unsafe extern "C" fn granbond_voigt_compute_plane(
         m.step_frame(&sphere_plane(sp, pl), dt, s, o);
         Ok(())
     })
+}
+
+/// `granbond_voigt_compute` / `granbond_voigt_compute_plane` for a contact
+/// whose frame the engine has already built (the same frame
+/// `granbond_contact_frame_pair` / `granbond_contact_frame_plane` give), for
+/// engines that call once per contact and step. The hot path: no pointer or
+/// frame checks, and a success leaves the error record alone. The result is
+/// checked: a non-finite force or torque (non-finite input) gives
+/// `GB_STATUS_NON_FINITE_INPUT` with a message. Same physics, same bits as
+/// the checked calls given the same frame.
+///
+/// # Safety
+/// None of the pointers may be null. `model` from
+/// `granbond_voigt_model_new`; `frame` a frame with a unit normal and finite
+/// numbers; `state` `GRANBOND_CONTACT_STATE_LEN` doubles; `out` valid for
+/// writes; `dt` finite and >= 0.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_compute_frame_unchecked(
+    model: *const VoigtModel,
+    frame: *const ContactFrame,
+    dt: f64,
+    state: *mut f64,
+    out: *mut ContactOutput,
+) -> Status {
+    let o = &mut *out;
+    let s = ContactState::from_slots_mut(&mut *(state as *mut [f64; CONTACT_STATE_LEN]));
+    (*model).step_frame(&*frame, dt, s, o);
+    let loads = o.force_i.iter().chain(&o.torque_i).chain(&o.torque_j);
+    if loads.fold(0.0, |sum, x| sum + x * 0.0) == 0.0 {
+        // x * 0 is 0 for every finite x and NaN for NaN and infinity
+        return Status::Ok;
+    }
+    let failure = Failure::new(
+        Status::NonFiniteInput,
+        "non-finite force or torque (non-finite frame, state or dt)",
+    );
+    record("granbond_voigt_compute_frame_unchecked", &failure);
+    failure.status
 }
 
 /// The contact frame (normal, overlap, levers, velocities) of two spheres,

@@ -1,7 +1,10 @@
 //! The C ABI: the only `extern "C"` surface of the crate. No physics here;
 //! every function checks its pointers, runs its body under [`guard::call`]
 //! (no panic crosses the boundary) and reports failure as a [`Status`] plus
-//! a message from `granbond_last_error_message`.
+//! a message from `granbond_last_error_message`. The exception are the
+//! `*_unchecked` per-contact entries of engines' hot loops: their caller
+//! guarantees valid arguments, only the result is checked (and the body
+//! cannot panic; a panic would abort, as in any `extern "C"` function).
 
 pub mod abi;
 pub mod bond;

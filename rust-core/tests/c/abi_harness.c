@@ -1864,7 +1864,9 @@ static int test_voigt_parts(void)
     GbContactFrame frame, bad;
     GbContactOutput whole, parts;
     GbTangentialOutput t;
+    GbContactOutput fast;
     double state_whole[GRANBOND_CONTACT_STATE_LEN], state_parts[GRANBOND_CONTACT_STATE_LEN];
+    double state_fast[GRANBOND_CONTACT_STATE_LEN];
     double fn = 0.0, v_rel[3], torque[3], spring[3] = {0.0, 0.0, 0.0}, angle[3] = {0.0, 0.0, 0.0};
     int32_t slip = 0;
     int step, c;
@@ -1872,9 +1874,11 @@ static int test_voigt_parts(void)
     if (new_voigt_model(&p, &m))
         return 1;
 
-    /* The parts reproduce granbond_voigt_compute, step after step. */
+    /* The parts, and the unchecked whole step on the frame, reproduce
+     * granbond_voigt_compute, step after step. */
     memset(state_whole, 0, sizeof state_whole);
     memset(state_parts, 0, sizeof state_parts);
+    memset(state_fast, 0, sizeof state_fast);
     for (step = 0; step < 4; step++) {
         contact_at(&k, 1.0e-5 + 1.0e-6 * step, 0.01);
         k.v_i[0] += 2.0e-3;
@@ -1887,7 +1891,15 @@ static int test_voigt_parts(void)
         CHECK(same_contact_output(&whole, &parts), say("step %d: normal + tangential + rolling = whole step", step));
         CHECK(vec_close(state_whole, state_parts, 1e-15) && vec_close(state_whole + 3, state_parts + 3, 1e-15),
               say("step %d: same spring and rolling angle", step));
+        EXPECT_OK(granbond_voigt_compute_frame_unchecked(m, &frame, DT, state_fast, &fast),
+                  say("granbond_voigt_compute_frame_unchecked, step %d", step));
+        CHECK(same_contact_output(&fast, &whole) && memcmp(state_fast, state_whole, sizeof state_fast) == 0,
+              say("step %d: unchecked step on the frame = granbond_voigt_compute", step));
     }
+    bad = frame;
+    bad.w_j[2] = NAN;
+    EXPECT(granbond_voigt_compute_frame_unchecked(m, &bad, DT, state_fast, &fast), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_voigt_compute_frame_unchecked, NaN w_j: a non-finite torque is reported");
 
     /* The normal part alone: k_n overlap - gamma_n v_n. */
     contact_at(&k, 1.0e-5, 0.01);
