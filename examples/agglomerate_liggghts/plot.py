@@ -4,8 +4,9 @@ Usage: plot.py OUT_DIR   (the run's working directory: post/, log.liggghts)
 
 Reads the `dump local` frames post/bonds_<step>.txt (atom ids and the bond
 state slot `status`: 1 = intact) and the atom dumps post/atoms_<step>.txt.
+Reads post/breaks.txt (fix bond/breaklog) for the break modes.
 Writes into OUT_DIR:
-  broken_bonds.png    bonds broken over time (and the kinetic energy)
+  broken_bonds.png    bonds broken over time, by mode (and the kinetic energy)
   fragment_sizes.png  fragment size distribution at the end (fragments =
                       connected components of the spheres over intact bonds)
   fragments.png       the final state seen from the side, coloured by fragment
@@ -138,7 +139,20 @@ def main(out):
     broken = np.array([created - counts[s] for s in steps])
 
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    ax.plot(t_ms, broken, "o-", ms=3, color="C3", label="bonds broken")
+    # by mode, from the break log (fix bond/breaklog: step id_i id_j x y z mode sigma tau)
+    modes = {}
+    log_path = os.path.join(post, "breaks.txt")
+    if os.path.exists(log_path):
+        with open(log_path) as f:
+            for line in f:
+                words = line.split()
+                if len(words) >= 7 and not line.startswith("#"):
+                    modes.setdefault(words[6], []).append(int(words[0]))
+    for k, (mode, events) in enumerate(sorted(modes.items())):
+        events.sort()
+        ax.step(np.array(events) * DT * 1e3, np.arange(1, len(events) + 1), where="post",
+                color=f"C{k + 4}", label=f"{mode} (break log)")
+    ax.plot(t_ms, broken, "o-", ms=3, color="C3", label="all (dump local: intact bonds)")
     ax.set_xlabel("time (ms)")
     ax.set_ylabel(f"bonds broken (of {created} created)")
     ax.set_title("LIGGGHTS agglomerate impact: broken bonds")
@@ -148,7 +162,7 @@ def main(out):
         ax2.plot(np.array(th_steps) * DT * 1e3, np.array(ke) * 1e3, "--", color="C0", label="kinetic energy")
         ax2.set_ylabel("kinetic energy (mJ)", color="C0")
         lines = ax.get_lines() + ax2.get_lines()
-        ax.legend(lines, [l.get_label() for l in lines], loc="center right")
+        ax.legend(lines, [l.get_label() for l in lines], loc="center left", fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "broken_bonds.png"), dpi=120)
     plt.close(fig)
