@@ -23,7 +23,10 @@ struct Numbers(u64);
 
 impl Numbers {
     fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
     }
     fn vec(&mut self, scale: f64) -> [f64; 3] {
@@ -52,7 +55,13 @@ fn models() -> Vec<VoigtModel> {
 fn assert_same(a: &ContactOutput, b: &ContactOutput, sa: &[f64], sb: &[f64], what: &str) {
     // bitwise: PartialEq on f64 would let -0.0 == 0.0 through
     let bits = |o: &ContactOutput| {
-        let mut v: Vec<u64> = o.force_i.iter().chain(&o.torque_i).chain(&o.torque_j).map(|x| x.to_bits()).collect();
+        let mut v: Vec<u64> = o
+            .force_i
+            .iter()
+            .chain(&o.torque_i)
+            .chain(&o.torque_j)
+            .map(|x| x.to_bits())
+            .collect();
         v.extend([o.normal_force.to_bits(), o.overlap.to_bits()]);
         v.extend([o.touching, o.sliding, o.rolling_slip].map(|x| x as u64));
         v
@@ -86,12 +95,22 @@ fn pair_contacts_give_the_bits_of_granbond_voigt_compute() {
                 let (mut a, mut b) = (ContactOutput::default(), ContactOutput::default());
                 let mut frame = ContactFrame::default();
                 unsafe {
-                    assert_eq!(granbond_voigt_compute(model, &k, DT, sa.as_mut_ptr(), &mut a), Status::Ok);
+                    assert_eq!(
+                        granbond_voigt_compute(model, &k, DT, sa.as_mut_ptr(), &mut a),
+                        Status::Ok
+                    );
                     assert_eq!(granbond_contact_frame_pair(&k, &mut frame), Status::Ok);
-                    let status = granbond_voigt_compute_frame_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
+                    let status =
+                        granbond_voigt_compute_frame_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
                     assert_eq!(status, Status::Ok);
                 }
-                assert_same(&a, &b, &sa, &sb, &format!("model {m} contact {contact} step {step}"));
+                assert_same(
+                    &a,
+                    &b,
+                    &sa,
+                    &sb,
+                    &format!("model {m} contact {contact} step {step}"),
+                );
                 touching += a.touching;
                 for c in 0..3 {
                     k.x_i[c] += k.v_i[c] * DT * 100.0;
@@ -101,7 +120,10 @@ fn pair_contacts_give_the_bits_of_granbond_voigt_compute() {
             }
         }
     }
-    assert!(touching > 10_000, "the contacts hardly touched ({touching} steps)");
+    assert!(
+        touching > 10_000,
+        "the contacts hardly touched ({touching} steps)"
+    );
 }
 
 #[test]
@@ -129,13 +151,24 @@ fn wall_contacts_give_the_bits_of_granbond_voigt_compute_plane() {
                 let (mut a, mut b) = (ContactOutput::default(), ContactOutput::default());
                 let mut frame = ContactFrame::default();
                 unsafe {
-                    let status = granbond_voigt_compute_plane(model, &sphere, &plane, DT, sa.as_mut_ptr(), &mut a);
+                    let status =
+                        granbond_voigt_compute_plane(model, &sphere, &plane, DT, sa.as_mut_ptr(), &mut a);
                     assert_eq!(status, Status::Ok);
-                    assert_eq!(granbond_contact_frame_plane(&sphere, &plane, &mut frame), Status::Ok);
-                    let status = granbond_voigt_compute_frame_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
+                    assert_eq!(
+                        granbond_contact_frame_plane(&sphere, &plane, &mut frame),
+                        Status::Ok
+                    );
+                    let status =
+                        granbond_voigt_compute_frame_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
                     assert_eq!(status, Status::Ok);
                 }
-                assert_same(&a, &b, &sa, &sb, &format!("model {m} wall contact {contact} step {step}"));
+                assert_same(
+                    &a,
+                    &b,
+                    &sa,
+                    &sb,
+                    &format!("model {m} wall contact {contact} step {step}"),
+                );
             }
         }
     }
@@ -160,10 +193,16 @@ fn a_non_finite_result_is_reported() {
         assert!(out.force_i[0] > 0.0);
         for bad in [f64::NAN, f64::INFINITY] {
             frame.v_i[1] = bad;
-            let status = granbond_voigt_compute_frame_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
+            let status =
+                granbond_voigt_compute_frame_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
             assert_eq!(status, Status::NonFiniteInput, "v_i = {bad}");
-            let message = CStr::from_ptr(granbond_last_error_message()).to_string_lossy().into_owned();
-            assert!(message.contains("granbond_voigt_compute_frame_unchecked"), "{message}");
+            let message = CStr::from_ptr(granbond_last_error_message())
+                .to_string_lossy()
+                .into_owned();
+            assert!(
+                message.contains("granbond_voigt_compute_frame_unchecked"),
+                "{message}"
+            );
         }
     }
 }

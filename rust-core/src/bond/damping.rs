@@ -2,6 +2,8 @@
 //! and torque is reduced by a fraction of its magnitude, directed against the
 //! relative motion, so its power on that motion is never positive.
 
+use super::hysteresis::select;
+use super::lanes::div2;
 use crate::vector::Vec3;
 
 /// Kernels pass `smooth` as a constant.
@@ -11,25 +13,57 @@ use crate::vector::Vec3;
 pub fn sign(v: f64, v_eps: f64, smooth: bool) -> f64 {
     if smooth {
         (v / v_eps).clamp(-1.0, 1.0)
-    } else if v > 0.0 {
-        1.0
-    } else if v < 0.0 {
-        -1.0
     } else {
-        0.0
+        // Without jumps: the sign of the normal rate varies from bond to bond.
+        select(v > 0.0, 1.0, select(v < 0.0, -1.0, 0.0))
     }
 }
 
 /// `v/|v|`, or its smooth form `v / max(|v|, v_eps)`; zero for `v = 0`.
 #[inline(always)]
 pub fn unit(v: Vec3, v_eps: f64, smooth: bool) -> Vec3 {
-    let len = v.norm();
-    let scale = if smooth { len.max(v_eps) } else { len };
+    scaled_unit(v, unit_scale(v.norm(), v_eps, smooth))
+}
+
+/// The divisor of [`unit`] for a vector of length `len`.
+#[inline(always)]
+pub fn unit_scale(len: f64, v_eps: f64, smooth: bool) -> f64 {
+    if smooth {
+        len.max(v_eps)
+    } else {
+        len
+    }
+}
+
+/// `v / scale`, zero unless `scale > 0` (the last step of [`unit`]).
+#[inline(always)]
+pub fn scaled_unit(v: Vec3, scale: f64) -> Vec3 {
     if scale > 0.0 {
-        v / scale
+        let (x, y) = div2(v.x, scale, v.y, scale);
+        Vec3::new(x, y, v.z / scale)
     } else {
         Vec3::zeros()
     }
+}
+
+/// [`scaled_unit`] of two vectors, their divisions paired.
+#[inline(always)]
+pub fn scaled_units(a: Vec3, scale_a: f64, b: Vec3, scale_b: f64) -> (Vec3, Vec3) {
+    let (ax, bx) = div2(a.x, scale_a, b.x, scale_b);
+    let (ay, by) = div2(a.y, scale_a, b.y, scale_b);
+    let (az, bz) = div2(a.z, scale_a, b.z, scale_b);
+    (
+        if scale_a > 0.0 {
+            Vec3::new(ax, ay, az)
+        } else {
+            Vec3::zeros()
+        },
+        if scale_b > 0.0 {
+            Vec3::new(bx, by, bz)
+        } else {
+            Vec3::zeros()
+        },
+    )
 }
 
 /// `F - eta |F| sgn(v_n)` for the scalar normal force.
@@ -41,5 +75,11 @@ pub fn damp_scalar(force: f64, eta: f64, rate: f64, eps: f64, smooth: bool) -> f
 /// `F - eta |F| v/|v|` for a force or torque vector.
 #[inline(always)]
 pub fn damp_vector(force: Vec3, eta: f64, rate: Vec3, eps: f64, smooth: bool) -> Vec3 {
-    force - unit(rate, eps, smooth) * (eta * force.norm())
+    damp_along(force, force.norm(), eta, unit(rate, eps, smooth))
+}
+
+/// [`damp_vector`] given `|F|` and the (smooth) unit vector of the rate.
+#[inline(always)]
+pub fn damp_along(force: Vec3, force_norm: f64, eta: f64, unit_rate: Vec3) -> Vec3 {
+    force - unit_rate * (eta * force_norm)
 }

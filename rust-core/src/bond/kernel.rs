@@ -3,12 +3,15 @@
 //! monomorphised kernel per combination of the seven feature bits.
 
 use super::breakage::{distance_criterion, section_stresses, stress_criterion, BreakMode};
-use super::damping::{damp_scalar, damp_vector};
+use super::damping::{damp_along, damp_scalar, scaled_unit, scaled_units, unit_scale};
+use super::lanes::norms;
 use super::model::BondModel;
 use super::section::{lever_arms, section};
 use super::shear::update_shear_force;
 use super::state::{BondOutput, BondState, BondStatus};
-use super::twist_bend::{advance_bend, advance_twist, restoring_torque, split_relative_spin};
+use super::twist_bend::{
+    advance_bend, advance_twist, restoring_torque, restoring_torques, split_relative_spin,
+};
 use crate::kinematics::{centre_line, tangential_slip_velocity, KinematicsError, PairKinematics};
 use crate::vector::{v3, Vec3};
 use seq_macro::seq;
@@ -98,18 +101,31 @@ pub fn bond_step<const F: u32>(
         state.shear_force = shear_force.into();
     }
 
+    let (twist, bend) = (F & TWIST != 0, F & BEND != 0);
     let (mut w_along, mut w_across) = (Vec3::zeros(), Vec3::zeros());
     let (mut twist_torque, mut bend_torque) = (Vec3::zeros(), Vec3::zeros());
-    if F & (TWIST | BEND) != 0 {
+    if twist || bend {
         (w_along, w_across) = split_relative_spin(v3(kin.w_i) - v3(kin.w_j), n);
-        if F & TWIST != 0 {
+        if twist && bend {
+            let theta_t = advance_twist(v3(state.twist_angle), w_along, n, dt);
+            let theta_b = advance_bend(v3(state.bend_angle), w_across, n, dt);
+            let ((t, tm), (b, bm)) = restoring_torques(
+                (theta_t, state.twist_max, &model.twist, sec.polar),
+                (theta_b, state.bend_max, &model.bend, sec.inertia),
+            );
+            state.twist_angle = theta_t.into();
+            state.twist_max = tm;
+            twist_torque = t;
+            state.bend_angle = theta_b.into();
+            state.bend_max = bm;
+            bend_torque = b;
+        } else if twist {
             let theta = advance_twist(v3(state.twist_angle), w_along, n, dt);
             let (t, m) = restoring_torque(theta, state.twist_max, &model.twist, sec.polar);
             state.twist_angle = theta.into();
             state.twist_max = m;
             twist_torque = t;
-        }
-        if F & BEND != 0 {
+        } else {
             let theta = advance_bend(v3(state.bend_angle), w_across, n, dt);
             let (t, m) = restoring_torque(theta, state.bend_max, &model.bend, sec.inertia);
             state.bend_angle = theta.into();
@@ -118,9 +134,11 @@ pub fn bond_step<const F: u32>(
         }
     }
 
-    let shear_magnitude = if F & SHEAR != 0 { shear_force.norm() } else { 0.0 };
-    let twist_magnitude = if F & TWIST != 0 { twist_torque.norm() } else { 0.0 };
-    let bend_magnitude = if F & BEND != 0 { bend_torque.norm() } else { 0.0 };
+    // Lengths, two per instruction: the loads (for the stresses and the
+    // damping) and, with damping, the rates the damping opposes.
+    let (shear, damping) = (F & SHEAR != 0, F & DAMPING != 0);
+    let (shear_magnitude, slip_speed) = norms(shear_force, shear, slip, shear && damping);
+    let (twist_magnitude, bend_magnitude) = norms(twist_torque, twist, bend_torque, bend);
     let (sigma, tau) = section_stresses(
         normal_force,
         shear_magnitude,
@@ -142,7 +160,7 @@ pub fn bond_step<const F: u32>(
         }
     }
 
-    if F & DAMPING != 0 {
+    if damping {
         let smooth = F & SMOOTH != 0;
         let p = &model.params;
         let (ve, we) = (p.smooth_velocity, p.smooth_angular_velocity);
@@ -150,21 +168,36 @@ pub fn bond_step<const F: u32>(
             let vn = (v3(kin.v_i) - v3(kin.v_j)).dot(&n);
             normal_force = damp_scalar(normal_force, p.eta_fn, vn, ve, smooth);
         }
-        if F & SHEAR != 0 {
-            shear_force = damp_vector(shear_force, p.eta_ft, slip, ve, smooth);
+        if shear {
+            let direction = scaled_unit(slip, unit_scale(slip_speed, ve, smooth));
+            shear_force = damp_along(shear_force, shear_magnitude, p.eta_ft, direction);
         }
-        if F & TWIST != 0 {
-            twist_torque = damp_vector(twist_torque, p.eta_tn, w_along, we, smooth);
-        }
-        if F & BEND != 0 {
-            bend_torque = damp_vector(bend_torque, p.eta_tt, w_across, we, smooth);
+        if twist || bend {
+            let (spin_along, spin_across) = norms(w_along, twist, w_across, bend);
+            let (scale_t, scale_b) = (
+                unit_scale(spin_along, we, smooth),
+                unit_scale(spin_across, we, smooth),
+            );
+            let (dir_t, dir_b) = if twist && bend {
+                scaled_units(w_along, scale_t, w_across, scale_b)
+            } else if twist {
+                (scaled_unit(w_along, scale_t), Vec3::zeros())
+            } else {
+                (Vec3::zeros(), scaled_unit(w_across, scale_b))
+            };
+            if twist {
+                twist_torque = damp_along(twist_torque, twist_magnitude, p.eta_tn, dir_t);
+            }
+            if bend {
+                bend_torque = damp_along(bend_torque, bend_magnitude, p.eta_tt, dir_b);
+            }
         }
     }
 
     let force = n * normal_force + shear_force;
     let couple = bend_torque + twist_torque;
     let (mut torque_i, mut torque_j) = (couple, -couple);
-    if F & SHEAR != 0 {
+    if shear {
         let arm = n.cross(&shear_force);
         torque_i -= arm * lever_i;
         torque_j -= arm * lever_j;

@@ -7,6 +7,7 @@ pub mod damping;
 pub mod energy;
 pub mod hysteresis;
 pub mod kernel;
+pub mod lanes;
 pub mod model;
 pub mod normal_law;
 pub mod params;

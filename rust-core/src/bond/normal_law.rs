@@ -1,7 +1,7 @@
 //! Normal force of the bond: square-root law in compression, linear in
 //! tension, six branches with load history (spec eq. 4-6).
 
-use super::hysteresis::Loop;
+use super::hysteresis::{select, Loop};
 
 /// The six-branch normal law of one bond type.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,11 +35,7 @@ impl NormalLaw {
     /// `delta_eps` (continuous at `delta_eps`, finite slope at 0).
     #[inline(always)]
     pub fn root(&self, delta: f64) -> f64 {
-        if delta < self.linear_below {
-            delta * self.inv_sqrt_eps
-        } else {
-            delta.sqrt()
-        }
+        select(delta < self.linear_below, delta * self.inv_sqrt_eps, delta.sqrt())
     }
 
     /// Spec eq. 4, applied before the law so `delta_min <= delta <= delta_max`.
@@ -49,19 +45,17 @@ impl NormalLaw {
     pub fn update_history(&self, delta: f64, delta_max: f64, delta_min: f64) -> (f64, f64) {
         let (mut hi, mut lo) = (delta_max, delta_min);
         if self.history_reset {
-            if delta < 0.0 {
-                hi = 0.0;
-            }
-            if delta > 0.0 {
-                lo = 0.0;
-            }
+            hi = select(delta < 0.0, 0.0, hi);
+            lo = select(delta > 0.0, 0.0, lo);
         }
         (hi.max(delta), lo.min(delta))
     }
 
     /// Normal stress `Fn / A` (positive = repulsive) for an up-to-date history.
     /// `tension` / `compression` switch the halves of the law off; kernels
-    /// pass constants, so the switched-off half is compiled out.
+    /// pass constants, so the switched-off half is compiled out. Both halves
+    /// are evaluated and the one for the sign of `delta` is selected without
+    /// a jump (the sign varies from bond to bond; see [`select`]).
     #[inline(always)]
     pub fn stress(
         &self,
@@ -71,16 +65,16 @@ impl NormalLaw {
         tension: bool,
         compression: bool,
     ) -> f64 {
-        if delta >= 0.0 {
-            if compression {
-                self.compression.value(self.root(delta), self.root(delta_max))
-            } else {
-                0.0
-            }
-        } else if tension {
+        let pushed = if compression {
+            self.compression.value(self.root(delta), self.root(delta_max))
+        } else {
+            0.0
+        };
+        let pulled = if tension {
             -self.tension.value(-delta, -delta_min)
         } else {
             0.0
-        }
+        };
+        select(delta >= 0.0, pushed, pulled)
     }
 }

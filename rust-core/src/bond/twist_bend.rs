@@ -3,6 +3,7 @@
 //! to their magnitudes so the torque does not depend on the coordinate axes.
 
 use super::hysteresis::Loop;
+use super::lanes::{div2, sqrt2};
 use crate::vector::{tangential_part, Vec3};
 
 /// Splits the relative angular velocity into its part along `n` (twisting)
@@ -38,4 +39,22 @@ pub fn restoring_torque(theta: Vec3, theta_max: f64, law: &Loop, moment: f64) ->
     } else {
         (Vec3::zeros(), new_max)
     }
+}
+
+/// [`restoring_torque`] of two angles at once (twisting and bending): their
+/// norms and quotients share instructions (see [`super::lanes`]); each result
+/// is the same, bit for bit. Arguments per angle: `(theta, theta_max, law,
+/// moment)`.
+#[inline(always)]
+pub fn restoring_torques(
+    a: (Vec3, f64, &Loop, f64),
+    b: (Vec3, f64, &Loop, f64),
+) -> ((Vec3, f64), (Vec3, f64)) {
+    let (mag_a, mag_b) = sqrt2(a.0.norm_squared(), b.0.norm_squared());
+    let (max_a, max_b) = (a.1.max(mag_a), b.1.max(mag_b));
+    let (h_a, h_b) = (a.2.value(mag_a, max_a), b.2.value(mag_b, max_b));
+    let (f_a, f_b) = div2(-h_a * a.3, mag_a, -h_b * b.3, mag_b);
+    let t_a = if mag_a > 0.0 { a.0 * f_a } else { Vec3::zeros() };
+    let t_b = if mag_b > 0.0 { b.0 * f_b } else { Vec3::zeros() };
+    ((t_a, max_a), (t_b, max_b))
 }
