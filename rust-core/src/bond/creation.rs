@@ -9,12 +9,16 @@ use crate::kinematics::{centre_line, KinematicsError, PairKinematics};
 /// either this is step `create_step` or bonds are created every step. An
 /// intact bond is kept; a broken one comes back only under `create_always`.
 pub fn may_create(params: &BondParams, status: BondStatus, r: f64, step: i64) -> bool {
-    let allowed = match status {
+    status_and_step_allow(params, status, step) && r < params.create_distance
+}
+
+/// The part of [`may_create`] that needs no kinematics.
+pub fn status_and_step_allow(params: &BondParams, status: BondStatus, step: i64) -> bool {
+    match status {
         BondStatus::Intact => false,
         BondStatus::Broken => BondParams::switch(params.create_always),
         BondStatus::Unbonded => creates_at(params, step),
-    };
-    allowed && r < params.create_distance
+    }
 }
 
 /// Whether bonds may form at `step` at all.
@@ -45,9 +49,16 @@ impl BondModel {
         step: i64,
         state: &mut BondState,
     ) -> Result<bool, KinematicsError> {
+        // Engines call this for every pair every step: decide what the
+        // status and step allow before touching the kinematics (an intact
+        // bond, the common case, costs one comparison).
+        let status = state.status();
+        if !status_and_step_allow(&self.params, status, step) {
+            return Ok(false);
+        }
         kin.check()?;
         let line = centre_line(kin)?;
-        if may_create(&self.params, state.status(), line.r, step) {
+        if may_create(&self.params, status, line.r, step) {
             *state = BondState::created(line.r);
             Ok(true)
         } else {
