@@ -1,0 +1,215 @@
+"""Two bonded spheres under a prescribed motion (decks/bond_motion.in): the
+forces AND torques LIGGGHTS reports on both spheres equal the spec's closed
+forms every step, to 1e-6 relative.
+
+Sphere 1 (j in the spec) is held, sphere 2 (i) is driven by fix move; the
+bond (created at step 1, r0 = r) lies along x, n = (x_2 - x_1)/r. The
+tangential and angular history integrates every step from step 1 on, so at
+step s the slip, twist and bend are sums over steps 1..s (the creation step
+included). rb = lambda min R, A = pi rb^2, J = pi rb^4/2, I = pi rb^4/4,
+rc_i = rc_j = r/2, no damping (eta = 0). Claims (spec bond-nonlinear.md):
+
+- shear (sphere 2 translates along y): F_2 = Fn n + Ft with
+  Ft = -k_ft A u_t t, u_t = y_2(s) - y_2(0) the accumulated slip, t the unit
+  tangent of y (y minus its n part) and Fn = k_fn2 A (r0 - r) the (tiny,
+  second-order) virgin tension of the stretched centre line; F_1 = -F_2;
+  T_2 = -rc_i n x Ft, T_1 = -rc_j n x Ft (both spheres turn the same way).
+  Geometry: |vt| = v cos(phi), phi = y/r0 <= 5e-4, so the true slip differs
+  from y by y phi^2/6 <= 4.2e-8 relative (and the re-projection of Ft onto
+  the turning tangent plane loses ~ s dphi^2 < 1e-10): below 1e-7.
+- twist (sphere 2 spins about the bond axis through its centre): no force,
+  T_2 = Tn = -k_tn J theta_n n, T_1 = -Tn, theta_n = sum w dt. Exact
+  (n does not move; w is parallel to n, so there is no slip).
+- bend (sphere 2 spins about z through its centre): theta_t = sum w dt z,
+  Tt = -k_tt I theta_t; the spin also slips the contact point,
+  vtr = -(rc_i w_i) x n, so Ft = +k_ft A rc_i |theta_t| y;
+  F_2 = Ft, F_1 = -Ft, T_2 = -rc_i n x Ft + Tt, T_1 = -rc_j n x Ft - Tt.
+  Exact (the centres do not move).
+
+The stiffnesses of shear, twisting and bending differ (k_ft, k_tn, k_tt
+below) so an exchanged one fails the test.
+
+usage: check_bond_motion.py --mode MODE --engine EXE --workdir DIR
+"""
+
+import argparse
+import math
+import os
+
+from liggghts_run import Failure, main, run_ok
+
+RELATIVE_TOLERANCE = 1e-6
+DT = 1e-6
+
+PARAMS = {
+    "diameter": 2e-3,
+    "lambda": 0.5,
+    "k_fn1": 1e9, "ku_fn1": 2e9, "kc_fn1": 5e8,
+    "k_fn2": 1e9, "ku_fn2": 2e9, "kc_fn2": 5e8,
+    "k_ft": 4e8,
+    "k_tn": 3e8,
+    "k_tt": 2e8,
+    "nrun": 1000,
+}
+MODES = {
+    # 1e-9 m per step, 1e-6 m (phi = 5e-4) after 1000 steps
+    "shear": {"motion": "shear", "vshear": 1e-3},
+    # 2 pi / 100 rad/s: 6.3e-5 rad per step
+    "twist": {"motion": "twist", "period": 100.0},
+    "bend": {"motion": "bend", "period": 100.0},
+}
+
+
+def read_dump(path):
+    """[(step, {id: [x y z fx fy fz tqx tqy tqz wx wy wz]})] from the dump."""
+    frames = []
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().split("\n")
+    k = 0
+    while k < len(lines):
+        if lines[k].startswith("ITEM: TIMESTEP"):
+            step = int(lines[k + 1])
+            natoms = int(lines[k + 3])
+            atoms = {}
+            for line in lines[k + 9:k + 9 + natoms]:
+                v = line.split()
+                atoms[int(v[0])] = [float(c) for c in v[1:]]
+            frames.append((step, atoms))
+            k += 9 + natoms
+        else:
+            k += 1
+    return frames
+
+
+def sub(a, b):
+    return [x - y for x, y in zip(a, b)]
+
+
+def add(a, b):
+    return [x + y for x, y in zip(a, b)]
+
+
+def scale(s, a):
+    return [s * x for x in a]
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def norm(a):
+    return math.sqrt(dot(a, a))
+
+
+def section(p):
+    rb = p["lambda"] * p["diameter"] / 2
+    return math.pi * rb ** 2, math.pi * rb ** 4 / 2, math.pi * rb ** 4 / 4
+
+
+def expected(mode, p, step, a1, a2, start, r0, spin):
+    """(F_1, F_2, T_1, T_2) of the closed form at this step; `spin` is the
+    accumulated rotation angle of sphere 2 (sum of w dt, steps 1..s)."""
+    area, polar, inertia = section(p)
+    d = sub(a2[0:3], a1[0:3])
+    r = norm(d)
+    n = scale(1 / r, d)
+    rc = r / 2
+    if mode == "shear":
+        fn = p["k_fn2"] * area * (r0 - r)          # virgin tension: r >= r0
+        ey = [0.0, 1.0, 0.0]
+        t = sub(ey, scale(dot(ey, n), n))
+        t = scale(1 / norm(t), t)
+        slip = a2[1] - start[1]
+        ft = scale(-p["k_ft"] * area * slip, t)
+        f2 = add(scale(fn, n), ft)
+        return scale(-1, f2), f2, scale(-rc, cross(n, ft)), scale(-rc, cross(n, ft))
+    if mode == "twist":
+        tn = scale(-p["k_tn"] * polar * spin, n)
+        zero = [0.0, 0.0, 0.0]
+        return zero, zero, scale(-1, tn), tn
+    if mode == "bend":
+        tt = [0.0, 0.0, -p["k_tt"] * inertia * spin]
+        ft = [0.0, p["k_ft"] * area * rc * spin, 0.0]
+        shear_torque = scale(-rc, cross(n, ft))
+        return scale(-1, ft), ft, sub(shear_torque, tt), add(shear_torque, tt)
+    raise ValueError(mode)
+
+
+def verify(frames, mode, p):
+    """Compares every step with the closed form; returns (message, worst
+    relative error). Each vector is compared component-wise against
+    1e-6 |expected vector|; a vector expected to be zero (twist forces) must
+    be below 1e-6 |T| / rc."""
+    if len(frames) < p["nrun"] + 1:
+        raise Failure(f"only {len(frames)} dump frames for {p['nrun']} steps")
+    start = frames[0][1][2]
+    r0 = None
+    spin = 0.0
+    worst = 0.0
+    checked = 0
+    names = ("F_1", "F_2", "T_1", "T_2", "(T_1+T_2)/2", "(T_2-T_1)/2")
+    for step, atoms in frames:
+        a1, a2 = atoms[1], atoms[2]
+        if step == 0:
+            continue
+        if step == 1:
+            r0 = norm(sub(a2[0:3], a1[0:3]))
+        w = a2[9:12]
+        if mode in ("twist", "bend"):
+            axis = [1.0, 0.0, 0.0] if mode == "twist" else [0.0, 0.0, 1.0]
+            if norm(sub(w, scale(dot(w, axis), axis))) != 0.0 or dot(w, axis) <= 0.0:
+                raise Failure(f"step {step}: omega of sphere 2 is {w}, not a spin about {axis}")
+            if a1[9:12] != [0.0, 0.0, 0.0]:
+                raise Failure(f"step {step}: the held sphere spins: {a1[9:12]}")
+            spin += dot(w, axis) * DT
+        want = expected(mode, p, step, a1, a2, start, r0, spin)
+        got = (a1[3:6], a2[3:6], a1[6:9], a2[6:9])
+        # the halves of the torque sum and difference: the shear couple
+        # -rc n x Ft and the bond torque Tn + Tt on their own, so a small
+        # bending torque is not hidden under a large shear couple
+        got += (scale(0.5, add(got[2], got[3])), scale(0.5, sub(got[3], got[2])))
+        want += (scale(0.5, add(want[2], want[3])), scale(0.5, sub(want[3], want[2])))
+        rc = norm(sub(a2[0:3], a1[0:3])) / 2
+        torque_scale = max(norm(want[2]), norm(want[3]))
+        for name, g, e in zip(names, got, want):
+            size = norm(e)
+            if size == 0.0:
+                limit = RELATIVE_TOLERANCE * torque_scale / (rc if name.startswith("F") else 1.0)
+                if norm(g) > limit:
+                    raise Failure(f"step {step}: {name} = {g}, expected zero (limit {limit:.3g})")
+                continue
+            err = max(abs(x - y) for x, y in zip(g, e)) / size
+            worst = max(worst, err)
+            if err > RELATIVE_TOLERANCE:
+                raise Failure(f"step {step}: {name} = {g!r}, the closed form gives {e!r} "
+                              f"(relative error {err:.3g})")
+        checked += 1
+    if checked < p["nrun"]:
+        raise Failure(f"only {checked} steps checked")
+    last = frames[-1][1]
+    return f"closed form matched on {checked} steps (F and T of both spheres), final " \
+           f"F_2 {last[2][3:6]}, T_2 {last[2][6:9]}", worst
+
+
+def check_run(engine, mode, workdir):
+    p = dict(PARAMS)
+    variables = {k: v for k, v in PARAMS.items() if not k.startswith(("ku_", "kc_"))}
+    variables.update(MODES[mode])
+    variables["out"] = "motion.dump"
+    run_ok([engine], "bond_motion.in", workdir, variables)
+    frames = read_dump(os.path.join(workdir, "motion.dump"))
+    message, worst = verify(frames, mode, p)
+    print(f"{mode}: {message}; worst relative error {worst:.3g}")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--mode", choices=sorted(MODES), required=True)
+    parser.add_argument("--engine", required=True)
+    parser.add_argument("--workdir", required=True)
+    a = parser.parse_args()
+    main(lambda: check_run(a.engine, a.mode, a.workdir))
