@@ -95,7 +95,8 @@ pub fn centre_line(k: &PairKinematics) -> Result<CentreLine, KinematicsError> {
         return Err(KinematicsError::CoincidentCentres);
     }
     let r = r2.sqrt();
-    Ok(CentreLine { r, n: d / r })
+    // One division for the three components.
+    Ok(CentreLine { r, n: d * (1.0 / r) })
 }
 
 /// Relative velocity of the material points of `i` and `j` that meet at the

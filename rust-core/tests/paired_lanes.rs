@@ -72,11 +72,20 @@ fn paired_restoring_torques_are_the_single_ones() {
         let (ta, tb) = (rng.vec(), rng.vec());
         let (ma, mb) = (rng.value().abs(), rng.value().abs());
         let (ja, jb) = (rng.value().abs(), rng.value().abs());
-        let ((pa, qa), (pb, qb)) = restoring_torques((ta, ma, &twist, ja), (tb, mb, &bend, jb));
-        let (sa, ra) = restoring_torque(ta, ma, &twist, ja);
-        let (sb, rb) = restoring_torque(tb, mb, &bend, jb);
+        let ((pa, qa, na), (pb, qb, nb)) = restoring_torques((ta, ma, &twist, ja), (tb, mb, &bend, jb));
+        let (sa, ra, ma_) = restoring_torque(ta, ma, &twist, ja);
+        let (sb, rb, mb_) = restoring_torque(tb, mb, &bend, jb);
         assert!(same(pa, sa) && same(pb, sb), "{ta:?} {tb:?}");
         assert_eq!((qa.to_bits(), qb.to_bits()), (ra.to_bits(), rb.to_bits()));
+        assert_eq!((na.to_bits(), nb.to_bits()), (ma_.to_bits(), mb_.to_bits()));
+        // The magnitude |h| * moment replaces the norm of the torque (no
+        // square root): equal up to a few roundings.
+        for (t, m) in [(pa, na), (pb, nb)] {
+            let norm = t.norm();
+            if norm.is_finite() {
+                assert!((norm - m).abs() <= 1e-14 * norm.max(m), "{norm} vs {m}");
+            }
+        }
     }
 }
 
@@ -90,8 +99,9 @@ fn paired_unit_vectors_are_the_plain_quotients() {
             let plain = |v: Vec3| {
                 let len = v.norm();
                 let scale = if smooth { len.max(eps) } else { len };
+                // The kernel's formula: one reciprocal, three products.
                 if scale > 0.0 {
-                    v / scale
+                    v * (1.0 / scale)
                 } else {
                     Vec3::zeros()
                 }

@@ -16,20 +16,23 @@ pub enum BreakMode {
 }
 
 /// Normal and shear stress of the bond section from the undamped loads:
-/// `sigma = |Fn|/A + |Tt| rb / I`, `tau = |Ft|/A + |Tn| rb / J`.
+/// `sigma = |Fn|/A + |Tt| rb / I`, `tau = |Ft|/A + |Tn| rb / J`, with
+/// `A = pi rb^2`, `J = pi rb^4 / 2`, `I = J / 2` (see [`super::section`]),
+/// so `1/A = 1/(pi rb^2)`, `rb/I = 4/(pi rb^3)`, `rb/J = 2/(pi rb^3)`: given
+/// `inv_rb = 1 / rb` (computed once per bond) no division is left.
 #[inline(always)]
 pub fn section_stresses(
     normal_force: f64,
     shear_force: f64,
     twist_torque: f64,
     bend_torque: f64,
-    rb: f64,
-    area: f64,
-    polar: f64,
-    inertia: f64,
+    inv_rb: f64,
 ) -> (f64, f64) {
-    let sigma = normal_force.abs() / area + bend_torque * rb / inertia;
-    let tau = shear_force / area + twist_torque * rb / polar;
+    use std::f64::consts::FRAC_1_PI;
+    let inv_area = FRAC_1_PI * (inv_rb * inv_rb);
+    let per_moment = inv_area * inv_rb; // 1 / (pi rb^3)
+    let sigma = normal_force.abs() * inv_area + bend_torque * (4.0 * per_moment);
+    let tau = shear_force * inv_area + twist_torque * (2.0 * per_moment);
     (sigma, tau)
 }
 

@@ -3,10 +3,10 @@
 //! monomorphised kernel per combination of the seven feature bits.
 
 use super::breakage::{distance_criterion, section_stresses, stress_criterion, BreakMode};
-use super::damping::{damp_along, damp_scalar, scaled_unit, scaled_units, unit_scale};
-use super::lanes::norms;
+use super::damping::{damp_along, damp_scalar, reciprocal_unit, sign, unit_scale};
+use super::lanes::{norms, reciprocals};
 use super::model::BondModel;
-use super::section::{lever_arms, section};
+use super::section::{lever_arms_scaled, section};
 use super::shear::update_shear_force;
 use super::state::{BondOutput, BondState, BondStatus};
 use super::twist_bend::{
@@ -77,6 +77,8 @@ pub fn bond_step<const F: u32>(
         }
     }
     let sec = section(model.params.lambda, kin.radius_i, kin.radius_j);
+    // The only divisions by the radii: the stresses and lever arms multiply.
+    let (inv_rb, inv_radius_sum) = super::section::reciprocals(&sec, kin.radius_i, kin.radius_j);
 
     let mut normal_force = 0.0;
     if F & (TENSION | COMPRESSION) != 0 {
@@ -95,59 +97,60 @@ pub fn bond_step<const F: u32>(
     let mut slip = Vec3::zeros();
     let mut shear_force = Vec3::zeros();
     if F & SHEAR != 0 {
-        (lever_i, lever_j) = lever_arms(line.r, kin.radius_i, kin.radius_j);
+        (lever_i, lever_j) = lever_arms_scaled(line.r, inv_radius_sum, kin.radius_i, kin.radius_j);
         slip = tangential_slip_velocity(kin, n, lever_i, lever_j);
         shear_force = update_shear_force(v3(state.shear_force), model.params.k_ft * sec.area, dt, slip, n);
         state.shear_force = shear_force.into();
     }
 
     let (twist, bend) = (F & TWIST != 0, F & BEND != 0);
-    let (mut w_along, mut w_across) = (Vec3::zeros(), Vec3::zeros());
+    let (w_along, w_across, spin_rate) = if twist || bend {
+        split_relative_spin(v3(kin.w_i) - v3(kin.w_j), n)
+    } else {
+        (Vec3::zeros(), Vec3::zeros(), 0.0)
+    };
     let (mut twist_torque, mut bend_torque) = (Vec3::zeros(), Vec3::zeros());
+    // |torque| = |h| * moment, from the laws (no square roots).
+    let (mut twist_magnitude, mut bend_magnitude) = (0.0, 0.0);
     if twist || bend {
-        (w_along, w_across) = split_relative_spin(v3(kin.w_i) - v3(kin.w_j), n);
         if twist && bend {
             let theta_t = advance_twist(v3(state.twist_angle), w_along, n, dt);
             let theta_b = advance_bend(v3(state.bend_angle), w_across, n, dt);
-            let ((t, tm), (b, bm)) = restoring_torques(
+            let ((t, tm, ta), (b, bm, ba)) = restoring_torques(
                 (theta_t, state.twist_max, &model.twist, sec.polar),
                 (theta_b, state.bend_max, &model.bend, sec.inertia),
             );
             state.twist_angle = theta_t.into();
             state.twist_max = tm;
-            twist_torque = t;
+            (twist_torque, twist_magnitude) = (t, ta);
             state.bend_angle = theta_b.into();
             state.bend_max = bm;
-            bend_torque = b;
+            (bend_torque, bend_magnitude) = (b, ba);
         } else if twist {
             let theta = advance_twist(v3(state.twist_angle), w_along, n, dt);
-            let (t, m) = restoring_torque(theta, state.twist_max, &model.twist, sec.polar);
+            let (t, m, a) = restoring_torque(theta, state.twist_max, &model.twist, sec.polar);
             state.twist_angle = theta.into();
             state.twist_max = m;
-            twist_torque = t;
+            (twist_torque, twist_magnitude) = (t, a);
         } else {
             let theta = advance_bend(v3(state.bend_angle), w_across, n, dt);
-            let (t, m) = restoring_torque(theta, state.bend_max, &model.bend, sec.inertia);
+            let (t, m, a) = restoring_torque(theta, state.bend_max, &model.bend, sec.inertia);
             state.bend_angle = theta.into();
             state.bend_max = m;
-            bend_torque = t;
+            (bend_torque, bend_magnitude) = (t, a);
         }
     }
 
-    // Lengths, two per instruction: the loads (for the stresses and the
-    // damping) and, with damping, the rates the damping opposes.
+    // Lengths, two per instruction: the shear force (for the stresses and
+    // the damping) and, with damping, the slip speed the damping opposes.
     let (shear, damping) = (F & SHEAR != 0, F & DAMPING != 0);
     let (shear_magnitude, slip_speed) = norms(shear_force, shear, slip, shear && damping);
-    let (twist_magnitude, bend_magnitude) = norms(twist_torque, twist, bend_torque, bend);
     let (sigma, tau) = section_stresses(
         normal_force,
         shear_magnitude,
         twist_magnitude,
         bend_magnitude,
-        sec.rb,
-        sec.area,
-        sec.polar,
-        sec.inertia,
+        inv_rb,
     );
     out.normal_force = normal_force;
     out.sigma = sigma;
@@ -168,29 +171,25 @@ pub fn bond_step<const F: u32>(
             let vn = (v3(kin.v_i) - v3(kin.v_j)).dot(&n);
             normal_force = damp_scalar(normal_force, p.eta_fn, vn, ve, smooth);
         }
+        // The (smooth) unit vectors of the slip and of the bending spin: one
+        // reciprocal each, both in one instruction.
+        let spin_across = if bend { w_across.norm() } else { 0.0 };
+        let scale_s = unit_scale(slip_speed, ve, smooth);
+        let scale_b = unit_scale(spin_across, we, smooth);
+        let (inv_s, inv_b) = reciprocals(scale_s, shear, scale_b, bend);
         if shear {
-            let direction = scaled_unit(slip, unit_scale(slip_speed, ve, smooth));
+            let direction = reciprocal_unit(slip, scale_s, inv_s);
             shear_force = damp_along(shear_force, shear_magnitude, p.eta_ft, direction);
         }
-        if twist || bend {
-            let (spin_along, spin_across) = norms(w_along, twist, w_across, bend);
-            let (scale_t, scale_b) = (
-                unit_scale(spin_along, we, smooth),
-                unit_scale(spin_across, we, smooth),
-            );
-            let (dir_t, dir_b) = if twist && bend {
-                scaled_units(w_along, scale_t, w_across, scale_b)
-            } else if twist {
-                (scaled_unit(w_along, scale_t), Vec3::zeros())
-            } else {
-                (Vec3::zeros(), scaled_unit(w_across, scale_b))
-            };
-            if twist {
-                twist_torque = damp_along(twist_torque, twist_magnitude, p.eta_tn, dir_t);
-            }
-            if bend {
-                bend_torque = damp_along(bend_torque, bend_magnitude, p.eta_tt, dir_b);
-            }
+        if twist {
+            // w_along = n (w . n), so its unit vector is n sgn(w . n) (and
+            // the smooth one n clamp(w . n / we, -1, 1), the same thing).
+            let direction = n * sign(spin_rate, we, smooth);
+            twist_torque = damp_along(twist_torque, twist_magnitude, p.eta_tn, direction);
+        }
+        if bend {
+            let direction = reciprocal_unit(w_across, scale_b, inv_b);
+            bend_torque = damp_along(bend_torque, bend_magnitude, p.eta_tt, direction);
         }
     }
 

@@ -70,3 +70,15 @@ pub fn norms(a: Vec3, want_a: bool, b: Vec3, want_b: bool) -> (f64, f64) {
         (false, false) => (0.0, 0.0),
     }
 }
+
+/// `(1 / a, 1 / b)`, each only if wanted (else 0), like [`norms`]: two wanted
+/// ones share an instruction.
+#[inline(always)]
+pub fn reciprocals(a: f64, want_a: bool, b: f64, want_b: bool) -> (f64, f64) {
+    match (want_a, want_b) {
+        (true, true) => div2(1.0, a, 1.0, b),
+        (true, false) => (1.0 / a, 0.0),
+        (false, true) => (0.0, 1.0 / b),
+        (false, false) => (0.0, 0.0),
+    }
+}

@@ -2,6 +2,7 @@
 //! tension, six branches with load history (spec eq. 4-6).
 
 use super::hysteresis::{select, Loop};
+use super::lanes::sqrt2;
 
 /// The six-branch normal law of one bond type.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,7 +67,10 @@ impl NormalLaw {
         compression: bool,
     ) -> f64 {
         let pushed = if compression {
-            self.compression.value(self.root(delta), self.root(delta_max))
+            // Both square roots in one instruction; the same bits as `root`.
+            let (sd, sm) = sqrt2(delta, delta_max);
+            let linear = |x: f64, root: f64| select(x < self.linear_below, x * self.inv_sqrt_eps, root);
+            self.compression.value(linear(delta, sd), linear(delta_max, sm))
         } else {
             0.0
         };

@@ -113,16 +113,83 @@ impl VoigtModel {
         state: &mut ContactState,
         out: &mut ContactOutput,
     ) -> Result<(), KinematicsError> {
-        let frame = sphere_sphere(kin)?;
-        self.step_frame(&frame, dt, state, out);
+        if self.rolling {
+            self.step_pair::<true>(kin, dt, state, out)
+        } else {
+            self.step_pair::<false>(kin, dt, state, out)
+        }
+    }
+
+    /// [`Self::step`] over equal-length slices, with the rolling switch
+    /// decided once for the whole batch; stops at the first bad input and
+    /// reports its index.
+    pub fn step_batch(
+        &self,
+        kin: &[PairKinematics],
+        dt: f64,
+        states: &mut [ContactState],
+        outs: &mut [ContactOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        if self.rolling {
+            self.batch::<true>(kin, dt, states, outs)
+        } else {
+            self.batch::<false>(kin, dt, states, outs)
+        }
+    }
+
+    fn batch<const ROLLING: bool>(
+        &self,
+        kin: &[PairKinematics],
+        dt: f64,
+        states: &mut [ContactState],
+        outs: &mut [ContactOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        for (index, ((k, s), o)) in kin.iter().zip(states.iter_mut()).zip(outs.iter_mut()).enumerate() {
+            self.step_pair::<ROLLING>(k, dt, s, o).map_err(|e| (index, e))?;
+        }
+        Ok(())
+    }
+
+    /// The sphere-sphere step with rolling resistance on or off at compile
+    /// time; the frame is built in place and not kept.
+    #[inline(always)]
+    fn step_pair<const ROLLING: bool>(
+        &self,
+        kin: &PairKinematics,
+        dt: f64,
+        state: &mut ContactState,
+        out: &mut ContactOutput,
+    ) -> Result<(), KinematicsError> {
+        self.step_frame_kernel::<ROLLING>(&sphere_sphere(kin)?, dt, state, out);
         Ok(())
     }
 
     /// One step of any contact. Bodies apart exert nothing and forget their
     /// history. Always inlined: it is the body of the engines' per-contact
-    /// call (`granbond_voigt_compute_frame_unchecked`).
+    /// call (`granbond_voigt_compute_frame_unchecked`). Dispatches once on
+    /// the rolling switch to [`Self::step_frame_kernel`].
     #[inline(always)]
     pub fn step_frame(&self, f: &ContactFrame, dt: f64, state: &mut ContactState, out: &mut ContactOutput) {
+        if self.rolling {
+            self.step_frame_kernel::<true>(f, dt, state, out)
+        } else {
+            self.step_frame_kernel::<false>(f, dt, state, out)
+        }
+    }
+
+    /// [`Self::step_frame`] with rolling resistance switched at compile time
+    /// (`ROLLING` must equal [`Self::rolling`]; a caller that loops over many
+    /// contacts decides it once, outside the loop). Without rolling, the
+    /// rolling part is compiled out.
+    #[inline(always)]
+    pub fn step_frame_kernel<const ROLLING: bool>(
+        &self,
+        f: &ContactFrame,
+        dt: f64,
+        state: &mut ContactState,
+        out: &mut ContactOutput,
+    ) {
+        debug_assert_eq!(ROLLING, self.rolling);
         *out = ContactOutput {
             overlap: f.overlap,
             ..ContactOutput::default()
@@ -134,7 +201,7 @@ impl VoigtModel {
         let f_n = self.normal_force(f);
         let t = self.tangential(f, f_n, dt, &mut state.tangential_spring);
         let (mut torque_i, mut torque_j) = (t.torque_i, t.torque_j);
-        if self.rolling {
+        if ROLLING {
             let (t_r, slip) = self.rolling_torque(f, f_n, dt, &mut state.rolling_angle);
             torque_i += t_r;
             torque_j -= t_r;

@@ -107,14 +107,12 @@ pub unsafe extern "C" fn granbond_voigt_compute_batch(
         let s = slice_mut(states as *mut ContactState, count, "states")?;
         let o = slice_mut(out, count, "out")?;
         check_dt(dt)?;
-        for (index, ((k, s), o)) in k.iter().zip(s.iter_mut()).zip(o.iter_mut()).enumerate() {
-            if let Err(e) = m.step(k, dt, s, o) {
-                if !failed_index.is_null() {
-                    *failed_index = index;
-                }
-                let f = Failure::from(e);
-                return Err(Failure::new(f.status, format!("contact {index}: {}", f.message)));
+        if let Err((index, e)) = m.step_batch(k, dt, s, o) {
+            if !failed_index.is_null() {
+                *failed_index = index;
             }
+            let f = Failure::from(e);
+            return Err(Failure::new(f.status, format!("contact {index}: {}", f.message)));
         }
         Ok(())
     })
