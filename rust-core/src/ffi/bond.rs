@@ -314,13 +314,13 @@ pub unsafe extern "C" fn granbond_bond_critical_timestep(
     mass_j: f64,
     out: *mut f64,
 ) -> Status {
-    call("granbond_bond_critical_timestep", || {
-        let m = reference(model, "model")?;
-        let o = reference_mut(out, "out")?;
-        check_bodies(radius_i, radius_j, mass_i, mass_j)?;
-        *o = m.critical_timestep(radius_i, radius_j, mass_i, mass_j);
-        Ok(())
-    })
+    pair_estimate(
+        "granbond_bond_critical_timestep",
+        model,
+        [radius_i, radius_j, mass_i, mass_j],
+        out,
+        BondModel::critical_timestep,
+    )
 }
 
 /// Recommended time step of a bond of this type between spheres of the
@@ -339,11 +339,34 @@ pub unsafe extern "C" fn granbond_bond_recommended_timestep(
     mass_j: f64,
     out: *mut f64,
 ) -> Status {
-    call("granbond_bond_recommended_timestep", || {
+    pair_estimate(
+        "granbond_bond_recommended_timestep",
+        model,
+        [radius_i, radius_j, mass_i, mass_j],
+        out,
+        BondModel::recommended_timestep,
+    )
+}
+
+/// Body of every per-pair estimate call (critical and recommended time
+/// steps of bonds and contacts): checks the model, the output pointer and
+/// the radii and masses `[R_i, R_j, m_i, m_j]`, then evaluates `estimate`.
+///
+/// # Safety
+/// `model` and `out` must be null or valid.
+pub(crate) unsafe fn pair_estimate<M>(
+    function: &str,
+    model: *const M,
+    bodies: [f64; 4],
+    out: *mut f64,
+    estimate: fn(&M, f64, f64, f64, f64) -> f64,
+) -> Status {
+    call(function, || {
         let m = reference(model, "model")?;
         let o = reference_mut(out, "out")?;
+        let [radius_i, radius_j, mass_i, mass_j] = bodies;
         check_bodies(radius_i, radius_j, mass_i, mass_j)?;
-        *o = m.recommended_timestep(radius_i, radius_j, mass_i, mass_j);
+        *o = estimate(m, radius_i, radius_j, mass_i, mass_j);
         Ok(())
     })
 }

@@ -1,6 +1,6 @@
 //! `extern "C"` surface of the Voigt contact.
 
-use super::bond::check_bodies;
+use super::bond::pair_estimate;
 use super::error::{record, Failure, Status};
 use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut};
 use super::guard::{parameter_c_names, write_parameter_name};
@@ -386,13 +386,13 @@ pub unsafe extern "C" fn granbond_voigt_critical_timestep(
     mass_j: f64,
     out: *mut f64,
 ) -> Status {
-    call("granbond_voigt_critical_timestep", || {
-        let m = reference(model, "model")?;
-        let o = reference_mut(out, "out")?;
-        check_bodies(radius_i, radius_j, mass_i, mass_j)?;
-        *o = m.critical_timestep(radius_i, radius_j, mass_i, mass_j);
-        Ok(())
-    })
+    pair_estimate(
+        "granbond_voigt_critical_timestep",
+        model,
+        [radius_i, radius_j, mass_i, mass_j],
+        out,
+        VoigtModel::critical_timestep,
+    )
 }
 
 /// Number of rows in the Voigt parameter table.
