@@ -542,20 +542,19 @@ void PairGranbond::compute(int eflag, int vflag)
             double *contactState = state;
             double *bondState = state + contactLen_;
 
-            copy3(k.x_i, x[i]);
-            copy3(k.x_j, x[j]);
-            copy3(k.v_i, v[i]);
-            copy3(k.v_j, v[j]);
-            copy3(k.w_i, omega[i]);
-            copy3(k.w_j, omega[j]);
-            k.radius_i = radi;
-            k.radius_j = radius[j];
-
             // the bond (created when the creation rules allow), as the
             // LIGGGHTS adapter: it replaces the contact while intact
             bool intact = false;
             GbBondOutput bout;
             if (bondModel) {
+                copy3(k.x_i, x[i]);
+                copy3(k.x_j, x[j]);
+                copy3(k.v_i, v[i]);
+                copy3(k.v_j, v[j]);
+                copy3(k.w_i, omega[i]);
+                copy3(k.w_j, omega[j]);
+                k.radius_i = radi;
+                k.radius_j = radius[j];
                 if (advance) {
                     int32_t created = 0;
                     if (granbond_bond_try_create(bondModel, &k, step, bondState, &created) != GB_STATUS_OK)
@@ -569,8 +568,29 @@ void PairGranbond::compute(int eflag, int vflag)
             }
             GbContactOutput cout;
             if (touching) {
-                if (granbond_voigt_compute(voigt_[tp], &k, dt, contactState, &cout) != GB_STATUS_OK)
-                    failPair(i, j, "granbond_voigt_compute");
+                // the frame granbond_contact_frame_pair would build, from
+                // the geometry above (same operations, same bits): n =
+                // (x_i - x_j) / r by one reciprocal, overlap radsum - r,
+                // levers R_i and R_j, R* = R_i R_j / (R_i + R_j). The core
+                // still checks the result (non-finite force or torque).
+                const double radj = radius[j];
+                const double r = std::sqrt(rsq);
+                const double rinv = 1.0 / r;
+                GbContactFrame fr;
+                fr.n[0] = delx * rinv;
+                fr.n[1] = dely * rinv;
+                fr.n[2] = delz * rinv;
+                fr.overlap = radsum - r;
+                fr.lever_i = radi;
+                fr.lever_j = radj;
+                fr.r_eff = radi * radj / radsum;
+                copy3(fr.v_i, v[i]);
+                copy3(fr.v_j, v[j]);
+                copy3(fr.w_i, omega[i]);
+                copy3(fr.w_j, omega[j]);
+                if (granbond_voigt_compute_frame_unchecked(voigt_[tp], &fr, dt, contactState, &cout) !=
+                    GB_STATUS_OK)
+                    failPair(i, j, "granbond_voigt_compute_frame_unchecked");
             } else {
                 for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
             }
