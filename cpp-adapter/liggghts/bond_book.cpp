@@ -25,15 +25,6 @@ void BondBook::remove(BondTally *t)
     tallies_.erase(std::remove(tallies_.begin(), tallies_.end(), t), tallies_.end());
 }
 
-void BondBook::beginPassIfNew(BondTally &t, LAMMPS_NS::Update *update)
-{
-    const long long pass = 2 * static_cast<long long>(update->ntimestep) + (update->setupflag ? 1 : 0);
-    if (pass == t.pass) return;
-    t.pass = pass;
-    t.passStep = update->ntimestep;
-    t.intact = 0;
-}
-
 void BondBook::localTotals(double out[6], bigint step) const
 {
     for (int k = 0; k < 6; k++) out[k] = 0.0;

@@ -46,7 +46,15 @@ public:
     void remove(BondTally *t);
 
     // Starts counting intact bonds of `t` for the current pass if it is a new one.
-    void beginPassIfNew(BondTally &t, LAMMPS_NS::Update *update);
+    // Inline: called for every bond in every force pass.
+    void beginPassIfNew(BondTally &t, LAMMPS_NS::Update *update)
+    {
+        const long long pass = 2 * static_cast<long long>(update->ntimestep) + (update->setupflag ? 1 : 0);
+        if (pass == t.pass) return;
+        t.pass = pass;
+        t.passStep = update->ntimestep;
+        t.intact = 0;
+    }
 
     // Sums over this rank's models: [pair created, broken, intact, wall created, broken, intact].
     // Intact counts only of models whose latest pass is the current step.

@@ -80,11 +80,12 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     cmb->add_history_offset("bondnonlinear_contactflag", offset_);
     cmb->add_history_offset("bondnonlinear_output", outputOffset_);
     tally_.wall = isWall_;
-    BondBook::of(lmp).add(&tally_);
+    book_ = &BondBook::of(lmp);   // std::map: the address stays
+    book_->add(&tally_);
     registerBondStyles(lmp);
 }
 
-BondNonlinearCohesion::~BondNonlinearCohesion() { BondBook::of(lmp).remove(&tally_); }
+BondNonlinearCohesion::~BondNonlinearCohesion() { book_->remove(&tally_); }
 
 void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
 {
@@ -181,15 +182,26 @@ void BondNonlinearCohesion::loadOutput(const double *slots, GbBondOutput &out) c
 }
 
 void BondNonlinearCohesion::account(const SurfacesCloseData &d, const double *state, bool created,
-                                    const GbBondOutput &out, const double *bondCentre)
+                                    const GbBondOutput &out)
 {
     if (!countsHere(d)) return;
     if (created) tally_.created++;
     if (state[0] == GB_BOND_STATUS_INTACT) tally_.intact++;
     if (out.break_mode == GB_BREAK_MODE_NONE) return;
     tally_.broken++;
-    BondBook &book = BondBook::of(lmp);
+    BondBook &book = *book_;
     if (!book.logging()) return;
+    // bond centre: pairs, the point dividing the centres by the radii;
+    // walls, the wall point the particle was bonded to
+    double bondCentre[3];
+    const double *xi = atom->x[d.i];
+    if (isWall_) {
+        for (int c = 0; c < 3; c++) bondCentre[c] = xi[c] - d.delta[c];
+    } else {
+        const double *xj = atom->x[d.j];
+        const double w = d.radj / (d.radi + d.radj);
+        for (int c = 0; c < 3; c++) bondCentre[c] = xj[c] + w * (xi[c] - xj[c]);
+    }
     BreakEvent e;
     e.step = static_cast<double>(update->ntimestep);
     const double ti = static_cast<double>(atom->tag[d.i]);
@@ -235,28 +247,19 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out)
         if (history[0] != GB_BOND_STATUS_INTACT) return false;
         loadOutput(outputSlots, out);
         if (d.computeflag) {
-            BondBook::of(lmp).beginPassIfNew(tally_, update);
+            book_->beginPassIfNew(tally_, update);
             if (countsHere(d)) tally_.intact++;
         }
         return true;
     }
-    BondBook::of(lmp).beginPassIfNew(tally_, update);
+    book_->beginPassIfNew(tally_, update);
     double *const state = history;
     std::memset(&out, 0, sizeof out);
     bool created = false;
     const bool intact = isWall_ ? advanceWall(d, model, state, true, out, created)
                                 : advancePair(d, model, state, true, out, created);
     if (intact) storeOutput(outputSlots, out);
-    double centre[3];
-    const double *xi = atom->x[d.i];
-    if (isWall_) {
-        for (int c = 0; c < 3; c++) centre[c] = xi[c] - d.delta[c];
-    } else {
-        const double *xj = atom->x[d.j];
-        const double w = d.radj / (d.radi + d.radj);
-        for (int c = 0; c < 3; c++) centre[c] = xj[c] + w * (xi[c] - xj[c]);
-    }
-    account(d, state, created, out, centre);
+    account(d, state, created, out);
     return intact;
 }
 
@@ -271,7 +274,9 @@ bool BondNonlinearCohesion::advancePair(SurfacesCloseData &d, const GbBondModel 
     k.radius_i = d.radi;
     k.radius_j = d.radj;
 
-    if (advanceState) {
+    // an intact bond cannot be created again: skip the core's creation call
+    // (it would return at once, not created)
+    if (advanceState && state[0] != GB_BOND_STATUS_INTACT) {
         int32_t made = 0;
         if (granbond_bond_try_create(model, &k, update->ntimestep, state, &made) != GB_STATUS_OK)
             failed(d, "granbond_bond_try_create");
@@ -300,7 +305,7 @@ bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel 
     double wallVelocity[3] = {0.0, 0.0, 0.0};
     if (d.v_j) copy3(wallVelocity, d.v_j);
 
-    if (advanceState) {
+    if (advanceState && state[0] != GB_BOND_STATUS_INTACT) {   // as advancePair
         // delta runs from the wall's contact point to the sphere centre
         const double contactPoint[3] = {s.x[0] - d.delta[0], s.x[1] - d.delta[1], s.x[2] - d.delta[2]};
         int32_t made = 0;

@@ -49,8 +49,7 @@ private:
     void apply(const GbBondOutput &out, ForceData &i_forces, ForceData &j_forces);
     void failed(const SurfacesCloseData &d, const char *call);
     // Bookkeeping of one step of a bond (update passes): counters, break log.
-    void account(const SurfacesCloseData &d, const double *state, bool created, const GbBondOutput &out,
-                 const double *bondCentre);
+    void account(const SurfacesCloseData &d, const double *state, bool created, const GbBondOutput &out);
     bool countsHere(const SurfacesCloseData &d) const;
     void storeOutput(double *slots, const GbBondOutput &out) const;
     void loadOutput(const double *slots, GbBondOutput &out) const;
@@ -64,6 +63,7 @@ private:
     int offset_;        // core state slots
     int outputOffset_;  // last output: force_i[3], T_i+T_j [3], T_i-T_j [3], sigma, tau
     BondTally tally_;
+    BondBook *book_;    // this instance's book (looked up once: std::map)
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)
     LAMMPS_NS::FixPropertyAtom *clumpIds_;
     bigint checkedNatoms_;
