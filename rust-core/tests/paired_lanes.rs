@@ -3,6 +3,8 @@
 //! without jumps. Both must give exactly, bit for bit, what the plain scalar
 //! formulas give.
 
+mod common;
+
 use granbond::bond::damping::{scaled_units, unit};
 use granbond::bond::hysteresis::Loop;
 use granbond::bond::kernel::{BEND, TWIST};
@@ -143,25 +145,12 @@ fn hysteresis_branches_without_jumps_are_the_spec_branches() {
 #[test]
 fn paired_twist_and_bend_states_match_each_alone() {
     let params = BondParams {
-        lambda: 0.5,
-        k_fn1: 1e10,
-        ku_fn1: 3e10,
-        kc_fn1: 1e9,
-        k_fn2: 1e13,
-        ku_fn2: 3e13,
-        kc_fn2: 1e12,
-        k_ft: 5e12,
-        k_tn: 5e12,
-        ku_tn: 1.5e13,
-        kc_tn: 5e11,
-        k_tt: 5e12,
-        ku_tt: 1.5e13,
-        kc_tt: 5e11,
+        damping: 1,
         eta_fn: 0.1,
         eta_ft: 0.1,
         eta_tn: 0.1,
         eta_tt: 0.1,
-        ..BondParams::default()
+        ..common::params()
     };
     let both = BondModel::new(params).unwrap();
     let twist_only = BondModel::new(BondParams { bend: 0, ..params }).unwrap();
