@@ -45,7 +45,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "liggghts"))
 
 import liggghts_run  # noqa: E402
-from liggghts_run import Failure, main, read_table, run_deck  # noqa: E402
+from liggghts_run import Failure, judge_refusal, main, read_table, run_deck  # noqa: E402
 from check_bond_pull import MODES as PULL_MODES, PARAMS, pair_samples, verify  # noqa: E402
 
 DECKS = os.path.join(HERE, "decks")
@@ -259,13 +259,7 @@ def check_bad_input(a, workdir):
         d = os.path.join(workdir, f"case{index}")
         model = write_model(d, ["pair_style granbond", f"pair_coeff * * {args}"])
         rc, text = run_lammps([a.engine], "pair_move.in", d, {"model": model, "nrun": 10, "out": "pull.txt"})
-        errors = [line for line in text.splitlines() if line.startswith("ERROR")]
-        if rc == 0:
-            failures.append(f"{label}: the run succeeded")
-        elif not any(name in line for line in errors):
-            failures.append(f"{label}: no ERROR line names {name}; got {errors or text[-1500:]}")
-        else:
-            print(f"ok: {label}: exit {rc}: {errors[0]}")
+        judge_refusal(label, rc, text, name, failures)
     if failures:
         raise Failure("\n".join(failures))
 

@@ -47,6 +47,18 @@ def run_ok(command, deck, workdir, variables=None, env=None):
     return text
 
 
+def judge_refusal(label, rc, text, name, failures):
+    """A bad-input run must fail with an ERROR line naming `name`; appends
+    to `failures` what went wrong, or prints the error it gave."""
+    errors = [line for line in text.splitlines() if line.startswith("ERROR")]
+    if rc == 0:
+        failures.append(f"{label}: the run succeeded")
+    elif not any(name in line for line in errors):
+        failures.append(f"{label}: no ERROR line names {name}; got {errors or text[-1500:]}")
+    else:
+        print(f"ok: {label}: exit {rc}: {errors[0]}")
+
+
 def read_table(path):
     """Rows of floats from a whitespace table, skipping '#' lines."""
     rows = []
