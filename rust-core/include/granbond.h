@@ -514,6 +514,27 @@ enum GbStatus granbond_bond_compute_batch(const struct GbBondModel *model,
                                           size_t *failed_index);
 
 /**
+ * `granbond_bond_compute_batch` for states that lie apart in memory, as in
+ * an engine's contact history: `states[k]` points to the
+ * `GRANBOND_BOND_STATE_LEN` doubles of bond `k` (no two the same). Results
+ * are those of one `granbond_bond_compute` per bond, bit for bit; an engine
+ * collects the bonds of a pass and makes one call, so the core can process
+ * several bonds per instruction. Stops at the first bad input and writes
+ * its index to `failed_index` (if not null); a null or misaligned
+ * `states[k]` is reported before any bond is advanced.
+ *
+ * # Safety
+ * Pointers must be null or valid for the sizes above.
+ */
+enum GbStatus granbond_bond_compute_scattered(const struct GbBondModel *model,
+                                              size_t count,
+                                              const struct GbPairKinematics *kinematics,
+                                              double dt,
+                                              double **states,
+                                              struct GbBondOutput *out,
+                                              size_t *failed_index);
+
+/**
  * Bonds a sphere to a wall it touches at `contact_point` (`double[3]`)
  * under the pair rules; `state` holds `GRANBOND_WALL_BOND_STATE_LEN` doubles.
  *

@@ -34,6 +34,13 @@ pub type BatchKernel = fn(
     &mut [BondState],
     &mut [BondOutput],
 ) -> Result<(), (usize, KinematicsError)>;
+pub type ScatteredKernel = fn(
+    &BondModel,
+    &[PairKinematics],
+    f64,
+    &mut [&mut BondState],
+    &mut [BondOutput],
+) -> Result<(), (usize, KinematicsError)>;
 
 #[inline(always)]
 fn finish(state: &mut BondState, out: &mut BondOutput, status: BondStatus, mode: BreakMode) {
@@ -232,9 +239,23 @@ fn batch<const F: u32>(
     Ok(())
 }
 
+fn scattered<const F: u32>(
+    model: &BondModel,
+    kin: &[PairKinematics],
+    dt: f64,
+    states: &mut [&mut BondState],
+    outs: &mut [BondOutput],
+) -> Result<(), (usize, KinematicsError)> {
+    for (idx, ((k, s), o)) in kin.iter().zip(states.iter_mut()).zip(outs.iter_mut()).enumerate() {
+        bond_step::<F>(model, k, dt, s, o).map_err(|e| (idx, e))?;
+    }
+    Ok(())
+}
+
 seq!(N in 0..128 {
     const SINGLE: [Kernel; FEATURE_COMBINATIONS] = [#(single::<N>,)*];
     const BATCH: [BatchKernel; FEATURE_COMBINATIONS] = [#(batch::<N>,)*];
+    const SCATTERED: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(scattered::<N>,)*];
 });
 
 pub fn single_kernel(features: u32) -> Kernel {
@@ -243,6 +264,10 @@ pub fn single_kernel(features: u32) -> Kernel {
 
 pub fn batch_kernel(features: u32) -> BatchKernel {
     BATCH[features as usize % FEATURE_COMBINATIONS]
+}
+
+pub fn scattered_kernel(features: u32) -> ScatteredKernel {
+    SCATTERED[features as usize % FEATURE_COMBINATIONS]
 }
 
 impl BondModel {
@@ -268,5 +293,18 @@ impl BondModel {
         outs: &mut [BondOutput],
     ) -> Result<(), (usize, KinematicsError)> {
         (self.batch)(self, kin, dt, states, outs)
+    }
+
+    /// [`Self::step_batch`] for states that lie apart in memory (in an
+    /// engine's contact history): one call per pass of the pair loop, and
+    /// the same results, bit for bit, as one [`Self::step`] per bond.
+    pub fn step_scattered(
+        &self,
+        kin: &[PairKinematics],
+        dt: f64,
+        states: &mut [&mut BondState],
+        outs: &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        (self.scattered)(self, kin, dt, states, outs)
     }
 }

@@ -3,7 +3,7 @@
 
 use super::breakage::StressLimits;
 use super::hysteresis::Loop;
-use super::kernel::{self, BatchKernel, Kernel};
+use super::kernel::{self, BatchKernel, Kernel, ScatteredKernel};
 use super::normal_law::NormalLaw;
 use super::params::{BondParams, ParameterError};
 
@@ -19,6 +19,7 @@ pub struct BondModel {
     pub features: u32,
     pub(crate) single: Kernel,
     pub(crate) batch: BatchKernel,
+    pub(crate) scattered: ScatteredKernel,
 }
 
 impl BondModel {
@@ -69,6 +70,7 @@ impl BondModel {
             features,
             single: kernel::single_kernel(features),
             batch: kernel::batch_kernel(features),
+            scattered: kernel::scattered_kernel(features),
         })
     }
 

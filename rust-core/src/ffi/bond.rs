@@ -199,6 +199,51 @@ pub unsafe extern "C" fn granbond_bond_compute_batch(
     })
 }
 
+/// `granbond_bond_compute_batch` for states that lie apart in memory, as in
+/// an engine's contact history: `states[k]` points to the
+/// `GRANBOND_BOND_STATE_LEN` doubles of bond `k` (no two the same). Results
+/// are those of one `granbond_bond_compute` per bond, bit for bit; an engine
+/// collects the bonds of a pass and makes one call, so the core can process
+/// several bonds per instruction. Stops at the first bad input and writes
+/// its index to `failed_index` (if not null); a null or misaligned
+/// `states[k]` is reported before any bond is advanced.
+///
+/// # Safety
+/// Pointers must be null or valid for the sizes above.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_compute_scattered(
+    model: *const BondModel,
+    count: usize,
+    kinematics: *const PairKinematics,
+    dt: f64,
+    states: *mut *mut f64,
+    out: *mut BondOutput,
+    failed_index: *mut usize,
+) -> Status {
+    call("granbond_bond_compute_scattered", || {
+        let fail_at = |index: usize, f: Failure| {
+            if !failed_index.is_null() {
+                *failed_index = index;
+            }
+            Failure::new(f.status, format!("bond {index}: {}", f.message))
+        };
+        let m = reference(model, "model")?;
+        let k = slice(kinematics, count, "kinematics")?;
+        let pointers = slice(states as *const *mut f64, count, "states")?;
+        for (index, &p) in pointers.iter().enumerate() {
+            bond_state(p, "states[k]").map_err(|f| fail_at(index, f))?;
+        }
+        // Every pointer is non-null and aligned, and `&mut BondState` has the
+        // layout of `*mut f64` to a `BondState`.
+        let s = std::slice::from_raw_parts_mut(states as *mut &mut BondState, count);
+        // (the array of pointers is read, never written)
+        let o = slice_mut(out, count, "out")?;
+        check_dt(dt)?;
+        m.step_scattered(k, dt, s, o)
+            .map_err(|(index, e)| fail_at(index, Failure::from(e)))
+    })
+}
+
 /// Bonds a sphere to a wall it touches at `contact_point` (`double[3]`)
 /// under the pair rules; `state` holds `GRANBOND_WALL_BOND_STATE_LEN` doubles.
 ///

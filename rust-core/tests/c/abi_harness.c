@@ -1032,6 +1032,85 @@ static int test_bond_batch(void)
     return 0;
 }
 
+#define N_SCATTERED 11
+
+/* States apart in memory, in an order unrelated to their addresses, as in an
+ * engine's contact history; among them a broken bond and one that breaks in
+ * this step. */
+static int test_bond_scattered(void)
+{
+    const GbBondParams p = bond_fixture();
+    GbBondModel *m = NULL;
+    GbPairKinematics k[N_SCATTERED];
+    GbBondOutput out[N_SCATTERED], single;
+    double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], before[sizeof memory / sizeof(double)];
+    double *states[N_SCATTERED], one[GRANBOND_BOND_STATE_LEN], *saved;
+    size_t failed = 999;
+    int b;
+
+    if (new_bond_model(&p, &m))
+        return 1;
+    for (b = 0; b < N_SCATTERED; b++) {
+        states[b] = memory + 2 * (N_SCATTERED - 1 - b) * GRANBOND_BOND_STATE_LEN;
+        if (create_bond(m, states[b]))
+            return 1;
+        pair_at(&k[b], R0_NOMINAL + (b - 5.0) * 1.0e-6, R_I, R_J);
+        k[b].v_i[1] = 2.0e-3 * b;
+        k[b].w_i[0] = 0.3 * b;
+        k[b].w_j[2] = -0.5 * b;
+    }
+    states[5][0] = GB_BOND_STATUS_BROKEN;
+    pair_at(&k[7], 1.01 * MAX_DISTANCE, R_I, R_J);
+    memcpy(before, memory, sizeof memory);
+
+    EXPECT_OK(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, out, &failed),
+              "granbond_bond_compute_scattered");
+    CHECK(failed == 999, "failed_index left alone on success");
+    CHECK(out[5].status == GB_BOND_STATUS_BROKEN && out[7].status == GB_BOND_STATUS_BROKEN &&
+              out[7].break_mode == GB_BREAK_MODE_DISTANCE && out[3].status == GB_BOND_STATUS_INTACT,
+          "scattered: broken, breaking and intact bonds");
+    for (b = 0; b < N_SCATTERED; b++) {
+        memcpy(one, before + (states[b] - memory), sizeof one);
+        EXPECT_OK(granbond_bond_compute(m, &k[b], DT, one, &single), say("granbond_bond_compute, bond %d", b));
+        CHECK(memcmp(&out[b], &single, sizeof single) == 0 && memcmp(one, states[b], sizeof one) == 0,
+              say("scattered bond %d = single call, bit for bit", b));
+    }
+
+    /* A null state pointer: reported with its index before any bond moves. */
+    memcpy(memory, before, sizeof memory);
+    saved = states[4];
+    states[4] = NULL;
+    EXPECT(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, out, &failed), GB_STATUS_NULL_POINTER,
+           "granbond_bond_compute_scattered with states[4] = NULL");
+    CHECK(failed == 4, say("failed_index = 4 (got %u)", (unsigned)failed));
+    EXPECT_MESSAGE("bond 4");
+    CHECK(memcmp(memory, before, sizeof memory) == 0, "no state advanced when a state pointer is null");
+    states[4] = saved;
+
+    /* A bad bond stops there, as in the batch call. */
+    k[6].v_j[2] = INFINITY;
+    EXPECT(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, out, &failed),
+           GB_STATUS_NON_FINITE_INPUT, "granbond_bond_compute_scattered with inf in bond 6");
+    CHECK(failed == 6, say("failed_index = 6 (got %u)", (unsigned)failed));
+    k[6].v_j[2] = 0.0;
+
+    EXPECT_OK(granbond_bond_compute_scattered(m, 0, NULL, DT, NULL, NULL, NULL),
+              "granbond_bond_compute_scattered, count = 0 and NULL arrays");
+    EXPECT(granbond_bond_compute_scattered(m, N_SCATTERED, k, NAN, states, out, NULL), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_bond_compute_scattered with dt = NaN");
+    EXPECT_NULL_ARG(granbond_bond_compute_scattered(NULL, N_SCATTERED, k, DT, states, out, &failed),
+                    "granbond_bond_compute_scattered", "model");
+    EXPECT_NULL_ARG(granbond_bond_compute_scattered(m, N_SCATTERED, NULL, DT, states, out, &failed),
+                    "granbond_bond_compute_scattered", "kinematics");
+    EXPECT_NULL_ARG(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, NULL, out, &failed),
+                    "granbond_bond_compute_scattered", "states");
+    EXPECT_NULL_ARG(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, NULL, &failed),
+                    "granbond_bond_compute_scattered", "out");
+
+    granbond_bond_model_free(m);
+    return 0;
+}
+
 static int test_bond_break(void)
 {
     GbBondParams p = bond_fixture();
@@ -2034,7 +2113,8 @@ static int test_error_state_and_free(void)
 int main(void)
 {
     int failed = test_version_and_layout() || test_state_layout() || test_bond_params() ||
-                 test_bond_create_and_force() || test_bond_errors() || test_bond_batch() || test_bond_break() ||
+                 test_bond_create_and_force() || test_bond_errors() || test_bond_batch() || test_bond_scattered() ||
+                 test_bond_break() ||
                  test_wall_bond() || test_bond_limits() || test_voigt_params() || test_voigt_contact() ||
                  test_voigt_batch() || test_voigt_plane() || test_voigt_timestep() || test_contact_frames() || test_voigt_parts() ||
                  test_error_state_and_free();
