@@ -2,6 +2,7 @@
 #include "core_bridge.h"
 
 #include "fix_property_atom.h"
+#include "pair_gran.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -68,7 +69,10 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     outputOffset_(-1),
     clumpIds_(0),
     checkedNatoms_(-1),
-    warnedCritical_(0.0)
+    warnedCritical_(0.0),
+    pair_(cmb->is_wall() ? 0 : dynamic_cast<LAMMPS_NS::PairGran *>(hsetup)),
+    deferring_(false),
+    lastBatch_(0)
 {
     checkCoreLayout(error);
     offset_ = registerStateSlots(hsetup, isWall_ ? GB_STATE_KIND_WALL_BOND : GB_STATE_KIND_BOND, error);
@@ -98,9 +102,134 @@ void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
     checkTimestep();
 }
 
-void BondNonlinearCohesion::beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
+void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
 {
     if (atom->natoms != checkedNatoms_) checkTimestep();
+    // Queue the bonds of force passes, unless something in the engine
+    // reads each pair's forces as the loop applies them (CFD coupling,
+    // stored contact forces, summed normal forces).
+    for (size_t b = 0; b < batches_.size(); b++) batches_[b].count = 0;
+    deferring_ = pair_ && sidata.computeflag && sidata.shearupdate && !pair_->cpl() &&
+                 !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
+                 !pair_->store_sum_normal_force();
+    if (deferring_) book_->beginPassIfNew(tally_, update);
+}
+
+void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceData &)
+{
+    if (!deferring_) return;
+    for (size_t b = 0; b < batches_.size(); b++)
+        if (batches_[b].count) advanceBatch(batches_[b]);
+    deferring_ = false;
+}
+
+BondNonlinearCohesion::PendingBatch &BondNonlinearCohesion::findBatch(const GbBondModel *model)
+{
+    for (lastBatch_ = 0; lastBatch_ < batches_.size(); lastBatch_++)
+        if (batches_[lastBatch_].model == model) return batches_[lastBatch_];
+    batches_.push_back(PendingBatch());
+    batches_.back().model = model;
+    batches_.back().count = 0;
+    return batches_.back();
+}
+
+inline void BondNonlinearCohesion::pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const
+{
+    // atom->omega, not d.omega_i/j: in surfacesClose those are left over
+    // from the previous overlapping pair
+    readAtom(atom, d.i, k.x_i, k.v_i, k.w_i);
+    readAtom(atom, d.j, k.x_j, k.v_j, k.w_j);
+    k.radius_i = d.radi;
+    k.radius_j = d.radj;
+}
+
+void BondNonlinearCohesion::defer(SurfacesCloseData &d, const GbBondModel *model, bool created,
+                                  const ForceData *i_forces, const ForceData *j_forces)
+{
+    PendingBatch &b = batchOf(model);
+    const size_t k = b.count++;
+    if (k == b.bonds.size()) {
+        const size_t n = 2 * k + 64;
+        b.bonds.resize(n);
+        b.kinematics.resize(n);
+        b.states.resize(n);
+        b.outputs.resize(n);
+    }
+    PendingBond &p = b.bonds[k];
+    p.history = d.contact_history;
+    p.contactFlag = d.contact_flags;
+    p.i = d.i;
+    p.j = d.j;
+    p.created = created;
+    p.touching = i_forces != 0;
+    if (p.touching) {   // ForceData is delta_F[3], delta_torque[3] (checked in liggghts_engine.h)
+        std::memcpy(p.contact, i_forces, sizeof(ForceData));
+        std::memcpy(p.contact + 6, j_forces, sizeof(ForceData));
+    }
+    // the pair's atoms are in cache now
+    pairKinematics(d, b.kinematics[k]);
+    b.states[k] = d.contact_history + offset_;
+}
+
+// What the engine's pair loop does with a pair's loads (relaxation factor,
+// newton off, virial).
+inline void BondNonlinearCohesion::addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj,
+                                              const double *tj)
+{
+    // loads read before any store: the compiler cannot rule out aliasing
+    const double li[6] = {fi[0], fi[1], fi[2], ti[0], ti[1], ti[2]};
+    const double lj[6] = {fj[0], fj[1], fj[2], tj[0], tj[1], tj[2]};
+    double *const fI = atom->f[i], *const tI = atom->torque[i];
+    const int nlocal = atom->nlocal, newton = force->newton_pair;
+    const double relaxI = pair_->relax(i);
+    for (int c = 0; c < 3; c++) {
+        fI[c] += relaxI * li[c];
+        tI[c] += relaxI * li[3 + c];
+    }
+    if (newton || j < nlocal) {
+        double *const fJ = atom->f[j], *const tJ = atom->torque[j];
+        const double relaxJ = pair_->relax(j);
+        for (int c = 0; c < 3; c++) {
+            fJ[c] += relaxJ * lj[c];
+            tJ[c] += relaxJ * lj[3 + c];
+        }
+    }
+    if (pair_->evflag) {
+        const double *xi = atom->x[i], *xj = atom->x[j];
+        pair_->ev_tally_xyz(i, j, nlocal, newton, 0.0, 0.0, li[0], li[1], li[2], xi[0] - xj[0], xi[1] - xj[1],
+                            xi[2] - xj[2]);
+    }
+}
+
+void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
+{
+    const size_t n = b.count;
+    size_t bad = 0;
+    if (granbond_bond_compute_scattered(b.model, n, b.kinematics.data(), update->dt, b.states.data(),
+                                        b.outputs.data(), &bad) != GB_STATUS_OK) {
+        const PendingBond &p = b.bonds[bad < n ? bad : 0];
+        failed(p.i, p.j, "granbond_bond_compute_scattered");
+        return;
+    }
+    const int nlocal = atom->nlocal;
+    const int *tag = atom->tag;
+    for (size_t k = 0; k < n; k++) {
+        const PendingBond &p = b.bonds[k];
+        const GbBondOutput &out = b.outputs[k];
+        if (out.status == GB_BOND_STATUS_INTACT) {
+            // account() for an intact bond, inline: the common case
+            const bool counts = p.j < nlocal || tag[p.i] < tag[p.j];
+            tally_.intact += counts;
+            tally_.created += counts && p.created;
+            storeOutput(p.history + outputOffset_, out);
+            const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
+            addToAtoms(p.i, p.j, out.force_i, out.torque_i, fj, out.torque_j);
+            continue;
+        }
+        account(p.i, p.j, 0, p.history + offset_, p.created, out);
+        if (p.contactFlag) *p.contactFlag &= ~CONTACT_COHESION_MODEL;
+        if (p.touching) addToAtoms(p.i, p.j, p.contact, p.contact + 3, p.contact + 6, p.contact + 9);
+    }
 }
 
 void BondNonlinearCohesion::checkTimestep()
@@ -150,22 +279,23 @@ void BondNonlinearCohesion::checkTimestep()
     error->warning(FLERR, msg);
 }
 
-bool BondNonlinearCohesion::countsHere(const SurfacesCloseData &d) const
+bool BondNonlinearCohesion::countsHere(int i, int j) const
 {
     // walls: only the particle's owner computes the contact; pairs: once
     // per pair, even where the pair straddles two ranks
-    return isWall_ || d.j < atom->nlocal || atom->tag[d.i] < atom->tag[d.j];
+    return isWall_ || j < atom->nlocal || atom->tag[i] < atom->tag[j];
 }
 
 void BondNonlinearCohesion::storeOutput(double *slots, const GbBondOutput &out) const
 {
-    copy3(slots, out.force_i);
+    const GbBondOutput o = out;   // read before the stores (aliasing)
+    copy3(slots, o.force_i);
     for (int c = 0; c < 3; c++) {
-        slots[3 + c] = out.torque_i[c] + out.torque_j[c];
-        slots[6 + c] = out.torque_i[c] - out.torque_j[c];
+        slots[3 + c] = o.torque_i[c] + o.torque_j[c];
+        slots[6 + c] = o.torque_i[c] - o.torque_j[c];
     }
-    slots[9] = out.sigma;
-    slots[10] = out.tau;
+    slots[9] = o.sigma;
+    slots[10] = o.tau;
 }
 
 void BondNonlinearCohesion::loadOutput(const double *slots, GbBondOutput &out) const
@@ -181,10 +311,10 @@ void BondNonlinearCohesion::loadOutput(const double *slots, GbBondOutput &out) c
     out.break_mode = GB_BREAK_MODE_NONE;
 }
 
-void BondNonlinearCohesion::account(const SurfacesCloseData &d, const double *state, bool created,
+void BondNonlinearCohesion::account(int i, int j, const double *wallDelta, const double *state, bool created,
                                     const GbBondOutput &out)
 {
-    if (!countsHere(d)) return;
+    if (!countsHere(i, j)) return;
     if (created) tally_.created++;
     if (state[0] == GB_BOND_STATUS_INTACT) tally_.intact++;
     if (out.break_mode == GB_BREAK_MODE_NONE) return;
@@ -194,18 +324,18 @@ void BondNonlinearCohesion::account(const SurfacesCloseData &d, const double *st
     // bond centre: pairs, the point dividing the centres by the radii;
     // walls, the wall point the particle was bonded to
     double bondCentre[3];
-    const double *xi = atom->x[d.i];
+    const double *xi = atom->x[i];
     if (isWall_) {
-        for (int c = 0; c < 3; c++) bondCentre[c] = xi[c] - d.delta[c];
+        for (int c = 0; c < 3; c++) bondCentre[c] = xi[c] - wallDelta[c];
     } else {
-        const double *xj = atom->x[d.j];
-        const double w = d.radj / (d.radi + d.radj);
+        const double *xj = atom->x[j];
+        const double w = atom->radius[j] / (atom->radius[i] + atom->radius[j]);
         for (int c = 0; c < 3; c++) bondCentre[c] = xj[c] + w * (xi[c] - xj[c]);
     }
     BreakEvent e;
     e.step = static_cast<double>(update->ntimestep);
-    const double ti = static_cast<double>(atom->tag[d.i]);
-    const double tj = isWall_ ? 0.0 : static_cast<double>(atom->tag[d.j]);
+    const double ti = static_cast<double>(atom->tag[i]);
+    const double tj = isWall_ ? 0.0 : static_cast<double>(atom->tag[j]);
     e.tag_i = isWall_ ? ti : std::min(ti, tj);
     e.tag_j = isWall_ ? 0.0 : std::max(ti, tj);
     copy3(e.x, bondCentre);
@@ -215,28 +345,35 @@ void BondNonlinearCohesion::account(const SurfacesCloseData &d, const double *st
     book.record(e);
 }
 
-void BondNonlinearCohesion::failed(const SurfacesCloseData &d, const char *call)
+void BondNonlinearCohesion::failed(int i, int j, const char *call)
 {
     char where[160];
     if (isWall_)
-        snprintf(where, sizeof where, "atom %ld and a wall", static_cast<long>(atom->tag[d.i]));
+        snprintf(where, sizeof where, "atom %ld and a wall", static_cast<long>(atom->tag[i]));
     else
-        snprintf(where, sizeof where, "atoms %ld and %ld", static_cast<long>(atom->tag[d.i]),
-                 static_cast<long>(atom->tag[d.j]));
+        snprintf(where, sizeof where, "atoms %ld and %ld", static_cast<long>(atom->tag[i]),
+                 static_cast<long>(atom->tag[j]));
     const std::string msg = std::string("cohesion bond/nonlinear: ") + call + " failed for " + where +
                             " at step " + std::to_string(static_cast<long long>(update->ntimestep)) + ": " +
                             granbond_last_error_message();
     endRunOnThisRank(lmp, FLERR, msg);
 }
 
-bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out)
+bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, bool &deferred,
+                                    const ForceData *i_contact, const ForceData *j_contact)
 {
+    deferred = false;
     const GbBondModel *model = parameters_.model(d.itype, d.jtype);
     if (!model || !d.contact_history) {
-        failed(d, model ? "contact history lookup" : "model lookup (types not connected)");
+        failed(d.i, d.j, model ? "contact history lookup" : "model lookup (types not connected)");
         return false;
     }
     double *const history = d.contact_history + offset_;
+    if (deferring_ && history[0] == GB_BOND_STATUS_INTACT) {
+        defer(d, model, false, i_contact, j_contact);
+        deferred = true;
+        return false;
+    }
     double *const outputSlots = d.contact_history + outputOffset_;
     // Passes that must not advance the state: the setup pass of a run
     // (computeflag, no shearupdate) and the per-contact output pass
@@ -248,7 +385,7 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out)
         loadOutput(outputSlots, out);
         if (d.computeflag) {
             book_->beginPassIfNew(tally_, update);
-            if (countsHere(d)) tally_.intact++;
+            if (countsHere(d.i, d.j)) tally_.intact++;
         }
         return true;
     }
@@ -256,44 +393,54 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out)
     double *const state = history;
     std::memset(&out, 0, sizeof out);
     bool created = false;
+    if (deferring_) {
+        // created now (the rules read this pair's data), advanced in endPass
+        GbPairKinematics k;
+        pairKinematics(d, k);
+        createPair(d, model, k, state, created);
+        if (state[0] != GB_BOND_STATUS_INTACT) return false;
+        defer(d, model, created, i_contact, j_contact);
+        deferred = true;
+        return false;
+    }
     const bool intact = isWall_ ? advanceWall(d, model, state, true, out, created)
                                 : advancePair(d, model, state, true, out, created);
     if (intact) storeOutput(outputSlots, out);
-    account(d, state, created, out);
+    account(d.i, d.j, d.delta, state, created, out);
     return intact;
 }
 
 bool BondNonlinearCohesion::advancePair(SurfacesCloseData &d, const GbBondModel *model, double *state,
                                         bool advanceState, GbBondOutput &out, bool &created)
 {
-    // atom->omega, not d.omega_i/j: in surfacesClose those are left over
-    // from the previous overlapping pair
     GbPairKinematics k;
-    readAtom(atom, d.i, k.x_i, k.v_i, k.w_i);
-    readAtom(atom, d.j, k.x_j, k.v_j, k.w_j);
-    k.radius_i = d.radi;
-    k.radius_j = d.radj;
-
+    pairKinematics(d, k);
     // an intact bond cannot be created again: skip the core's creation call
     // (it would return at once, not created)
-    if (advanceState && state[0] != GB_BOND_STATUS_INTACT) {
+    if (advanceState && state[0] != GB_BOND_STATUS_INTACT) createPair(d, model, k, state, created);
+    if (state[0] != GB_BOND_STATUS_INTACT) return false;
+    if (granbond_bond_compute(model, &k, update->dt, state, &out) != GB_STATUS_OK)
+        failed(d.i, d.j, "granbond_bond_compute");
+    return out.status == GB_BOND_STATUS_INTACT;
+}
+
+void BondNonlinearCohesion::createPair(const SurfacesCloseData &d, const GbBondModel *model,
+                                       const GbPairKinematics &k, double *state, bool &created)
+{
+    {
         int32_t made = 0;
         if (granbond_bond_try_create(model, &k, update->ntimestep, state, &made) != GB_STATUS_OK)
-            failed(d, "granbond_bond_try_create");
+            failed(d.i, d.j, "granbond_bond_try_create");
         // spheres of one `bonded yes` clump, in the first force pass after
         // their insertion (the id is the insertion step plus a fraction)
         if (!made && clumpIds_ && state[0] == GB_BOND_STATUS_UNBONDED) {
             const double *ids = clumpIds_->vector_atom;
             if (ids[d.i] >= 0.0 && ids[d.i] == ids[d.j] && static_cast<double>(update->ntimestep) < ids[d.i] &&
                 granbond_bond_create_now(model, &k, state, &made) != GB_STATUS_OK)
-                failed(d, "granbond_bond_create_now");
+                failed(d.i, d.j, "granbond_bond_create_now");
         }
         created = made != 0;
     }
-    if (state[0] != GB_BOND_STATUS_INTACT) return false;
-    if (granbond_bond_compute(model, &k, update->dt, state, &out) != GB_STATUS_OK)
-        failed(d, "granbond_bond_compute");
-    return out.status == GB_BOND_STATUS_INTACT;
 }
 
 bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state,
@@ -311,12 +458,12 @@ bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel 
         int32_t made = 0;
         if (granbond_wall_bond_try_create(model, &s, contactPoint, update->ntimestep, state, &made) !=
             GB_STATUS_OK)
-            failed(d, "granbond_wall_bond_try_create");
+            failed(d.i, d.j, "granbond_wall_bond_try_create");
         created = made != 0;
     }
     if (state[0] != GB_BOND_STATUS_INTACT) return false;
     if (granbond_wall_bond_compute(model, &s, wallVelocity, update->dt, state, &out) != GB_STATUS_OK)
-        failed(d, "granbond_wall_bond_compute");
+        failed(d.i, d.j, "granbond_wall_bond_compute");
     return out.status == GB_BOND_STATUS_INTACT;
 }
 
@@ -337,10 +484,16 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
                                                  ForceData &j_forces)
 {
     GbBondOutput out;
-    const bool intact = advance(sidata, out);
-    setContactFlag(sidata, intact);
+    bool deferred;
+    const bool intact = advance(sidata, out, deferred, &i_forces, &j_forces);
+    setContactFlag(sidata, intact || deferred);
+    // an intact bond replaces what normal, tangential and rolling models
+    // added (a deferred one keeps a copy in case it breaks)
+    if (deferred) {
+        i_forces.reset();
+        j_forces.reset();
+    }
     if (!intact) return;   // the contact model acts alone
-    // an intact bond replaces what normal, tangential and rolling models added
     i_forces.reset();
     j_forces.reset();
     apply(out, i_forces, j_forces);
@@ -349,8 +502,9 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
 void BondNonlinearCohesion::surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
 {
     GbBondOutput out;
-    const bool intact = advance(scdata, out);
-    setContactFlag(scdata, intact);
+    bool deferred;
+    const bool intact = advance(scdata, out, deferred, 0, 0);
+    setContactFlag(scdata, intact || deferred);
     if (!intact) return;
     apply(out, i_forces, j_forces);
     scdata.has_force_update = true;   // otherwise the engine drops the forces

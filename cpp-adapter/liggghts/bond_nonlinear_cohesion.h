@@ -11,6 +11,12 @@
 #include "bond_nonlinear_parameters.h"
 #include "bond_book.h"
 
+#include <vector>
+
+namespace LAMMPS_NS {
+class PairGran;
+}
+
 namespace granbond {
 namespace liggghts {
 
@@ -28,9 +34,11 @@ public:
     void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *) {}
     void connectToProperties(::PropertyRegistry &registry);
     // Pairs only (walls have no pass hooks): the time-step check when the
-    // number of atoms changed (insertion), a point every rank reaches.
-    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &);
-    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    // number of atoms changed (insertion), a point every rank reaches; and
+    // whether this pass collects its intact bonds for one core call in
+    // endPass (see PendingBond).
+    void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &);
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &);
 
     // Overlapping spheres: the bond acts in endSurfacesIntersect, after the
     // normal, tangential and rolling models have added their forces.
@@ -39,18 +47,59 @@ public:
     void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
 
 private:
+    // An intact pair bond of a force pass, advanced in endPass: the core then
+    // computes all bonds of the pass in one call, several per instruction,
+    // and the loads go straight to the atoms. Until then the bond's pair
+    // adds nothing; if it breaks, the contact model's loads of this step
+    // (kept here) act instead, as in the per-pair path.
+    struct PendingBond {
+        double *history;
+        int *contactFlag;   // null: none
+        int i, j;
+        bool created;
+        bool touching;
+        double contact[12];   // F_i, T_i, F_j, T_j of the contact model
+    };
+    // The pending bonds of one bond type, with the core's inputs and outputs
+    // (`count` used; the vectors only grow, so a pass allocates nothing).
+    struct PendingBatch {
+        const GbBondModel *model;
+        size_t count;
+        std::vector<PendingBond> bonds;
+        std::vector<GbPairKinematics> kinematics;
+        std::vector<double *> states;
+        std::vector<GbBondOutput> outputs;
+    };
+
     // Creates / advances the bond of this pair. Returns true and fills `out`
-    // if the bond is intact after the step.
-    bool advance(SurfacesCloseData &d, GbBondOutput &out);
+    // if the bond is intact after the step. Returns false with `deferred`
+    // set if the bond was queued for endPass.
+    bool advance(SurfacesCloseData &d, GbBondOutput &out, bool &deferred, const ForceData *i_contact,
+                 const ForceData *j_contact);
+    void pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const;
+    void createPair(const SurfacesCloseData &d, const GbBondModel *model, const GbPairKinematics &k,
+                    double *state, bool &created);
+    void defer(SurfacesCloseData &d, const GbBondModel *model, bool created, const ForceData *i_forces,
+               const ForceData *j_forces);
+    PendingBatch &batchOf(const GbBondModel *model)
+    {
+        if (lastBatch_ < batches_.size() && batches_[lastBatch_].model == model) return batches_[lastBatch_];
+        return findBatch(model);
+    }
+    PendingBatch &findBatch(const GbBondModel *model);
+    void advanceBatch(PendingBatch &b);
+    void addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj, const double *tj);
     bool advancePair(SurfacesCloseData &d, const GbBondModel *model, double *state, bool update,
                      GbBondOutput &out, bool &created);
     bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, bool update,
                      GbBondOutput &out, bool &created);
     void apply(const GbBondOutput &out, ForceData &i_forces, ForceData &j_forces);
-    void failed(const SurfacesCloseData &d, const char *call);
+    void failed(int i, int j, const char *call);
     // Bookkeeping of one step of a bond (update passes): counters, break log.
-    void account(const SurfacesCloseData &d, const double *state, bool created, const GbBondOutput &out);
-    bool countsHere(const SurfacesCloseData &d) const;
+    // `wallDelta`: for wall bonds, the vector from the wall point to the centre.
+    void account(int i, int j, const double *wallDelta, const double *state, bool created,
+                 const GbBondOutput &out);
+    bool countsHere(int i, int j) const;
     void storeOutput(double *slots, const GbBondOutput &out) const;
     void loadOutput(const double *slots, GbBondOutput &out) const;
     // Warns (rank 0) if the step exceeds the critical / recommended step of
@@ -68,6 +117,11 @@ private:
     LAMMPS_NS::FixPropertyAtom *clumpIds_;
     bigint checkedNatoms_;
     double warnedCritical_;
+
+    LAMMPS_NS::PairGran *pair_;   // null for walls
+    bool deferring_;              // this pass queues intact bonds
+    std::vector<PendingBatch> batches_;
+    size_t lastBatch_;
 };
 
 }

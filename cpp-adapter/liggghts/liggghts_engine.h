@@ -32,7 +32,9 @@
 #if defined(NONSPHERICAL_ACTIVE_FLAG) || defined(SUPERQUADRIC_ACTIVE_FLAG) || defined(CONVEX_ACTIVE_FLAG)
 #error "Debian libliggghts 3.8 is built without NONSPHERICAL/SUPERQUADRIC/CONVEX flags"
 #endif
-static_assert(sizeof(LIGGGHTS::ContactModels::ForceData) == 48, "ForceData layout");
+static_assert(sizeof(LIGGGHTS::ContactModels::ForceData) == 48 &&
+                  offsetof(LIGGGHTS::ContactModels::ForceData, delta_torque) == 24,
+              "ForceData layout: delta_F[3], delta_torque[3]");
 static_assert(offsetof(LIGGGHTS::ContactModels::SurfacesCloseData, computeflag) == 156,
               "SurfacesCloseData layout differs from the stock library");
 
