@@ -143,7 +143,7 @@ inline void BondNonlinearCohesion::pairKinematics(const SurfacesCloseData &d, Gb
     k.radius_j = d.radj;
 }
 
-void BondNonlinearCohesion::defer(SurfacesCloseData &d, const GbBondModel *model, bool created,
+inline void BondNonlinearCohesion::defer(SurfacesCloseData &d, const GbBondModel *model, bool created,
                                   const ForceData *i_forces, const ForceData *j_forces)
 {
     PendingBatch &b = batchOf(model);
@@ -369,11 +369,6 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
         return false;
     }
     double *const history = d.contact_history + offset_;
-    if (deferring_ && history[0] == GB_BOND_STATUS_INTACT) {
-        defer(d, model, false, i_contact, j_contact);
-        deferred = true;
-        return false;
-    }
     double *const outputSlots = d.contact_history + outputOffset_;
     // Passes that must not advance the state: the setup pass of a run
     // (computeflag, no shearupdate) and the per-contact output pass
@@ -480,9 +475,26 @@ void BondNonlinearCohesion::apply(const GbBondOutput &out, ForceData &i_forces, 
     }
 }
 
+// The common case of a force pass, without the general path's calls.
+inline bool BondNonlinearCohesion::deferIntact(SurfacesCloseData &d, const ForceData *i_contact,
+                                               const ForceData *j_contact)
+{
+    if (!deferring_ || !d.contact_history || d.contact_history[offset_] != GB_BOND_STATUS_INTACT) return false;
+    const GbBondModel *model = parameters_.model(d.itype, d.jtype);
+    if (!model) return false;   // the general path reports it
+    defer(d, model, false, i_contact, j_contact);
+    setContactFlag(d, true);
+    return true;
+}
+
 void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
                                                  ForceData &j_forces)
 {
+    if (deferIntact(sidata, &i_forces, &j_forces)) {
+        i_forces.reset();
+        j_forces.reset();
+        return;
+    }
     GbBondOutput out;
     bool deferred;
     const bool intact = advance(sidata, out, deferred, &i_forces, &j_forces);
@@ -501,6 +513,7 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
 
 void BondNonlinearCohesion::surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
 {
+    if (deferIntact(scdata, 0, 0)) return;
     GbBondOutput out;
     bool deferred;
     const bool intact = advance(scdata, out, deferred, 0, 0);

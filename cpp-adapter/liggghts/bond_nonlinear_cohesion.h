@@ -79,6 +79,7 @@ private:
     void pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const;
     void createPair(const SurfacesCloseData &d, const GbBondModel *model, const GbPairKinematics &k,
                     double *state, bool &created);
+    bool deferIntact(SurfacesCloseData &d, const ForceData *i_contact, const ForceData *j_contact);
     void defer(SurfacesCloseData &d, const GbBondModel *model, bool created, const ForceData *i_forces,
                const ForceData *j_forces);
     PendingBatch &batchOf(const GbBondModel *model)
