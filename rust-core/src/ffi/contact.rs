@@ -11,6 +11,7 @@ use crate::contact::{
 };
 use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
 use std::ffi::{c_char, CString};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::OnceLock;
 
 /// Fills `params` with Table 1 of the seed.
@@ -39,6 +40,7 @@ pub unsafe extern "C" fn granbond_voigt_model_new(
         let out = reference_mut(model, "model")?;
         *out = std::ptr::null_mut();
         let m = VoigtModel::new(*reference(params, "params")?)?;
+        detect_cpu();
         *out = Box::into_raw(Box::new(m));
         Ok(())
     })
@@ -193,6 +195,60 @@ pub unsafe extern "C" fn granbond_voigt_compute_plane(
     })
 }
 
+/// The unchecked entries' bodies are compiled twice: for the x86-64
+/// baseline, and for AVX2, chosen at run time on CPUs that have it (the
+/// 3-vectors fit one register instead of two: about a fifth fewer
+/// instructions per contact). The same operations in the same order, and no
+/// fused multiply-add (not enabled, and never formed from separate
+/// operations), so the same bits; the baseline-vs-checked tests compare them.
+macro_rules! compiled_twice {
+    (fn $base:ident($($arg:ident: $ty:ty),* $(,)?) $body:block) => {
+        // the entry only chooses (this is inlined into it); each copy is a
+        // function of its own
+        #[inline(always)]
+        #[allow(clippy::too_many_arguments)]
+        unsafe fn $base($($arg: $ty),*) -> Status {
+            #[inline(always)]
+            #[allow(clippy::too_many_arguments)]
+            unsafe fn body($($arg: $ty),*) -> Status $body
+
+            #[inline(never)]
+            #[allow(clippy::too_many_arguments)]
+            unsafe fn baseline($($arg: $ty),*) -> Status {
+                body($($arg),*)
+            }
+
+            #[cfg(target_arch = "x86_64")]
+            #[target_feature(enable = "avx2")]
+            #[allow(clippy::too_many_arguments)]
+            unsafe fn wide($($arg: $ty),*) -> Status {
+                body($($arg),*)
+            }
+
+            #[cfg(target_arch = "x86_64")]
+            if avx2() {
+                return wide($($arg),*);
+            }
+            baseline($($arg),*)
+        }
+    };
+}
+
+/// Whether this CPU runs the AVX2 copies: found when a model is built
+/// (`granbond_voigt_model_new`), so the entries only load a flag (until
+/// then, the baseline copies run).
+static WIDE: AtomicBool = AtomicBool::new(false);
+
+fn detect_cpu() {
+    #[cfg(target_arch = "x86_64")]
+    WIDE.store(std::arch::is_x86_feature_detected!("avx2"), Ordering::Relaxed);
+}
+
+#[inline(always)]
+fn avx2() -> bool {
+    WIDE.load(Ordering::Relaxed)
+}
+
 /// `granbond_voigt_compute` / `granbond_voigt_compute_plane` for a contact
 /// whose frame the engine has already built (the same frame
 /// `granbond_contact_frame_pair` / `granbond_contact_frame_plane` give), for
@@ -203,7 +259,9 @@ pub unsafe extern "C" fn granbond_voigt_compute_plane(
 /// the checked calls given the same frame.
 ///
 /// The frame and the state are read one double at a time, and the result is
-/// checked before it is stored (see [`load_frame`]).
+/// checked before it is stored (see [`load_frame`]). On a CPU with AVX2
+/// (detected when a model is built) the step runs a copy compiled for AVX2:
+/// same bits, fewer instructions.
 ///
 /// # Safety
 /// None of the pointers may be null. `model` from
@@ -218,14 +276,20 @@ pub unsafe extern "C" fn granbond_voigt_compute_frame_unchecked(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    step_unchecked(
-        "granbond_voigt_compute_frame_unchecked",
-        model,
-        &load_frame(frame),
-        dt,
-        state,
-        out,
-    )
+    frame_step(model, frame, dt, state, out)
+}
+
+compiled_twice! {
+    fn frame_step(
+        model: *const VoigtModel,
+        frame: *const ContactFrame,
+        dt: f64,
+        state: *mut f64,
+        out: *mut ContactOutput,
+    ) {
+        let function = "granbond_voigt_compute_frame_unchecked";
+        step_unchecked(function, model, &load_frame(frame), dt, state, out)
+    }
 }
 
 /// `granbond_voigt_compute_frame_unchecked` with the frame's fields handed
@@ -258,25 +322,41 @@ pub unsafe extern "C" fn granbond_voigt_compute_fields_unchecked(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    let frame = ContactFrame {
-        n: load3(n as *const [f64; 3]),
-        overlap,
-        lever_i,
-        lever_j,
-        r_eff,
-        v_i: *(v_i as *const [f64; 3]),
-        v_j: *(v_j as *const [f64; 3]),
-        w_i: *(w_i as *const [f64; 3]),
-        w_j: *(w_j as *const [f64; 3]),
-    };
-    step_unchecked(
-        "granbond_voigt_compute_fields_unchecked",
-        model,
-        &frame,
-        dt,
-        state,
-        out,
+    fields_step(
+        model, n, overlap, lever_i, lever_j, r_eff, v_i, v_j, w_i, w_j, dt, state, out,
     )
+}
+
+compiled_twice! {
+    fn fields_step(
+        model: *const VoigtModel,
+        n: *const f64,
+        overlap: f64,
+        lever_i: f64,
+        lever_j: f64,
+        r_eff: f64,
+        v_i: *const f64,
+        v_j: *const f64,
+        w_i: *const f64,
+        w_j: *const f64,
+        dt: f64,
+        state: *mut f64,
+        out: *mut ContactOutput,
+    ) {
+        let frame = ContactFrame {
+            n: load3(n as *const [f64; 3]),
+            overlap,
+            lever_i,
+            lever_j,
+            r_eff,
+            v_i: *(v_i as *const [f64; 3]),
+            v_j: *(v_j as *const [f64; 3]),
+            w_i: *(w_i as *const [f64; 3]),
+            w_j: *(w_j as *const [f64; 3]),
+        };
+        let function = "granbond_voigt_compute_fields_unchecked";
+        step_unchecked(function, model, &frame, dt, state, out)
+    }
 }
 
 /// The body of the unchecked entries: one step, the result checked before
@@ -569,7 +649,10 @@ mod tests {
     }
 
     #[test]
-    fn the_fields_entry_gives_the_bits_of_the_frame_entry() {
+    fn the_unchecked_entries_give_the_bits_of_the_kernel() {
+        // the entries run their AVX2 copies where the CPU has AVX2, the
+        // kernel called here its baseline code
+        detect_cpu();
         let mut r = Numbers(0.3);
         let (mut touching, mut sliding, mut rolling_slips) = (0, 0, 0);
         for rolling in [0, 1] {
@@ -583,7 +666,8 @@ mod tests {
             for contact in 0..40 {
                 // even contacts: sphere pairs; odd: a sphere on a wall
                 let wall = contact % 2 == 1;
-                let (mut sa, mut sb) = ([0.0; CONTACT_STATE_LEN], [0.0; CONTACT_STATE_LEN]);
+                let mut sa = [0.0; CONTACT_STATE_LEN];
+                let (mut sb, mut sc) = (ContactState::default(), ContactState::default());
                 let radius = 1e-3 * (1.0 + 0.3 * r.next());
                 let d = r.vec(1.0);
                 let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
@@ -605,7 +689,9 @@ mod tests {
                 for step in 0..100 {
                     // in and out of contact, slowly
                     f.overlap = 1e-6 * (r.next() + 0.3 + (step as f64 * 0.1).sin());
-                    let (mut a, mut b) = (ContactOutput::default(), ContactOutput::default());
+                    let mut a = ContactOutput::default();
+                    let (mut b, mut c) = (ContactOutput::default(), ContactOutput::default());
+                    model.step_frame(&f, 1e-7, &mut sc, &mut c);
                     let fast = unsafe {
                         granbond_voigt_compute_frame_unchecked(&model, &f, 1e-7, sa.as_mut_ptr(), &mut a)
                     };
@@ -622,15 +708,17 @@ mod tests {
                             f.w_i.as_ptr(),
                             f.w_j.as_ptr(),
                             1e-7,
-                            sb.as_mut_ptr(),
+                            &mut sb as *mut ContactState as *mut f64,
                             &mut b,
                         )
                     };
                     assert_eq!((fast, fields), (Status::Ok, Status::Ok));
+                    let what = format!("rolling {rolling} contact {contact} step {step}");
+                    assert_eq!(bits(&a, &sa), bits(&c, sc.as_slots()), "frame entry, {what}");
                     assert_eq!(
-                        bits(&a, &sa),
-                        bits(&b, &sb),
-                        "rolling {rolling} contact {contact} step {step}"
+                        bits(&b, sb.as_slots()),
+                        bits(&c, sc.as_slots()),
+                        "fields entry, {what}"
                     );
                     touching += a.touching;
                     sliding += a.sliding;
