@@ -13,6 +13,10 @@
 #       (pair style and walls replaced every `steps` steps, `rounds` times
 #       each), so both meet the same load; best and median loop time of each,
 #       ratio of the best and of the medians
+#   bench/liggghts_voigt.sh --call
+#       the core's per-contact call alone (bench/liggghts_voigt_call.c against
+#       target/release/libgranbond.a): ns per contact, frame entry and fields
+#       entry, best of 300 short passes (robust to machine load)
 #   bench/liggghts_voigt.sh --callgrind <launcher>
 #       instructions executed (valgrind --tool=callgrind, whole program) on a
 #       smaller block (8 x 8 x 10 spheres, 500 + 200 steps): load-independent,
@@ -22,6 +26,18 @@ here="$(cd "$(dirname "$0")" && pwd)"
 deck="$here/liggghts_voigt_heap.in"
 VOIGT=("model voigt tangential voigt rolling_friction voigt" "noAttraction on")
 STOCK=("model hooke/stiffness tangential history rolling_friction epsd2" "absolute_damping on")
+
+if [[ "${1:-}" == "--call" ]]; then
+    root="$(cd "$here/.." && pwd)"
+    library="${CARGO_TARGET_DIR:-$root/target}/release/libgranbond.a"
+    [ -f "$library" ] || { echo "build first: cmake --build build (or cargo build --release -p granbond)" >&2; exit 1; }
+    work="$(mktemp -d)"
+    trap 'rm -rf "$work"' EXIT
+    cc -O2 -std=c99 -D_POSIX_C_SOURCE=199309L -I"$root/rust-core/include" "$here/liggghts_voigt_call.c" "$library" \
+        -lpthread -ldl -lm -o "$work/call"
+    "$work/call"
+    exit 0
+fi
 
 if [[ "${1:-}" == "--interleaved" ]]; then
     engine="${2:?usage: $0 --interleaved <liggghts launcher with the granbond models> [steps] [rounds]}"
