@@ -8,6 +8,15 @@
 #   bench/liggghts_voigt.sh <launcher> [steps] [repeat]
 #       wall clock: loop time of the timed run, best of `repeat` (alternating),
 #       and the ratio stock/voigt (1.0 = as fast as stock; target >= 0.95)
+#   bench/liggghts_voigt.sh --interleaved <launcher> [steps (300)] [rounds (10)]
+#       wall clock on a shared machine: one process alternates voigt and stock
+#       (pair style and walls replaced every `steps` steps, `rounds` times
+#       each), so both meet the same load; best and median loop time of each,
+#       ratio of the best and of the medians
+#   bench/liggghts_voigt.sh --call
+#       the core's per-contact call alone (bench/liggghts_voigt_call.c against
+#       target/release/libgranbond.a): ns per contact, frame entry and fields
+#       entry, best of 300 short passes (robust to machine load)
 #   bench/liggghts_voigt.sh --callgrind <launcher>
 #       instructions executed (valgrind --tool=callgrind, whole program) on a
 #       smaller block (8 x 8 x 10 spheres, 500 + 200 steps): load-independent,
@@ -17,6 +26,42 @@ here="$(cd "$(dirname "$0")" && pwd)"
 deck="$here/liggghts_voigt_heap.in"
 VOIGT=("model voigt tangential voigt rolling_friction voigt" "noAttraction on")
 STOCK=("model hooke/stiffness tangential history rolling_friction epsd2" "absolute_damping on")
+
+if [[ "${1:-}" == "--call" ]]; then
+    root="$(cd "$here/.." && pwd)"
+    library="${CARGO_TARGET_DIR:-$root/target}/release/libgranbond.a"
+    [ -f "$library" ] || { echo "build first: cmake --build build (or cargo build --release -p granbond)" >&2; exit 1; }
+    work="$(mktemp -d)"
+    trap 'rm -rf "$work"' EXIT
+    cc -O2 -std=c99 -D_POSIX_C_SOURCE=199309L -I"$root/rust-core/include" "$here/liggghts_voigt_call.c" "$library" \
+        -lpthread -ldl -lm -o "$work/call"
+    "$work/call"
+    exit 0
+fi
+
+if [[ "${1:-}" == "--interleaved" ]]; then
+    engine="${2:?usage: $0 --interleaved <liggghts launcher with the granbond models> [steps] [rounds]}"
+    steps="${3:-300}"
+    rounds="${4:-10}"
+    work="$(mktemp -d)"
+    trap 'rm -rf "$work"' EXIT
+    (cd "$work" && "$engine" -in "$deck" -log none -var nrun "$steps" -var alternate "$rounds" \
+        -var models "${VOIGT[0]}" -var settings "${VOIGT[1]}" -var models2 "${STOCK[0]}" -var settings2 "${STOCK[1]}") |
+        awk '/^Loop time/ { print $4 }' | tail -n +2 > "$work/times"
+    [ "$(wc -l < "$work/times")" -eq $((2 * rounds)) ] || { echo "bench: the interleaved run failed" >&2; exit 1; }
+    # odd lines voigt, even lines stock
+    awk 'NR % 2 == 1' "$work/times" | sort -g > "$work/voigt"
+    awk 'NR % 2 == 0' "$work/times" | sort -g > "$work/stock"
+    stats() { awk '{ t[NR] = $1 } END { m = (NR % 2) ? t[(NR + 1) / 2] : (t[NR / 2] + t[NR / 2 + 1]) / 2; printf "%s %s", t[1], m }' "$1"; }
+    read -r vb vm <<< "$(stats "$work/voigt")"
+    read -r sb sm <<< "$(stats "$work/stock")"
+    echo "5120 spheres, $rounds x $steps steps each, alternating in one process"
+    echo "voigt  loop time best $vb s, median $vm s"
+    echo "stock  loop time best $sb s, median $sm s"
+    awk -v vb="$vb" -v sb="$sb" -v vm="$vm" -v sm="$sm" 'BEGIN {
+        printf "throughput ratio voigt/stock = %.3f (best), %.3f (median) (target >= 0.95)\n", sb / vb, sm / vm }'
+    exit 0
+fi
 
 if [[ "${1:-}" == "--callgrind" ]]; then
     engine="${2:?usage: $0 --callgrind <liggghts launcher with the granbond models>}"

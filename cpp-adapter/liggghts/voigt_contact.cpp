@@ -115,34 +115,82 @@ void VoigtContactShare::rebuild(LAMMPS_NS::Error *error)
 
 // ------------------------------------------------------------ translation
 
-// The engine's description of a touching contact as the core's frame
+// Records handed between the engine, this adapter and the core (the
+// engine's contact data, the frame, the core's output, the engine's force
+// accumulators) are written just before they are read, and the stores are
+// still in flight. A load that spans two stores cannot be served from the
+// store buffer (store-to-load forwarding fails; it waits until the stores
+// reach the cache), and compilers pair neighbouring doubles into 16-byte
+// loads at will (the engine resets ForceData in 16-byte stores at offsets
+// 0, 16, 32: a paired load of delta_torque[0..1] at 24 spans two of them).
+// So this code reads such records one double at a time, as the core reads
+// the frame: each load is served by the store that wrote it, whatever
+// widths either compiler chose.
+static inline double fresh(const double &x) { return *static_cast<const volatile double *>(&x); }
+static inline void addTo(double &x, double d)
+{
+    volatile double &v = x;
+    v = v + d;
+}
+static inline void subtractFrom(double &x, double d)
+{
+    volatile double &v = x;
+    v = v - d;
+}
+
+// The engine's description of a touching contact in the core's terms
 // (what granbond_contact_frame_pair / _plane compute, from the geometry the
 // engine has already worked out): for a pair the engine's unit normal en
 // (x_i - x_j over its length) and overlap deltan = radsum - r; for a wall the
 // sphere on the plane through the contact point with normal en, moving with
-// the wall velocity there.
+// the wall velocity there. The vectors stay where the engine keeps them.
+struct EngineContact {
+    const double *n, *v_i, *v_j, *w_i, *w_j;
+    double overlap, lever_i, lever_j, r_eff;
+};
+
+static const double NO_MOTION[3] = {0.0, 0.0, 0.0};
+
+static inline EngineContact engineContact(const SurfacesIntersectData &d)
+{
+    EngineContact c;
+    c.n = d.en;
+    c.v_i = d.v_i;
+    c.w_i = d.omega_i;
+    c.lever_i = d.radi;
+    if (d.is_wall) {
+        const double *const en = d.en;
+        c.overlap = d.radi - (fresh(d.delta[0]) * fresh(en[0]) + fresh(d.delta[1]) * fresh(en[1]) +
+                              fresh(d.delta[2]) * fresh(en[2]));
+        c.lever_j = 0.0;
+        c.r_eff = d.radi;
+        c.v_j = d.v_j ? d.v_j : NO_MOTION;
+        c.w_j = NO_MOTION;
+        return c;
+    }
+    c.overlap = d.deltan;
+    c.lever_j = d.radj;
+    c.r_eff = d.radi * d.radj / (d.radi + d.radj);
+    c.v_j = d.v_j;
+    c.w_j = d.omega_j;
+    return c;
+}
+
+// The same as a core frame, for the calls that take one.
 static inline void engineFrame(const SurfacesIntersectData &d, GbContactFrame &f)
 {
-    const double *const en = d.en, *const vi = d.v_i, *const wi = d.omega_i;
-    f.n[0] = en[0], f.n[1] = en[1], f.n[2] = en[2];
-    f.v_i[0] = vi[0], f.v_i[1] = vi[1], f.v_i[2] = vi[2];
-    f.w_i[0] = wi[0], f.w_i[1] = wi[1], f.w_i[2] = wi[2];
-    f.lever_i = d.radi;
-    if (d.is_wall) {
-        f.overlap = d.radi - (d.delta[0] * en[0] + d.delta[1] * en[1] + d.delta[2] * en[2]);
-        f.lever_j = 0.0;
-        f.r_eff = d.radi;
-        const double *const vj = d.v_j;
-        f.v_j[0] = vj ? vj[0] : 0.0, f.v_j[1] = vj ? vj[1] : 0.0, f.v_j[2] = vj ? vj[2] : 0.0;
-        f.w_j[0] = f.w_j[1] = f.w_j[2] = 0.0;
-        return;
+    const EngineContact c = engineContact(d);
+    for (int k = 0; k < 3; k++) {
+        f.n[k] = fresh(c.n[k]);
+        f.v_i[k] = c.v_i[k];
+        f.v_j[k] = c.v_j[k];
+        f.w_i[k] = c.w_i[k];
+        f.w_j[k] = c.w_j[k];
     }
-    const double *const vj = d.v_j, *const wj = d.omega_j;
-    f.overlap = d.deltan;
-    f.lever_j = d.radj;
-    f.r_eff = d.radi * d.radj / (d.radi + d.radj);
-    f.v_j[0] = vj[0], f.v_j[1] = vj[1], f.v_j[2] = vj[2];
-    f.w_j[0] = wj[0], f.w_j[1] = wj[1], f.w_j[2] = wj[2];
+    f.overlap = c.overlap;
+    f.lever_i = c.lever_i;
+    f.lever_j = c.lever_j;
+    f.r_eff = c.r_eff;
 }
 
 // Adds a force on i (and its opposite on j for a pair) and the torques.
@@ -153,16 +201,17 @@ static inline void addLoads(const SurfacesIntersectData &d, ForceData &i_forces,
         // a wall element may carry only part of the contact (multicontact)
         const double share = d.area_ratio;
         for (int k = 0; k < 3; k++) {
-            i_forces.delta_F[k] += share * force_i[k];
-            i_forces.delta_torque[k] += share * torque_i[k];
+            addTo(i_forces.delta_F[k], share * fresh(force_i[k]));
+            addTo(i_forces.delta_torque[k], share * fresh(torque_i[k]));
         }
         return;
     }
     for (int k = 0; k < 3; k++) {
-        i_forces.delta_F[k] += force_i[k];
-        j_forces.delta_F[k] -= force_i[k];
-        i_forces.delta_torque[k] += torque_i[k];
-        j_forces.delta_torque[k] += torque_j[k];
+        const double f = fresh(force_i[k]);
+        addTo(i_forces.delta_F[k], f);
+        subtractFrom(j_forces.delta_F[k], f);
+        addTo(i_forces.delta_torque[k], fresh(torque_i[k]));
+        addTo(j_forces.delta_torque[k], fresh(torque_j[k]));
     }
 }
 
@@ -264,8 +313,8 @@ void VoigtNormal::normalPart(SurfacesIntersectData &sidata, ForceData &i_forces,
 }
 
 // normal + tangential (+ rolling) voigt in one core call, the hot path of
-// voigt x voigt (x voigt): the frame straight from the engine's data and the
-// core's unchecked entry (the models were validated when built, dt by the
+// voigt x voigt (x voigt): the frame's fields straight from the engine's data
+// and the core's unchecked entry (the models were validated when built, dt by the
 // engine; a non-finite result is still caught). The tangential and rolling
 // voigt models then add nothing themselves.
 void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -283,16 +332,18 @@ void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_force
             scratch[k] = (fusedRolling_ || k < 3) ? stored[k] : 0.0;
         state = scratch;
     }
-    GbContactFrame frame;
-    engineFrame(sidata, frame);
+    // the frame's fields straight from the engine: no frame is built here
+    // and read back by the core
+    const EngineContact c = engineContact(sidata);
     GbContactOutput out;
-    if (granbond_voigt_compute_frame_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), &frame, update->dt,
-                                               state, &out) != GB_STATUS_OK)
+    if (granbond_voigt_compute_fields_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.overlap,
+                                                c.lever_i, c.lever_j, c.r_eff, c.v_i, c.v_j, c.w_i, c.w_j,
+                                                update->dt, state, &out) != GB_STATUS_OK)
         voigtFailed(lmp, sidata, "model voigt");
     if (state == scratch && sidata.computeflag && sidata.shearupdate)
         for (int k = 0; k < 3; k++)
             stored[k] = scratch[k];
-    sidata.Fn = out.normal_force;
+    sidata.Fn = fresh(out.normal_force);
     addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
 }
 

@@ -693,6 +693,11 @@ enum GbStatus granbond_voigt_compute_plane(const struct GbVoigtModel *model,
  * `GB_STATUS_NON_FINITE_INPUT` with a message. Same physics, same bits as
  * the checked calls given the same frame.
  *
+ * The frame and the state are read one double at a time, and the result is
+ * checked before it is stored (see [`load_frame`]). On a CPU with AVX2
+ * (detected when a model is built) the step runs a copy compiled for AVX2:
+ * same bits, fewer instructions.
+ *
  * # Safety
  * None of the pointers may be null. `model` from
  * `granbond_voigt_model_new`; `frame` a frame with a unit normal and finite
@@ -704,6 +709,36 @@ enum GbStatus granbond_voigt_compute_frame_unchecked(const struct GbVoigtModel *
                                                      double dt,
                                                      double *state,
                                                      struct GbContactOutput *out);
+
+/**
+ * `granbond_voigt_compute_frame_unchecked` with the frame's fields handed
+ * over one by one, for an engine that keeps them in its own arrays: `n`
+ * (3 doubles, may have just been written: it is read one double at a
+ * time), the overlap, levers and `R*` by value, and the velocities `v_i`,
+ * `v_j`, `w_i`, `w_j` (3 doubles each) where the engine keeps them (they
+ * are read as the compiler likes: pass the engine's arrays rather than
+ * fresh copies). Same bits as the frame entry for the same numbers; no
+ * frame is built and none is read back.
+ *
+ * # Safety
+ * As `granbond_voigt_compute_frame_unchecked`: no pointer may be null,
+ * `model` from `granbond_voigt_model_new`, `n` a unit vector, every number
+ * finite, `state` `GRANBOND_CONTACT_STATE_LEN` doubles, `out` valid for
+ * writes, `dt` finite and >= 0.
+ */
+enum GbStatus granbond_voigt_compute_fields_unchecked(const struct GbVoigtModel *model,
+                                                      const double *n,
+                                                      double overlap,
+                                                      double lever_i,
+                                                      double lever_j,
+                                                      double r_eff,
+                                                      const double *v_i,
+                                                      const double *v_j,
+                                                      const double *w_i,
+                                                      const double *w_j,
+                                                      double dt,
+                                                      double *state,
+                                                      struct GbContactOutput *out);
 
 /**
  * The contact frame (normal, overlap, levers, velocities) of two spheres,

@@ -1946,6 +1946,17 @@ static int same_contact_output(const GbContactOutput *a, const GbContactOutput *
            a->touching == b->touching && a->sliding == b->sliding && a->rolling_slip == b->rolling_slip;
 }
 
+/* Bit for bit, field by field (the struct's tail padding is not compared). */
+static int identical_contact_output(const GbContactOutput *a, const GbContactOutput *b)
+{
+    return memcmp(a->force_i, b->force_i, sizeof a->force_i) == 0 &&
+           memcmp(a->torque_i, b->torque_i, sizeof a->torque_i) == 0 &&
+           memcmp(a->torque_j, b->torque_j, sizeof a->torque_j) == 0 &&
+           memcmp(&a->normal_force, &b->normal_force, sizeof a->normal_force) == 0 &&
+           memcmp(&a->overlap, &b->overlap, sizeof a->overlap) == 0 && a->touching == b->touching &&
+           a->sliding == b->sliding && a->rolling_slip == b->rolling_slip;
+}
+
 static int test_voigt_parts(void)
 {
     const GbVoigtParams p = voigt_fixture();
@@ -1956,7 +1967,8 @@ static int test_voigt_parts(void)
     GbTangentialOutput t;
     GbContactOutput fast;
     double state_whole[GRANBOND_CONTACT_STATE_LEN], state_parts[GRANBOND_CONTACT_STATE_LEN];
-    double state_fast[GRANBOND_CONTACT_STATE_LEN];
+    double state_fast[GRANBOND_CONTACT_STATE_LEN], state_fields[GRANBOND_CONTACT_STATE_LEN];
+    GbContactOutput fields;
     double fn = 0.0, v_rel[3], torque[3], spring[3] = {0.0, 0.0, 0.0}, angle[3] = {0.0, 0.0, 0.0};
     int32_t slip = 0;
     int step, c;
@@ -1969,6 +1981,7 @@ static int test_voigt_parts(void)
     memset(state_whole, 0, sizeof state_whole);
     memset(state_parts, 0, sizeof state_parts);
     memset(state_fast, 0, sizeof state_fast);
+    memset(state_fields, 0, sizeof state_fields);
     for (step = 0; step < 4; step++) {
         contact_at(&k, 1.0e-5 + 1.0e-6 * step, 0.01);
         k.v_i[0] += 2.0e-3;
@@ -1985,11 +1998,21 @@ static int test_voigt_parts(void)
                   say("granbond_voigt_compute_frame_unchecked, step %d", step));
         CHECK(same_contact_output(&fast, &whole) && memcmp(state_fast, state_whole, sizeof state_fast) == 0,
               say("step %d: unchecked step on the frame = granbond_voigt_compute", step));
+        EXPECT_OK(granbond_voigt_compute_fields_unchecked(m, frame.n, frame.overlap, frame.lever_i, frame.lever_j,
+                                                          frame.r_eff, frame.v_i, frame.v_j, frame.w_i, frame.w_j, DT,
+                                                          state_fields, &fields),
+                  say("granbond_voigt_compute_fields_unchecked, step %d", step));
+        CHECK(identical_contact_output(&fields, &fast) && memcmp(state_fields, state_fast, sizeof state_fast) == 0,
+              say("step %d: unchecked step on the frame's fields = on the frame, bit for bit", step));
     }
     bad = frame;
     bad.w_j[2] = NAN;
     EXPECT(granbond_voigt_compute_frame_unchecked(m, &bad, DT, state_fast, &fast), GB_STATUS_NON_FINITE_INPUT,
            "granbond_voigt_compute_frame_unchecked, NaN w_j: a non-finite torque is reported");
+    EXPECT(granbond_voigt_compute_fields_unchecked(m, bad.n, bad.overlap, bad.lever_i, bad.lever_j, bad.r_eff, bad.v_i,
+                                                   bad.v_j, bad.w_i, bad.w_j, DT, state_fields, &fields),
+           GB_STATUS_NON_FINITE_INPUT, "granbond_voigt_compute_fields_unchecked, NaN w_j: a non-finite torque is reported");
+    EXPECT_MESSAGE("granbond_voigt_compute_fields_unchecked");
 
     /* The normal part alone: k_n overlap - gamma_n v_n. */
     contact_at(&k, 1.0e-5, 0.01);
