@@ -34,7 +34,7 @@ use criterion::{
     black_box, criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion, SamplingMode,
     Throughput,
 };
-use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus};
+use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus, Simd, BOND_STATE_LEN};
 use granbond::contact::{ContactOutput, ContactState, VoigtModel, VoigtParams};
 use granbond::ffi::bond::{granbond_bond_compute_batch, granbond_bond_model_new};
 use granbond::ffi::Status;
@@ -402,6 +402,78 @@ fn bench_bonds(c: &mut Criterion<Clock>, n: usize) {
     group.finish();
 }
 
+/// `f64` slots per pair of an engine's contact history that holds a bond state
+/// (LIGGGHTS keeps the bond's slots among other per-contact data).
+const HISTORY_RECORD: usize = 32;
+
+/// `BondModel::step_scattered`, one call per sweep as the LIGGGHTS adapter
+/// makes it, over states that lie apart in memory: each in a record of
+/// [`HISTORY_RECORD`] `f64`, the records in shuffled order. Variants: the
+/// instruction sets of `step_scattered` (`scattered_scalar`,
+/// `scattered_avx2`, ...), and `single` = one `BondModel::step` per bond
+/// over the same states. `full_6dof` bonds; `n` = 1e3 and 1e5.
+fn bench_scattered(c: &mut Criterion<Clock>, n: usize) {
+    let pairs = bond_pairs(n);
+    let mut group = c.benchmark_group(format!("scattered_{}", if n >= 100_000 { "1e5" } else { "1e3" }));
+    configure(&mut group, n);
+    let mut rng = Rng(0x5CA7 ^ n as u64);
+    let mut order: Vec<usize> = (0..n).collect();
+    for i in (1..n).rev() {
+        order.swap(i, (rng.next_u64() % (i as u64 + 1)) as usize);
+    }
+    let base = BondModel::new(full_bond()).expect("valid bond parameters");
+    let mut variants: Vec<(String, Option<BondModel>)> = vec![("single".into(), None)];
+    for simd in [Simd::Scalar, Simd::Avx2, Simd::Avx512] {
+        if let Some(m) = base.clone().with_simd(simd) {
+            variants.push((format!("scattered_{simd:?}").to_lowercase(), Some(m)));
+        }
+    }
+    for (name, model) in variants {
+        let mut records = vec![[0.0f64; HISTORY_RECORD]; n];
+        for (i, &r0) in pairs.rest.iter().enumerate() {
+            records[order[i]][..BOND_STATE_LEN].copy_from_slice(BondState::created(r0).as_slots());
+        }
+        let mut outs = vec![BondOutput::default(); n];
+        let mut sweep = 0usize;
+        {
+            let mut by_record: Vec<&mut BondState> = records
+                .iter_mut()
+                .map(|r| BondState::from_slots_mut((&mut r[..BOND_STATE_LEN]).try_into().unwrap()))
+                .collect();
+            let mut states: Vec<&mut BondState> = Vec::with_capacity(n);
+            let mut taken: Vec<Option<&mut BondState>> = by_record.drain(..).map(Some).collect();
+            for &o in &order {
+                states.push(taken[o].take().unwrap());
+            }
+            group.bench_function(BenchmarkId::new(name.as_str(), n), |b| {
+                b.iter(|| {
+                    let kin = pairs.frame(sweep);
+                    sweep += 1;
+                    match &model {
+                        Some(m) => m
+                            .step_scattered(black_box(kin), black_box(DT), &mut states, &mut outs)
+                            .expect("finite kinematics"),
+                        None => {
+                            for ((k, s), o) in
+                                black_box(kin).iter().zip(states.iter_mut()).zip(outs.iter_mut())
+                            {
+                                base.step(k, DT, s, o).expect("finite kinematics");
+                            }
+                        }
+                    }
+                })
+            });
+        }
+        let states: Vec<BondState> = records
+            .iter()
+            .map(|r| *BondState::from_slots((&r[..BOND_STATE_LEN]).try_into().unwrap()))
+            .collect();
+        assert_sane(&name, &states, &outs);
+        black_box(&outs);
+    }
+    group.finish();
+}
+
 /// The same sweep as `bond_1e3/full_6dof` through the C ABI (pointer checks,
 /// `catch_unwind`, error-slot reset): the cost of the boundary.
 fn bench_ffi(c: &mut Criterion<Clock>) {
@@ -477,6 +549,8 @@ fn bench_contacts(c: &mut Criterion<Clock>, n: usize) {
 
 fn in_cache(c: &mut Criterion<Clock>) {
     bench_bonds(c, IN_CACHE);
+    bench_scattered(c, IN_CACHE);
+    bench_scattered(c, 100_000);
     bench_ffi(c);
     bench_contacts(c, IN_CACHE);
 }
