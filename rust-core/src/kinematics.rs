@@ -52,32 +52,44 @@ impl PairKinematics {
         }
     }
 
-    /// Rejects NaN/Inf anywhere and non-positive radii. `x - x` is zero for
-    /// every finite `x` and NaN otherwise, so one sum tests all 20 numbers
-    /// without a branch per value. The sum runs in four independent partial
-    /// sums (zero iff every term is zero, in any order), so it is a short
-    /// tree of packed additions rather than one chain of 20 dependent ones.
+    /// Rejects NaN/Inf anywhere and non-positive radii (see [`usable`]).
     #[inline(always)]
-    #[allow(clippy::eq_op)]
     pub fn check(&self) -> Result<(), KinematicsError> {
-        let mut acc = [0.0f64; 4];
-        let mut lane = 0;
-        for a in [self.x_i, self.x_j, self.v_i, self.v_j, self.w_i, self.w_j] {
-            for c in a {
-                acc[lane % 4] += c - c;
-                lane += 1;
-            }
-        }
-        acc[2] += self.radius_i - self.radius_i;
-        acc[3] += self.radius_j - self.radius_j;
-        if (acc[0] + acc[1]) + (acc[2] + acc[3]) != 0.0 {
+        let vectors = [self.x_i, self.x_j, self.v_i, self.v_j, self.w_i, self.w_j];
+        let (finite, positive) = usable(vectors, self.radius_i, self.radius_j);
+        if !finite {
             return Err(KinematicsError::NonFinite);
         }
-        if !(self.radius_i > 0.0 && self.radius_j > 0.0) {
+        if !positive {
             return Err(KinematicsError::NonPositiveRadius);
         }
         Ok(())
     }
+}
+
+/// Whether the 18 vector components and two radii of a pair are all finite,
+/// and whether both radii are positive (per lane). `x - x` is zero for every
+/// finite `x` and NaN otherwise, so one sum tests all 20 numbers without a
+/// branch per value. The sum runs in four independent partial sums (zero iff
+/// every term is zero, in any order), so it is a short tree of packed
+/// additions rather than one chain of 20 dependent ones.
+#[inline(always)]
+#[allow(clippy::eq_op)]
+pub fn usable<R: Real>(vectors: [[R; 3]; 6], radius_i: R, radius_j: R) -> (R::Mask, R::Mask) {
+    let zero = R::splat(0.0);
+    let mut acc = [zero; 4];
+    let mut lane = 0;
+    for a in vectors {
+        for c in a {
+            acc[lane % 4] = acc[lane % 4] + (c - c);
+            lane += 1;
+        }
+    }
+    acc[2] = acc[2] + (radius_i - radius_i);
+    acc[3] = acc[3] + (radius_j - radius_j);
+    // The sum is +0 or NaN: `>= 0` is `== 0`.
+    let finite = ((acc[0] + acc[1]) + (acc[2] + acc[3])).ge(zero);
+    (finite, radius_i.gt(zero) & radius_j.gt(zero))
 }
 
 /// Centre line of a pair: `n` points from `j` to `i`.

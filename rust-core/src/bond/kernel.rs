@@ -352,7 +352,9 @@ pub(crate) fn advance<const F: u32, R: Real, V: Vector<R>>(
         sigma: R::select(gone, zero, sigma),
         tau: R::select(gone, zero, tau),
         delta,
-        mode: R::select(gone, distance_mode, stress_mode),
+        // (`stress_mode` is 0 unless `snapped`; spelt out, the scalar
+        // kernel sees a constant here.)
+        mode: R::select(gone, distance_mode, R::select(snapped, stress_mode, zero)),
     }
 }
 
@@ -397,7 +399,10 @@ pub enum Simd {
 }
 
 impl Simd {
-    /// The widest this CPU runs.
+    /// What `BondModel` uses: AVX2 where the CPU has it. AVX-512 is not
+    /// chosen by itself: twice the lanes, but twice the transposing per
+    /// chunk too, and on the Xeon this was measured on it was slower than
+    /// AVX2 (`benches/kernels.rs`, `scattered_*`).
     pub fn detect() -> Self {
         #[cfg(target_arch = "x86_64")]
         {
@@ -425,10 +430,11 @@ impl Simd {
 #[cfg(target_arch = "x86_64")]
 mod wide {
     use super::*;
+    use crate::real::packed::{F64x4, F64x8};
 
-    /// The kernel compiled for AVX2: the lane loops of 4 `f64` become
-    /// packed 256-bit instructions (the `#[inline(always)]` laws take on this
-    /// function's target features).
+    /// The kernel compiled for AVX2, 4 bonds per instruction (the
+    /// `#[inline(always)]` laws and lane operations take on this function's
+    /// target features).
     #[target_feature(enable = "avx2")]
     fn avx2<const F: u32>(
         model: &BondModel,
@@ -437,7 +443,19 @@ mod wide {
         states: &mut [&mut BondState],
         outs: &mut [BondOutput],
     ) -> Result<(), (usize, KinematicsError)> {
-        chunk::in_chunks::<F, 4>(model, kin, dt, states, outs)
+        chunk::in_chunks::<F, F64x4>(model, kin, dt, states, outs)
+    }
+
+    /// The same for AVX-512, 8 bonds per instruction.
+    #[target_feature(enable = "avx512f")]
+    fn avx512<const F: u32>(
+        model: &BondModel,
+        kin: &[PairKinematics],
+        dt: f64,
+        states: &mut [&mut BondState],
+        outs: &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        chunk::in_chunks::<F, F64x8>(model, kin, dt, states, outs)
     }
 
     pub(super) fn scattered_avx2<const F: u32>(
@@ -451,6 +469,17 @@ mod wide {
         // which `BondModel` checks the CPU runs.
         unsafe { avx2::<F>(model, kin, dt, states, outs) }
     }
+
+    pub(super) fn scattered_avx512<const F: u32>(
+        model: &BondModel,
+        kin: &[PairKinematics],
+        dt: f64,
+        states: &mut [&mut BondState],
+        outs: &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        // SAFETY: as above, for `Simd::Avx512`.
+        unsafe { avx512::<F>(model, kin, dt, states, outs) }
+    }
 }
 
 seq!(N in 0..128 {
@@ -459,6 +488,8 @@ seq!(N in 0..128 {
     const SCATTERED: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(scattered::<N>,)*];
     #[cfg(target_arch = "x86_64")]
     const SCATTERED_AVX2: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(wide::scattered_avx2::<N>,)*];
+    #[cfg(target_arch = "x86_64")]
+    const SCATTERED_AVX512: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(wide::scattered_avx512::<N>,)*];
 });
 
 pub fn single_kernel(features: u32) -> Kernel {
@@ -476,6 +507,8 @@ pub(crate) fn scattered_kernel(features: u32, simd: Simd) -> (ScatteredKernel, S
     match simd {
         #[cfg(target_arch = "x86_64")]
         Simd::Avx2 => (SCATTERED_AVX2[f], Simd::Avx2),
+        #[cfg(target_arch = "x86_64")]
+        Simd::Avx512 => (SCATTERED_AVX512[f], Simd::Avx512),
         _ => (SCATTERED[f], Simd::Scalar),
     }
 }
