@@ -34,7 +34,7 @@ use criterion::{
     black_box, criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion, SamplingMode,
     Throughput,
 };
-use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus};
+use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus, Simd, BOND_STATE_LEN};
 use granbond::contact::{ContactOutput, ContactState, VoigtModel, VoigtParams};
 use granbond::ffi::bond::{granbond_bond_compute_batch, granbond_bond_model_new};
 use granbond::ffi::Status;
@@ -402,6 +402,64 @@ fn bench_bonds(c: &mut Criterion<Clock>, n: usize) {
     group.finish();
 }
 
+/// `f64` slots per pair of an engine's contact history that holds a bond
+/// state (LIGGGHTS keeps the bond's slots among other per-contact data, in
+/// pages in the order of its neighbour lists).
+const HISTORY_RECORD: usize = 32;
+
+/// `BondModel::step_scattered`, one call per sweep as the LIGGGHTS adapter
+/// makes it, over states that lie apart in memory: each at the start of a
+/// record of [`HISTORY_RECORD`] `f64`, in the order of the pairs. Variants:
+/// the instruction sets of `step_scattered` (`scattered_scalar`,
+/// `scattered_avx2`, `scattered_avx512`, those this CPU runs), and `single` =
+/// one `BondModel::step` per bond over the same states. `full_6dof` bonds;
+/// `n` = 1e3 (in cache) and 1e5 (25 MB of records).
+fn bench_scattered(c: &mut Criterion<Clock>, n: usize) {
+    let pairs = bond_pairs(n);
+    let label = if n >= 100_000 { "1e5" } else { "1e3" };
+    let mut group = c.benchmark_group(format!("scattered_{label}"));
+    configure(&mut group, n);
+    let base = BondModel::new(full_bond()).expect("valid bond parameters");
+    let mut variants: Vec<(String, Option<BondModel>)> = vec![("single".into(), None)];
+    for simd in [Simd::Scalar, Simd::Avx2, Simd::Avx512] {
+        if let Some(m) = base.clone().with_simd(simd) {
+            variants.push((format!("scattered_{simd:?}").to_lowercase(), Some(m)));
+        }
+    }
+    for (name, model) in variants {
+        let mut records = vec![[0.0f64; HISTORY_RECORD]; n];
+        for (record, &r0) in records.iter_mut().zip(&pairs.rest) {
+            record[..BOND_STATE_LEN].copy_from_slice(BondState::created(r0).as_slots());
+        }
+        let mut outs = vec![BondOutput::default(); n];
+        let mut sweep = 0usize;
+        let mut states: Vec<&mut BondState> = records
+            .iter_mut()
+            .map(|r| BondState::from_slots_mut((&mut r[..BOND_STATE_LEN]).try_into().unwrap()))
+            .collect();
+        group.bench_function(BenchmarkId::new(name.as_str(), n), |b| {
+            b.iter(|| {
+                let kin = pairs.frame(sweep);
+                sweep += 1;
+                match &model {
+                    Some(m) => m
+                        .step_scattered(black_box(kin), black_box(DT), &mut states, &mut outs)
+                        .expect("finite kinematics"),
+                    None => {
+                        for ((k, s), o) in black_box(kin).iter().zip(states.iter_mut()).zip(outs.iter_mut()) {
+                            base.step(k, DT, s, o).expect("finite kinematics");
+                        }
+                    }
+                }
+            })
+        });
+        let states: Vec<BondState> = states.iter().map(|s| **s).collect();
+        assert_sane(&name, &states, &outs);
+        black_box(&outs);
+    }
+    group.finish();
+}
+
 /// The same sweep as `bond_1e3/full_6dof` through the C ABI (pointer checks,
 /// `catch_unwind`, error-slot reset): the cost of the boundary.
 fn bench_ffi(c: &mut Criterion<Clock>) {
@@ -477,6 +535,8 @@ fn bench_contacts(c: &mut Criterion<Clock>, n: usize) {
 
 fn in_cache(c: &mut Criterion<Clock>) {
     bench_bonds(c, IN_CACHE);
+    bench_scattered(c, IN_CACHE);
+    bench_scattered(c, 100_000);
     bench_ffi(c);
     bench_contacts(c, IN_CACHE);
 }

@@ -1,7 +1,8 @@
 //! What an engine knows about a pair of spheres at one step, and the geometry
 //! derived from it.
 
-use crate::vector::{v3, Vec3};
+use crate::real::Real;
+use crate::vector::{v3, Vec3, Vector};
 
 /// Positions, velocities, angular velocities and radii of spheres `i` and `j`.
 /// A wall partner is a sphere too (see `bond::wall`).
@@ -51,52 +52,80 @@ impl PairKinematics {
         }
     }
 
-    /// Rejects NaN/Inf anywhere and non-positive radii. `x - x` is zero for
-    /// every finite `x` and NaN otherwise, so one sum tests all 20 numbers
-    /// without a branch per value. The sum runs in four independent partial
-    /// sums (zero iff every term is zero, in any order), so it is a short
-    /// tree of packed additions rather than one chain of 20 dependent ones.
+    /// Rejects NaN/Inf anywhere and non-positive radii (see [`usable`]).
     #[inline(always)]
-    #[allow(clippy::eq_op)]
     pub fn check(&self) -> Result<(), KinematicsError> {
-        let mut acc = [0.0f64; 4];
-        let mut lane = 0;
-        for a in [self.x_i, self.x_j, self.v_i, self.v_j, self.w_i, self.w_j] {
-            for c in a {
-                acc[lane % 4] += c - c;
-                lane += 1;
-            }
-        }
-        acc[2] += self.radius_i - self.radius_i;
-        acc[3] += self.radius_j - self.radius_j;
-        if (acc[0] + acc[1]) + (acc[2] + acc[3]) != 0.0 {
+        let vectors = [self.x_i, self.x_j, self.v_i, self.v_j, self.w_i, self.w_j];
+        let (finite, positive) = usable(vectors, self.radius_i, self.radius_j);
+        if !finite {
             return Err(KinematicsError::NonFinite);
         }
-        if !(self.radius_i > 0.0 && self.radius_j > 0.0) {
+        if !positive {
             return Err(KinematicsError::NonPositiveRadius);
         }
         Ok(())
     }
 }
 
+/// Whether the 18 vector components and two radii of a pair are all finite,
+/// and whether both radii are positive (per lane). `x - x` is zero for every
+/// finite `x` and NaN otherwise, so one sum tests all 20 numbers without a
+/// branch per value. The sum runs in four independent partial sums (zero iff
+/// every term is zero, in any order), so it is a short tree of packed
+/// additions rather than one chain of 20 dependent ones.
+#[inline(always)]
+#[allow(clippy::eq_op)]
+pub fn usable<R: Real>(vectors: [[R; 3]; 6], radius_i: R, radius_j: R) -> (R::Mask, R::Mask) {
+    let zero = R::splat(0.0);
+    let mut acc = [zero; 4];
+    let mut lane = 0;
+    for a in vectors {
+        for c in a {
+            acc[lane % 4] = acc[lane % 4] + (c - c);
+            lane += 1;
+        }
+    }
+    acc[2] = acc[2] + (radius_i - radius_i);
+    acc[3] = acc[3] + (radius_j - radius_j);
+    // The sum is +0 or NaN: `>= 0` is `== 0`.
+    let finite = ((acc[0] + acc[1]) + (acc[2] + acc[3])).ge(zero);
+    (finite, radius_i.gt(zero) & radius_j.gt(zero))
+}
+
 /// Centre line of a pair: `n` points from `j` to `i`.
 #[derive(Clone, Copy, Debug)]
-pub struct CentreLine {
-    pub r: f64,
-    pub n: Vec3,
+pub struct CentreLine<R = f64, V = Vec3> {
+    pub r: R,
+    pub n: V,
 }
 
 #[inline(always)]
 pub fn centre_line(k: &PairKinematics) -> Result<CentreLine, KinematicsError> {
     let d = v3(k.x_i) - v3(k.x_j);
     let r2 = d.norm_squared();
-    // Below this the direction is noise; the bond has no defined axis.
-    if !(r2 > f64::MIN_POSITIVE) {
+    if !separated(r2) {
         return Err(KinematicsError::CoincidentCentres);
     }
+    Ok(axis(d, r2))
+}
+
+/// Whether centres `r2.sqrt()` apart define an axis: below this the
+/// direction is noise; the bond has no defined axis.
+#[inline(always)]
+pub fn separated<R: Real>(r2: R) -> R::Mask {
+    r2.gt(R::splat(f64::MIN_POSITIVE))
+}
+
+/// The centre line along `d = x_i - x_j` with `r2 = |d|^2`, for [`separated`]
+/// centres.
+#[inline(always)]
+pub fn axis<R: Real, V: Vector<R>>(d: V, r2: R) -> CentreLine<R, V> {
     let r = r2.sqrt();
     // One division for the three components.
-    Ok(CentreLine { r, n: d * (1.0 / r) })
+    CentreLine {
+        r,
+        n: d * (R::splat(1.0) / r),
+    }
 }
 
 /// Relative velocity of the material points of `i` and `j` that meet at the
@@ -105,7 +134,7 @@ pub fn centre_line(k: &PairKinematics) -> Result<CentreLine, KinematicsError> {
 /// `vt - (lever_i w_i + lever_j w_j) x n`. It vanishes in rigid motion when
 /// the levers add up to the centre distance.
 #[inline(always)]
-pub fn slip_velocity(v_rel: Vec3, w_i: Vec3, w_j: Vec3, n: Vec3, lever_i: f64, lever_j: f64) -> Vec3 {
+pub fn slip_velocity<R: Real, V: Vector<R>>(v_rel: V, w_i: V, w_j: V, n: V, lever_i: R, lever_j: R) -> V {
     let vt = v_rel - n * v_rel.dot(&n);
     vt - (w_i * lever_i + w_j * lever_j).cross(&n)
 }

@@ -12,6 +12,7 @@ pub mod ffi;
 pub mod integrate;
 pub mod kinematics;
 pub mod parameters;
+pub mod real;
 pub mod scene;
 pub mod stability;
 pub mod state_layout;

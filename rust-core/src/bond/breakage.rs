@@ -1,5 +1,7 @@
 //! When a bond breaks (spec eq. 14-15).
 
+use crate::real::Real;
+
 /// Why a bond broke. Values are part of the C ABI.
 #[repr(i32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -21,18 +23,18 @@ pub enum BreakMode {
 /// so `1/A = 1/(pi rb^2)`, `rb/I = 4/(pi rb^3)`, `rb/J = 2/(pi rb^3)`: given
 /// `inv_rb = 1 / rb` (computed once per bond) no division is left.
 #[inline(always)]
-pub fn section_stresses(
-    normal_force: f64,
-    shear_force: f64,
-    twist_torque: f64,
-    bend_torque: f64,
-    inv_rb: f64,
-) -> (f64, f64) {
+pub fn section_stresses<R: Real>(
+    normal_force: R,
+    shear_force: R,
+    twist_torque: R,
+    bend_torque: R,
+    inv_rb: R,
+) -> (R, R) {
     use std::f64::consts::FRAC_1_PI;
-    let inv_area = FRAC_1_PI * (inv_rb * inv_rb);
+    let inv_area = R::splat(FRAC_1_PI) * (inv_rb * inv_rb);
     let per_moment = inv_area * inv_rb; // 1 / (pi rb^3)
-    let sigma = normal_force.abs() * inv_area + bend_torque * (4.0 * per_moment);
-    let tau = shear_force * inv_area + twist_torque * (2.0 * per_moment);
+    let sigma = normal_force.abs() * inv_area + bend_torque * (R::splat(4.0) * per_moment);
+    let tau = shear_force * inv_area + twist_torque * (R::splat(2.0) * per_moment);
     (sigma, tau)
 }
 
@@ -45,32 +47,45 @@ pub struct StressLimits {
     pub tension_factor: f64,
 }
 
+/// The [`BreakMode`] of a bond with section stresses `sigma`, `tau` at
+/// compression `delta`, as its number (`None` = 0), one per lane: the limit
+/// of `sigma` first, then that of `tau`.
 #[inline(always)]
-pub fn stress_criterion(sigma: f64, tau: f64, delta: f64, limits: &StressLimits) -> BreakMode {
-    let stretched = delta < 0.0;
-    let sigma_limit = if stretched {
-        limits.max_sigma * limits.tension_factor
-    } else {
-        limits.max_sigma
-    };
-    if sigma >= sigma_limit {
-        if stretched {
-            BreakMode::Tension
-        } else {
-            BreakMode::Compression
-        }
-    } else if tau >= limits.max_tau {
-        BreakMode::Shear
-    } else {
-        BreakMode::None
-    }
+pub fn stress_criterion<R: Real>(sigma: R, tau: R, delta: R, limits: &StressLimits) -> R {
+    let mode = |m: BreakMode| R::splat(m as i32 as f64);
+    let stretched = delta.lt(R::splat(0.0));
+    let sigma_limit = R::select(
+        stretched,
+        R::splat(limits.max_sigma * limits.tension_factor),
+        R::splat(limits.max_sigma),
+    );
+    R::select(
+        sigma.ge(sigma_limit),
+        R::select(stretched, mode(BreakMode::Tension), mode(BreakMode::Compression)),
+        R::select(
+            tau.ge(R::splat(limits.max_tau)),
+            mode(BreakMode::Shear),
+            mode(BreakMode::None),
+        ),
+    )
 }
 
+/// Whether the centre distance `r` broke the bond (distance mode).
 #[inline(always)]
-pub fn distance_criterion(r: f64, max_distance: f64) -> BreakMode {
-    if r > max_distance {
-        BreakMode::Distance
-    } else {
-        BreakMode::None
+pub fn distance_criterion<R: Real>(r: R, max_distance: f64) -> R::Mask {
+    r.gt(R::splat(max_distance))
+}
+
+impl BreakMode {
+    /// The mode of its number (see [`stress_criterion`]).
+    #[inline(always)]
+    pub fn from_number(x: f64) -> Self {
+        match x as i32 {
+            1 => BreakMode::Distance,
+            2 => BreakMode::Tension,
+            3 => BreakMode::Compression,
+            4 => BreakMode::Shear,
+            _ => BreakMode::None,
+        }
     }
 }

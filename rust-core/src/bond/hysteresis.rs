@@ -16,6 +16,8 @@
 //! spec's `delta_c1 = c^2 delta_max` avoids a square root and is the same
 //! test, because `s` is monotonic.
 
+use crate::real::Real;
+
 /// Loading, unloading and reverse stiffnesses of one law, with the branch
 /// ratio `c` precomputed.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -41,14 +43,14 @@ impl Loop {
     /// bond in a batch), so a conditional jump here is mispredicted often,
     /// which costs more than the few multiplications saved.
     #[inline(always)]
-    pub fn value(&self, x: f64, x_max: f64) -> f64 {
-        let virgin = self.k * x;
-        let unloading = self.ku * x + (self.k - self.ku) * x_max;
-        let reverse = -self.kc * x;
+    pub fn value<R: Real>(&self, x: R, x_max: R) -> R {
+        let virgin = R::splat(self.k) * x;
+        let unloading = R::splat(self.ku) * x + R::splat(self.k - self.ku) * x_max;
+        let reverse = R::splat(-self.kc) * x;
         select(
-            x >= x_max,
+            x.ge(x_max),
             virgin,
-            select(x >= self.c * x_max, unloading, reverse),
+            select(x.ge(R::splat(self.c) * x_max), unloading, reverse),
         )
     }
 
@@ -59,15 +61,12 @@ impl Loop {
 }
 
 /// `if cond { a } else { b }` for two values that are already computed (so
-/// both sides are evaluated): LLVM turns this into a compare and a mask, not
-/// a jump (checked in the x86_64 asm of the kernels). For the data-dependent
-/// choices of the bond laws a mispredicted jump costs more than evaluating
-/// both sides. Returns exactly `a` or `b`, bit for bit.
+/// both sides are evaluated): for `f64` LLVM turns this into a compare and a
+/// mask, not a jump (checked in the x86_64 asm of the kernels); for lanes it
+/// is a blend. For the data-dependent choices of the bond laws a mispredicted
+/// jump costs more than evaluating both sides. Returns exactly `a` or `b`,
+/// bit for bit.
 #[inline(always)]
-pub fn select(cond: bool, a: f64, b: f64) -> f64 {
-    if cond {
-        a
-    } else {
-        b
-    }
+pub fn select<R: Real>(cond: R::Mask, a: R, b: R) -> R {
+    R::select(cond, a, b)
 }

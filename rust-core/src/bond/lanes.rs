@@ -8,7 +8,8 @@
 //! lane is the correctly rounded IEEE result, exactly what `f64::sqrt` and
 //! `/` give, so pairing changes no bit of any result.
 
-use crate::vector::Vec3;
+use crate::real::Real;
+use crate::vector::Vector;
 
 #[cfg(target_arch = "x86_64")]
 mod imp {
@@ -62,23 +63,25 @@ pub fn div2(a: f64, b: f64, c: f64, d: f64) -> (f64, f64) {
 /// kernels pass constants, so an unwanted one is compiled out, and two wanted
 /// ones share an instruction.
 #[inline(always)]
-pub fn norms(a: Vec3, want_a: bool, b: Vec3, want_b: bool) -> (f64, f64) {
+pub fn norms<R: Real, V: Vector<R>>(a: V, want_a: bool, b: V, want_b: bool) -> (R, R) {
+    let zero = R::splat(0.0);
     match (want_a, want_b) {
-        (true, true) => sqrt2(a.norm_squared(), b.norm_squared()),
-        (true, false) => (a.norm(), 0.0),
-        (false, true) => (0.0, b.norm()),
-        (false, false) => (0.0, 0.0),
+        (true, true) => R::sqrt2(a.norm_squared(), b.norm_squared()),
+        (true, false) => (a.norm(), zero),
+        (false, true) => (zero, b.norm()),
+        (false, false) => (zero, zero),
     }
 }
 
 /// `(1 / a, 1 / b)`, each only if wanted (else 0), like [`norms`]: two wanted
 /// ones share an instruction.
 #[inline(always)]
-pub fn reciprocals(a: f64, want_a: bool, b: f64, want_b: bool) -> (f64, f64) {
+pub fn reciprocals<R: Real>(a: R, want_a: bool, b: R, want_b: bool) -> (R, R) {
+    let (zero, one) = (R::splat(0.0), R::splat(1.0));
     match (want_a, want_b) {
-        (true, true) => div2(1.0, a, 1.0, b),
-        (true, false) => (1.0 / a, 0.0),
-        (false, true) => (0.0, 1.0 / b),
-        (false, false) => (0.0, 0.0),
+        (true, true) => R::div2(one, a, one, b),
+        (true, false) => (one / a, zero),
+        (false, true) => (zero, one / b),
+        (false, false) => (zero, zero),
     }
 }

@@ -2,6 +2,7 @@
 //! (spec: bond-nonlinear.md). One module per law; [`kernel`] assembles them.
 
 pub mod breakage;
+mod chunk;
 pub mod creation;
 pub mod damping;
 pub mod energy;
@@ -20,6 +21,7 @@ pub mod wall;
 
 pub use breakage::BreakMode;
 pub use energy::BondEnergy;
+pub use kernel::Simd;
 pub use model::BondModel;
 pub use params::{BondParams, ParameterError, PARAMETERS};
 pub use state::{BondOutput, BondState, BondStatus, BOND_SLOTS, BOND_STATE_LEN};

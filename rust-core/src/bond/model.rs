@@ -3,7 +3,7 @@
 
 use super::breakage::StressLimits;
 use super::hysteresis::Loop;
-use super::kernel::{self, BatchKernel, Kernel, ScatteredKernel};
+use super::kernel::{self, BatchKernel, Kernel, ScatteredKernel, Simd};
 use super::normal_law::NormalLaw;
 use super::params::{BondParams, ParameterError};
 
@@ -20,6 +20,8 @@ pub struct BondModel {
     pub(crate) single: Kernel,
     pub(crate) batch: BatchKernel,
     pub(crate) scattered: ScatteredKernel,
+    /// The instruction set of `scattered`, chosen once, at construction.
+    simd: Simd,
 }
 
 impl BondModel {
@@ -47,6 +49,7 @@ impl BondModel {
                 features |= kernel::SMOOTH;
             }
         }
+        let (scattered, simd) = kernel::scattered_kernel(features, Simd::detect());
         Ok(Self {
             params,
             normal: NormalLaw::new(
@@ -70,8 +73,30 @@ impl BondModel {
             features,
             single: kernel::single_kernel(features),
             batch: kernel::batch_kernel(features),
-            scattered: kernel::scattered_kernel(features),
+            scattered,
+            simd,
         })
+    }
+
+    /// The instruction set [`Self::step_scattered`] runs on.
+    pub fn simd(&self) -> Simd {
+        self.simd
+    }
+
+    /// The model with [`Self::step_scattered`] on `simd` (the same results,
+    /// only the speed differs), or `None` when this CPU does not run it or
+    /// it is not compiled in. For tests and benchmarks.
+    pub fn with_simd(mut self, simd: Simd) -> Option<Self> {
+        if !simd.available() {
+            return None;
+        }
+        let (scattered, chosen) = kernel::scattered_kernel(self.features, simd);
+        if chosen != simd {
+            return None;
+        }
+        self.scattered = scattered;
+        self.simd = simd;
+        Some(self)
     }
 
     /// The largest centre distance an intact bond of rest length `r0` can

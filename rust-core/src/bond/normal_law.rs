@@ -2,7 +2,7 @@
 //! tension, six branches with load history (spec eq. 4-6).
 
 use super::hysteresis::{select, Loop};
-use super::lanes::sqrt2;
+use crate::real::Real;
 
 /// The six-branch normal law of one bond type.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,19 +35,30 @@ impl NormalLaw {
     /// `s(delta)`: `sqrt(delta)`, or `delta / sqrt(delta_eps)` below
     /// `delta_eps` (continuous at `delta_eps`, finite slope at 0).
     #[inline(always)]
-    pub fn root(&self, delta: f64) -> f64 {
-        select(delta < self.linear_below, delta * self.inv_sqrt_eps, delta.sqrt())
+    pub fn root<R: Real>(&self, delta: R) -> R {
+        self.continued(delta, delta.sqrt())
+    }
+
+    /// [`Self::root`] given `sqrt(delta)` (so two can share an instruction).
+    #[inline(always)]
+    fn continued<R: Real>(&self, delta: R, root: R) -> R {
+        select(
+            delta.lt(R::splat(self.linear_below)),
+            delta * R::splat(self.inv_sqrt_eps),
+            root,
+        )
     }
 
     /// Spec eq. 4, applied before the law so `delta_min <= delta <= delta_max`.
     /// With `history_reset` (the reference code's behaviour) a sign change of
     /// `delta` forgets the extreme of the other sign.
     #[inline(always)]
-    pub fn update_history(&self, delta: f64, delta_max: f64, delta_min: f64) -> (f64, f64) {
+    pub fn update_history<R: Real>(&self, delta: R, delta_max: R, delta_min: R) -> (R, R) {
         let (mut hi, mut lo) = (delta_max, delta_min);
+        let zero = R::splat(0.0);
         if self.history_reset {
-            hi = select(delta < 0.0, 0.0, hi);
-            lo = select(delta > 0.0, 0.0, lo);
+            hi = select(delta.lt(zero), zero, hi);
+            lo = select(delta.gt(zero), zero, lo);
         }
         (hi.max(delta), lo.min(delta))
     }
@@ -58,27 +69,28 @@ impl NormalLaw {
     /// are evaluated and the one for the sign of `delta` is selected without
     /// a jump (the sign varies from bond to bond; see [`select`]).
     #[inline(always)]
-    pub fn stress(
+    pub fn stress<R: Real>(
         &self,
-        delta: f64,
-        delta_max: f64,
-        delta_min: f64,
+        delta: R,
+        delta_max: R,
+        delta_min: R,
         tension: bool,
         compression: bool,
-    ) -> f64 {
+    ) -> R {
+        let zero = R::splat(0.0);
         let pushed = if compression {
             // Both square roots in one instruction; the same bits as `root`.
-            let (sd, sm) = sqrt2(delta, delta_max);
-            let linear = |x: f64, root: f64| select(x < self.linear_below, x * self.inv_sqrt_eps, root);
-            self.compression.value(linear(delta, sd), linear(delta_max, sm))
+            let (sd, sm) = R::sqrt2(delta, delta_max);
+            self.compression
+                .value(self.continued(delta, sd), self.continued(delta_max, sm))
         } else {
-            0.0
+            zero
         };
         let pulled = if tension {
             -self.tension.value(-delta, -delta_min)
         } else {
-            0.0
+            zero
         };
-        select(delta >= 0.0, pushed, pulled)
+        select(delta.ge(zero), pushed, pulled)
     }
 }

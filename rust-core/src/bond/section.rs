@@ -1,27 +1,28 @@
 //! Cross-section of the bond cylinder (spec eq. 2-3) and where along the
 //! centre line the bond's contact point sits.
 
-use super::lanes::div2;
+use crate::real::Real;
 
 /// `rb = lambda min(R_i, R_j)`, `A = pi rb^2`, `J = A rb^2 / 2`, `I = J / 2`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Section {
-    pub rb: f64,
-    pub area: f64,
-    pub polar: f64,
-    pub inertia: f64,
+pub struct Section<R = f64> {
+    pub rb: R,
+    pub area: R,
+    pub polar: R,
+    pub inertia: R,
 }
 
 #[inline(always)]
-pub fn section(lambda: f64, radius_i: f64, radius_j: f64) -> Section {
-    let rb = lambda * radius_i.min(radius_j);
-    let area = std::f64::consts::PI * rb * rb;
-    let polar = 0.5 * area * rb * rb;
+pub fn section<R: Real>(lambda: f64, radius_i: R, radius_j: R) -> Section<R> {
+    let half = R::splat(0.5);
+    let rb = R::splat(lambda) * radius_i.min(radius_j);
+    let area = R::splat(std::f64::consts::PI) * rb * rb;
+    let polar = half * area * rb * rb;
     Section {
         rb,
         area,
         polar,
-        inertia: 0.5 * polar,
+        inertia: half * polar,
     }
 }
 
@@ -30,8 +31,9 @@ pub fn section(lambda: f64, radius_i: f64, radius_j: f64) -> Section {
 /// [`super::breakage::section_stresses`]) or by the radii (the lever arms,
 /// see [`lever_arms_scaled`]) multiplies by these instead.
 #[inline(always)]
-pub fn reciprocals(sec: &Section, radius_i: f64, radius_j: f64) -> (f64, f64) {
-    div2(1.0, sec.rb, 1.0, radius_i + radius_j)
+pub fn reciprocals<R: Real>(sec: &Section<R>, radius_i: R, radius_j: R) -> (R, R) {
+    let one = R::splat(1.0);
+    R::div2(one, sec.rb, one, radius_i + radius_j)
 }
 
 /// Distances from the centres of `i` and `j` to the contact point, which
@@ -43,7 +45,7 @@ pub fn lever_arms(r: f64, radius_i: f64, radius_j: f64) -> (f64, f64) {
 
 /// [`lever_arms`] given `inv_radius_sum = 1 / (R_i + R_j)`.
 #[inline(always)]
-pub fn lever_arms_scaled(r: f64, inv_radius_sum: f64, radius_i: f64, radius_j: f64) -> (f64, f64) {
+pub fn lever_arms_scaled<R: Real>(r: R, inv_radius_sum: R, radius_i: R, radius_j: R) -> (R, R) {
     let s = r * inv_radius_sum;
     (s * radius_i, s * radius_j)
 }

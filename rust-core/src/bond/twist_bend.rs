@@ -3,14 +3,14 @@
 //! to their magnitudes so the torque does not depend on the coordinate axes.
 
 use super::hysteresis::Loop;
-use super::lanes::{div2, sqrt2};
-use crate::vector::{tangential_part, Vec3};
+use crate::real::Real;
+use crate::vector::{tangential_part, Vector};
 
 /// Splits the relative angular velocity into its part along `n` (twisting)
 /// and across it (bending); also returns `w_rel . n`, whose magnitude is the
 /// length of the part along `n` (no square root needed).
 #[inline(always)]
-pub fn split_relative_spin(w_rel: Vec3, n: Vec3) -> (Vec3, Vec3, f64) {
+pub fn split_relative_spin<R: Real, V: Vector<R>>(w_rel: V, n: V) -> (V, V, R) {
     let rate = w_rel.dot(&n);
     let along = n * rate;
     (along, w_rel - along, rate)
@@ -18,13 +18,13 @@ pub fn split_relative_spin(w_rel: Vec3, n: Vec3) -> (Vec3, Vec3, f64) {
 
 /// Twisting angle: kept parallel to the current axis, then advanced.
 #[inline(always)]
-pub fn advance_twist(theta: Vec3, w_along: Vec3, n: Vec3, dt: f64) -> Vec3 {
+pub fn advance_twist<R: Real, V: Vector<R>>(theta: V, w_along: V, n: V, dt: R) -> V {
     n * theta.dot(&n) + w_along * dt
 }
 
 /// Bending angle: kept in the current tangent plane, then advanced.
 #[inline(always)]
-pub fn advance_bend(theta: Vec3, w_across: Vec3, n: Vec3, dt: f64) -> Vec3 {
+pub fn advance_bend<R: Real, V: Vector<R>>(theta: V, w_across: V, n: V, dt: R) -> V {
     tangential_part(theta, n) + w_across * dt
 }
 
@@ -34,16 +34,38 @@ pub fn advance_bend(theta: Vec3, w_across: Vec3, n: Vec3, dt: f64) -> Vec3 {
 /// `|h| * moment` (its norm up to rounding, without a square root; 0 for a
 /// zero angle).
 #[inline(always)]
-pub fn restoring_torque(theta: Vec3, theta_max: f64, law: &Loop, moment: f64) -> (Vec3, f64, f64) {
+pub fn restoring_torque<R: Real, V: Vector<R>>(theta: V, theta_max: R, law: &Loop, moment: R) -> (V, R, R) {
     let magnitude = theta.norm();
+    torque_of(
+        theta,
+        magnitude,
+        R::splat(1.0) / magnitude,
+        theta_max,
+        law,
+        moment,
+    )
+}
+
+/// [`restoring_torque`] given `|theta|` and its reciprocal.
+#[inline(always)]
+fn torque_of<R: Real, V: Vector<R>>(
+    theta: V,
+    magnitude: R,
+    inv: R,
+    theta_max: R,
+    law: &Loop,
+    moment: R,
+) -> (V, R, R) {
     let new_max = theta_max.max(magnitude);
-    if magnitude > 0.0 {
-        let inv = 1.0 / magnitude;
-        let h = law.value(magnitude, new_max);
-        (theta * (-h * moment * inv), new_max, h.abs() * moment)
-    } else {
-        (Vec3::zeros(), new_max, 0.0)
-    }
+    let h = law.value(magnitude, new_max);
+    // A zero angle has no direction: no torque (the selected-away side is
+    // NaN there).
+    let on = magnitude.gt(R::splat(0.0));
+    (
+        V::select(on, theta * (-h * moment * inv), V::zeros()),
+        new_max,
+        R::select(on, h.abs() * moment, R::splat(0.0)),
+    )
 }
 
 /// [`restoring_torque`] of two angles at once (twisting and bending): their
@@ -51,28 +73,18 @@ pub fn restoring_torque(theta: Vec3, theta_max: f64, law: &Loop, moment: f64) ->
 /// result is the same, bit for bit. Arguments per angle: `(theta, theta_max,
 /// law, moment)`.
 #[inline(always)]
-pub fn restoring_torques(
-    a: (Vec3, f64, &Loop, f64),
-    b: (Vec3, f64, &Loop, f64),
-) -> ((Vec3, f64, f64), (Vec3, f64, f64)) {
-    let (mag_a, mag_b) = sqrt2(a.0.norm_squared(), b.0.norm_squared());
+#[allow(clippy::type_complexity)]
+pub fn restoring_torques<R: Real, V: Vector<R>>(
+    a: (V, R, &Loop, R),
+    b: (V, R, &Loop, R),
+) -> ((V, R, R), (V, R, R)) {
+    let (mag_a, mag_b) = R::sqrt2(a.0.norm_squared(), b.0.norm_squared());
     // The reciprocals depend only on the norms, so the division overlaps
     // with the hysteresis laws.
-    let (inv_a, inv_b) = div2(1.0, mag_a, 1.0, mag_b);
-    let (max_a, max_b) = (a.1.max(mag_a), b.1.max(mag_b));
-    let (h_a, h_b) = (a.2.value(mag_a, max_a), b.2.value(mag_b, max_b));
-    let (on_a, on_b) = (mag_a > 0.0, mag_b > 0.0);
-    let t_a = if on_a {
-        a.0 * (-h_a * a.3 * inv_a)
-    } else {
-        Vec3::zeros()
-    };
-    let t_b = if on_b {
-        b.0 * (-h_b * b.3 * inv_b)
-    } else {
-        Vec3::zeros()
-    };
-    let m_a = if on_a { h_a.abs() * a.3 } else { 0.0 };
-    let m_b = if on_b { h_b.abs() * b.3 } else { 0.0 };
-    ((t_a, max_a, m_a), (t_b, max_b, m_b))
+    let one = R::splat(1.0);
+    let (inv_a, inv_b) = R::div2(one, mag_a, one, mag_b);
+    (
+        torque_of(a.0, mag_a, inv_a, a.1, a.2, a.3),
+        torque_of(b.0, mag_b, inv_b, b.1, b.2, b.3),
+    )
 }

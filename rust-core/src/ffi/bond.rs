@@ -234,9 +234,10 @@ pub unsafe extern "C" fn granbond_bond_compute_scattered(
             bond_state(p, "states[k]").map_err(|f| fail_at(index, f))?;
         }
         // Every pointer is non-null and aligned, and `&mut BondState` has the
-        // layout of `*mut f64` to a `BondState`.
-        let s = std::slice::from_raw_parts_mut(states as *mut &mut BondState, count);
-        // (the array of pointers is read, never written)
+        // layout of `*mut f64` to a `BondState` (the array of pointers is
+        // read, never written). Through `slice_mut`: `states` may be null
+        // when `count` is 0.
+        let s = slice_mut(states as *mut &mut BondState, count, "states")?;
         let o = slice_mut(out, count, "out")?;
         check_dt(dt)?;
         m.step_scattered(k, dt, s, o)

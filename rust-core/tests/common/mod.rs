@@ -2,6 +2,8 @@
 //! pair kinematics, rotations.
 #![allow(dead_code)]
 
+pub mod strategies;
+
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState};
 use granbond::kinematics::PairKinematics;
 use granbond::vector::{v3, Vec3};

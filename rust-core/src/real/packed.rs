@@ -1,0 +1,290 @@
+//! [`Real`] in packed registers: [`F64x4`] (AVX, 4 bonds) and [`F64x8`]
+//! (AVX-512F, 8 bonds), for the wide kernels of `bond::chunk`.
+//!
+//! Each operation is the IEEE operation on every lane (add, sub, mul, div
+//! and sqrt are correctly rounded, packed or not; compares are the ordered
+//! ones of `<`, `>`, `>=`), and `abs` and `neg` touch only the sign bit, as
+//! for `f64` (`max`, `min`, `clamp` are compares and blends, the same for
+//! all, see [`Real::max`]). So each lane holds the bits the scalar kernel
+//! computes.
+//!
+//! These values exist only inside the kernels compiled with
+//! `#[target_feature(enable = "avx2")]` / `"avx512f"`, which `BondModel`
+//! selects only on CPUs that have them: the methods are `#[inline(always)]`
+//! and take on those features where they are inlined. That is what makes the
+//! `unsafe` intrinsic calls below sound.
+
+use super::Real;
+use core::arch::x86_64::*;
+use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
+
+/// A real number in each of the lanes of a packed register.
+pub(crate) trait Pack: Real {
+    const WIDTH: usize;
+    /// Lane `i` is `f(i)`.
+    fn gather(f: impl Fn(usize) -> f64) -> Self;
+    /// `f(i, lane i)` for every lane, in order.
+    fn for_each_lane(self, f: impl FnMut(usize, f64));
+}
+
+/// 4 `f64` (AVX).
+#[derive(Clone, Copy)]
+pub(crate) struct F64x4(__m256d);
+
+/// Per-lane truth of [`F64x4`]: all bits set or none.
+#[derive(Clone, Copy)]
+pub(crate) struct Mask4(__m256d);
+
+macro_rules! binary {
+    ($t:ident, $trait:ident, $method:ident, $intrinsic:ident) => {
+        impl $trait for $t {
+            type Output = Self;
+            #[inline(always)]
+            fn $method(self, rhs: Self) -> Self {
+                // SAFETY: see the module documentation.
+                $t(unsafe { $intrinsic(self.0, rhs.0) })
+            }
+        }
+    };
+}
+
+binary!(F64x4, Add, add, _mm256_add_pd);
+binary!(F64x4, Sub, sub, _mm256_sub_pd);
+binary!(F64x4, Mul, mul, _mm256_mul_pd);
+binary!(F64x4, Div, div, _mm256_div_pd);
+binary!(Mask4, BitAnd, bitand, _mm256_and_pd);
+binary!(Mask4, BitOr, bitor, _mm256_or_pd);
+
+impl Neg for F64x4 {
+    type Output = Self;
+    #[inline(always)]
+    fn neg(self) -> Self {
+        // SAFETY: see the module documentation.
+        F64x4(unsafe { _mm256_xor_pd(self.0, _mm256_set1_pd(-0.0)) })
+    }
+}
+
+impl Not for Mask4 {
+    type Output = Self;
+    #[inline(always)]
+    fn not(self) -> Self {
+        // SAFETY: see the module documentation.
+        Mask4(unsafe { _mm256_xor_pd(self.0, _mm256_castsi256_pd(_mm256_set1_epi64x(-1))) })
+    }
+}
+
+impl F64x4 {
+    #[inline(always)]
+    fn cmp<const P: i32>(self, other: Self) -> Mask4 {
+        // SAFETY: see the module documentation.
+        Mask4(unsafe { _mm256_cmp_pd::<P>(self.0, other.0) })
+    }
+}
+
+impl Real for F64x4 {
+    type Mask = Mask4;
+
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        // SAFETY: see the module documentation.
+        F64x4(unsafe { _mm256_set1_pd(x) })
+    }
+    #[inline(always)]
+    fn mask(b: bool) -> Mask4 {
+        let x = f64::from_bits(if b { u64::MAX } else { 0 });
+        // SAFETY: see the module documentation.
+        Mask4(unsafe { _mm256_set1_pd(x) })
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        // SAFETY: see the module documentation.
+        F64x4(unsafe { _mm256_sqrt_pd(self.0) })
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        // SAFETY: see the module documentation.
+        F64x4(unsafe { _mm256_andnot_pd(_mm256_set1_pd(-0.0), self.0) })
+    }
+    #[inline(always)]
+    fn is_nan(self) -> Mask4 {
+        self.cmp::<_CMP_UNORD_Q>(self)
+    }
+    #[inline(always)]
+    fn lt(self, other: Self) -> Mask4 {
+        self.cmp::<_CMP_LT_OQ>(other)
+    }
+    #[inline(always)]
+    fn gt(self, other: Self) -> Mask4 {
+        self.cmp::<_CMP_GT_OQ>(other)
+    }
+    #[inline(always)]
+    fn ge(self, other: Self) -> Mask4 {
+        self.cmp::<_CMP_GE_OQ>(other)
+    }
+    #[inline(always)]
+    fn select(m: Mask4, a: Self, b: Self) -> Self {
+        // SAFETY: see the module documentation.
+        F64x4(unsafe { _mm256_blendv_pd(b.0, a.0, m.0) })
+    }
+    #[inline(always)]
+    fn any(m: Mask4) -> bool {
+        // SAFETY: see the module documentation.
+        unsafe { _mm256_movemask_pd(m.0) != 0 }
+    }
+    #[inline(always)]
+    fn all(m: Mask4) -> bool {
+        // SAFETY: see the module documentation.
+        unsafe { _mm256_movemask_pd(m.0) == 0b1111 }
+    }
+}
+
+impl Pack for F64x4 {
+    const WIDTH: usize = 4;
+    #[inline(always)]
+    fn gather(f: impl Fn(usize) -> f64) -> Self {
+        // SAFETY: see the module documentation.
+        F64x4(unsafe { _mm256_set_pd(f(3), f(2), f(1), f(0)) })
+    }
+    #[inline(always)]
+    fn for_each_lane(self, mut f: impl FnMut(usize, f64)) {
+        // SAFETY: __m256d is 4 f64.
+        let lanes = unsafe { std::mem::transmute::<__m256d, [f64; 4]>(self.0) };
+        for (i, x) in lanes.into_iter().enumerate() {
+            f(i, x);
+        }
+    }
+}
+
+/// 8 `f64` (AVX-512F).
+#[derive(Clone, Copy)]
+pub(crate) struct F64x8(__m512d);
+
+/// Per-lane truth of [`F64x8`]: one bit a lane.
+#[derive(Clone, Copy)]
+pub(crate) struct Mask8(__mmask8);
+
+binary!(F64x8, Add, add, _mm512_add_pd);
+binary!(F64x8, Sub, sub, _mm512_sub_pd);
+binary!(F64x8, Mul, mul, _mm512_mul_pd);
+binary!(F64x8, Div, div, _mm512_div_pd);
+
+impl BitAnd for Mask8 {
+    type Output = Self;
+    #[inline(always)]
+    fn bitand(self, rhs: Self) -> Self {
+        Mask8(self.0 & rhs.0)
+    }
+}
+
+impl BitOr for Mask8 {
+    type Output = Self;
+    #[inline(always)]
+    fn bitor(self, rhs: Self) -> Self {
+        Mask8(self.0 | rhs.0)
+    }
+}
+
+impl Not for Mask8 {
+    type Output = Self;
+    #[inline(always)]
+    fn not(self) -> Self {
+        Mask8(!self.0)
+    }
+}
+
+impl Neg for F64x8 {
+    type Output = Self;
+    #[inline(always)]
+    fn neg(self) -> Self {
+        // SAFETY: see the module documentation.
+        F64x8(unsafe {
+            _mm512_castsi512_pd(_mm512_xor_si512(
+                _mm512_castpd_si512(self.0),
+                _mm512_set1_epi64(i64::MIN),
+            ))
+        })
+    }
+}
+
+impl F64x8 {
+    #[inline(always)]
+    fn cmp<const P: i32>(self, other: Self) -> Mask8 {
+        // SAFETY: see the module documentation.
+        Mask8(unsafe { _mm512_cmp_pd_mask::<P>(self.0, other.0) })
+    }
+}
+
+impl Real for F64x8 {
+    type Mask = Mask8;
+
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        // SAFETY: see the module documentation.
+        F64x8(unsafe { _mm512_set1_pd(x) })
+    }
+    #[inline(always)]
+    fn mask(b: bool) -> Mask8 {
+        Mask8(if b { 0xFF } else { 0 })
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        // SAFETY: see the module documentation.
+        F64x8(unsafe { _mm512_sqrt_pd(self.0) })
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        // SAFETY: see the module documentation.
+        F64x8(unsafe {
+            _mm512_castsi512_pd(_mm512_and_si512(
+                _mm512_castpd_si512(self.0),
+                _mm512_set1_epi64(i64::MAX),
+            ))
+        })
+    }
+    #[inline(always)]
+    fn is_nan(self) -> Mask8 {
+        self.cmp::<_CMP_UNORD_Q>(self)
+    }
+    #[inline(always)]
+    fn lt(self, other: Self) -> Mask8 {
+        self.cmp::<_CMP_LT_OQ>(other)
+    }
+    #[inline(always)]
+    fn gt(self, other: Self) -> Mask8 {
+        self.cmp::<_CMP_GT_OQ>(other)
+    }
+    #[inline(always)]
+    fn ge(self, other: Self) -> Mask8 {
+        self.cmp::<_CMP_GE_OQ>(other)
+    }
+    #[inline(always)]
+    fn select(m: Mask8, a: Self, b: Self) -> Self {
+        // SAFETY: see the module documentation.
+        F64x8(unsafe { _mm512_mask_blend_pd(m.0, b.0, a.0) })
+    }
+    #[inline(always)]
+    fn any(m: Mask8) -> bool {
+        m.0 != 0
+    }
+    #[inline(always)]
+    fn all(m: Mask8) -> bool {
+        m.0 == 0xFF
+    }
+}
+
+impl Pack for F64x8 {
+    const WIDTH: usize = 8;
+    #[inline(always)]
+    fn gather(f: impl Fn(usize) -> f64) -> Self {
+        // SAFETY: see the module documentation.
+        F64x8(unsafe { _mm512_set_pd(f(7), f(6), f(5), f(4), f(3), f(2), f(1), f(0)) })
+    }
+    #[inline(always)]
+    fn for_each_lane(self, mut f: impl FnMut(usize, f64)) {
+        // SAFETY: __m512d is 8 f64.
+        let lanes = unsafe { std::mem::transmute::<__m512d, [f64; 8]>(self.0) };
+        for (i, x) in lanes.into_iter().enumerate() {
+            f(i, x);
+        }
+    }
+}

@@ -1,0 +1,238 @@
+//! `BondModel::step_scattered` computes bonds several at a time (in lanes of
+//! 4 with AVX2); every bond must still get exactly the bits one
+//! `BondModel::step` gives it, whichever lane or chunk it lands in, and on
+//! every instruction set, including bonds that are not intact, break in
+//! this step, sit at the zero-angle / zero-slip guards, or have unusable
+//! kinematics (the first one reported with its index, earlier bonds
+//! computed, later ones untouched).
+
+mod common;
+
+use common::strategies::{bond_params, bonded_pair};
+use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus, Simd};
+use granbond::kinematics::{KinematicsError, PairKinematics};
+use proptest::prelude::*;
+use proptest::strategy::ValueTree;
+use proptest::test_runner::TestRunner;
+
+const DT: f64 = 1e-7;
+const EVERY_SIMD: [Simd; 3] = [Simd::Scalar, Simd::Avx2, Simd::Avx512];
+
+/// What sets a bond apart from the plain bonded pair of `bonded_pair`.
+#[derive(Clone, Copy, Debug)]
+enum Twist {
+    Plain,
+    Broken,
+    Unbonded,
+    /// Fresh history, no motion: zero angles, zero slip, zero spin.
+    AtRest,
+    /// Stretched by 50 %: breaks in distance mode with a small limit.
+    FarApart,
+    NonFinite,
+    Coincident,
+    NonPositiveRadius,
+}
+
+fn twist() -> impl Strategy<Value = Twist> {
+    prop_oneof![
+        12 => Just(Twist::Plain),
+        2 => Just(Twist::Broken),
+        2 => Just(Twist::Unbonded),
+        3 => Just(Twist::AtRest),
+        3 => Just(Twist::FarApart),
+        1 => Just(Twist::NonFinite),
+        1 => Just(Twist::Coincident),
+        1 => Just(Twist::NonPositiveRadius),
+    ]
+}
+
+fn bond() -> impl Strategy<Value = (PairKinematics, BondState)> {
+    (bonded_pair(), twist()).prop_map(|((mut k, mut s), t)| {
+        match t {
+            Twist::Plain => {}
+            Twist::Broken => s.status = BondStatus::Broken as i32 as f64,
+            Twist::Unbonded => s = BondState::default(),
+            Twist::AtRest => {
+                s = BondState::created(s.r0);
+                (k.v_i, k.v_j, k.w_i, k.w_j) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3]);
+            }
+            Twist::FarApart => k.x_i = k.x_i.map(|x| 1.5 * x),
+            Twist::NonFinite => k.w_j[1] = f64::NAN,
+            Twist::Coincident => k.x_i = k.x_j,
+            Twist::NonPositiveRadius => k.radius_j = 0.0,
+        }
+        (k, s)
+    })
+}
+
+/// Every switch at random (all 128 kernels), distance or stress mode with
+/// limits that some bonds exceed, the linear continuation of the
+/// compression law on or off.
+fn any_params() -> impl Strategy<Value = BondParams> {
+    (
+        bond_params(),
+        prop::array::uniform8(any::<bool>()),
+        (2.5e-3f64..5e-3),
+        (1.0f64..10.0),
+        (1.0f64..10.0),
+        prop_oneof![Just(0.0), 1e-7f64..1e-5],
+    )
+        .prop_map(|(p, on, max_distance, sigma, tau, linear_below)| BondParams {
+            tension: on[0] as i32,
+            compression: on[1] as i32,
+            shear: on[2] as i32,
+            twist: on[3] as i32,
+            bend: on[4] as i32,
+            stress_break: on[5] as i32,
+            history_reset: on[6] as i32,
+            use_ratio: on[7] as i32,
+            tension_compression_ratio: 0.5,
+            max_distance,
+            max_sigma: 10f64.powf(sigma),
+            max_tau: 10f64.powf(tau),
+            compression_linear_below: linear_below,
+            ..p
+        })
+}
+
+/// One bond after another with `BondModel::step`, stopping at the first
+/// error: what `step_scattered` must reproduce.
+fn one_by_one(
+    m: &BondModel,
+    kin: &[PairKinematics],
+    states: &mut [BondState],
+    outs: &mut [BondOutput],
+) -> Result<(), (usize, KinematicsError)> {
+    for (i, k) in kin.iter().enumerate() {
+        m.step(k, DT, &mut states[i], &mut outs[i]).map_err(|e| (i, e))?;
+    }
+    Ok(())
+}
+
+fn output_bits(o: &BondOutput) -> Vec<u64> {
+    let mut bits: Vec<u64> = o
+        .force_i
+        .iter()
+        .chain(&o.torque_i)
+        .chain(&o.torque_j)
+        .chain(&[o.normal_force, o.sigma, o.tau, o.delta])
+        .map(|x| x.to_bits())
+        .collect();
+    bits.extend([o.status as u64, o.break_mode as u64]);
+    bits
+}
+
+fn state_bits(s: &BondState) -> Vec<u64> {
+    s.as_slots().iter().map(|x| x.to_bits()).collect()
+}
+
+/// Outputs that a bond left untouched would show: not a possible result.
+fn stale_outputs(n: usize) -> Vec<BondOutput> {
+    let stale = BondOutput {
+        force_i: [7.0; 3],
+        sigma: -3.0,
+        status: 9,
+        break_mode: 9,
+        ..BondOutput::default()
+    };
+    vec![stale; n]
+}
+
+/// `step_scattered` on every instruction set this CPU runs against one
+/// `step` per bond, bit for bit. Returns how many instruction sets ran.
+fn check_scattered(p: BondParams, bonds: &[(PairKinematics, BondState)]) -> Result<usize, TestCaseError> {
+    let model = BondModel::new(p).unwrap();
+    let kin: Vec<PairKinematics> = bonds.iter().map(|b| b.0).collect();
+    let mut expected_states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
+    let mut expected_outs = stale_outputs(bonds.len());
+    let expected = one_by_one(&model, &kin, &mut expected_states, &mut expected_outs);
+    let mut ran = 0;
+    for simd in EVERY_SIMD {
+        let Some(m) = model.clone().with_simd(simd) else {
+            continue;
+        };
+        ran += 1;
+        let mut states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
+        let mut outs = stale_outputs(bonds.len());
+        let mut refs: Vec<&mut BondState> = states.iter_mut().collect();
+        let got = m.step_scattered(&kin, DT, &mut refs, &mut outs);
+        prop_assert_eq!(got, expected, "{:?}: result", simd);
+        for i in 0..bonds.len() {
+            prop_assert_eq!(
+                state_bits(&states[i]),
+                state_bits(&expected_states[i]),
+                "{:?}: state of bond {} of {}",
+                simd,
+                i,
+                bonds.len()
+            );
+            prop_assert_eq!(
+                output_bits(&outs[i]),
+                output_bits(&expected_outs[i]),
+                "{:?}: output of bond {} of {}",
+                simd,
+                i,
+                bonds.len()
+            );
+        }
+    }
+    Ok(ran)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+
+    #[test]
+    fn scattered_step_gives_every_bond_the_bits_of_a_single_step(
+        p in any_params(),
+        bonds in prop::collection::vec(bond(), 0..=20),
+    ) {
+        check_scattered(p, &bonds)?;
+    }
+}
+
+/// Each of the 128 kernels (feature sets), in both breakage modes, on the
+/// same 20 bonds drawn once.
+#[test]
+fn every_kernel_gives_every_bond_the_bits_of_a_single_step() {
+    let mut runner = TestRunner::deterministic();
+    let bonds = prop::collection::vec(bond(), 20)
+        .new_tree(&mut runner)
+        .unwrap()
+        .current();
+    let base = any_params().new_tree(&mut runner).unwrap().current();
+    for features in 0..128u32 {
+        for stress_break in [0, 1] {
+            let on = |bit: u32| (features >> bit & 1) as i32;
+            let p = BondParams {
+                tension: on(0),
+                compression: on(1),
+                shear: on(2),
+                twist: on(3),
+                bend: on(4),
+                damping: on(5),
+                damping_smooth: on(6),
+                eta_fn: 0.3,
+                stress_break,
+                ..base
+            };
+            check_scattered(p, &bonds).unwrap();
+        }
+    }
+}
+
+/// The lane kernel is what runs here (CI machines have AVX2), and the
+/// scalar one can still be chosen: the tests above exercise both.
+#[test]
+fn scattered_step_runs_in_lanes_where_the_cpu_has_them() {
+    let model = BondModel::new(common::params()).unwrap();
+    #[cfg(target_arch = "x86_64")]
+    {
+        if is_x86_feature_detected!("avx2") {
+            assert_ne!(model.simd(), Simd::Scalar);
+            assert!(model.clone().with_simd(Simd::Avx2).is_some());
+        }
+    }
+    let scalar = model.with_simd(Simd::Scalar).unwrap();
+    assert_eq!(scalar.simd(), Simd::Scalar);
+}
