@@ -128,9 +128,14 @@ BondNonlinearCohesion::PendingBatch &BondNonlinearCohesion::findBatch(const GbBo
     for (lastBatch_ = 0; lastBatch_ < batches_.size(); lastBatch_++)
         if (batches_[lastBatch_].model == model) return batches_[lastBatch_];
     batches_.push_back(PendingBatch());
-    batches_.back().model = model;
-    batches_.back().count = 0;
-    return batches_.back();
+    PendingBatch &b = batches_.back();
+    b.model = model;
+    b.count = 0;
+    b.bonds.resize(kBlock);
+    b.kinematics.resize(kBlock);
+    b.states.resize(kBlock);
+    b.outputs.resize(kBlock);
+    return b;
 }
 
 inline void BondNonlinearCohesion::pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const
@@ -148,12 +153,6 @@ inline void BondNonlinearCohesion::defer(SurfacesCloseData &d, const GbBondModel
 {
     PendingBatch &b = batchOf(model);
     const size_t k = b.count++;
-    if (k == b.bonds.size()) {
-        const size_t n = 2 * k + 64;
-        b.bonds.resize(n);
-        b.kinematics.resize(n);
-        b.states.resize(n);
-    }
     PendingBond &p = b.bonds[k];
     p.history = d.contact_history;
     p.contactFlag = d.contact_flags;
@@ -168,6 +167,7 @@ inline void BondNonlinearCohesion::defer(SurfacesCloseData &d, const GbBondModel
     // the pair's atoms are in cache now
     pairKinematics(d, b.kinematics[k]);
     b.states[k] = d.contact_history + offset_;
+    if (b.count == kBlock) advanceBatch(b);
 }
 
 // What the engine's pair loop does with a pair's loads (relaxation factor,
@@ -202,38 +202,33 @@ inline void BondNonlinearCohesion::addToAtoms(int i, int j, const double *fi, co
 
 void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
 {
-    // Blocks of kBlock bonds: their outputs are still in L1 when they are
-    // applied.
-    const size_t kBlock = 128;
-    if (b.outputs.size() < kBlock) b.outputs.resize(kBlock);
+    const size_t n = b.count;
+    b.count = 0;
+    size_t bad = 0;
+    if (granbond_bond_compute_scattered(b.model, n, b.kinematics.data(), update->dt, b.states.data(),
+                                        b.outputs.data(), &bad) != GB_STATUS_OK) {
+        const PendingBond &p = b.bonds[bad < n ? bad : 0];
+        failed(p.i, p.j, "granbond_bond_compute_scattered");
+        return;
+    }
     const int nlocal = atom->nlocal;
     const int *tag = atom->tag;
-    for (size_t base = 0; base < b.count; base += kBlock) {
-        const size_t n = std::min(kBlock, b.count - base);
-        size_t bad = 0;
-        if (granbond_bond_compute_scattered(b.model, n, &b.kinematics[base], update->dt, &b.states[base],
-                                            b.outputs.data(), &bad) != GB_STATUS_OK) {
-            const PendingBond &p = b.bonds[base + (bad < n ? bad : 0)];
-            failed(p.i, p.j, "granbond_bond_compute_scattered");
-            return;
+    for (size_t k = 0; k < n; k++) {
+        const PendingBond &p = b.bonds[k];
+        const GbBondOutput &out = b.outputs[k];
+        if (out.status == GB_BOND_STATUS_INTACT) {
+            // account() for an intact bond, inline: the common case
+            const bool counts = p.j < nlocal || tag[p.i] < tag[p.j];
+            tally_.intact += counts;
+            tally_.created += counts && p.created;
+            storeOutput(p.history + outputOffset_, out);
+            const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
+            addToAtoms(p.i, p.j, out.force_i, out.torque_i, fj, out.torque_j);
+            continue;
         }
-        for (size_t k = 0; k < n; k++) {
-            const PendingBond &p = b.bonds[base + k];
-            const GbBondOutput &out = b.outputs[k];
-            if (out.status == GB_BOND_STATUS_INTACT) {
-                // account() for an intact bond, inline: the common case
-                const bool counts = p.j < nlocal || tag[p.i] < tag[p.j];
-                tally_.intact += counts;
-                tally_.created += counts && p.created;
-                storeOutput(p.history + outputOffset_, out);
-                const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
-                addToAtoms(p.i, p.j, out.force_i, out.torque_i, fj, out.torque_j);
-                continue;
-            }
-            account(p.i, p.j, 0, p.history + offset_, p.created, out);
-            if (p.contactFlag) *p.contactFlag &= ~CONTACT_COHESION_MODEL;
-            if (p.touching) addToAtoms(p.i, p.j, p.contact, p.contact + 3, p.contact + 6, p.contact + 9);
-        }
+        account(p.i, p.j, 0, p.history + offset_, p.created, out);
+        if (p.contactFlag) *p.contactFlag &= ~CONTACT_COHESION_MODEL;
+        if (p.touching) addToAtoms(p.i, p.j, p.contact, p.contact + 3, p.contact + 6, p.contact + 9);
     }
 }
 

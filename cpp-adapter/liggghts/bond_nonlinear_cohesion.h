@@ -47,11 +47,14 @@ public:
     void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
 
 private:
-    // An intact pair bond of a force pass, advanced in endPass: the core then
-    // computes all bonds of the pass in one call, several per instruction,
-    // and the loads go straight to the atoms. Until then the bond's pair
-    // adds nothing; if it breaks, the contact model's loads of this step
-    // (kept here) act instead, as in the per-pair path.
+    // An intact pair bond of a force pass, queued: when kBlock bonds of one
+    // type are queued (and in endPass for the rest) the core computes them
+    // in one call, several per instruction, and the loads go straight to
+    // the atoms. A block is small enough to stay in cache between queueing
+    // and applying. Until then the bond's pair adds nothing; if it breaks,
+    // the contact model's loads of this step (kept here) act instead, as in
+    // the per-pair path.
+    static const size_t kBlock = 128;
     struct PendingBond {
         double *history;
         int *contactFlag;   // null: none
@@ -61,7 +64,7 @@ private:
         double contact[12];   // F_i, T_i, F_j, T_j of the contact model
     };
     // The pending bonds of one bond type, with the core's inputs and outputs
-    // (`count` used; the vectors only grow, so a pass allocates nothing).
+    // (kBlock each, `count` used).
     struct PendingBatch {
         const GbBondModel *model;
         size_t count;
