@@ -41,6 +41,10 @@ use granbond::ffi::Status;
 use granbond::kinematics::PairKinematics;
 use std::time::Duration;
 
+#[path = "fixtures/full_bond.rs"]
+mod full_bond;
+use full_bond::full_bond;
+
 const IN_CACHE: usize = 1_000;
 const MEMORY_BOUND: usize = 1_000_000;
 const DT: f64 = 1.0e-6;
@@ -247,39 +251,12 @@ fn contact_pairs(n: usize) -> Pairs {
     })
 }
 
-/// A realistic full bond: every law hysteretic (`ku > k`, `kc > 0`),
-/// percentage damping on, breakage off.
-fn full_bond() -> BondParams {
-    BondParams {
-        lambda: 0.8,
-        k_fn1: 1.0e11,
-        ku_fn1: 4.0e11,
-        kc_fn1: 2.0e10,
-        k_fn2: 5.0e10,
-        ku_fn2: 2.0e11,
-        kc_fn2: 1.0e10,
-        k_ft: 2.0e10,
-        k_tn: 1.0e10,
-        ku_tn: 3.0e10,
-        kc_tn: 2.0e9,
-        k_tt: 1.0e10,
-        ku_tt: 3.0e10,
-        kc_tt: 2.0e9,
-        eta_fn: 0.1,
-        eta_ft: 0.1,
-        eta_tn: 0.05,
-        eta_tt: 0.05,
-        create_distance: 2.5 * RADIUS,
-        ..BondParams::default()
-    }
-}
-
 /// Bond variants: name and parameters. `zeroed_*` keep every switch on but
 /// zero the stiffnesses of some laws: compare them with the reduced kernel
 /// that switches those laws off (`zeroed_twist_bend` vs `normal_shear`,
 /// `zeroed_shear_twist_bend` vs `normal_only`).
 fn bond_variants() -> Vec<(&'static str, BondParams)> {
-    let full = full_bond();
+    let full = full_bond(RADIUS);
     let no_twist_bend = BondParams {
         twist: 0,
         bend: 0,
@@ -419,7 +396,7 @@ fn bench_scattered(c: &mut Criterion<Clock>, n: usize) {
     let label = if n >= 100_000 { "1e5" } else { "1e3" };
     let mut group = c.benchmark_group(format!("scattered_{label}"));
     configure(&mut group, n);
-    let base = BondModel::new(full_bond()).expect("valid bond parameters");
+    let base = BondModel::new(full_bond(RADIUS)).expect("valid bond parameters");
     let mut variants: Vec<(String, Option<BondModel>)> = vec![("single".into(), None)];
     for simd in [Simd::Scalar, Simd::Avx2, Simd::Avx512] {
         if let Some(m) = base.clone().with_simd(simd) {
@@ -465,7 +442,7 @@ fn bench_scattered(c: &mut Criterion<Clock>, n: usize) {
 fn bench_ffi(c: &mut Criterion<Clock>) {
     let n = IN_CACHE;
     let pairs = bond_pairs(n);
-    let params = full_bond();
+    let params = full_bond(RADIUS);
     let mut model = std::ptr::null_mut();
     // SAFETY: valid pointers to a parameter struct and an out-pointer.
     let status = unsafe { granbond_bond_model_new(&params, &mut model) };

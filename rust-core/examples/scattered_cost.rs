@@ -16,9 +16,13 @@
 //! their rest length (half stretched, half compressed) with random motion,
 //! states in records of 32 `f64` in shuffled order.
 
-use granbond::bond::{BondModel, BondOutput, BondParams, BondState, Simd, BOND_STATE_LEN};
+use granbond::bond::{BondModel, BondOutput, BondState, Simd, BOND_STATE_LEN};
 use granbond::kinematics::PairKinematics;
 use std::time::Instant;
+
+#[path = "../benches/fixtures/full_bond.rs"]
+mod full_bond;
+use full_bond::full_bond;
 
 const BONDS: usize = 10_000;
 const RECORD: usize = 32;
@@ -31,31 +35,6 @@ fn noise(i: u64) -> f64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     (z >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-}
-
-fn params() -> BondParams {
-    BondParams {
-        lambda: 0.8,
-        k_fn1: 1.0e11,
-        ku_fn1: 4.0e11,
-        kc_fn1: 2.0e10,
-        k_fn2: 5.0e10,
-        ku_fn2: 2.0e11,
-        kc_fn2: 1.0e10,
-        k_ft: 2.0e10,
-        k_tn: 1.0e10,
-        ku_tn: 3.0e10,
-        kc_tn: 2.0e9,
-        k_tt: 1.0e10,
-        ku_tt: 3.0e10,
-        kc_tt: 2.0e9,
-        eta_fn: 0.1,
-        eta_ft: 0.1,
-        eta_tn: 0.05,
-        eta_tt: 0.05,
-        create_distance: 2.5 * RADIUS,
-        ..BondParams::default()
-    }
 }
 
 /// Pair `b` in frame `s`: the stretch and the motion change from frame to
@@ -91,7 +70,7 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let path = args.get(1).map(String::as_str).unwrap_or("avx2");
     let sweeps: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(11);
-    let base = BondModel::new(params()).expect("valid parameters");
+    let base = BondModel::new(full_bond(RADIUS)).expect("valid parameters");
     let model = match path {
         "single" => None,
         "scalar" => Some(base.clone().with_simd(Simd::Scalar).unwrap()),
