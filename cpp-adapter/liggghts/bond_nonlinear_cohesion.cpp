@@ -389,7 +389,7 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
     std::memset(&out, 0, sizeof out);
     bool created = false;
     if (deferring_) {
-        // created now (the rules read this pair's data), advanced in endPass
+        // created now (the rules read this pair's data), then queued
         GbPairKinematics k;
         pairKinematics(d, k);
         createPair(d, model, k, state, created);
@@ -499,16 +499,12 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
     bool deferred;
     const bool intact = advance(sidata, out, deferred, &i_forces, &j_forces);
     setContactFlag(sidata, intact || deferred);
+    if (!intact && !deferred) return;   // the contact model acts alone
     // an intact bond replaces what normal, tangential and rolling models
-    // added (a deferred one keeps a copy in case it breaks)
-    if (deferred) {
-        i_forces.reset();
-        j_forces.reset();
-    }
-    if (!intact) return;   // the contact model acts alone
+    // added (a queued one keeps a copy in case it breaks)
     i_forces.reset();
     j_forces.reset();
-    apply(out, i_forces, j_forces);
+    if (intact) apply(out, i_forces, j_forces);
 }
 
 void BondNonlinearCohesion::surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)

@@ -35,8 +35,8 @@ public:
     void connectToProperties(::PropertyRegistry &registry);
     // Pairs only (walls have no pass hooks): the time-step check when the
     // number of atoms changed (insertion), a point every rank reaches; and
-    // whether this pass collects its intact bonds for one core call in
-    // endPass (see PendingBond).
+    // whether this pass queues its intact bonds for block-wise core calls;
+    // endPass advances what is left (see PendingBond).
     void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &);
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &);
 
@@ -76,7 +76,7 @@ private:
 
     // Creates / advances the bond of this pair. Returns true and fills `out`
     // if the bond is intact after the step. Returns false with `deferred`
-    // set if the bond was queued for endPass.
+    // set if the bond was queued (see PendingBond).
     bool advance(SurfacesCloseData &d, GbBondOutput &out, bool &deferred, const ForceData *i_contact,
                  const ForceData *j_contact);
     void pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const;
