@@ -107,11 +107,12 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
     if (atom->natoms != checkedNatoms_) checkTimestep();
     // Queue the bonds of force passes, unless something in the engine
     // reads each pair's forces as the loop applies them (CFD coupling,
-    // stored contact forces, summed normal forces).
+    // stored contact forces, summed normal forces) or the loop's radii are
+    // not atom->radius, which the core reads (multicontact radii).
     for (size_t b = 0; b < batches_.size(); b++) batches_[b].count = 0;
     deferring_ = pair_ && sidata.computeflag && sidata.shearupdate && !pair_->cpl() &&
                  !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
-                 !pair_->store_sum_normal_force();
+                 !pair_->store_sum_normal_force() && !pair_->storeSumDelta();
     if (deferring_) book_->beginPassIfNew(tally_, update);
 }
 
@@ -132,7 +133,7 @@ BondNonlinearCohesion::PendingBatch &BondNonlinearCohesion::findBatch(const GbBo
     b.model = model;
     b.count = 0;
     b.bonds.resize(kBlock);
-    b.kinematics.resize(kBlock);
+    b.pairs.resize(2 * kBlock);
     b.states.resize(kBlock);
     b.outputs.resize(kBlock);
     return b;
@@ -164,8 +165,8 @@ inline void BondNonlinearCohesion::defer(SurfacesCloseData &d, const GbBondModel
         std::memcpy(p.contact, i_forces, sizeof(ForceData));
         std::memcpy(p.contact + 6, j_forces, sizeof(ForceData));
     }
-    // the pair's atoms are in cache now
-    pairKinematics(d, b.kinematics[k]);
+    b.pairs[2 * k] = d.i;
+    b.pairs[2 * k + 1] = d.j;
     b.states[k] = d.contact_history + offset_;
     if (b.count == kBlock) advanceBatch(b);
 }
@@ -205,10 +206,17 @@ void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
     const size_t n = b.count;
     b.count = 0;
     size_t bad = 0;
-    if (granbond_bond_compute_scattered(b.model, n, b.kinematics.data(), update->dt, b.states.data(),
-                                        b.outputs.data(), &bad) != GB_STATUS_OK) {
+    // x, v and omega are blocks of 3 doubles per atom (memory->create)
+    GbAtomArrays atoms;
+    atoms.x = atom->x[0];
+    atoms.v = atom->v[0];
+    atoms.omega = atom->omega[0];
+    atoms.radius = atom->radius;
+    atoms.count = static_cast<size_t>(atom->nlocal + atom->nghost);
+    if (granbond_bond_compute_indexed(b.model, n, &atoms, b.pairs.data(), update->dt, b.states.data(),
+                                      b.outputs.data(), &bad) != GB_STATUS_OK) {
         const PendingBond &p = b.bonds[bad < n ? bad : 0];
-        failed(p.i, p.j, "granbond_bond_compute_scattered");
+        failed(p.i, p.j, "granbond_bond_compute_indexed");
         return;
     }
     const int nlocal = atom->nlocal;

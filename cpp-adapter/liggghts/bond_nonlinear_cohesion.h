@@ -64,12 +64,13 @@ private:
         double contact[12];   // F_i, T_i, F_j, T_j of the contact model
     };
     // The pending bonds of one bond type, with the core's inputs and outputs
-    // (kBlock each, `count` used).
+    // (kBlock each, `count` used). The core reads positions, velocities and
+    // spins from the engine's atom arrays by the atom indices in `pairs`.
     struct PendingBatch {
         const GbBondModel *model;
         size_t count;
         std::vector<PendingBond> bonds;
-        std::vector<GbPairKinematics> kinematics;
+        std::vector<int32_t> pairs;   // i, j per bond
         std::vector<double *> states;
         std::vector<GbBondOutput> outputs;
     };

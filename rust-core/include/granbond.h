@@ -29,7 +29,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 2
+#define GRANBOND_ABI_VERSION 3
 
 /**
  * Lifecycle of a pair's bond, stored as a number in slot 0.
@@ -150,6 +150,7 @@ typedef struct GbLayout {
   size_t sphere_kinematics;
   size_t plane;
   size_t bond_output;
+  size_t atom_arrays;
   size_t contact_output;
   size_t contact_frame;
   size_t tangential_output;
@@ -273,6 +274,22 @@ typedef struct GbBondOutput {
    */
   int32_t break_mode;
 } GbBondOutput;
+
+/**
+ * The per-atom arrays of an engine (local and ghost atoms), as
+ * `granbond_bond_compute_indexed` reads them: `x`, `v` and `omega` hold 3
+ * doubles per atom (LAMMPS/LIGGGHTS: `atom->x[0]`, one block), `radius` one.
+ */
+typedef struct GbAtomArrays {
+  const double *x;
+  const double *v;
+  const double *omega;
+  const double *radius;
+  /**
+   * The number of atoms each array holds at least.
+   */
+  size_t count;
+} GbAtomArrays;
 
 /**
  * One sphere against a wall.
@@ -533,6 +550,26 @@ enum GbStatus granbond_bond_compute_scattered(const struct GbBondModel *model,
                                               double **states,
                                               struct GbBondOutput *out,
                                               size_t *failed_index);
+
+/**
+ * `granbond_bond_compute_scattered` with each bond's kinematics read from
+ * the engine's per-atom arrays: bond `k` joins atoms `pairs[2k]` (`i`) and
+ * `pairs[2k + 1]` (`j`), so the engine copies nothing per bond. The same
+ * results, bit for bit. An index outside `0 .. atoms->count` is reported
+ * (with its bond in `failed_index`) before any bond is advanced.
+ *
+ * # Safety
+ * Pointers must be null or valid for the sizes above (`atoms->x`, `v`,
+ * `omega`: `3 count` doubles; `radius`: `count`; `pairs`: `2 count` ints).
+ */
+enum GbStatus granbond_bond_compute_indexed(const struct GbBondModel *model,
+                                            size_t count,
+                                            const struct GbAtomArrays *atoms,
+                                            const int32_t *pairs,
+                                            double dt,
+                                            double **states,
+                                            struct GbBondOutput *out,
+                                            size_t *failed_index);
 
 /**
  * Bonds a sphere to a wall it touches at `contact_point` (`double[3]`)
@@ -884,6 +921,7 @@ static inline GbLayout granbond_header_layout(void)
     l.sphere_kinematics = sizeof(GbSphereKinematics);
     l.plane = sizeof(GbPlane);
     l.bond_output = sizeof(GbBondOutput);
+    l.atom_arrays = sizeof(GbAtomArrays);
     l.contact_output = sizeof(GbContactOutput);
     l.contact_frame = sizeof(GbContactFrame);
     l.tangential_output = sizeof(GbTangentialOutput);

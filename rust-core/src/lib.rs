@@ -11,6 +11,7 @@ pub mod contact;
 pub mod ffi;
 pub mod integrate;
 pub mod kinematics;
+pub mod pair_source;
 pub mod parameters;
 pub mod real;
 pub mod scene;

@@ -4,13 +4,15 @@
 //! every instruction set, including bonds that are not intact, break in
 //! this step, sit at the zero-angle / zero-slip guards, or have unusable
 //! kinematics (the first one reported with its index, earlier bonds
-//! computed, later ones untouched).
+//! computed, later ones untouched). `BondModel::step_indexed`, which reads
+//! the kinematics from per-atom arrays by index, must give the same bits.
 
 mod common;
 
 use common::strategies::{bond_params, bonded_pair};
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus, Simd};
 use granbond::kinematics::{KinematicsError, PairKinematics};
+use granbond::pair_source::{AtomArrays, IndexedPairs};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
@@ -138,11 +140,62 @@ fn stale_outputs(n: usize) -> Vec<BondOutput> {
     vec![stale; n]
 }
 
-/// `step_scattered` on every instruction set this CPU runs against one
-/// `step` per bond, bit for bit. Returns how many instruction sets ran.
+/// Per-atom arrays holding the two spheres of every bond, and the index
+/// pairs that find them again: bond `b` joins atoms `2n - 1 - b` (its `i`)
+/// and `b` (its `j`), so neighbouring bonds read atoms far apart and no
+/// bond's `i` comes before its `j`.
+struct Atoms {
+    x: Vec<f64>,
+    v: Vec<f64>,
+    omega: Vec<f64>,
+    radius: Vec<f64>,
+    pairs: Vec<[i32; 2]>,
+}
+
+impl Atoms {
+    fn of(kin: &[PairKinematics]) -> Self {
+        let n = kin.len();
+        let mut a = Atoms {
+            x: vec![f64::NAN; 6 * n],
+            v: vec![f64::NAN; 6 * n],
+            omega: vec![f64::NAN; 6 * n],
+            radius: vec![f64::NAN; 2 * n],
+            pairs: Vec::with_capacity(n),
+        };
+        for (b, k) in kin.iter().enumerate() {
+            let (i, j) = (2 * n - 1 - b, b);
+            for (atom, x, v, w, r) in [
+                (i, k.x_i, k.v_i, k.w_i, k.radius_i),
+                (j, k.x_j, k.v_j, k.w_j, k.radius_j),
+            ] {
+                a.x[3 * atom..3 * atom + 3].copy_from_slice(&x);
+                a.v[3 * atom..3 * atom + 3].copy_from_slice(&v);
+                a.omega[3 * atom..3 * atom + 3].copy_from_slice(&w);
+                a.radius[atom] = r;
+            }
+            a.pairs.push([i as i32, j as i32]);
+        }
+        a
+    }
+
+    fn arrays(&self) -> AtomArrays<'_> {
+        AtomArrays {
+            x: &self.x,
+            v: &self.v,
+            omega: &self.omega,
+            radius: &self.radius,
+        }
+    }
+}
+
+/// `step_scattered` and `step_indexed` on every instruction set this CPU
+/// runs against one `step` per bond, bit for bit. Returns how many
+/// instruction sets ran.
 fn check_scattered(p: BondParams, bonds: &[(PairKinematics, BondState)]) -> Result<usize, TestCaseError> {
     let model = BondModel::new(p).unwrap();
     let kin: Vec<PairKinematics> = bonds.iter().map(|b| b.0).collect();
+    let atoms = Atoms::of(&kin);
+    let indexed = IndexedPairs::new(atoms.arrays(), &atoms.pairs).unwrap();
     let mut expected_states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
     let mut expected_outs = stale_outputs(bonds.len());
     let expected = one_by_one(&model, &kin, &mut expected_states, &mut expected_outs);
@@ -152,28 +205,35 @@ fn check_scattered(p: BondParams, bonds: &[(PairKinematics, BondState)]) -> Resu
             continue;
         };
         ran += 1;
-        let mut states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
-        let mut outs = stale_outputs(bonds.len());
-        let mut refs: Vec<&mut BondState> = states.iter_mut().collect();
-        let got = m.step_scattered(&kin, DT, &mut refs, &mut outs);
-        prop_assert_eq!(got, expected, "{:?}: result", simd);
-        for i in 0..bonds.len() {
-            prop_assert_eq!(
-                state_bits(&states[i]),
-                state_bits(&expected_states[i]),
-                "{:?}: state of bond {} of {}",
-                simd,
-                i,
-                bonds.len()
-            );
-            prop_assert_eq!(
-                output_bits(&outs[i]),
-                output_bits(&expected_outs[i]),
-                "{:?}: output of bond {} of {}",
-                simd,
-                i,
-                bonds.len()
-            );
+        for source in ["scattered", "indexed"] {
+            let mut states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
+            let mut outs = stale_outputs(bonds.len());
+            let mut refs: Vec<&mut BondState> = states.iter_mut().collect();
+            let got = match source {
+                "scattered" => m.step_scattered(&kin, DT, &mut refs, &mut outs),
+                _ => m.step_indexed(&indexed, DT, &mut refs, &mut outs),
+            };
+            prop_assert_eq!(got, expected, "{:?} {}: result", simd, source);
+            for i in 0..bonds.len() {
+                prop_assert_eq!(
+                    state_bits(&states[i]),
+                    state_bits(&expected_states[i]),
+                    "{:?} {}: state of bond {} of {}",
+                    simd,
+                    source,
+                    i,
+                    bonds.len()
+                );
+                prop_assert_eq!(
+                    output_bits(&outs[i]),
+                    output_bits(&expected_outs[i]),
+                    "{:?} {}: output of bond {} of {}",
+                    simd,
+                    source,
+                    i,
+                    bonds.len()
+                );
+            }
         }
     }
     Ok(ran)

@@ -17,8 +17,10 @@
 use super::kernel::bond_step;
 use super::model::BondModel;
 use super::state::{BondOutput, BondState};
-use crate::kinematics::{KinematicsError, PairKinematics};
+use crate::kinematics::KinematicsError;
+use crate::pair_source::PairSource;
 use std::borrow::BorrowMut;
+use std::ops::Range;
 #[cfg(target_arch = "x86_64")]
 use {
     super::kernel::{advance, History, Motion},
@@ -28,31 +30,44 @@ use {
     crate::vector::{Vector, V3},
 };
 
-/// Steps the bonds (as many as the shortest of the three slices hold) one
-/// by one, states in place or behind pointers; an error carries the index
-/// of its bond plus `first`.
+/// Steps bonds `range` one by one, states in place or behind pointers; an
+/// error carries the index of its bond.
 #[inline(always)]
-pub(crate) fn one_by_one<const F: u32, S: BorrowMut<BondState>>(
+pub(crate) fn one_by_one<const F: u32, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
     model: &BondModel,
-    kin: &[PairKinematics],
+    kin: &K,
+    range: Range<usize>,
     dt: f64,
     states: &mut [S],
     outs: &mut [BondOutput],
-    first: usize,
 ) -> Result<(), (usize, KinematicsError)> {
-    for (idx, ((k, s), o)) in kin.iter().zip(states.iter_mut()).zip(outs.iter_mut()).enumerate() {
-        bond_step::<F>(model, k, dt, s.borrow_mut(), o).map_err(|e| (first + idx, e))?;
+    for b in range {
+        bond_step::<F>(model, &kin.pair(b), dt, states[b].borrow_mut(), &mut outs[b]).map_err(|e| (b, e))?;
     }
     Ok(())
+}
+
+/// All bonds of `kin` (as many as the shortest of the three holds) one by
+/// one.
+#[inline(always)]
+pub(crate) fn all_one_by_one<const F: u32, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
+    model: &BondModel,
+    kin: &K,
+    dt: f64,
+    states: &mut [S],
+    outs: &mut [BondOutput],
+) -> Result<(), (usize, KinematicsError)> {
+    let count = kin.len().min(states.len()).min(outs.len());
+    one_by_one::<F, K, S>(model, kin, 0..count, dt, states, outs)
 }
 
 /// [`one_by_one`] in chunks of `P::WIDTH` lanes; the bonds after the last full
 /// chunk one by one.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-pub(crate) fn in_chunks<const F: u32, P: Pack>(
+pub(crate) fn in_chunks<const F: u32, P: Pack, K: PairSource + ?Sized>(
     model: &BondModel,
-    kin: &[PairKinematics],
+    kin: &K,
     dt: f64,
     states: &mut [&mut BondState],
     outs: &mut [BondOutput],
@@ -61,47 +76,48 @@ pub(crate) fn in_chunks<const F: u32, P: Pack>(
     let mut start = 0;
     while start + P::WIDTH <= count {
         let end = start + P::WIDTH;
-        let (k, s, o) = (&kin[start..end], &mut states[start..end], &mut outs[start..end]);
-        if !step_chunk::<F, P>(model, k, dt, s, o) {
-            one_by_one::<F, _>(model, k, dt, s, o, start)?;
+        if !step_chunk::<F, P, K>(
+            model,
+            kin,
+            start,
+            dt,
+            &mut states[start..end],
+            &mut outs[start..end],
+        ) {
+            one_by_one::<F, K, _>(model, kin, start..end, dt, states, outs)?;
         }
         start = end;
     }
-    one_by_one::<F, _>(
-        model,
-        &kin[start..count],
-        dt,
-        &mut states[start..count],
-        &mut outs[start..count],
-        start,
-    )
+    one_by_one::<F, K, _>(model, kin, start..count, dt, states, outs)
 }
 
-/// Advances the `P::WIDTH` bonds of a chunk in lanes, or returns false without
-/// touching anything when one of them is not intact or has unusable
-/// kinematics.
+/// Advances the `P::WIDTH` bonds of a chunk, from bond `first` of `kin` on,
+/// in lanes, or returns false without touching anything when one of them is
+/// not intact or has unusable kinematics.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-fn step_chunk<const F: u32, P: Pack>(
+fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized>(
     model: &BondModel,
-    kin: &[PairKinematics],
+    kin: &K,
+    first: usize,
     dt: f64,
     states: &mut [&mut BondState],
     outs: &mut [BondOutput],
 ) -> bool {
     let n = P::WIDTH;
-    let (kin, states, outs) = (&kin[..n], &mut states[..n], &mut outs[..n]);
+    let (states, outs) = (&mut states[..n], &mut outs[..n]);
+    let kin = |lane: usize| kin.pair(first + lane);
     if states.iter().any(|s| s.status() != BondStatus::Intact) {
         return false;
     }
-    let (x_i, x_j) = (gather3(kin, |k| k.x_i), gather3(kin, |k| k.x_j));
+    let (x_i, x_j) = (lanes3(kin, |k| k.x_i), lanes3(kin, |k| k.x_j));
     let motion = Motion {
-        v_i: gather3(kin, |k| k.v_i),
-        v_j: gather3(kin, |k| k.v_j),
-        w_i: gather3(kin, |k| k.w_i),
-        w_j: gather3(kin, |k| k.w_j),
-        radius_i: gather(kin, |k| k.radius_i),
-        radius_j: gather(kin, |k| k.radius_j),
+        v_i: lanes3(kin, |k| k.v_i),
+        v_j: lanes3(kin, |k| k.v_j),
+        w_i: lanes3(kin, |k| k.w_i),
+        w_j: lanes3(kin, |k| k.w_j),
+        radius_i: P::gather(|lane| kin(lane).radius_i),
+        radius_j: P::gather(|lane| kin(lane).radius_j),
     };
     let m = &motion;
     let vectors = [x_i, x_j, m.v_i, m.v_j, m.w_i, m.w_j].map(|v| [v.x, v.y, v.z]);
@@ -160,10 +176,17 @@ fn gather<T, P: Pack>(items: &[T], f: impl Fn(&T) -> f64) -> P {
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 fn gather3<T, P: Pack>(items: &[T], f: impl Fn(&T) -> [f64; 3]) -> V3<P> {
+    lanes3(|i| &items[i], |t| f(t))
+}
+
+/// A vector quantity of `P::WIDTH` items, lane `i` from `item(i)`.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn lanes3<T, P: Pack>(item: impl Fn(usize) -> T, f: impl Fn(&T) -> [f64; 3]) -> V3<P> {
     V3::new(
-        gather(items, |t| f(t)[0]),
-        gather(items, |t| f(t)[1]),
-        gather(items, |t| f(t)[2]),
+        P::gather(|i| f(&item(i))[0]),
+        P::gather(|i| f(&item(i))[1]),
+        P::gather(|i| f(&item(i))[2]),
     )
 }
 

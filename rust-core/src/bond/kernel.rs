@@ -14,6 +14,7 @@ use super::twist_bend::{
     advance_bend, advance_twist, restoring_torque, restoring_torques, split_relative_spin,
 };
 use crate::kinematics::{centre_line, slip_velocity, CentreLine, KinematicsError, PairKinematics};
+use crate::pair_source::IndexedPairs;
 use crate::real::Real;
 use crate::vector::{v3, Vec3, Vector};
 use seq_macro::seq;
@@ -39,6 +40,13 @@ pub type BatchKernel = fn(
 pub type ScatteredKernel = fn(
     &BondModel,
     &[PairKinematics],
+    f64,
+    &mut [&mut BondState],
+    &mut [BondOutput],
+) -> Result<(), (usize, KinematicsError)>;
+pub type IndexedKernel = fn(
+    &BondModel,
+    &IndexedPairs<'_>,
     f64,
     &mut [&mut BondState],
     &mut [BondOutput],
@@ -375,7 +383,7 @@ fn batch<const F: u32>(
     states: &mut [BondState],
     outs: &mut [BondOutput],
 ) -> Result<(), (usize, KinematicsError)> {
-    chunk::one_by_one::<F, _>(model, kin, dt, states, outs, 0)
+    chunk::all_one_by_one::<F, _, _>(model, kin, dt, states, outs)
 }
 
 fn scattered<const F: u32>(
@@ -385,7 +393,17 @@ fn scattered<const F: u32>(
     states: &mut [&mut BondState],
     outs: &mut [BondOutput],
 ) -> Result<(), (usize, KinematicsError)> {
-    chunk::one_by_one::<F, _>(model, kin, dt, states, outs, 0)
+    chunk::all_one_by_one::<F, _, _>(model, kin, dt, states, outs)
+}
+
+fn indexed<const F: u32>(
+    model: &BondModel,
+    kin: &IndexedPairs<'_>,
+    dt: f64,
+    states: &mut [&mut BondState],
+    outs: &mut [BondOutput],
+) -> Result<(), (usize, KinematicsError)> {
+    chunk::all_one_by_one::<F, _, _>(model, kin, dt, states, outs)
 }
 
 /// The instruction sets [`BondModel::step_scattered`] can run on: one bond
@@ -430,34 +448,39 @@ impl Simd {
 #[cfg(target_arch = "x86_64")]
 mod wide {
     use super::*;
+    use crate::pair_source::PairSource;
     use crate::real::packed::{F64x4, F64x8};
 
     /// The kernel compiled for AVX2, 4 bonds per instruction (the
     /// `#[inline(always)]` laws and lane operations take on this function's
     /// target features).
     #[target_feature(enable = "avx2")]
-    fn avx2<const F: u32>(
+    fn avx2<const F: u32, K: PairSource + ?Sized>(
         model: &BondModel,
-        kin: &[PairKinematics],
+        kin: &K,
         dt: f64,
         states: &mut [&mut BondState],
         outs: &mut [BondOutput],
     ) -> Result<(), (usize, KinematicsError)> {
-        chunk::in_chunks::<F, F64x4>(model, kin, dt, states, outs)
+        chunk::in_chunks::<F, F64x4, K>(model, kin, dt, states, outs)
     }
 
     /// The same for AVX-512, 8 bonds per instruction.
     #[target_feature(enable = "avx512f")]
-    fn avx512<const F: u32>(
+    fn avx512<const F: u32, K: PairSource + ?Sized>(
         model: &BondModel,
-        kin: &[PairKinematics],
+        kin: &K,
         dt: f64,
         states: &mut [&mut BondState],
         outs: &mut [BondOutput],
     ) -> Result<(), (usize, KinematicsError)> {
-        chunk::in_chunks::<F, F64x8>(model, kin, dt, states, outs)
+        chunk::in_chunks::<F, F64x8, K>(model, kin, dt, states, outs)
     }
 
+    // The entries of the kernel tables, one per instruction set and source
+    // of kinematics.
+    // SAFETY (each): only handed out by `scattered_kernels` for the
+    // instruction set it names, which `BondModel` checks the CPU runs.
     pub(super) fn scattered_avx2<const F: u32>(
         model: &BondModel,
         kin: &[PairKinematics],
@@ -465,9 +488,17 @@ mod wide {
         states: &mut [&mut BondState],
         outs: &mut [BondOutput],
     ) -> Result<(), (usize, KinematicsError)> {
-        // SAFETY: only handed out by `scattered_kernel` for `Simd::Avx2`,
-        // which `BondModel` checks the CPU runs.
-        unsafe { avx2::<F>(model, kin, dt, states, outs) }
+        unsafe { avx2::<F, _>(model, kin, dt, states, outs) }
+    }
+
+    pub(super) fn indexed_avx2<const F: u32>(
+        model: &BondModel,
+        kin: &IndexedPairs<'_>,
+        dt: f64,
+        states: &mut [&mut BondState],
+        outs: &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        unsafe { avx2::<F, _>(model, kin, dt, states, outs) }
     }
 
     pub(super) fn scattered_avx512<const F: u32>(
@@ -477,8 +508,17 @@ mod wide {
         states: &mut [&mut BondState],
         outs: &mut [BondOutput],
     ) -> Result<(), (usize, KinematicsError)> {
-        // SAFETY: as above, for `Simd::Avx512`.
-        unsafe { avx512::<F>(model, kin, dt, states, outs) }
+        unsafe { avx512::<F, _>(model, kin, dt, states, outs) }
+    }
+
+    pub(super) fn indexed_avx512<const F: u32>(
+        model: &BondModel,
+        kin: &IndexedPairs<'_>,
+        dt: f64,
+        states: &mut [&mut BondState],
+        outs: &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        unsafe { avx512::<F, _>(model, kin, dt, states, outs) }
     }
 }
 
@@ -486,10 +526,15 @@ seq!(N in 0..128 {
     const SINGLE: [Kernel; FEATURE_COMBINATIONS] = [#(single::<N>,)*];
     const BATCH: [BatchKernel; FEATURE_COMBINATIONS] = [#(batch::<N>,)*];
     const SCATTERED: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(scattered::<N>,)*];
+    const INDEXED: [IndexedKernel; FEATURE_COMBINATIONS] = [#(indexed::<N>,)*];
     #[cfg(target_arch = "x86_64")]
     const SCATTERED_AVX2: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(wide::scattered_avx2::<N>,)*];
     #[cfg(target_arch = "x86_64")]
+    const INDEXED_AVX2: [IndexedKernel; FEATURE_COMBINATIONS] = [#(wide::indexed_avx2::<N>,)*];
+    #[cfg(target_arch = "x86_64")]
     const SCATTERED_AVX512: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(wide::scattered_avx512::<N>,)*];
+    #[cfg(target_arch = "x86_64")]
+    const INDEXED_AVX512: [IndexedKernel; FEATURE_COMBINATIONS] = [#(wide::indexed_avx512::<N>,)*];
 });
 
 pub fn single_kernel(features: u32) -> Kernel {
@@ -500,16 +545,29 @@ pub fn batch_kernel(features: u32) -> BatchKernel {
     BATCH[features as usize % FEATURE_COMBINATIONS]
 }
 
-/// The scattered kernel for `simd`, which the caller has checked this CPU
-/// runs ([`Simd::available`]); `Scalar` for a width not compiled in.
-pub(crate) fn scattered_kernel(features: u32, simd: Simd) -> (ScatteredKernel, Simd) {
+/// The kernels for bonds whose states lie apart, for `simd`, which the
+/// caller has checked this CPU runs ([`Simd::available`]); `Scalar` for a
+/// width not compiled in.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ScatteredKernels {
+    pub scattered: ScatteredKernel,
+    pub indexed: IndexedKernel,
+    pub simd: Simd,
+}
+
+pub(crate) fn scattered_kernels(features: u32, simd: Simd) -> ScatteredKernels {
     let f = features as usize % FEATURE_COMBINATIONS;
-    match simd {
+    let (scattered, indexed, simd) = match simd {
         #[cfg(target_arch = "x86_64")]
-        Simd::Avx2 => (SCATTERED_AVX2[f], Simd::Avx2),
+        Simd::Avx2 => (SCATTERED_AVX2[f], INDEXED_AVX2[f], Simd::Avx2),
         #[cfg(target_arch = "x86_64")]
-        Simd::Avx512 => (SCATTERED_AVX512[f], Simd::Avx512),
-        _ => (SCATTERED[f], Simd::Scalar),
+        Simd::Avx512 => (SCATTERED_AVX512[f], INDEXED_AVX512[f], Simd::Avx512),
+        _ => (SCATTERED[f], INDEXED[f], Simd::Scalar),
+    };
+    ScatteredKernels {
+        scattered,
+        indexed,
+        simd,
     }
 }
 
@@ -548,6 +606,18 @@ impl BondModel {
         states: &mut [&mut BondState],
         outs: &mut [BondOutput],
     ) -> Result<(), (usize, KinematicsError)> {
-        (self.scattered)(self, kin, dt, states, outs)
+        (self.kernels.scattered)(self, kin, dt, states, outs)
+    }
+
+    /// [`Self::step_scattered`] reading each bond's kinematics from the
+    /// engine's per-atom arrays: the same results, bit for bit.
+    pub fn step_indexed(
+        &self,
+        kin: &IndexedPairs<'_>,
+        dt: f64,
+        states: &mut [&mut BondState],
+        outs: &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        (self.kernels.indexed)(self, kin, dt, states, outs)
     }
 }

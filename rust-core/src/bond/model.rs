@@ -3,7 +3,7 @@
 
 use super::breakage::StressLimits;
 use super::hysteresis::Loop;
-use super::kernel::{self, BatchKernel, Kernel, ScatteredKernel, Simd};
+use super::kernel::{self, BatchKernel, Kernel, ScatteredKernels, Simd};
 use super::normal_law::NormalLaw;
 use super::params::{BondParams, ParameterError};
 
@@ -19,9 +19,9 @@ pub struct BondModel {
     pub features: u32,
     pub(crate) single: Kernel,
     pub(crate) batch: BatchKernel,
-    pub(crate) scattered: ScatteredKernel,
-    /// The instruction set of `scattered`, chosen once, at construction.
-    simd: Simd,
+    /// For `step_scattered` and `step_indexed`, on the instruction set
+    /// chosen once, at construction.
+    pub(crate) kernels: ScatteredKernels,
 }
 
 impl BondModel {
@@ -49,7 +49,6 @@ impl BondModel {
                 features |= kernel::SMOOTH;
             }
         }
-        let (scattered, simd) = kernel::scattered_kernel(features, Simd::detect());
         Ok(Self {
             params,
             normal: NormalLaw::new(
@@ -73,29 +72,29 @@ impl BondModel {
             features,
             single: kernel::single_kernel(features),
             batch: kernel::batch_kernel(features),
-            scattered,
-            simd,
+            kernels: kernel::scattered_kernels(features, Simd::detect()),
         })
     }
 
-    /// The instruction set [`Self::step_scattered`] runs on.
+    /// The instruction set [`Self::step_scattered`] and
+    /// [`Self::step_indexed`] run on.
     pub fn simd(&self) -> Simd {
-        self.simd
+        self.kernels.simd
     }
 
-    /// The model with [`Self::step_scattered`] on `simd` (the same results,
+    /// The model with [`Self::step_scattered`] and [`Self::step_indexed`] on
+    /// `simd` (the same results,
     /// only the speed differs), or `None` when this CPU does not run it or
     /// it is not compiled in. For tests and benchmarks.
     pub fn with_simd(mut self, simd: Simd) -> Option<Self> {
         if !simd.available() {
             return None;
         }
-        let (scattered, chosen) = kernel::scattered_kernel(self.features, simd);
-        if chosen != simd {
+        let kernels = kernel::scattered_kernels(self.features, simd);
+        if kernels.simd != simd {
             return None;
         }
-        self.scattered = scattered;
-        self.simd = simd;
+        self.kernels = kernels;
         Some(self)
     }
 

@@ -4,13 +4,13 @@ use super::error::{Failure, Status};
 use super::guard::{call, reference};
 use crate::bond::{BondOutput, BondParams, BOND_STATE_LEN, WALL_BOND_STATE_LEN};
 use crate::contact::{ContactFrame, ContactOutput, Plane, VoigtParams, CONTACT_STATE_LEN};
-use crate::ffi::bond::SphereKinematics;
+use crate::ffi::bond::{AtomArrayPointers, SphereKinematics};
 use crate::ffi::contact::TangentialOutput;
 use crate::kinematics::PairKinematics;
 use std::mem::size_of;
 
 /// Bumped whenever a struct, a function or a meaning changes.
-pub const GRANBOND_ABI_VERSION: u32 = 2;
+pub const GRANBOND_ABI_VERSION: u32 = 3;
 
 /// What the caller was compiled against: fill it with the header's version
 /// and `sizeof` of each struct, and pass it to `granbond_check_layout`.
@@ -27,6 +27,7 @@ pub struct Layout {
     pub sphere_kinematics: usize,
     pub plane: usize,
     pub bond_output: usize,
+    pub atom_arrays: usize,
     pub contact_output: usize,
     pub contact_frame: usize,
     pub tangential_output: usize,
@@ -53,6 +54,7 @@ pub fn library_layout() -> Layout {
         sphere_kinematics: size_of::<SphereKinematics>(),
         plane: size_of::<Plane>(),
         bond_output: size_of::<BondOutput>(),
+        atom_arrays: size_of::<AtomArrayPointers>(),
         contact_output: size_of::<ContactOutput>(),
         contact_frame: size_of::<ContactFrame>(),
         tangential_output: size_of::<TangentialOutput>(),
@@ -88,7 +90,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
             ));
         }
         let e = reference(expected, "expected")?;
-        let items: [(&str, usize, usize); 12] = [
+        let items: [(&str, usize, usize); 13] = [
             ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
             ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
             ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
@@ -99,6 +101,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
             ),
             ("sizeof(GbPlane)", e.plane, l.plane),
             ("sizeof(GbBondOutput)", e.bond_output, l.bond_output),
+            ("sizeof(GbAtomArrays)", e.atom_arrays, l.atom_arrays),
             ("sizeof(GbContactOutput)", e.contact_output, l.contact_output),
             ("sizeof(GbContactFrame)", e.contact_frame, l.contact_frame),
             (

@@ -9,8 +9,9 @@ use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
 };
-use crate::kinematics::PairKinematics;
 pub use crate::kinematics::SphereKinematics;
+use crate::kinematics::{KinematicsError, PairKinematics};
+use crate::pair_source::{AtomArrays, IndexedPairs};
 use std::ffi::{c_char, CString};
 use std::sync::OnceLock;
 
@@ -221,28 +222,115 @@ pub unsafe extern "C" fn granbond_bond_compute_scattered(
     failed_index: *mut usize,
 ) -> Status {
     call("granbond_bond_compute_scattered", || {
-        let fail_at = |index: usize, f: Failure| {
-            if !failed_index.is_null() {
-                *failed_index = index;
-            }
-            Failure::new(f.status, format!("bond {index}: {}", f.message))
-        };
-        let m = reference(model, "model")?;
         let k = slice(kinematics, count, "kinematics")?;
-        let pointers = slice(states as *const *mut f64, count, "states")?;
-        for (index, &p) in pointers.iter().enumerate() {
-            bond_state(p, "states[k]").map_err(|f| fail_at(index, f))?;
-        }
-        // Every pointer is non-null and aligned, and `&mut BondState` has the
-        // layout of `*mut f64` to a `BondState` (the array of pointers is
-        // read, never written). Through `slice_mut`: `states` may be null
-        // when `count` is 0.
-        let s = slice_mut(states as *mut &mut BondState, count, "states")?;
-        let o = slice_mut(out, count, "out")?;
-        check_dt(dt)?;
-        m.step_scattered(k, dt, s, o)
-            .map_err(|(index, e)| fail_at(index, Failure::from(e)))
+        scattered_states(model, count, dt, states, out, failed_index, |m, s, o| {
+            m.step_scattered(k, dt, s, o)
+        })
     })
+}
+
+/// The per-atom arrays of an engine (local and ghost atoms), as
+/// `granbond_bond_compute_indexed` reads them: `x`, `v` and `omega` hold 3
+/// doubles per atom (LAMMPS/LIGGGHTS: `atom->x[0]`, one block), `radius` one.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct AtomArrayPointers {
+    pub x: *const f64,
+    pub v: *const f64,
+    pub omega: *const f64,
+    pub radius: *const f64,
+    /// The number of atoms each array holds at least.
+    pub count: usize,
+}
+
+/// `granbond_bond_compute_scattered` with each bond's kinematics read from
+/// the engine's per-atom arrays: bond `k` joins atoms `pairs[2k]` (`i`) and
+/// `pairs[2k + 1]` (`j`), so the engine copies nothing per bond. The same
+/// results, bit for bit. An index outside `0 .. atoms->count` is reported
+/// (with its bond in `failed_index`) before any bond is advanced.
+///
+/// # Safety
+/// Pointers must be null or valid for the sizes above (`atoms->x`, `v`,
+/// `omega`: `3 count` doubles; `radius`: `count`; `pairs`: `2 count` ints).
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_compute_indexed(
+    model: *const BondModel,
+    count: usize,
+    atoms: *const AtomArrayPointers,
+    pairs: *const i32,
+    dt: f64,
+    states: *mut *mut f64,
+    out: *mut BondOutput,
+    failed_index: *mut usize,
+) -> Status {
+    call("granbond_bond_compute_indexed", || {
+        let a = reference(atoms, "atoms")?;
+        let n = a.count;
+        // the arrays' sizes in bytes must fit an isize (slices)
+        let n3 = n
+            .checked_mul(3)
+            .filter(|&m| m <= isize::MAX as usize / std::mem::size_of::<f64>())
+            .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("atoms->count {n} is too large")))?;
+        let arrays = AtomArrays {
+            x: slice(a.x, n3, "atoms->x")?,
+            v: slice(a.v, n3, "atoms->v")?,
+            omega: slice(a.omega, n3, "atoms->omega")?,
+            radius: slice(a.radius, n, "atoms->radius")?,
+        };
+        let p = slice(pairs as *const [i32; 2], count, "pairs")?;
+        let kin = IndexedPairs::new(arrays, p).map_err(|e| {
+            if !failed_index.is_null() {
+                *failed_index = e.bond;
+            }
+            Failure::new(
+                Status::InvalidArgument,
+                format!(
+                    "bond {}: atom index {} outside the {} atoms of the arrays",
+                    e.bond, e.index, e.atoms
+                ),
+            )
+        })?;
+        scattered_states(model, count, dt, states, out, failed_index, |m, s, o| {
+            m.step_indexed(&kin, dt, s, o)
+        })
+    })
+}
+
+/// The part `granbond_bond_compute_scattered` and `_indexed` share: checks
+/// the model, every state pointer and `dt`, then steps; an error names its
+/// bond and writes its index to `failed_index`.
+unsafe fn scattered_states(
+    model: *const BondModel,
+    count: usize,
+    dt: f64,
+    states: *mut *mut f64,
+    out: *mut BondOutput,
+    failed_index: *mut usize,
+    step: impl FnOnce(
+        &BondModel,
+        &mut [&mut BondState],
+        &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)>,
+) -> Result<(), Failure> {
+    let fail_at = |index: usize, f: Failure| {
+        if !failed_index.is_null() {
+            *failed_index = index;
+        }
+        Failure::new(f.status, format!("bond {index}: {}", f.message))
+    };
+    let m = reference(model, "model")?;
+    let pointers = slice(states as *const *mut f64, count, "states")?;
+    for (index, &p) in pointers.iter().enumerate() {
+        bond_state(p, "states[k]").map_err(|f| fail_at(index, f))?;
+    }
+    // Every pointer is non-null and aligned, and `&mut BondState` has the
+    // layout of `*mut f64` to a `BondState` (the array of pointers is
+    // read, never written). Through `slice_mut`: `states` may be null
+    // when `count` is 0.
+    let s = slice_mut(states as *mut &mut BondState, count, "states")?;
+    let o = slice_mut(out, count, "out")?;
+    check_dt(dt)?;
+    step(m, s, o).map_err(|(index, e)| fail_at(index, Failure::from(e)))
 }
 
 /// Bonds a sphere to a wall it touches at `contact_point` (`double[3]`)

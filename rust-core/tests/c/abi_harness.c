@@ -1037,19 +1037,9 @@ static int test_bond_batch(void)
 /* States apart in memory, in an order unrelated to their addresses, as in an
  * engine's contact history; among them a broken bond and one that breaks in
  * this step. */
-static int test_bond_scattered(void)
+static int scattered_fixture(GbBondModel *m, GbPairKinematics *k, double *memory, double **states)
 {
-    const GbBondParams p = bond_fixture();
-    GbBondModel *m = NULL;
-    GbPairKinematics k[N_SCATTERED];
-    GbBondOutput out[N_SCATTERED], single;
-    double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], before[sizeof memory / sizeof(double)];
-    double *states[N_SCATTERED], one[GRANBOND_BOND_STATE_LEN], *saved;
-    size_t failed = 999;
     int b;
-
-    if (new_bond_model(&p, &m))
-        return 1;
     for (b = 0; b < N_SCATTERED; b++) {
         states[b] = memory + 2 * (N_SCATTERED - 1 - b) * GRANBOND_BOND_STATE_LEN;
         if (create_bond(m, states[b]))
@@ -1061,6 +1051,22 @@ static int test_bond_scattered(void)
     }
     states[5][0] = GB_BOND_STATUS_BROKEN;
     pair_at(&k[7], 1.01 * MAX_DISTANCE, R_I, R_J);
+    return 0;
+}
+
+static int test_bond_scattered(void)
+{
+    const GbBondParams p = bond_fixture();
+    GbBondModel *m = NULL;
+    GbPairKinematics k[N_SCATTERED];
+    GbBondOutput out[N_SCATTERED], single;
+    double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], before[sizeof memory / sizeof(double)];
+    double *states[N_SCATTERED], one[GRANBOND_BOND_STATE_LEN], *saved;
+    size_t failed = 999;
+    int b;
+
+    if (new_bond_model(&p, &m) || scattered_fixture(m, k, memory, states))
+        return 1;
     memcpy(before, memory, sizeof memory);
 
     EXPECT_OK(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, out, &failed),
@@ -1106,6 +1112,113 @@ static int test_bond_scattered(void)
                     "granbond_bond_compute_scattered", "states");
     EXPECT_NULL_ARG(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, NULL, &failed),
                     "granbond_bond_compute_scattered", "out");
+
+    granbond_bond_model_free(m);
+    return 0;
+}
+
+/* The scattered bonds with their spheres in per-atom arrays, as an engine
+ * keeps them (bond b joins atoms 2N-1-b and b): the same bits as the
+ * scattered call; an index outside the arrays is refused before any bond
+ * moves. */
+static int test_bond_indexed(void)
+{
+    const GbBondParams p = bond_fixture();
+    GbBondModel *m = NULL;
+    GbPairKinematics k[N_SCATTERED];
+    GbBondOutput out[N_SCATTERED], want[N_SCATTERED];
+    double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], before[sizeof memory / sizeof(double)],
+        after[sizeof memory / sizeof(double)];
+    double x[6 * N_SCATTERED], v[6 * N_SCATTERED], w[6 * N_SCATTERED], radius[2 * N_SCATTERED];
+    double *states[N_SCATTERED];
+    int32_t pairs[2 * N_SCATTERED];
+    GbAtomArrays atoms, bad;
+    size_t failed = 999;
+    int b, c;
+
+    if (new_bond_model(&p, &m) || scattered_fixture(m, k, memory, states))
+        return 1;
+    for (b = 0; b < N_SCATTERED; b++) {
+        const int i = 2 * N_SCATTERED - 1 - b, j = b;
+        pairs[2 * b] = i;
+        pairs[2 * b + 1] = j;
+        for (c = 0; c < 3; c++) {
+            x[3 * i + c] = k[b].x_i[c];
+            v[3 * i + c] = k[b].v_i[c];
+            w[3 * i + c] = k[b].w_i[c];
+            x[3 * j + c] = k[b].x_j[c];
+            v[3 * j + c] = k[b].v_j[c];
+            w[3 * j + c] = k[b].w_j[c];
+        }
+        radius[i] = k[b].radius_i;
+        radius[j] = k[b].radius_j;
+    }
+    atoms.x = x;
+    atoms.v = v;
+    atoms.omega = w;
+    atoms.radius = radius;
+    atoms.count = 2 * N_SCATTERED;
+    memcpy(before, memory, sizeof memory);
+
+    EXPECT_OK(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, want, NULL),
+              "granbond_bond_compute_scattered (reference for the indexed call)");
+    memcpy(after, memory, sizeof memory);
+    memcpy(memory, before, sizeof memory);
+    EXPECT_OK(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, DT, states, out, &failed),
+              "granbond_bond_compute_indexed");
+    CHECK(failed == 999, "failed_index left alone on success");
+    CHECK(memcmp(out, want, sizeof out) == 0 && memcmp(memory, after, sizeof memory) == 0,
+          "indexed = scattered, outputs and states bit for bit");
+
+    /* An atom index past the arrays, or negative: its bond, nothing moved. */
+    memcpy(memory, before, sizeof memory);
+    pairs[2 * 3 + 1] = 2 * N_SCATTERED;
+    EXPECT(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, DT, states, out, &failed),
+           GB_STATUS_INVALID_ARGUMENT, "granbond_bond_compute_indexed with an index = count");
+    CHECK(failed == 3, say("failed_index = 3 (got %u)", (unsigned)failed));
+    EXPECT_MESSAGE("bond 3");
+    EXPECT_MESSAGE("atom index 22");
+    CHECK(memcmp(memory, before, sizeof memory) == 0, "no state advanced for a bad index");
+    pairs[2 * 3 + 1] = 3;
+    pairs[2 * 8] = -1;
+    EXPECT(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, DT, states, out, &failed),
+           GB_STATUS_INVALID_ARGUMENT, "granbond_bond_compute_indexed with a negative index");
+    CHECK(failed == 8, say("failed_index = 8 (got %u)", (unsigned)failed));
+    pairs[2 * 8] = 2 * N_SCATTERED - 1 - 8;
+
+    /* count too large for the arrays' sizes to be computed */
+    bad = atoms;
+    bad.count = (size_t)-1;
+    EXPECT(granbond_bond_compute_indexed(m, N_SCATTERED, &bad, pairs, DT, states, out, &failed),
+           GB_STATUS_INVALID_ARGUMENT, "granbond_bond_compute_indexed with atoms->count = SIZE_MAX");
+    EXPECT_MESSAGE("atoms->count");
+
+    EXPECT_OK(granbond_bond_compute_indexed(m, 0, &atoms, NULL, DT, NULL, NULL, NULL),
+              "granbond_bond_compute_indexed, count = 0 and NULL arrays");
+    EXPECT(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, -DT, states, out, NULL),
+           GB_STATUS_INVALID_ARGUMENT, "granbond_bond_compute_indexed with dt < 0");
+    EXPECT_NULL_ARG(granbond_bond_compute_indexed(NULL, N_SCATTERED, &atoms, pairs, DT, states, out, &failed),
+                    "granbond_bond_compute_indexed", "model");
+    EXPECT_NULL_ARG(granbond_bond_compute_indexed(m, N_SCATTERED, NULL, pairs, DT, states, out, &failed),
+                    "granbond_bond_compute_indexed", "atoms");
+    EXPECT_NULL_ARG(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, NULL, DT, states, out, &failed),
+                    "granbond_bond_compute_indexed", "pairs");
+    EXPECT_NULL_ARG(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, DT, NULL, out, &failed),
+                    "granbond_bond_compute_indexed", "states");
+    EXPECT_NULL_ARG(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, DT, states, NULL, &failed),
+                    "granbond_bond_compute_indexed", "out");
+    bad = atoms;
+    bad.x = NULL;
+    EXPECT_NULL_ARG(granbond_bond_compute_indexed(m, N_SCATTERED, &bad, pairs, DT, states, out, &failed),
+                    "granbond_bond_compute_indexed", "atoms->x");
+    bad = atoms;
+    bad.omega = NULL;
+    EXPECT_NULL_ARG(granbond_bond_compute_indexed(m, N_SCATTERED, &bad, pairs, DT, states, out, &failed),
+                    "granbond_bond_compute_indexed", "atoms->omega");
+    bad = atoms;
+    bad.radius = NULL;
+    EXPECT_NULL_ARG(granbond_bond_compute_indexed(m, N_SCATTERED, &bad, pairs, DT, states, out, &failed),
+                    "granbond_bond_compute_indexed", "atoms->radius");
 
     granbond_bond_model_free(m);
     return 0;
@@ -2137,6 +2250,7 @@ int main(void)
 {
     int failed = test_version_and_layout() || test_state_layout() || test_bond_params() ||
                  test_bond_create_and_force() || test_bond_errors() || test_bond_batch() || test_bond_scattered() ||
+                 test_bond_indexed() ||
                  test_bond_break() ||
                  test_wall_bond() || test_bond_limits() || test_voigt_params() || test_voigt_contact() ||
                  test_voigt_batch() || test_voigt_plane() || test_voigt_timestep() || test_contact_frames() || test_voigt_parts() ||
