@@ -52,7 +52,7 @@ if [[ "${1:-}" == "--interleaved" ]]; then
     # odd lines voigt, even lines stock
     awk 'NR % 2 == 1' "$work/times" | sort -g > "$work/voigt"
     awk 'NR % 2 == 0' "$work/times" | sort -g > "$work/stock"
-    stats() { awk '{ t[NR] = $1 } END { m = (NR % 2) ? t[(NR + 1) / 2] : (t[NR / 2] + t[NR / 2 + 1]) / 2; printf "%s %s", t[1], m }' "$1"; }
+    stats() { awk -f "$here/best_and_median.awk" "$1"; }
     read -r vb vm <<< "$(stats "$work/voigt")"
     read -r sb sm <<< "$(stats "$work/stock")"
     echo "5120 spheres, $rounds x $steps steps each, alternating in one process"

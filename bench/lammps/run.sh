@@ -7,23 +7,52 @@
 # Prints both and the ratios granular/granbond (> 1: granbond faster).
 #
 #   [REPEAT=5] bench/lammps/run.sh [NRUN]
+#   bench/lammps/run.sh --interleaved [NRUN (300)] [ROUNDS (10)]
+#       both styles taking turns in one lmp-granbond process (interleaved.in),
+#       so that both meet the same machine load: best and median Pair time of
+#       each, and the ratios of the best and of the medians
 #
 # Needs build/bin/lmp-granbond and Debian's /usr/bin/lmp (LMP overrides;
 # the PyPI wheel's `lmp` may come first on PATH).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$here/../.."
-nrun="${1:-3000}"
-repeat="${REPEAT:-1}"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
 echo "pair_style granbond
 pair_coeff * * voigt 1e4 1e-3 6e3 1e-3 0.5" > "$out/granbond.in"
 echo "pair_style granular
 pair_coeff * * hooke 1e4 1e-3 damping velocity limit_damping tangential linear_history 6e3 1 0.5" > "$out/granular.in"
+granbond_lmp="${LMP_GRANBOND:-$root/build/bin/lmp-granbond}"
+
+if [[ "${1:-}" == "--interleaved" ]]; then
+    nrun="${2:-300}"
+    rounds="${3:-10}"
+    (cd "$out" && "$granbond_lmp" -in "$here/interleaved.in" -var dir "$here" -var work "$out" \
+        -var model "$out/granular.in" -var model2 "$out/granbond.in" -var nrun "$nrun" -var rounds "$rounds" \
+        -log "$out/interleaved.log" >/dev/null)
+    # Pair times of the runs in order: odd granular, even granbond
+    awk '/^Pair +\|/ { print $3 }' "$out/interleaved.log" > "$out/pair"
+    [ "$(wc -l < "$out/pair")" -eq $((2 * rounds)) ] || { echo "bench: the interleaved run failed" >&2; exit 1; }
+    awk 'NR % 2 == 1' "$out/pair" | sort -g > "$out/granular"
+    awk 'NR % 2 == 0' "$out/pair" | sort -g > "$out/granbond"
+    stats() { awk -f "$here/../best_and_median.awk" "$1"; }
+    read -r gb gm <<< "$(stats "$out/granular")"
+    read -r bb bm <<< "$(stats "$out/granbond")"
+    echo "8000 spheres, $rounds x $nrun steps each, alternating in one process"
+    echo "pair granular          Pair time best $gb s, median $gm s"
+    echo "pair granbond (voigt)  Pair time best $bb s, median $bm s"
+    awk -v gb="$gb" -v bb="$bb" -v gm="$gm" -v bm="$bm" 'BEGIN {
+        printf "throughput ratio granbond/granular = %.3f (best), %.3f (median) (target >= 1.0)\n", gb / bb, gm / bm }'
+    exit 0
+fi
+
+nrun="${1:-3000}"
+repeat="${REPEAT:-1}"
 # prints "loop pair" (seconds) of one run
 times() {
-    (cd "$out" && "$1" -in "$here/packing.in" -var model "$out/$2.in" -var nrun "$nrun" -log "$2.log" >/dev/null)
+    (cd "$out" && "$1" -in "$here/packing.in" -var dir "$here" -var model "$out/$2.in" -var nrun "$nrun" \
+        -log "$2.log" >/dev/null)
     awk '/^Loop time of/ {loop = $4} /^Pair +\|/ {pair = $3} END {print loop, pair}' "$out/$2.log"
 }
 min() { awk -v a="$1" -v b="$2" 'BEGIN {print (b == "" || a + 0 < b + 0) ? a : b}'; }
@@ -31,7 +60,7 @@ gl="" gp="" bl="" bp=""
 for _ in $(seq "$repeat"); do
     read -r l p < <(times "${LMP:-/usr/bin/lmp}" granular)
     gl=$(min "$l" "$gl"); gp=$(min "$p" "$gp")
-    read -r l p < <(times "${LMP_GRANBOND:-$root/build/bin/lmp-granbond}" granbond)
+    read -r l p < <(times "$granbond_lmp" granbond)
     bl=$(min "$l" "$bl"); bp=$(min "$p" "$bp")
 done
 echo "pair granular: loop ${gl} s (Pair ${gp} s), pair granbond (voigt): loop ${bl} s (Pair ${bp} s)"

@@ -498,26 +498,6 @@ void PairGranbond::failPair(int i, int j, const char *call)
     std::abort();   // not reached
 }
 
-namespace {
-
-// A contact of a type pair without a bond, waiting for the core. The frames
-// of a batch are all written before the first is read: the core loads
-// them with 16-byte moves, and a load that straddles two 8-byte stores still
-// in the store buffer cannot be forwarded and waits for them to retire (on
-// the packing of bench/lammps this stall made the call from the loop that
-// had just built the frame 1.5x slower than pair granular despite 1.3x fewer
-// instructions).
-struct PendingContact {
-    GbContactFrame frame;
-    const GbVoigtModel *model;
-    double *state;
-    double del[3];
-    int i, j;
-};
-constexpr int kBatch = 64;
-
-}
-
 // Forces of a contact (or an intact bond) on i and j.
 inline void PairGranbond::apply(int i, int j, const double *fi, const double *ti, const double *tj,
                                 const double *del, int nlocal, int newton_pair)
@@ -570,21 +550,6 @@ void PairGranbond::compute(int eflag, int vflag)
     double scratch[GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN];
     GbPairKinematics k;
 
-    // contacts of type pairs without a bond go through the batch, in the
-    // order met (a bonded pair flushes it first), so every force is summed
-    // in the same order as one call per contact would
-    PendingContact pending[kBatch];
-    int npending = 0;
-    auto flush = [&]() {
-        for (int p = 0; p < npending; p++) {
-            PendingContact &c = pending[p];
-            GbContactOutput cout;
-            if (granbond_voigt_compute_frame_unchecked(c.model, &c.frame, dt, c.state, &cout) != GB_STATUS_OK)
-                failPair(c.i, c.j, "granbond_voigt_compute_frame_unchecked");
-            apply(c.i, c.j, cout.force_i, cout.torque_i, cout.torque_j, c.del, nlocal, newton_pair);
-        }
-        npending = 0;
-    };
     // the frame granbond_contact_frame_pair would build, from the geometry
     // the loop has (same operations, same bits): n = (x_i - x_j) / r by one
     // reciprocal, overlap radsum - r, levers R_i and R_j, R* = R_i R_j /
@@ -634,18 +599,23 @@ void PairGranbond::compute(int eflag, int vflag)
                 continue;
             }
             if (!bondModel && advance) {     // plain contact, touching
+                // the frame's fields (as buildFrame) handed over one by
+                // one, velocities and spins where LAMMPS keeps them: the core
+                // reads what was just written one double at a time, so no
+                // load waits for stores in flight, and nothing is copied
                 touch[jj] = 1;
-                PendingContact &c = pending[npending];
-                buildFrame(c.frame, i, j, del, rsq, radsum);
-                c.model = voigt_[tp];
-                c.state = history;
-                copy3(c.del, del);
-                c.i = i;
-                c.j = j;
-                if (++npending == kBatch) flush();
+                const double radj = radius[j];
+                const double r = std::sqrt(rsq);
+                const double rinv = 1.0 / r;
+                const double n[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
+                GbContactOutput cout;
+                if (granbond_voigt_compute_fields_unchecked(voigt_[tp], n, radsum - r, radi, radj,
+                                                            radi * radj / radsum, v[i], v[j], omega[i],
+                                                            omega[j], dt, history, &cout) != GB_STATUS_OK)
+                    failPair(i, j, "granbond_voigt_compute_fields_unchecked");
+                apply(i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
                 continue;
             }
-            flush();
 
             double *state = history;
             if (!advance) {
@@ -703,7 +673,6 @@ void PairGranbond::compute(int eflag, int vflag)
                 apply(i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
         }
     }
-    flush();
 }
 
 // ------------------------------------------------------------ restart

@@ -2,11 +2,12 @@
 // normal, tangential and rolling models: the template slots the engine's
 // GranStyle<> combinations instantiate. All behaviour lives in VoigtNormal,
 // VoigtTangential and VoigtRolling (voigt_contact.cpp, compiled once); this
-// only gives them ids.
+// gives them ids, and leaves out what the fused combinations do not read.
 #ifndef GRANBOND_LIGGGHTS_VOIGT_MODELS_H
 #define GRANBOND_LIGGGHTS_VOIGT_MODELS_H
 
 #include "voigt_contact.h"
+#include "surface_model_default.h"
 
 namespace LIGGGHTS {
 namespace ContactModels {
@@ -29,6 +30,33 @@ GRANBOND_VOIGT_SLOT(TangentialModel, TANGENTIAL_VOIGT, VoigtTangential)
 GRANBOND_VOIGT_SLOT(RollingModel, ROLLING_VOIGT, VoigtRolling)
 
 #undef GRANBOND_VOIGT_SLOT
+
+// voigt x voigt x (voigt | off), no cohesion, default surface: in a force
+// pass the one core call reads the geometry and the engine's velocities
+// itself, and nothing else in these combinations reads the relative
+// velocities the default surface model derives (vn, wr, vtr, cri, crj; about
+// 40 instructions per contact), so only its overlap is set, by the same
+// expression. Setup and per-contact output passes, which tools may inspect,
+// get the surface model as before.
+#define GRANBOND_VOIGT_FUSED_INTERSECT(Rolling)                                                                \
+    template<>                                                                                                 \
+    inline void ContactModel<GranStyle<NORMAL_VOIGT, TANGENTIAL_VOIGT, COHESION_OFF, Rolling, SURFACE_DEFAULT> >:: \
+        surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)            \
+    {                                                                                                          \
+        if (sidata.computeflag && sidata.shearupdate)                                                          \
+            sidata.deltan = sidata.radsum - sidata.r;                                                          \
+        else                                                                                                   \
+            surfaceModel.surfacesIntersect(sidata, i_forces, j_forces);                                        \
+        normalModel.surfacesIntersect(sidata, i_forces, j_forces);                                             \
+        cohesionModel.surfacesIntersect(sidata, i_forces, j_forces);                                           \
+        tangentialModel.surfacesIntersect(sidata, i_forces, j_forces);                                         \
+        rollingModel.surfacesIntersect(sidata, i_forces, j_forces);                                            \
+    }
+
+GRANBOND_VOIGT_FUSED_INTERSECT(ROLLING_VOIGT)
+GRANBOND_VOIGT_FUSED_INTERSECT(ROLLING_OFF)
+
+#undef GRANBOND_VOIGT_FUSED_INTERSECT
 
 }
 }

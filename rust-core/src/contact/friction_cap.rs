@@ -10,11 +10,13 @@ use crate::vector::Vec3;
 #[inline(always)]
 pub fn capped_spring(elongation: Vec3, rate: Vec3, k: f64, gamma: f64, limit: f64) -> (Vec3, Vec3, bool) {
     let trial = -(elongation * k) - rate * gamma;
-    let magnitude = trial.norm();
-    if magnitude <= limit {
+    // squares compared (limit >= 0): a load within the cap, the common
+    // case, waits for no square root
+    let magnitude2 = trial.norm_squared();
+    if magnitude2 <= limit * limit {
         return (trial, elongation, false);
     }
-    let load = trial * (limit / magnitude);
+    let load = trial * (limit / magnitude2.sqrt());
     let reset = if k > 0.0 {
         -(load + rate * gamma) / k
     } else {
