@@ -498,25 +498,29 @@ void PairGranbond::failPair(int i, int j, const char *call)
     std::abort();   // not reached
 }
 
-// Forces of a contact (or an intact bond) on i and j.
-inline void PairGranbond::apply(int i, int j, const double *fi, const double *ti, const double *tj,
-                                const double *del, int nlocal, int newton_pair)
+// Forces of a contact (or an intact bond) on i and j. `f` and `torque` are
+// atom->f[0] and atom->torque[0], read once per pass: the arrays are blocks
+// of 3 doubles per atom (memory->create), and indexing them directly spares
+// the load of a row pointer, which a core call in between forces the
+// compiler to repeat, ahead of every update.
+inline void PairGranbond::apply(double *f, double *torque, int i, int j, const double *fi, const double *ti,
+                                const double *tj, const double *del, int nlocal, int newton_pair)
 {
-    double **f = atom->f;
-    double **torque = atom->torque;
-    f[i][0] += fi[0];
-    f[i][1] += fi[1];
-    f[i][2] += fi[2];
-    torque[i][0] += ti[0];
-    torque[i][1] += ti[1];
-    torque[i][2] += ti[2];
+    double *const fI = f + 3 * static_cast<size_t>(i), *const tI = torque + 3 * static_cast<size_t>(i);
+    fI[0] += fi[0];
+    fI[1] += fi[1];
+    fI[2] += fi[2];
+    tI[0] += ti[0];
+    tI[1] += ti[1];
+    tI[2] += ti[2];
     if (newton_pair || j < nlocal) {
-        f[j][0] -= fi[0];
-        f[j][1] -= fi[1];
-        f[j][2] -= fi[2];
-        torque[j][0] += tj[0];
-        torque[j][1] += tj[1];
-        torque[j][2] += tj[2];
+        double *const fJ = f + 3 * static_cast<size_t>(j), *const tJ = torque + 3 * static_cast<size_t>(j);
+        fJ[0] -= fi[0];
+        fJ[1] -= fi[1];
+        fJ[2] -= fi[2];
+        tJ[0] += tj[0];
+        tJ[1] += tj[1];
+        tJ[2] += tj[2];
     }
     if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fi[0], fi[1], fi[2], del[0], del[1], del[2]);
 }
@@ -533,6 +537,13 @@ void PairGranbond::compute(int eflag, int vflag)
     const int nlocal = atom->nlocal;
     const int newton_pair = force->newton_pair;
     const int ntypes1 = atom->ntypes + 1;
+    // per-atom arrays as blocks of 3 doubles per atom (see apply)
+    double *const f0 = atom->nmax > 0 ? atom->f[0] : nullptr;
+    double *const t0 = atom->nmax > 0 ? atom->torque[0] : nullptr;
+    const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
+    const double *const v0 = atom->nmax > 0 ? atom->v[0] : nullptr;
+    const double *const w0 = atom->nmax > 0 ? atom->omega[0] : nullptr;
+    auto row = [](const double *block, int atom) { return block + 3 * static_cast<size_t>(atom); };
 
     // setup (run/minimize start) evaluates forces without advancing history
     const bool advance = !update->setupflag;
@@ -576,6 +587,7 @@ void PairGranbond::compute(int eflag, int vflag)
         const int i = ilist[ii];
         const int itype = type[i];
         const double radi = radius[i];
+        const double *const xi = row(x0, i);
         const int *jlist = firstneigh[i];
         const int jnum = numneigh[i];
         int *touch = firsttouch[i];
@@ -584,7 +596,8 @@ void PairGranbond::compute(int eflag, int vflag)
         for (int jj = 0; jj < jnum; jj++) {
             const int j = jlist[jj] & NEIGHMASK;
             const int jtype = type[j];
-            const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+            const double *const xj = row(x0, j);
+            const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
             const double radsum = radi + radius[j];
             const bool touching = rsq < radsum * radsum;
@@ -609,11 +622,13 @@ void PairGranbond::compute(int eflag, int vflag)
                 const double rinv = 1.0 / r;
                 const double n[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
                 GbContactOutput cout;
-                if (granbond_voigt_compute_fields_unchecked(voigt_[tp], n, radsum - r, radi, radj,
-                                                            radi * radj / radsum, v[i], v[j], omega[i],
-                                                            omega[j], dt, history, &cout) != GB_STATUS_OK)
+                // R* only enters the rolling cap: no division without rolling
+                const double r_eff = pairs_[tp].voigt.rolling ? radi * radj / radsum : 0.0;
+                if (granbond_voigt_compute_fields_unchecked(voigt_[tp], n, radsum - r, radi, radj, r_eff,
+                                                            row(v0, i), row(v0, j), row(w0, i), row(w0, j), dt,
+                                                            history, &cout) != GB_STATUS_OK)
                     failPair(i, j, "granbond_voigt_compute_fields_unchecked");
-                apply(i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
+                apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
                 continue;
             }
 
@@ -668,9 +683,9 @@ void PairGranbond::compute(int eflag, int vflag)
             }
             touch[jj] = 1;
             if (intact)
-                apply(i, j, bout.force_i, bout.torque_i, bout.torque_j, del, nlocal, newton_pair);
+                apply(f0, t0, i, j, bout.force_i, bout.torque_i, bout.torque_j, del, nlocal, newton_pair);
             else
-                apply(i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
+                apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
         }
     }
 }

@@ -59,8 +59,8 @@ private:
     void freeModels();
     void buildModel(int i, int j);
     [[noreturn]] void failPair(int i, int j, const char *call);
-    void apply(int i, int j, const double *fi, const double *ti, const double *tj, const double *del,
-               int nlocal, int newton_pair);
+    void apply(double *f, double *torque, int i, int j, const double *fi, const double *ti, const double *tj,
+               const double *del, int nlocal, int newton_pair);
     size_t at(int i, int j) const;
 
     std::vector<TypePair> pairs_;
