@@ -561,26 +561,26 @@ void PairGranbond::compute(int eflag, int vflag)
     double scratch[GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN];
     GbPairKinematics k;
 
-    // the frame granbond_contact_frame_pair would build, from the geometry
-    // the loop has (same operations, same bits): n = (x_i - x_j) / r by one
-    // reciprocal, overlap radsum - r, levers R_i and R_j, R* = R_i R_j /
-    // (R_i + R_j). The core still checks the result (non-finite force or
-    // torque).
-    auto buildFrame = [&](GbContactFrame &fr, int i, int j, const double *del, double rsq, double radsum) {
+    // One voigt step of a touching pair, from the geometry the loop has: the
+    // fields of the frame granbond_contact_frame_pair would build (same
+    // operations, same bits: n = (x_i - x_j) / r by one reciprocal, overlap
+    // radsum - r, levers R_i and R_j, R* = R_i R_j / (R_i + R_j), which only
+    // enters the rolling cap and is left out without rolling), handed over
+    // one by one, the velocities and spins where LAMMPS keeps them. The
+    // core reads what was just written one double at a time, so no load
+    // waits for stores in flight, and nothing is copied; it still checks
+    // the result (non-finite force or torque).
+    auto voigtStep = [&](size_t tp, int i, int j, const double *del, double rsq, double radsum, double *state,
+                         GbContactOutput &cout) {
         const double radi = radius[i], radj = radius[j];
         const double r = std::sqrt(rsq);
         const double rinv = 1.0 / r;
-        fr.n[0] = del[0] * rinv;
-        fr.n[1] = del[1] * rinv;
-        fr.n[2] = del[2] * rinv;
-        fr.overlap = radsum - r;
-        fr.lever_i = radi;
-        fr.lever_j = radj;
-        fr.r_eff = radi * radj / radsum;
-        copy3(fr.v_i, v[i]);
-        copy3(fr.v_j, v[j]);
-        copy3(fr.w_i, omega[i]);
-        copy3(fr.w_j, omega[j]);
+        const double n[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
+        const double r_eff = pairs_[tp].voigt.rolling ? radi * radj / radsum : 0.0;
+        if (granbond_voigt_compute_fields_unchecked(voigt_[tp], n, radsum - r, radi, radj, r_eff, row(v0, i),
+                                                    row(v0, j), row(w0, i), row(w0, j), dt, state,
+                                                    &cout) != GB_STATUS_OK)
+            failPair(i, j, "granbond_voigt_compute_fields_unchecked");
     };
 
     for (int ii = 0; ii < inum; ii++) {
@@ -612,22 +612,9 @@ void PairGranbond::compute(int eflag, int vflag)
                 continue;
             }
             if (!bondModel && advance) {     // plain contact, touching
-                // the frame's fields (as buildFrame) handed over one by
-                // one, velocities and spins where LAMMPS keeps them: the core
-                // reads what was just written one double at a time, so no
-                // load waits for stores in flight, and nothing is copied
                 touch[jj] = 1;
-                const double radj = radius[j];
-                const double r = std::sqrt(rsq);
-                const double rinv = 1.0 / r;
-                const double n[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
                 GbContactOutput cout;
-                // R* only enters the rolling cap: no division without rolling
-                const double r_eff = pairs_[tp].voigt.rolling ? radi * radj / radsum : 0.0;
-                if (granbond_voigt_compute_fields_unchecked(voigt_[tp], n, radsum - r, radi, radj, r_eff,
-                                                            row(v0, i), row(v0, j), row(w0, i), row(w0, j), dt,
-                                                            history, &cout) != GB_STATUS_OK)
-                    failPair(i, j, "granbond_voigt_compute_fields_unchecked");
+                voigtStep(tp, i, j, del, rsq, radsum, history, cout);
                 apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
                 continue;
             }
@@ -666,11 +653,7 @@ void PairGranbond::compute(int eflag, int vflag)
             }
             GbContactOutput cout;
             if (touching) {
-                GbContactFrame fr;
-                buildFrame(fr, i, j, del, rsq, radsum);
-                if (granbond_voigt_compute_frame_unchecked(voigt_[tp], &fr, dt, contactState, &cout) !=
-                    GB_STATUS_OK)
-                    failPair(i, j, "granbond_voigt_compute_frame_unchecked");
+                voigtStep(tp, i, j, del, rsq, radsum, contactState, cout);
             } else {
                 for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
             }
