@@ -488,6 +488,21 @@ enum GbStatus granbond_bond_try_create(const struct GbBondModel *model,
                                        int32_t *created);
 
 /**
+ * Whether `granbond_bond_try_create` could create a bond at `step` for a
+ * pair whose state is `state` (`double[GRANBOND_BOND_STATE_LEN]`; only its
+ * status slot is read, not the distance): 1 or 0. For engines that apply
+ * the creation rules to every pair every step: where this says 0 they need
+ * not gather the pair's kinematics for `granbond_bond_try_create`, which
+ * would create nothing. 0 for a null or misaligned `model` or `state`.
+ *
+ * # Safety
+ * Pointers must be null or valid (`model` from `granbond_bond_model_new`).
+ */
+int32_t granbond_bond_may_create(const struct GbBondModel *model,
+                                 const double *state,
+                                 int64_t step);
+
+/**
  * Creates the bond now, skipping the step rule (for bonds an engine forms
  * by its own rule, such as the spheres of a `bonded yes` clump): only if
  * the pair is not bonded and closer than `create_distance`.

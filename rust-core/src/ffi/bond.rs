@@ -5,6 +5,8 @@ use super::guard::{
     call, check_dt, parameter_c_names, reference, reference_mut, slice, slice_mut, vector3,
     write_parameter_name,
 };
+use crate::bond::creation::status_and_step_allow;
+use crate::bond::BondStatus;
 use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
@@ -118,6 +120,38 @@ pub unsafe extern "C" fn granbond_bond_try_create(
         *c = m.try_create(k, step, s)? as i32;
         Ok(())
     })
+}
+
+/// Whether `granbond_bond_try_create` could create a bond at `step` for a
+/// pair whose state is `state` (`double[GRANBOND_BOND_STATE_LEN]`; only its
+/// status slot is read, not the distance): 1 or 0. For engines that apply
+/// the creation rules to every pair every step: where this says 0 they need
+/// not gather the pair's kinematics for `granbond_bond_try_create`, which
+/// would create nothing. 0 for a null or misaligned `model` or `state`.
+///
+/// # Safety
+/// Pointers must be null or valid (`model` from `granbond_bond_model_new`).
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_may_create(
+    model: *const BondModel,
+    state: *const f64,
+    step: i64,
+) -> i32 {
+    let aligned = |p: usize, align: usize| p % align == 0;
+    if model.is_null()
+        || state.is_null()
+        || !aligned(model as usize, std::mem::align_of::<BondModel>())
+        || !aligned(state as usize, std::mem::align_of::<f64>())
+    {
+        return 0;
+    }
+    // no panic can cross the boundary (there is none to expect: a
+    // comparison of a number and the parameters)
+    std::panic::catch_unwind(|| {
+        let status = BondStatus::from_slot(*state);
+        status_and_step_allow(&(*model).params, status, step) as i32
+    })
+    .unwrap_or(0)
 }
 
 /// Creates the bond now, skipping the step rule (for bonds an engine forms

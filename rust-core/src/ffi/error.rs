@@ -5,6 +5,7 @@ use crate::kinematics::KinematicsError;
 use crate::parameters::ParameterError;
 use std::cell::RefCell;
 use std::ffi::{c_char, CString};
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Result of every fallible ABI call.
 #[repr(C)]
@@ -84,9 +85,19 @@ thread_local! {
     static LAST: RefCell<LastError> = RefCell::new(LastError { message: CString::default(), parameter: -1 });
 }
 
+/// Whether any thread has recorded a failure since the library was loaded.
+/// Until one has, every thread's record is clear, and a successful call need
+/// not look at its own: with the core linked into a shared library (the
+/// engine adapters) that look-up is a call into the dynamic loader
+/// (`__tls_get_addr`), about 50 instructions on every call. Set by the
+/// recording thread itself before it writes its record, so it always sees
+/// its own store.
+static ANY_RECORDED: AtomicBool = AtomicBool::new(false);
+
 pub(crate) fn record(function: &str, failure: &Failure) {
     let text = format!("{}: {}", function, failure.message).replace('\0', " ");
     let message = CString::new(text).unwrap_or_default();
+    ANY_RECORDED.store(true, Ordering::Relaxed);
     LAST.with(|l| {
         *l.borrow_mut() = LastError {
             message,
@@ -98,6 +109,9 @@ pub(crate) fn record(function: &str, failure: &Failure) {
 /// Called after every successful call: must not allocate on the hot path,
 /// so an already clear record is left alone.
 pub(crate) fn clear() {
+    if !ANY_RECORDED.load(Ordering::Relaxed) {
+        return;
+    }
     LAST.with(|l| {
         let mut l = l.borrow_mut();
         if !l.message.as_bytes().is_empty() || l.parameter != -1 {

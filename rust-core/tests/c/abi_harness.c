@@ -777,7 +777,30 @@ static int test_bond_create_and_force(void)
     i_dmax = slot_index(GB_STATE_KIND_BOND, "delta_max");
     CHECK(i_status >= 0 && i_r0 >= 0 && i_dmin >= 0 && i_dmax >= 0, "slots status, r0, delta_min, delta_max found");
 
-    /* Creation rules. */
+    /* Creation rules. What granbond_bond_may_create says of a state and a
+     * step: unbonded, only at create_step (create_always is off); intact
+     * never; broken only with create_always; 0 for bad pointers. */
+    memset(state, 0, sizeof state);
+    CHECK(granbond_bond_may_create(m, state, CREATE_STEP) == 1, "may_create: unbonded, at create_step");
+    CHECK(granbond_bond_may_create(m, state, CREATE_STEP - 1) == 0 &&
+              granbond_bond_may_create(m, state, CREATE_STEP + 1) == 0,
+          "may_create: unbonded, not at create_step");
+    state[i_status] = GB_BOND_STATUS_INTACT;
+    CHECK(granbond_bond_may_create(m, state, CREATE_STEP) == 0, "may_create: intact");
+    state[i_status] = GB_BOND_STATUS_BROKEN;
+    CHECK(granbond_bond_may_create(m, state, CREATE_STEP) == 0, "may_create: broken, create_always off");
+    {
+        GbBondParams always = p;
+        GbBondModel *ma = NULL;
+        always.create_always = 1;
+        if (new_bond_model(&always, &ma))
+            return 1;
+        CHECK(granbond_bond_may_create(ma, state, CREATE_STEP + 7) == 1, "may_create: broken, create_always on");
+        granbond_bond_model_free(ma);
+    }
+    CHECK(granbond_bond_may_create(NULL, state, CREATE_STEP) == 0 && granbond_bond_may_create(m, NULL, CREATE_STEP) == 0 &&
+              granbond_bond_may_create(m, (const double *)((const char *)state + 1), CREATE_STEP) == 0,
+          "may_create: 0 for a null model, a null or misaligned state");
     memset(state, 0, sizeof state);
     pair_at(&k, R0_NOMINAL, R_I, R_J);
     EXPECT_OK(granbond_bond_try_create(m, &k, CREATE_STEP - 1, state, &created),
