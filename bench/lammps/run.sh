@@ -7,6 +7,11 @@
 # Prints both and the ratios granular/granbond (> 1: granbond faster).
 #
 #   [REPEAT=5] bench/lammps/run.sh [NRUN]
+#   [REPEAT=3] bench/lammps/run.sh --bonds [NRUN (1000)]
+#       the bond's cost in LAMMPS: the same packing with every touching pair
+#       bonded (bond/nonlinear, full 6 DOF, damping, none breaks) against
+#       voigt alone, both pair granbond; (Pair time with bonds - without) /
+#       (bond computations x steps), ns per bond-step
 #   bench/lammps/run.sh --interleaved [NRUN (300)] [ROUNDS (10)]
 #       both styles taking turns in one lmp-granbond process (interleaved.in),
 #       so that both meet the same machine load: best and median Pair time of
@@ -24,6 +29,7 @@ pair_coeff * * voigt 1e4 1e-3 6e3 1e-3 0.5" > "$out/granbond.in"
 echo "pair_style granular
 pair_coeff * * hooke 1e4 1e-3 damping velocity limit_damping tangential linear_history 6e3 1 0.5" > "$out/granular.in"
 granbond_lmp="${LMP_GRANBOND:-$root/build/bin/lmp-granbond}"
+min() { awk -v a="$1" -v b="$2" 'BEGIN {print (b == "" || a + 0 < b + 0) ? a : b}'; }
 
 if [[ "${1:-}" == "--interleaved" ]]; then
     nrun="${2:-300}"
@@ -47,6 +53,35 @@ if [[ "${1:-}" == "--interleaved" ]]; then
     exit 0
 fi
 
+if [[ "${1:-}" == "--bonds" ]]; then
+    nrun="${2:-1000}"
+    repeat="${REPEAT:-3}"
+    echo "pair_style granbond
+pair_coeff * * voigt 1e4 1e-3 6e3 1e-3 0.5 bond/nonlinear lambda 1.0 k_fn1 1.58e8 ku_fn1 3.16e8 kc_fn1 1.58e7 \
+  k_fn2 5e10 ku_fn2 1e11 kc_fn2 5e9 k_ft 2e10 k_tn 2e10 ku_tn 4e10 kc_tn 2e9 k_tt 2e10 ku_tt 4e10 kc_tt 2e9 \
+  eta_fn 0.1 eta_ft 0.1 eta_tn 0.1 eta_tt 0.1 create_distance 2.05e-3 create_step 1 break distance 2.5e-3" \
+        > "$out/bonded.in"
+    pair_time() {  # model -> Pair time (s); the bond computations of a step go to $out/$1.bonds
+        (cd "$out" && "$granbond_lmp" -in "$here/packing.in" -var dir "$here" -var model "$out/$1.in" \
+            -var nrun "$nrun" -log "$1.log" >/dev/null)
+        awk '/^Pair +\|/ {pair = $3} END {print pair}' "$out/$1.log"
+    }
+    with="" without=""
+    for _ in $(seq "$repeat"); do
+        with=$(min "$(pair_time bonded)" "$with")
+        without=$(min "$(pair_time granbond)" "$without")
+    done
+    # periodic simple-cubic packing, newton off: 3 bonds per sphere, and the
+    # 3 x 20^2 pairs across the periodic boundary are computed from both
+    # sides (local-ghost), as every contact is
+    bonds=$((3 * 8000 + 3 * 400))
+    echo "packing, 8000 spheres, $nrun steps, minimum Pair time of $repeat runs: bonded $with s, voigt only $without s"
+    awk -v a="$with" -v b="$without" -v n="$bonds" -v s="$nrun" 'BEGIN {
+        printf "bond cost in LAMMPS: (%.3f - %.3f) s / (%d bond computations x %d steps) = %.1f ns per bond-step\n",
+               a, b, n, s, (a - b) / (n * s) * 1e9 }'
+    exit 0
+fi
+
 nrun="${1:-3000}"
 repeat="${REPEAT:-1}"
 # prints "loop pair" (seconds) of one run
@@ -55,7 +90,6 @@ times() {
         -log "$2.log" >/dev/null)
     awk '/^Loop time of/ {loop = $4} /^Pair +\|/ {pair = $3} END {print loop, pair}' "$out/$2.log"
 }
-min() { awk -v a="$1" -v b="$2" 'BEGIN {print (b == "" || a + 0 < b + 0) ? a : b}'; }
 gl="" gp="" bl="" bp=""
 for _ in $(seq "$repeat"); do
     read -r l p < <(times "${LMP:-/usr/bin/lmp}" granular)

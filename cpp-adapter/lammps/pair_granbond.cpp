@@ -154,7 +154,8 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     bondLen_(granbond_state_len(GB_STATE_KIND_BOND)),
     sizeHistory_(0),
     anyBond_(false),
-    fixHistory_(nullptr)
+    fixHistory_(nullptr),
+    lastBatch_(0)
 {
     single_enable = 0;
     no_virial_fdotr_compute = 1;
@@ -195,6 +196,7 @@ size_t PairGranbond::at(int i, int j) const
 
 void PairGranbond::freeModels()
 {
+    bondBatches_.clear();   // keyed by model
     for (GbVoigtModel *m : voigt_) granbond_voigt_model_free(m);
     for (GbBondModel *m : bond_) granbond_bond_model_free(m);
     std::fill(voigt_.begin(), voigt_.end(), nullptr);
@@ -583,6 +585,118 @@ void PairGranbond::compute(int eflag, int vflag)
             failPair(i, j, "granbond_voigt_compute_fields_unchecked");
     };
 
+    // the queued bonds of a block (see PendingBond): advanced together, then
+    // their loads (or, for a bond that broke, the contact's) applied
+    for (BondBatch &b : bondBatches_) b.count = 0;
+    auto advanceBonds = [&](BondBatch &b) {
+        const size_t n = b.count;
+        size_t bad;
+        if (b.advance(atom, dt, bad) != GB_STATUS_OK) failPair(b.bonds[bad].i, b.bonds[bad].j,
+                                                               "granbond_bond_compute_indexed");
+        b.count = 0;
+        for (size_t q = 0; q < n; q++) {
+            const PendingBond &p = b.bonds[q];
+            const GbBondOutput &out = b.outputs[q];
+            if (out.status == GB_BOND_STATUS_INTACT)
+                apply(f0, t0, p.i, p.j, out.force_i, out.torque_i, out.torque_j, p.del, nlocal, newton_pair);
+            else if (p.touching)
+                apply(f0, t0, p.i, p.j, p.contact.force_i, p.contact.torque_i, p.contact.torque_j, p.del, nlocal,
+                      newton_pair);
+            else {   // broken and apart: the pair is forgotten, as pair granular's
+                *p.touch = 0;
+                for (int s = 0; s < size; s++) p.history[s] = 0.0;
+            }
+        }
+    };
+    auto pairKinematics = [&](int i, int j) {
+        copy3(k.x_i, x[i]);
+        copy3(k.x_j, x[j]);
+        copy3(k.v_i, v[i]);
+        copy3(k.v_j, v[j]);
+        copy3(k.w_i, omega[i]);
+        copy3(k.w_j, omega[j]);
+        k.radius_i = radius[i];
+        k.radius_j = radius[j];
+    };
+
+    // Every pair but a plain touching contact in a force pass (bonded type
+    // pairs, the setup pass), out of line: the plain contacts' loop stays
+    // small.
+    auto otherPair = [&](int i, int j, int jj, int *touch, double *history, const double *del, double rsq,
+                         double radsum, bool touching, size_t tp, const GbBondModel *bondModel)
+                         __attribute__((noinline)) {
+        double *state = history;
+        if (!advance) {
+            std::memcpy(scratch, history, size * sizeof(double));
+            state = scratch;
+        }
+        double *contactState = state;
+        double *bondState = state + contactLen_;
+
+        // the bond (created when the creation rules allow), as the
+        // LIGGGHTS adapter: it replaces the contact while intact
+        bool intact = false;
+        GbBondOutput bout;
+        if (bondModel) {
+            // the creation rules, where they may create (the core says,
+            // from the status and the step: an intact bond, or any pair
+            // after the creation step, needs no kinematics)
+            if (advance && bondState[0] != GB_BOND_STATUS_INTACT &&
+                granbond_bond_may_create(bondModel, bondState, step)) {
+                pairKinematics(i, j);
+                int32_t created = 0;
+                if (granbond_bond_try_create(bondModel, &k, step, bondState, &created) != GB_STATUS_OK)
+                    failPair(i, j, "granbond_bond_try_create");
+            }
+            if (bondState[0] == GB_BOND_STATUS_INTACT && advance) {
+                // a force pass: the contact steps now (its history moves
+                // on under the bond), the bond is queued
+                BondBatch &b = queueOf(bondBatches_, bondModel, lastBatch_);
+                PendingBond &p = b.push(i, j, bondState);
+                p.i = i;
+                p.j = j;
+                p.touch = &touch[jj];
+                p.history = history;
+                p.touching = touching;
+                copy3(p.del, del);
+                if (touching)
+                    voigtStep(tp, i, j, del, rsq, radsum, contactState, p.contact);
+                else
+                    for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
+                touch[jj] = 1;
+                if (b.full()) advanceBonds(b);
+                return;
+            }
+            if (bondState[0] == GB_BOND_STATUS_INTACT) {   // setup: on the scratch copy
+                pairKinematics(i, j);
+                if (granbond_bond_compute(bondModel, &k, dt, bondState, &bout) != GB_STATUS_OK)
+                    failPair(i, j, "granbond_bond_compute");
+                intact = bout.status == GB_BOND_STATUS_INTACT;
+            }
+        }
+        GbContactOutput cout;
+        if (touching) {
+            voigtStep(tp, i, j, del, rsq, radsum, contactState, cout);
+        } else {
+            for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
+        }
+
+        if (!touching && !intact) {
+            // apart and not bonded: the pair is forgotten, as pair granular's
+            // (a pair not touching since the last step has nothing left)
+            if (touch[jj] || !advance) {
+                touch[jj] = 0;
+                for (int s = 0; s < size; s++) history[s] = 0.0;
+            }
+            return;
+        }
+        touch[jj] = 1;
+        if (intact)
+            apply(f0, t0, i, j, bout.force_i, bout.torque_i, bout.torque_j, del, nlocal, newton_pair);
+        else
+            apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
+    };
+
     for (int ii = 0; ii < inum; ii++) {
         const int i = ilist[ii];
         const int itype = type[i];
@@ -607,8 +721,10 @@ void PairGranbond::compute(int eflag, int vflag)
             double *history = &allhistory[size * jj];
 
             if (!touching && !bondModel) {   // plain contact, apart
-                touch[jj] = 0;
-                for (int s = 0; s < size; s++) history[s] = 0.0;
+                if (touch[jj]) {   // else nothing is left to forget
+                    touch[jj] = 0;
+                    for (int s = 0; s < size; s++) history[s] = 0.0;
+                }
                 continue;
             }
             if (!bondModel && advance) {     // plain contact, touching
@@ -619,58 +735,11 @@ void PairGranbond::compute(int eflag, int vflag)
                 continue;
             }
 
-            double *state = history;
-            if (!advance) {
-                std::memcpy(scratch, history, size * sizeof(double));
-                state = scratch;
-            }
-            double *contactState = state;
-            double *bondState = state + contactLen_;
-
-            // the bond (created when the creation rules allow), as the
-            // LIGGGHTS adapter: it replaces the contact while intact
-            bool intact = false;
-            GbBondOutput bout;
-            if (bondModel) {
-                copy3(k.x_i, x[i]);
-                copy3(k.x_j, x[j]);
-                copy3(k.v_i, v[i]);
-                copy3(k.v_j, v[j]);
-                copy3(k.w_i, omega[i]);
-                copy3(k.w_j, omega[j]);
-                k.radius_i = radi;
-                k.radius_j = radius[j];
-                if (advance) {
-                    int32_t created = 0;
-                    if (granbond_bond_try_create(bondModel, &k, step, bondState, &created) != GB_STATUS_OK)
-                        failPair(i, j, "granbond_bond_try_create");
-                }
-                if (bondState[0] == GB_BOND_STATUS_INTACT) {
-                    if (granbond_bond_compute(bondModel, &k, dt, bondState, &bout) != GB_STATUS_OK)
-                        failPair(i, j, "granbond_bond_compute");
-                    intact = bout.status == GB_BOND_STATUS_INTACT;
-                }
-            }
-            GbContactOutput cout;
-            if (touching) {
-                voigtStep(tp, i, j, del, rsq, radsum, contactState, cout);
-            } else {
-                for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
-            }
-
-            if (!touching && !intact) {
-                // apart and not bonded: the pair is forgotten, as pair granular's
-                touch[jj] = 0;
-                for (int s = 0; s < size; s++) history[s] = 0.0;
-                continue;
-            }
-            touch[jj] = 1;
-            if (intact)
-                apply(f0, t0, i, j, bout.force_i, bout.torque_i, bout.torque_j, del, nlocal, newton_pair);
-            else
-                apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
+            otherPair(i, j, jj, touch, history, del, rsq, radsum, touching, tp, bondModel);
         }
     }
+    for (BondBatch &b : bondBatches_)
+        if (b.count) advanceBonds(b);
 }
 
 // ------------------------------------------------------------ restart

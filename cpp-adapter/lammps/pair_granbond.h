@@ -12,6 +12,7 @@
 
 #include "pair.h"
 #include "granbond.h"
+#include "bond_queue.h"
 
 #include <string>
 #include <vector>
@@ -63,6 +64,22 @@ private:
                const double *del, int nlocal, int newton_pair);
     size_t at(int i, int j) const;
 
+    // An intact bond of a force pass, queued (bond_queue.h): every
+    // kBondBlock bonds of one bond model, and at the end of the pass, one
+    // core call advances them; then the loads go to the atoms. If the bond
+    // breaks, the pair's contact loads of this step (kept here) act
+    // instead, or, apart, the pair is forgotten, as in the per-pair path.
+    static const size_t kBondBlock = 128;
+    struct PendingBond {
+        int i, j;
+        int *touch;
+        double *history;
+        bool touching;
+        double del[3];
+        GbContactOutput contact;
+    };
+    typedef BondQueue<PendingBond, kBondBlock> BondBatch;
+
     std::vector<TypePair> pairs_;
     std::vector<GbVoigtModel *> voigt_;
     std::vector<GbBondModel *> bond_;
@@ -73,6 +90,8 @@ private:
     bool anyBond_;
     LAMMPS_NS::FixNeighHistory *fixHistory_;
     std::string message_;                   // outlives error->one's use
+    std::vector<BondBatch> bondBatches_;    // per bond model; reused from pass to pass
+    size_t lastBatch_;
 };
 
 }

@@ -124,21 +124,6 @@ void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceD
     deferring_ = false;
 }
 
-BondNonlinearCohesion::PendingBatch &BondNonlinearCohesion::findBatch(const GbBondModel *model)
-{
-    for (lastBatch_ = 0; lastBatch_ < batches_.size(); lastBatch_++)
-        if (batches_[lastBatch_].model == model) return batches_[lastBatch_];
-    batches_.push_back(PendingBatch());
-    PendingBatch &b = batches_.back();
-    b.model = model;
-    b.count = 0;
-    b.bonds.resize(kBlock);
-    b.pairs.resize(2 * kBlock);
-    b.states.resize(kBlock);
-    b.outputs.resize(kBlock);
-    return b;
-}
-
 inline void BondNonlinearCohesion::pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const
 {
     // atom->omega, not d.omega_i/j: in surfacesClose those are left over
@@ -152,9 +137,8 @@ inline void BondNonlinearCohesion::pairKinematics(const SurfacesCloseData &d, Gb
 inline void BondNonlinearCohesion::defer(SurfacesCloseData &d, const GbBondModel *model, bool created,
                                   const ForceData *i_forces, const ForceData *j_forces)
 {
-    PendingBatch &b = batchOf(model);
-    const size_t k = b.count++;
-    PendingBond &p = b.bonds[k];
+    PendingBatch &b = queueOf(batches_, model, lastBatch_);
+    PendingBond &p = b.push(d.i, d.j, d.contact_history + offset_);
     p.history = d.contact_history;
     p.contactFlag = d.contact_flags;
     p.i = d.i;
@@ -165,10 +149,7 @@ inline void BondNonlinearCohesion::defer(SurfacesCloseData &d, const GbBondModel
         std::memcpy(p.contact, i_forces, sizeof(ForceData));
         std::memcpy(p.contact + 6, j_forces, sizeof(ForceData));
     }
-    b.pairs[2 * k] = d.i;
-    b.pairs[2 * k + 1] = d.j;
-    b.states[k] = d.contact_history + offset_;
-    if (b.count == kBlock) advanceBatch(b);
+    if (b.full()) advanceBatch(b);
 }
 
 // What the engine's pair loop does with a pair's loads (relaxation factor,
@@ -204,19 +185,11 @@ inline void BondNonlinearCohesion::addToAtoms(int i, int j, const double *fi, co
 void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
 {
     const size_t n = b.count;
+    size_t bad;
+    const GbStatus status = b.advance(atom, update->dt, bad);
     b.count = 0;
-    size_t bad = 0;
-    // x, v and omega are blocks of 3 doubles per atom (memory->create)
-    GbAtomArrays atoms;
-    atoms.x = atom->x[0];
-    atoms.v = atom->v[0];
-    atoms.omega = atom->omega[0];
-    atoms.radius = atom->radius;
-    atoms.count = static_cast<size_t>(atom->nlocal + atom->nghost);
-    if (granbond_bond_compute_indexed(b.model, n, &atoms, b.pairs.data(), update->dt, b.states.data(),
-                                      b.outputs.data(), &bad) != GB_STATUS_OK) {
-        const PendingBond &p = b.bonds[bad < n ? bad : 0];
-        failed(p.i, p.j, "granbond_bond_compute_indexed");
+    if (status != GB_STATUS_OK) {
+        failed(b.bonds[bad].i, b.bonds[bad].j, "granbond_bond_compute_indexed");
         return;
     }
     const int nlocal = atom->nlocal;

@@ -10,6 +10,7 @@
 
 #include "bond_nonlinear_parameters.h"
 #include "bond_book.h"
+#include "bond_queue.h"
 
 #include <vector>
 
@@ -47,13 +48,12 @@ public:
     void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
 
 private:
-    // An intact pair bond of a force pass, queued: when kBlock bonds of one
-    // type are queued (and in endPass for the rest) the core computes them
-    // in one call, several per instruction, and the loads go straight to
-    // the atoms. A block is small enough to stay in cache between queueing
-    // and applying. Until then the bond's pair adds nothing; if it breaks,
-    // the contact model's loads of this step (kept here) act instead, as in
-    // the per-pair path.
+    // An intact pair bond of a force pass, queued (bond_queue.h): when
+    // kBlock bonds of one type are queued (and in endPass for the rest) the
+    // core computes them in one call and the loads go straight to the
+    // atoms. Until then the bond's pair adds nothing; if it breaks, the
+    // contact model's loads of this step (kept here) act instead, as in the
+    // per-pair path.
     static const size_t kBlock = 128;
     struct PendingBond {
         double *history;
@@ -63,17 +63,7 @@ private:
         bool touching;
         double contact[12];   // F_i, T_i, F_j, T_j of the contact model
     };
-    // The pending bonds of one bond type, with the core's inputs and outputs
-    // (kBlock each, `count` used). The core reads positions, velocities and
-    // spins from the engine's atom arrays by the atom indices in `pairs`.
-    struct PendingBatch {
-        const GbBondModel *model;
-        size_t count;
-        std::vector<PendingBond> bonds;
-        std::vector<int32_t> pairs;   // i, j per bond
-        std::vector<double *> states;
-        std::vector<GbBondOutput> outputs;
-    };
+    typedef BondQueue<PendingBond, kBlock> PendingBatch;
 
     // Creates / advances the bond of this pair. Returns true and fills `out`
     // if the bond is intact after the step. Returns false with `deferred`
@@ -86,12 +76,6 @@ private:
     bool deferIntact(SurfacesCloseData &d, const ForceData *i_contact, const ForceData *j_contact);
     void defer(SurfacesCloseData &d, const GbBondModel *model, bool created, const ForceData *i_forces,
                const ForceData *j_forces);
-    PendingBatch &batchOf(const GbBondModel *model)
-    {
-        if (lastBatch_ < batches_.size() && batches_[lastBatch_].model == model) return batches_[lastBatch_];
-        return findBatch(model);
-    }
-    PendingBatch &findBatch(const GbBondModel *model);
     void advanceBatch(PendingBatch &b);
     void addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj, const double *tj);
     bool advancePair(SurfacesCloseData &d, const GbBondModel *model, double *state, bool update,

