@@ -370,7 +370,11 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
     std::memset(&out, 0, sizeof out);
     bool created = false;
     if (deferring_) {
-        // created now (the rules read this pair's data), then queued
+        // created now (the rules read this pair's data), then queued; a
+        // pair the rules cannot bond in this step (the core says, from the
+        // status and the step) needs no kinematics, unless it may be a
+        // `bonded yes` clump's
+        if (!clumpIds_ && !granbond_bond_may_create(model, state, update->ntimestep)) return false;
         GbPairKinematics k;
         pairKinematics(d, k);
         createPair(d, model, k, state, created);
