@@ -477,49 +477,28 @@ mod wide {
         chunk::in_chunks::<F, F64x8, K>(model, kin, dt, states, outs)
     }
 
-    // The entries of the kernel tables, one per instruction set and source
-    // of kinematics.
-    // SAFETY (each): only handed out by `scattered_kernels` for the
-    // instruction set it names, which `BondModel` checks the CPU runs.
-    pub(super) fn scattered_avx2<const F: u32>(
-        model: &BondModel,
-        kin: &[PairKinematics],
-        dt: f64,
-        states: &mut [&mut BondState],
-        outs: &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)> {
-        unsafe { avx2::<F, _>(model, kin, dt, states, outs) }
+    /// The entries of the kernel tables: one per instruction set and
+    /// source of kinematics, the same safe shell around each.
+    macro_rules! entry {
+        ($name:ident, $kernel:ident, $source:ty) => {
+            pub(super) fn $name<const F: u32>(
+                model: &BondModel,
+                kin: &$source,
+                dt: f64,
+                states: &mut [&mut BondState],
+                outs: &mut [BondOutput],
+            ) -> Result<(), (usize, KinematicsError)> {
+                // SAFETY: only handed out by `scattered_kernels` for the
+                // instruction set it names, which `BondModel` checks the
+                // CPU runs.
+                unsafe { $kernel::<F, _>(model, kin, dt, states, outs) }
+            }
+        };
     }
-
-    pub(super) fn indexed_avx2<const F: u32>(
-        model: &BondModel,
-        kin: &IndexedPairs<'_>,
-        dt: f64,
-        states: &mut [&mut BondState],
-        outs: &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)> {
-        unsafe { avx2::<F, _>(model, kin, dt, states, outs) }
-    }
-
-    pub(super) fn scattered_avx512<const F: u32>(
-        model: &BondModel,
-        kin: &[PairKinematics],
-        dt: f64,
-        states: &mut [&mut BondState],
-        outs: &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)> {
-        unsafe { avx512::<F, _>(model, kin, dt, states, outs) }
-    }
-
-    pub(super) fn indexed_avx512<const F: u32>(
-        model: &BondModel,
-        kin: &IndexedPairs<'_>,
-        dt: f64,
-        states: &mut [&mut BondState],
-        outs: &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)> {
-        unsafe { avx512::<F, _>(model, kin, dt, states, outs) }
-    }
+    entry!(scattered_avx2, avx2, [PairKinematics]);
+    entry!(indexed_avx2, avx2, IndexedPairs<'_>);
+    entry!(scattered_avx512, avx512, [PairKinematics]);
+    entry!(indexed_avx512, avx512, IndexedPairs<'_>);
 }
 
 seq!(N in 0..128 {
