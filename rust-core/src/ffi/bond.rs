@@ -6,9 +6,8 @@ use super::guard::{
     write_parameter_name,
 };
 use crate::bond::creation::status_and_step_allow;
-use crate::bond::BondStatus;
 use crate::bond::{
-    BondModel, BondOutput, BondParams, BondState, WallBondState, BOND_STATE_LEN, PARAMETERS,
+    BondModel, BondOutput, BondParams, BondState, BondStatus, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
 };
 pub use crate::kinematics::SphereKinematics;
@@ -137,19 +136,12 @@ pub unsafe extern "C" fn granbond_bond_may_create(
     state: *const f64,
     step: i64,
 ) -> i32 {
-    let aligned = |p: usize, align: usize| p % align == 0;
-    if model.is_null()
-        || state.is_null()
-        || !aligned(model as usize, std::mem::align_of::<BondModel>())
-        || !aligned(state as usize, std::mem::align_of::<f64>())
-    {
-        return 0;
-    }
-    // no panic can cross the boundary (there is none to expect: a
-    // comparison of a number and the parameters)
-    std::panic::catch_unwind(|| {
-        let status = BondStatus::from_slot(*state);
-        status_and_step_allow(&(*model).params, status, step) as i32
+    // the pointer checks every entry uses; no error record (a query, not a
+    // call that fails), and no panic can cross the boundary (there is none
+    // to expect: a comparison of a number and the parameters)
+    std::panic::catch_unwind(|| match (reference(model, "model"), reference(state, "state")) {
+        (Ok(m), Ok(&status)) => status_and_step_allow(&m.params, BondStatus::from_slot(status), step) as i32,
+        _ => 0,
     })
     .unwrap_or(0)
 }
