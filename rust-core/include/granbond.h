@@ -8,7 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define GRANBOND_BOND_STATE_LEN 15
+#define GRANBOND_BOND_STATE_LEN 19
 
 /**
  * The recommended step as a fraction of [`BondModel::critical_timestep`]
@@ -29,7 +29,14 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 3
+#define GRANBOND_ABI_VERSION 4
+
+/**
+ * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
+ * slot is added, removed or changes meaning, so that engines can refuse
+ * restart files written with another layout instead of misreading them.
+ */
+#define GRANBOND_STATE_LAYOUT_VERSION 2
 
 /**
  * Lifecycle of a pair's bond, stored as a number in slot 0.

@@ -30,7 +30,10 @@ fn loaded_pair() -> (PairKinematics, BondState) {
     state.twist_angle = [1e-4, 0.0, 0.0];
     state.bend_angle = [0.0, -2e-4, 1e-4];
     state.twist_max = 3e-4;
-    state.bend_max = 5e-4;
+    state.twist_min = -1e-4;
+    // Leading side across the bend, a smaller extreme on the opposite side.
+    state.bend_history = [0.0, 4e-4, 3e-4];
+    state.bend_opposite = 1e-4;
     (kin, state)
 }
 

@@ -9,10 +9,10 @@ use granbond::bond::damping::{scaled_units, unit};
 use granbond::bond::hysteresis::Loop;
 use granbond::bond::kernel::{BEND, TWIST};
 use granbond::bond::lanes::{div2, norms, sqrt2};
-use granbond::bond::twist_bend::{restoring_torque, restoring_torques};
+use granbond::bond::twist_bend::{BendHistory, TorqueLaw, TwistHistory};
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState};
 use granbond::kinematics::PairKinematics;
-use granbond::vector::Vec3;
+use granbond::vector::{tangential_part, Vec3};
 
 struct Rng(u64);
 
@@ -66,26 +66,54 @@ fn two_lane_roots_and_quotients_are_the_scalar_ones() {
 }
 
 #[test]
-fn paired_restoring_torques_are_the_single_ones() {
+fn torque_magnitudes_from_the_laws_are_the_norms_of_the_torques() {
+    // |h| * moment replaces the norm of the torque (no square root) in the
+    // stresses and the damping: equal up to a few roundings.
     let mut rng = Rng(2);
-    let twist = Loop::new(5e12, 1.5e13, 5e11);
-    let bend = Loop::new(4e12, 4e12, 0.0);
-    for _ in 0..20_000 {
-        let (ta, tb) = (rng.vec(), rng.vec());
-        let (ma, mb) = (rng.value().abs(), rng.value().abs());
-        let (ja, jb) = (rng.value().abs(), rng.value().abs());
-        let ((pa, qa, na), (pb, qb, nb)) = restoring_torques((ta, ma, &twist, ja), (tb, mb, &bend, jb));
-        let (sa, ra, ma_) = restoring_torque(ta, ma, &twist, ja);
-        let (sb, rb, mb_) = restoring_torque(tb, mb, &bend, jb);
-        assert!(same(pa, sa) && same(pb, sb), "{ta:?} {tb:?}");
-        assert_eq!((qa.to_bits(), qb.to_bits()), (ra.to_bits(), rb.to_bits()));
-        assert_eq!((na.to_bits(), nb.to_bits()), (ma_.to_bits(), mb_.to_bits()));
-        // The magnitude |h| * moment replaces the norm of the torque (no
-        // square root): equal up to a few roundings.
-        for (t, m) in [(pa, na), (pb, nb)] {
-            let norm = t.norm();
-            if norm.is_finite() {
-                assert!((norm - m).abs() <= 1e-14 * norm.max(m), "{norm} vs {m}");
+    for history_reset in [false, true] {
+        let twist = TorqueLaw {
+            hysteresis: Loop::new(5e12, 1.5e13, 5e11),
+            history_reset,
+        };
+        let bend = TorqueLaw {
+            hysteresis: Loop::new(4e12, 8e12, 1e12),
+            history_reset,
+        };
+        for _ in 0..20_000 {
+            let n = rng.vec();
+            if !(n.norm() > 0.0 && n.norm().is_finite()) {
+                continue;
+            }
+            let n = n * (1.0 / n.norm());
+            let (ta, tb) = (n * rng.value(), tangential_part(rng.vec(), n));
+            let moment = rng.value().abs();
+            let (a, _) = twist.twist(
+                ta,
+                n,
+                TwistHistory {
+                    max: rng.value().abs(),
+                    min: -rng.value().abs(),
+                },
+                moment,
+            );
+            let (b, _) = bend.bend(
+                tb,
+                n,
+                BendHistory {
+                    leading: rng.vec(),
+                    opposite: rng.value().abs(),
+                },
+                moment,
+            );
+            for t in [a, b] {
+                let norm = t.torque.norm();
+                if norm.is_finite() {
+                    assert!(
+                        (norm - t.magnitude).abs() <= 1e-14 * norm.max(t.magnitude),
+                        "{norm} vs {}",
+                        t.magnitude
+                    );
+                }
             }
         }
     }
@@ -190,8 +218,13 @@ fn paired_twist_and_bend_states_match_each_alone() {
         bend_only.step(&kin, 1e-6, &mut sb, &mut out).unwrap();
         assert_eq!(s2.twist_angle.map(f64::to_bits), st.twist_angle.map(f64::to_bits));
         assert_eq!(s2.twist_max.to_bits(), st.twist_max.to_bits());
+        assert_eq!(s2.twist_min.to_bits(), st.twist_min.to_bits());
         assert_eq!(s2.bend_angle.map(f64::to_bits), sb.bend_angle.map(f64::to_bits));
-        assert_eq!(s2.bend_max.to_bits(), sb.bend_max.to_bits());
+        assert_eq!(
+            s2.bend_history.map(f64::to_bits),
+            sb.bend_history.map(f64::to_bits)
+        );
+        assert_eq!(s2.bend_opposite.to_bits(), sb.bend_opposite.to_bits());
         assert_eq!(s2.shear_force.map(f64::to_bits), st.shear_force.map(f64::to_bits));
     }
 }

@@ -14,9 +14,8 @@
 //! `cargo run --release --example study` measures the same quantities over
 //! the whole range `1e-3 .. 1 dt_c` (docs/speed-accuracy.md).
 
-use granbond::bond::hysteresis::Loop;
 use granbond::bond::section::section;
-use granbond::bond::twist_bend::restoring_torque;
+use granbond::bond::twist_bend::{BendHistory, TwistHistory};
 use granbond::bond::{BondModel, BondParams, BondState};
 use granbond::scene::reference::*;
 use granbond::vector::Vec3;
@@ -254,15 +253,29 @@ fn elastic_energy_is_the_integral_of_each_law() {
     let slip = 1e-7;
     let shear = integral(|s| p.k_ft * sec.area * s, slip, 1000);
     let theta = 2e-3;
-    let axis = Vec3::new(0.3, -0.4, 0.866);
-    let torque = |law: &Loop, moment: f64| {
-        integral(
-            |t| restoring_torque(axis * t, t, law, moment).0.norm() / axis.norm(),
-            theta,
-            1000,
-        )
-    };
-    let (twist, bend) = (torque(&m.twist, sec.polar), torque(&m.bend, sec.inertia));
+    // Virgin loading (fresh history) along an oblique axis, across it for
+    // bending.
+    let n = Vec3::new(0.3, -0.4, 0.866) * (1.0 / Vec3::new(0.3, -0.4, 0.866).norm());
+    let across = Vec3::new(0.4, 0.3, 0.0) * (1.0 / 0.5);
+    let twist = integral(
+        |t| {
+            let fresh = TwistHistory { max: 0.0, min: 0.0 };
+            m.twist.twist(n * t, n, fresh, sec.polar).0.torque.norm()
+        },
+        theta,
+        1000,
+    );
+    let bend = integral(
+        |t| {
+            let fresh = BendHistory {
+                leading: Vec3::zeros(),
+                opposite: 0.0,
+            };
+            m.bend.bend(across * t, n, fresh, sec.inertia).0.torque.norm()
+        },
+        theta,
+        1000,
+    );
     let state = BondState {
         shear_force: [p.k_ft * sec.area * slip, 0.0, 0.0],
         twist_angle: [theta, 0.0, 0.0],

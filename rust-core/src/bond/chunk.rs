@@ -25,6 +25,7 @@ use std::ops::Range;
 use {
     super::kernel::{advance, History, Motion},
     super::state::BondStatus,
+    super::twist_bend::{BendHistory, TwistHistory},
     crate::kinematics::{axis, separated, usable},
     crate::real::packed::Pack,
     crate::vector::{Vector, V3},
@@ -135,8 +136,14 @@ fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized>(
         shear_force: gather3(states, |s| s.shear_force),
         twist_angle: gather3(states, |s| s.twist_angle),
         bend_angle: gather3(states, |s| s.bend_angle),
-        twist_max: gather(states, |s| s.twist_max),
-        bend_max: gather(states, |s| s.bend_max),
+        twist: TwistHistory {
+            max: gather(states, |s| s.twist_max),
+            min: gather(states, |s| s.twist_min),
+        },
+        bend: BendHistory {
+            leading: gather3(states, |s| s.bend_history),
+            opposite: gather(states, |s| s.bend_opposite),
+        },
     };
     let loads = advance::<F, P, V3<P>>(model, &motion, axis(d, r2), P::splat(dt), &mut h);
 
@@ -151,8 +158,10 @@ fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized>(
     scatter3(states, h.shear_force, |s| &mut s.shear_force);
     scatter3(states, h.twist_angle, |s| &mut s.twist_angle);
     scatter3(states, h.bend_angle, |s| &mut s.bend_angle);
-    scatter(states, h.twist_max, |s, x| s.twist_max = x);
-    scatter(states, h.bend_max, |s, x| s.bend_max = x);
+    scatter(states, h.twist.max, |s, x| s.twist_max = x);
+    scatter(states, h.twist.min, |s, x| s.twist_min = x);
+    scatter3(states, h.bend.leading, |s| &mut s.bend_history);
+    scatter(states, h.bend.opposite, |s, x| s.bend_opposite = x);
     scatter3(outs, loads.force_i, |o| &mut o.force_i);
     scatter3(outs, loads.torque_i, |o| &mut o.torque_i);
     scatter3(outs, loads.torque_j, |o| &mut o.torque_j);

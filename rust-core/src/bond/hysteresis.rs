@@ -1,8 +1,9 @@
 //! The three-branch hysteresis loop shared by every bond law.
 //!
 //! In terms of a non-negative loading measure `x` with history maximum
-//! `x_max >= x` (compression: `s(delta)`; tension: `-delta`; twisting and
-//! bending: `|theta|`), spec eq. 6 and its torque analogues all read
+//! `x_max >= x` (compression: `s(delta)`; tension: `-delta`; each side of
+//! the twisting and bending laws: the angle on that side), seed eq. 6 and
+//! its torque analogues all read
 //!
 //! ```text
 //! h(x) = k x                        x >= x_max            (virgin loading)
@@ -58,6 +59,21 @@ impl Loop {
     pub fn max_slope(&self) -> f64 {
         self.k.max(self.ku).max(self.kc)
     }
+}
+
+/// The history extremes of a signed measure `x` after a step, updated
+/// before the law so `min <= x <= max` (`max >= 0 >= min` when they start
+/// there). With `reset` (the reference code's rule) being on one side
+/// forgets the other side's extreme.
+#[inline(always)]
+pub fn update_extremes<R: Real>(x: R, max: R, min: R, reset: bool) -> (R, R) {
+    let (mut hi, mut lo) = (max, min);
+    if reset {
+        let zero = R::splat(0.0);
+        hi = select(x.lt(zero), zero, hi);
+        lo = select(x.gt(zero), zero, lo);
+    }
+    (hi.max(x), lo.min(x))
 }
 
 /// `if cond { a } else { b }` for two values that are already computed (so

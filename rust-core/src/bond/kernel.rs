@@ -10,9 +10,7 @@ use super::model::BondModel;
 use super::section::{lever_arms_scaled, section};
 use super::shear::update_shear_force;
 use super::state::{BondOutput, BondState, BondStatus};
-use super::twist_bend::{
-    advance_bend, advance_twist, restoring_torque, restoring_torques, split_relative_spin,
-};
+use super::twist_bend::{advance_bend, advance_twist, split_relative_spin, BendHistory, TwistHistory};
 use crate::kinematics::{centre_line, slip_velocity, CentreLine, KinematicsError, PairKinematics};
 use crate::pair_source::IndexedPairs;
 use crate::real::Real;
@@ -82,8 +80,8 @@ pub(crate) struct History<R, V> {
     pub shear_force: V,
     pub twist_angle: V,
     pub bend_angle: V,
-    pub twist_max: R,
-    pub bend_max: R,
+    pub twist: TwistHistory<R>,
+    pub bend: BendHistory<R, V>,
 }
 
 impl<R: Real, V: Vector<R>> History<R, V> {
@@ -96,8 +94,14 @@ impl<R: Real, V: Vector<R>> History<R, V> {
             shear_force: V::select(m, a.shear_force, b.shear_force),
             twist_angle: V::select(m, a.twist_angle, b.twist_angle),
             bend_angle: V::select(m, a.bend_angle, b.bend_angle),
-            twist_max: R::select(m, a.twist_max, b.twist_max),
-            bend_max: R::select(m, a.bend_max, b.bend_max),
+            twist: TwistHistory {
+                max: R::select(m, a.twist.max, b.twist.max),
+                min: R::select(m, a.twist.min, b.twist.min),
+            },
+            bend: BendHistory {
+                leading: V::select(m, a.bend.leading, b.bend.leading),
+                opposite: R::select(m, a.bend.opposite, b.bend.opposite),
+            },
         }
     }
 }
@@ -149,8 +153,14 @@ pub fn bond_step<const F: u32>(
         shear_force: v3(state.shear_force),
         twist_angle: v3(state.twist_angle),
         bend_angle: v3(state.bend_angle),
-        twist_max: state.twist_max,
-        bend_max: state.bend_max,
+        twist: TwistHistory {
+            max: state.twist_max,
+            min: state.twist_min,
+        },
+        bend: BendHistory {
+            leading: v3(state.bend_history),
+            opposite: state.bend_opposite,
+        },
     };
     let loads = advance::<F, f64, Vec3>(model, &motion, line, dt, &mut history);
     state.delta_max = history.delta_max;
@@ -158,8 +168,10 @@ pub fn bond_step<const F: u32>(
     state.shear_force = history.shear_force.into();
     state.twist_angle = history.twist_angle.into();
     state.bend_angle = history.bend_angle.into();
-    state.twist_max = history.twist_max;
-    state.bend_max = history.bend_max;
+    state.twist_max = history.twist.max;
+    state.twist_min = history.twist.min;
+    state.bend_history = history.bend.leading.into();
+    state.bend_opposite = history.bend.opposite;
     out.delta = loads.delta;
     out.normal_force = loads.normal_force;
     out.sigma = loads.sigma;
@@ -255,33 +267,19 @@ pub(crate) fn advance<const F: u32, R: Real, V: Vector<R>>(
     let (mut twist_torque, mut bend_torque) = (V::zeros(), V::zeros());
     // |torque| = |h| * moment, from the laws (no square roots).
     let (mut twist_magnitude, mut bend_magnitude) = (zero, zero);
-    if twist || bend {
-        if twist && bend {
-            let theta_t = advance_twist(h.twist_angle, w_along, n, dt);
-            let theta_b = advance_bend(h.bend_angle, w_across, n, dt);
-            let ((t, tm, ta), (b, bm, ba)) = restoring_torques(
-                (theta_t, h.twist_max, &model.twist, sec.polar),
-                (theta_b, h.bend_max, &model.bend, sec.inertia),
-            );
-            h.twist_angle = theta_t;
-            h.twist_max = tm;
-            (twist_torque, twist_magnitude) = (t, ta);
-            h.bend_angle = theta_b;
-            h.bend_max = bm;
-            (bend_torque, bend_magnitude) = (b, ba);
-        } else if twist {
-            let theta = advance_twist(h.twist_angle, w_along, n, dt);
-            let (t, m, a) = restoring_torque(theta, h.twist_max, &model.twist, sec.polar);
-            h.twist_angle = theta;
-            h.twist_max = m;
-            (twist_torque, twist_magnitude) = (t, a);
-        } else {
-            let theta = advance_bend(h.bend_angle, w_across, n, dt);
-            let (t, m, a) = restoring_torque(theta, h.bend_max, &model.bend, sec.inertia);
-            h.bend_angle = theta;
-            h.bend_max = m;
-            (bend_torque, bend_magnitude) = (t, a);
-        }
+    if twist {
+        let theta = advance_twist(h.twist_angle, w_along, n, dt);
+        let (t, history) = model.twist.twist(theta, n, h.twist, sec.polar);
+        h.twist_angle = theta;
+        h.twist = history;
+        (twist_torque, twist_magnitude) = (t.torque, t.magnitude);
+    }
+    if bend {
+        let theta = advance_bend(h.bend_angle, w_across, n, dt);
+        let (t, history) = model.bend.bend(theta, n, h.bend, sec.inertia);
+        h.bend_angle = theta;
+        h.bend = history;
+        (bend_torque, bend_magnitude) = (t.torque, t.magnitude);
     }
     // Lanes broken by distance keep their history (a scalar bond returned
     // above; for it `gone` is false here and this vanishes).

@@ -6,13 +6,14 @@ use super::hysteresis::Loop;
 use super::kernel::{self, BatchKernel, Kernel, ScatteredKernels, Simd};
 use super::normal_law::NormalLaw;
 use super::params::{BondParams, ParameterError};
+use super::twist_bend::TorqueLaw;
 
 #[derive(Clone, Debug)]
 pub struct BondModel {
     pub params: BondParams,
     pub normal: NormalLaw,
-    pub twist: Loop,
-    pub bend: Loop,
+    pub twist: TorqueLaw,
+    pub bend: TorqueLaw,
     pub stress_break: bool,
     pub limits: StressLimits,
     /// Bits of [`kernel`] (`TENSION`, `SHEAR`, ...) actually compiled in.
@@ -57,8 +58,14 @@ impl BondModel {
                 p.compression_linear_below,
                 on(p.history_reset),
             ),
-            twist: Loop::new(p.k_tn, p.ku_tn, p.kc_tn),
-            bend: Loop::new(p.k_tt, p.ku_tt, p.kc_tt),
+            twist: TorqueLaw {
+                hysteresis: Loop::new(p.k_tn, p.ku_tn, p.kc_tn),
+                history_reset: on(p.history_reset),
+            },
+            bend: TorqueLaw {
+                hysteresis: Loop::new(p.k_tt, p.ku_tt, p.kc_tt),
+                history_reset: on(p.history_reset),
+            },
             stress_break: on(p.stress_break),
             limits: StressLimits {
                 max_sigma: p.max_sigma,

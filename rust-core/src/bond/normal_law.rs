@@ -1,7 +1,7 @@
 //! Normal force of the bond: square-root law in compression, linear in
 //! tension, six branches with load history (spec eq. 4-6).
 
-use super::hysteresis::{select, Loop};
+use super::hysteresis::{select, update_extremes, Loop};
 use crate::real::Real;
 
 /// The six-branch normal law of one bond type.
@@ -49,18 +49,11 @@ impl NormalLaw {
         )
     }
 
-    /// Spec eq. 4, applied before the law so `delta_min <= delta <= delta_max`.
-    /// With `history_reset` (the reference code's behaviour) a sign change of
-    /// `delta` forgets the extreme of the other sign.
+    /// Seed eq. 4, applied before the law so `delta_min <= delta <= delta_max`
+    /// (see [`update_extremes`]).
     #[inline(always)]
     pub fn update_history<R: Real>(&self, delta: R, delta_max: R, delta_min: R) -> (R, R) {
-        let (mut hi, mut lo) = (delta_max, delta_min);
-        let zero = R::splat(0.0);
-        if self.history_reset {
-            hi = select(delta.lt(zero), zero, hi);
-            lo = select(delta.gt(zero), zero, lo);
-        }
-        (hi.max(delta), lo.min(delta))
+        update_extremes(delta, delta_max, delta_min, self.history_reset)
     }
 
     /// Normal stress `Fn / A` (positive = repulsive) for an up-to-date history.

@@ -41,11 +41,18 @@ pub struct BondState {
     pub twist_angle: [f64; 3],
     /// Accumulated relative rotation across the axis (normal to `n`).
     pub bend_angle: [f64; 3],
+    /// Largest signed twisting angle `phi = theta_n . n` reached (`>= 0`).
     pub twist_max: f64,
-    pub bend_max: f64,
+    /// Smallest signed twisting angle reached (`<= 0`).
+    pub twist_min: f64,
+    /// `beta`: the bending angle of the extreme reached on the leading side
+    /// (in the tangent plane; zero until the bond bends).
+    pub bend_history: [f64; 3],
+    /// `beta_opp`: the extreme `|theta_t|` reached on the opposite side.
+    pub bend_opposite: f64,
 }
 
-pub const BOND_STATE_LEN: usize = 15;
+pub const BOND_STATE_LEN: usize = 19;
 
 /// Names and swap rules of the slots of [`BondState`], in memory order.
 pub const BOND_SLOTS: [StateSlot; BOND_STATE_LEN] = [
@@ -63,7 +70,11 @@ pub const BOND_SLOTS: [StateSlot; BOND_STATE_LEN] = [
     slot("bend_angle_y", true),
     slot("bend_angle_z", true),
     slot("twist_max", false),
-    slot("bend_max", false),
+    slot("twist_min", false),
+    slot("bend_history_x", true),
+    slot("bend_history_y", true),
+    slot("bend_history_z", true),
+    slot("bend_opposite", false),
 ];
 
 const _: () = assert!(std::mem::size_of::<BondState>() == BOND_STATE_LEN * 8);

@@ -68,10 +68,18 @@ impl BondModel {
             dt = dt.min(oscillator_limit(1.0 / mobility, p.k_ft * sec.area, 0.0));
         }
         if f & TWIST != 0 {
-            dt = dt.min(oscillator_limit(i_eff, self.twist.max_slope() * sec.polar, 0.0));
+            dt = dt.min(oscillator_limit(
+                i_eff,
+                self.twist.hysteresis.max_slope() * sec.polar,
+                0.0,
+            ));
         }
         if f & BEND != 0 {
-            dt = dt.min(oscillator_limit(i_eff, self.bend.max_slope() * sec.inertia, 0.0));
+            dt = dt.min(oscillator_limit(
+                i_eff,
+                self.bend.hysteresis.max_slope() * sec.inertia,
+                0.0,
+            ));
         }
         dt
     }

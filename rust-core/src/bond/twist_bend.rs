@@ -1,8 +1,18 @@
-//! Twisting and bending torques (spec eq. 9-10): accumulated relative
-//! rotations about and across the bond axis, with the hysteresis loop applied
-//! to their magnitudes so the torque does not depend on the coordinate axes.
+//! Twisting and bending torques (docs/models/bond-nonlinear.md, "Twisting
+//! and bending"): accumulated relative rotations about and across the bond
+//! axis, each with a signed, two-sided hysteresis loop, every side with its
+//! own history extreme (as `delta_max` / `delta_min` for the normal force).
+//!
+//! Twisting is one-dimensional: the signed angle `phi = theta_n . n` with
+//! `phi_max >= 0` and `phi_min <= 0`. Bending happens in a plane that can
+//! turn, so its sides are defined by the history itself: the vector `beta`
+//! is the extreme reached on the *leading* side (its direction says which
+//! side that is), the scalar `beta_opp` the extreme reached on the
+//! *opposite* side. Only dot products and lengths enter, so the law does not
+//! depend on the coordinate axes; for bending in a fixed plane it is the
+//! signed twisting law along that plane's axis.
 
-use super::hysteresis::Loop;
+use super::hysteresis::{select, update_extremes, Loop};
 use crate::real::Real;
 use crate::vector::{tangential_part, Vector};
 
@@ -28,63 +38,108 @@ pub fn advance_bend<R: Real, V: Vector<R>>(theta: V, w_across: V, n: V, dt: R) -
     tangential_part(theta, n) + w_across * dt
 }
 
-/// Torque on `i` for the angle `theta` with history maximum `theta_max`
-/// (already updated): `-h(|theta|) * moment * theta/|theta|`. Returns the
-/// torque, the new history maximum and the torque's magnitude
-/// `|h| * moment` (its norm up to rounding, without a square root; 0 for a
-/// zero angle).
-#[inline(always)]
-pub fn restoring_torque<R: Real, V: Vector<R>>(theta: V, theta_max: R, law: &Loop, moment: R) -> (V, R, R) {
-    let magnitude = theta.norm();
-    torque_of(
-        theta,
-        magnitude,
-        R::splat(1.0) / magnitude,
-        theta_max,
-        law,
-        moment,
-    )
+/// Hysteresis loop of one torque and its history rule.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TorqueLaw {
+    pub hysteresis: Loop,
+    /// The reference code's rule: being on one side forgets the other
+    /// side's extreme. Off (the seed): the extremes last the bond's life.
+    pub history_reset: bool,
 }
 
-/// [`restoring_torque`] given `|theta|` and its reciprocal.
-#[inline(always)]
-fn torque_of<R: Real, V: Vector<R>>(
-    theta: V,
-    magnitude: R,
-    inv: R,
-    theta_max: R,
-    law: &Loop,
-    moment: R,
-) -> (V, R, R) {
-    let new_max = theta_max.max(magnitude);
-    let h = law.value(magnitude, new_max);
-    // A zero angle has no direction: no torque (the selected-away side is
-    // NaN there).
-    let on = magnitude.gt(R::splat(0.0));
-    (
-        V::select(on, theta * (-h * moment * inv), V::zeros()),
-        new_max,
-        R::select(on, h.abs() * moment, R::splat(0.0)),
-    )
+/// A torque on sphere `i`, with `|torque|` known from the law (no square
+/// root needed for the stresses and the damping).
+#[derive(Clone, Copy, Debug)]
+pub struct Torque<R, V> {
+    pub torque: V,
+    pub magnitude: R,
 }
 
-/// [`restoring_torque`] of two angles at once (twisting and bending): their
-/// norms and reciprocals share instructions (see [`super::lanes`]); each
-/// result is the same, bit for bit. Arguments per angle: `(theta, theta_max,
-/// law, moment)`.
-#[inline(always)]
-#[allow(clippy::type_complexity)]
-pub fn restoring_torques<R: Real, V: Vector<R>>(
-    a: (V, R, &Loop, R),
-    b: (V, R, &Loop, R),
-) -> ((V, R, R), (V, R, R)) {
-    let (mag_a, mag_b) = R::sqrt2(a.0.norm_squared(), b.0.norm_squared());
-    // The reciprocals depend only on the norms, so the division overlaps
-    // with the hysteresis laws.
-    let one = R::splat(1.0);
-    let (inv_a, inv_b) = R::div2(one, mag_a, one, mag_b);
-    (
-        torque_of(a.0, mag_a, inv_a, a.1, a.2, a.3),
-        torque_of(b.0, mag_b, inv_b, b.1, b.2, b.3),
-    )
+/// The twisting history after a step: `phi_max >= 0`, `phi_min <= 0`.
+#[derive(Clone, Copy, Debug)]
+pub struct TwistHistory<R> {
+    pub max: R,
+    pub min: R,
+}
+
+/// The bending history after a step: `beta` (leading side, in the tangent
+/// plane) and `beta_opp >= 0` (opposite side).
+#[derive(Clone, Copy, Debug)]
+pub struct BendHistory<R, V> {
+    pub leading: V,
+    pub opposite: R,
+}
+
+impl TorqueLaw {
+    /// Twisting torque on `i` for the (advanced) angle `theta_n`:
+    /// `-f(phi) J n` with `f(phi) = h(phi; phi_max)` for `phi >= 0` and
+    /// `-h(-phi; -phi_min)` below. The history is updated before the law.
+    #[inline(always)]
+    pub fn twist<R: Real, V: Vector<R>>(
+        &self,
+        theta_n: V,
+        n: V,
+        history: TwistHistory<R>,
+        polar: R,
+    ) -> (Torque<R, V>, TwistHistory<R>) {
+        let phi = theta_n.dot(&n);
+        let (max, min) = update_extremes(phi, history.max, history.min, self.history_reset);
+        let positive = phi.ge(R::splat(0.0));
+        let h = self.hysteresis.value(phi.abs(), select(positive, max, -min));
+        let f = select(positive, h, -h);
+        (
+            Torque {
+                torque: n * (-f * polar),
+                magnitude: h.abs() * polar,
+            },
+            TwistHistory { max, min },
+        )
+    }
+
+    /// Bending torque on `i` for the (advanced) angle `theta_t`, with the
+    /// stored history (`beta` is brought into the current tangent plane
+    /// here): `-h(x; x_max) I theta_t / x`, `x = |theta_t|`, where `x_max` is
+    /// the extreme of the side `theta_t` is on (`theta_t . beta >= 0`:
+    /// leading). Zero for a zero angle.
+    #[inline(always)]
+    pub fn bend<R: Real, V: Vector<R>>(
+        &self,
+        theta_t: V,
+        n: V,
+        history: BendHistory<R, V>,
+        inertia: R,
+    ) -> (Torque<R, V>, BendHistory<R, V>) {
+        let zero = R::splat(0.0);
+        let mut beta = tangential_part(history.leading, n);
+        let mut opposite = history.opposite;
+        let (x, mut extreme) = R::sqrt2(theta_t.norm_squared(), beta.norm_squared());
+        let mut leading = theta_t.dot(&beta).ge(zero);
+        if self.history_reset {
+            // Entering the opposite side makes it the leading side, with a
+            // fresh history.
+            beta = V::select(leading, beta, theta_t);
+            extreme = select(leading, extreme, x);
+            opposite = select(leading, opposite, zero);
+            leading = R::mask(true);
+        }
+        let grows = leading & x.gt(extreme);
+        beta = V::select(grows, theta_t, beta);
+        extreme = select(grows, x, extreme);
+        opposite = select(leading, opposite, opposite.max(x));
+        let h = self.hysteresis.value(x, select(leading, extreme, opposite));
+        // A zero angle has no direction: no torque (the selected-away side
+        // is NaN there).
+        let on = x.gt(zero);
+        let torque = theta_t * (-h * inertia / x);
+        (
+            Torque {
+                torque: V::select(on, torque, V::zeros()),
+                magnitude: select(on, h.abs() * inertia, zero),
+            },
+            BendHistory {
+                leading: beta,
+                opposite,
+            },
+        )
+    }
 }

@@ -104,6 +104,7 @@ pub fn rotate_bond_state(q: &Rotation3<f64>, s: &BondState) -> BondState {
         shear_force: rotate(q, s.shear_force),
         twist_angle: rotate(q, s.twist_angle),
         bend_angle: rotate(q, s.bend_angle),
+        bend_history: rotate(q, s.bend_history),
         ..*s
     }
 }

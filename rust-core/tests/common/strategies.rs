@@ -69,10 +69,17 @@ pub fn bonded_pair() -> impl Strategy<Value = (PairKinematics, BondState)> {
         vec3(0.1),
         vec3(50.0),
         vec3(50.0),
-        (vec3(1.0), vec3(1e-3), vec3(1e-3), (0.0f64..1e-5), (-1e-5f64..0.0)),
+        (
+            vec3(1.0),
+            vec3(1e-3),
+            vec3(1e-3),
+            (0.0f64..1e-5),
+            (-1e-5f64..0.0),
+            (-2.0f64..2.0),
+        ),
     )
         .prop_map(
-            |(dir, ri, rj, strain, vi, vj, wi, wj, (ft, tn, tt, dmax, dmin))| {
+            |(dir, ri, rj, strain, vi, vj, wi, wj, (ft, tn, tt, dmax, dmin, side))| {
                 let (ri, rj) = (ri * 1e-3, rj * 1e-3);
                 let n = {
                     let d = v3(dir);
@@ -100,8 +107,14 @@ pub fn bonded_pair() -> impl Strategy<Value = (PairKinematics, BondState)> {
                 s.bend_angle = (v3(tt) - n * v3(tt).dot(&n)).into();
                 s.delta_max = dmax;
                 s.delta_min = dmin;
-                s.twist_max = norm(tn);
-                s.bend_max = norm(tt);
+                // History extremes that include the current angles; the
+                // bend on either side of its leading extreme (`side < 0`:
+                // the opposite side), the extremes beyond or below it.
+                let phi = v3(tn).dot(&n);
+                s.twist_max = phi.max(0.0) + 0.5 * side.abs() * norm(tn);
+                s.twist_min = phi.min(0.0) - 0.5 * side.abs() * norm(tn);
+                s.bend_history = (v3(s.bend_angle) * side).into();
+                s.bend_opposite = (1.0 - side.abs()).abs() * norm(tt);
                 (kin, s)
             },
         )
