@@ -36,6 +36,12 @@ Modes (one ctest each):
       towards the others (tests/lammps/decks/cradle.in): several contacts per
       sphere and step, all normal, so several contacts sum on each sphere;
       positions and velocities equal pair granular's to 1e-9 relative.
+  twist-reversal, bend-reversal, twist-reversal-reset, bend-reversal-reset
+              the prescribed twisting and bending reversals of
+              tests/liggghts/check_bond_motion.py (decks/bond_rotation.in):
+              forces and torques of both spheres against the signed
+              two-sided torque law every step (same checks, same
+              tolerances), history kept or history_reset yes.
   chain       a free chain of 9 bonded spheres (tests/lammps/decks/chain.in),
               each with its own velocity and spin, no damping, 2000 steps:
               its 8 bonds go through the queued path (one
@@ -508,6 +514,23 @@ def check_chain(a, workdir):
         print(f"{label}: bonds loaded up to {fmax:.3g} N")
 
 
+def check_reversal(a, mode, workdir):
+    import check_bond_motion as motion
+    p = dict(motion.PARAMS, **motion.MODES[mode])
+    bond = " ".join(f"{k} {p[k]}" for k in ("lambda", "k_fn1", "ku_fn1", "kc_fn1", "k_fn2", "ku_fn2", "kc_fn2",
+                                            "k_ft", "k_tn", "ku_tn", "kc_tn", "k_tt", "ku_tt", "kc_tt"))
+    reset = "yes" if p["hr"] == "on" else "no"
+    model = write_model(workdir, ["pair_style granbond",
+                                  f"pair_coeff * * {VOIGT} bond/nonlinear {bond} eta_fn 0 eta_ft 0 eta_tn 0 "
+                                  f"eta_tt 0 create_distance 2.2e-3 create_step 1 history_reset {reset} "
+                                  f"{BREAK['distance']}"])
+    run_lammps_ok([a.engine], "bond_rotation.in", workdir,
+                  {k: p[k] for k in ("period", "ax", "ay", "az", "n1")} | {"model": model, "out": "motion.dump"})
+    frames = motion.read_dump(os.path.join(workdir, "motion.dump"))
+    message, worst = motion.verify(frames, mode, p)
+    print(f"{mode}: {message}; worst relative error {worst:.3g}")
+
+
 def run(a):
     mode = a.mode
     workdir = os.path.abspath(a.workdir)
@@ -535,6 +558,8 @@ def run(a):
         check_bpm_beam(a, workdir)
     elif mode == "chain":
         check_chain(a, workdir)
+    elif mode.startswith(("twist-reversal", "bend-reversal")):
+        check_reversal(a, mode, workdir)
     else:
         raise Failure(f"unknown mode {mode}")
 

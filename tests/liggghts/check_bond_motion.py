@@ -25,6 +25,16 @@ rc_i = rc_j = r/2, no damping (eta = 0). Claims (spec bond-nonlinear.md):
   vtr = -(rc_i w_i) x n, so Ft = +k_ft A rc_i |theta_t| y;
   F_2 = Ft, F_1 = -Ft, T_2 = -rc_i n x Ft + Tt, T_1 = -rc_j n x Ft - Tt.
   Exact (the centres do not move).
+- twist-reversal, bend-reversal (and -reset: historyReset on): the twist or
+  the bend reversed through zero to the other side (past the first
+  extreme's size) and back past the first extreme, in three runs
+  (decks/bond_motion_reversal.in); ku and kc of the torque laws differ from
+  k. The torque is the signed two-sided law of the accumulated angle phi:
+  f(phi) = h(phi; phi_max) for phi >= 0, -h(-phi; -phi_min) below, with
+  h(x; x_max) = k x (x >= x_max), ku x + (k - ku) x_max (c x_max <= x),
+  -kc x (below), c = (ku - k)/(ku + kc), the extremes updated before the
+  law; with historyReset on, phi_min is forgotten while phi > 0 and phi_max
+  while phi < 0. Every branch on both sides is visited.
 - cycle (sphere 2 moves along x: compression, unloading through the
   negative-stiffness branches into tension, reloading into compression past
   the first peak): F_2 = Fn(d; dmax, dmin) n with the six-branch law,
@@ -68,12 +78,21 @@ MODES = {
     # 1e-6 m initial amplitude, 2000 steps per period, 1.25 periods
     "cycle": {"motion": "cycle", "acycle": 1e-6, "tcycle": 2e-3, "nrun": 2500},
 }
+# 1000 steps forwards, 2500 back, 3500 forwards (decks/bond_motion_reversal.in)
+TORQUE_LOOPS = {"ku_tn": 8e8, "kc_tn": 2e8, "ku_tt": 6e8, "kc_tt": 1e8}
+for _dof, _axis in (("twist", {"ax": 1.0, "ay": 0.0, "az": 0.0}), ("bend", {"ax": 0.0, "ay": 0.0, "az": 1.0})):
+    for _suffix, _hr in (("", "off"), ("-reset", "on")):
+        MODES[f"{_dof}-reversal{_suffix}"] = {"motion": _dof, "reversal": 1, "period": 100.0, "nrun": 7000, "n1": 1000,
+                                              "hr": _hr, **_axis, **TORQUE_LOOPS}
+LOOP_BRANCHES = ("virgin", "unloading", "reverse")
 BRANCHES = ("virgin tension", "tension unloading", "tension reverse",
             "compression reverse", "compression unloading", "virgin compression")
 
 
 def read_dump(path):
-    """[(step, {id: [x y z fx fy fz tqx tqy tqz wx wy wz]})] from the dump."""
+    """[(step, {id: [x y z fx fy fz tqx tqy tqz wx wy wz]})] from the dump;
+    a step written again by the setup of the next run is kept once (the
+    force pass's frame)."""
     frames = []
     with open(path, encoding="utf-8") as f:
         lines = f.read().split("\n")
@@ -86,7 +105,8 @@ def read_dump(path):
             for line in lines[k + 9:k + 9 + natoms]:
                 v = line.split()
                 atoms[int(v[0])] = [float(c) for c in v[1:]]
-            frames.append((step, atoms))
+            if not frames or step > frames[-1][0]:
+                frames.append((step, atoms))
             k += 9 + natoms
         else:
             k += 1
@@ -182,7 +202,37 @@ def verify_cycle(frames, p):
            f"{dict(zip(BRANCHES, visits))}", worst
 
 
-def expected(mode, p, step, a1, a2, start, r0, spin):
+class SignedLaw:
+    """The signed two-sided torque law of one angle (see the module text)."""
+
+    def __init__(self, k, ku, kc, reset):
+        self.k, self.ku, self.kc, self.reset = k, ku, kc, reset
+        self.max = self.min = 0.0
+
+    def loop(self, x, x_max):
+        c = (self.ku - self.k) / (self.ku + self.kc)
+        if x >= x_max:
+            return 0, self.k * x
+        if x >= c * x_max:
+            return 1, self.ku * x + (self.k - self.ku) * x_max
+        return 2, -self.kc * x
+
+    def value(self, phi):
+        """(side, branch, f(phi)) after updating the history with phi."""
+        if self.reset:
+            if phi > 0:
+                self.min = 0.0
+            if phi < 0:
+                self.max = 0.0
+        self.max, self.min = max(self.max, phi), min(self.min, phi)
+        if phi >= 0:
+            branch, h = self.loop(phi, self.max)
+            return "+", branch, h
+        branch, h = self.loop(-phi, -self.min)
+        return "-", branch, -h
+
+
+def expected(mode, p, step, a1, a2, start, r0, spin, value=None):
     """(F_1, F_2, T_1, T_2) of the closed form at this step; `spin` is the
     accumulated rotation angle of sphere 2 (sum of w dt, steps 1..s)."""
     area, polar, inertia = section(p)
@@ -199,12 +249,15 @@ def expected(mode, p, step, a1, a2, start, r0, spin):
         ft = scale(-p["k_ft"] * area * slip, t)
         f2 = add(scale(fn, n), ft)
         return scale(-1, f2), f2, scale(-rc, cross(n, ft)), scale(-rc, cross(n, ft))
+    # the torque law's value: the signed loop's, or virgin loading
+    bend = p["k_tt"] * spin if value is None else value
+    twist = p["k_tn"] * spin if value is None else value
     if mode == "twist":
-        tn = scale(-p["k_tn"] * polar * spin, n)
+        tn = scale(-twist * polar, n)
         zero = [0.0, 0.0, 0.0]
         return zero, zero, scale(-1, tn), tn
     if mode == "bend":
-        tt = [0.0, 0.0, -p["k_tt"] * inertia * spin]
+        tt = [0.0, 0.0, -bend * inertia]
         ft = [0.0, p["k_ft"] * area * rc * spin, 0.0]
         shear_torque = scale(-rc, cross(n, ft))
         return scale(-1, ft), ft, sub(shear_torque, tt), add(shear_torque, tt)
@@ -224,6 +277,20 @@ def verify(frames, mode, p):
     worst = 0.0
     checked = 0
     names = ("F_1", "F_2", "T_1", "T_2", "(T_1+T_2)/2", "(T_2-T_1)/2")
+    reversal = mode.endswith(("-reversal", "-reversal-reset"))
+    kind = mode.split("-")[0]
+    law = None
+    if reversal:
+        dof = "tn" if kind == "twist" else "tt"
+        law = SignedLaw(p["k_" + dof], p["ku_" + dof], p["kc_" + dof], mode.endswith("-reset"))
+        # the angle crosses zero as a difference of sums of 1e3 steps: near
+        # zero a load is compared against the round-off of that sum (1e-10
+        # of the largest torque, 1.5 x the first extreme, and of its shear
+        # force) instead of its own size
+        moment = section(p)[1 if kind == "twist" else 2]
+        peak_angle = 1.5 * p["n1"] * DT * 2 * math.pi / p["period"]
+        floor = 1e-10 * max(p["k_" + dof], p["ku_" + dof], p["kc_" + dof]) * moment * peak_angle
+    visited = set()
     for step, atoms in frames:
         a1, a2 = atoms[1], atoms[2]
         if step == 0:
@@ -231,14 +298,19 @@ def verify(frames, mode, p):
         if step == 1:
             r0 = norm(sub(a2[0:3], a1[0:3]))
         w = a2[9:12]
-        if mode in ("twist", "bend"):
-            axis = [1.0, 0.0, 0.0] if mode == "twist" else [0.0, 0.0, 1.0]
-            if norm(sub(w, scale(dot(w, axis), axis))) != 0.0 or dot(w, axis) <= 0.0:
+        if kind in ("twist", "bend"):
+            axis = [1.0, 0.0, 0.0] if kind == "twist" else [0.0, 0.0, 1.0]
+            if norm(sub(w, scale(dot(w, axis), axis))) != 0.0 or dot(w, axis) == 0.0 or \
+                    (dot(w, axis) < 0.0 and not reversal):
                 raise Failure(f"step {step}: omega of sphere 2 is {w}, not a spin about {axis}")
             if a1[9:12] != [0.0, 0.0, 0.0]:
                 raise Failure(f"step {step}: the held sphere spins: {a1[9:12]}")
             spin += dot(w, axis) * DT
-        want = expected(mode, p, step, a1, a2, start, r0, spin)
+        value = None
+        if law:
+            side, branch, value = law.value(spin)
+            visited.add((side, LOOP_BRANCHES[branch]))
+        want = expected(kind, p, step, a1, a2, start, r0, spin, value)
         got = (a1[3:6], a2[3:6], a1[6:9], a2[6:9])
         # the halves of the torque sum and difference: the shear couple
         # -rc n x Ft and the bond torque Tn + Tt on their own, so a small
@@ -255,13 +327,21 @@ def verify(frames, mode, p):
                     raise Failure(f"step {step}: {name} = {g}, expected zero (limit {limit:.3g})")
                 continue
             err = max(abs(x - y) for x, y in zip(g, e)) / size
-            worst = max(worst, err)
+            if law:
+                allowed = floor / (rc if name.startswith("F") else 1.0)
+                if size > 1e6 * allowed:
+                    worst = max(worst, err)
+                err = max(0.0, max(abs(x - y) for x, y in zip(g, e)) - allowed) / size
+            else:
+                worst = max(worst, err)
             if err > RELATIVE_TOLERANCE:
                 raise Failure(f"step {step}: {name} = {g!r}, the closed form gives {e!r} "
                               f"(relative error {err:.3g})")
         checked += 1
     if checked < p["nrun"]:
         raise Failure(f"only {checked} steps checked")
+    if law and len(visited) < 6:
+        raise Failure(f"branches visited {sorted(visited)}: the reversal misses a branch of a side")
     last = frames[-1][1]
     return f"closed form matched on {checked} steps (F and T of both spheres), final " \
            f"F_2 {last[2][3:6]}, T_2 {last[2][6:9]}", worst
@@ -274,7 +354,7 @@ def check_run(engine, mode, workdir):
     variables["out"] = "motion.dump"
     run_ok([engine], "bond_motion.in", workdir, variables)
     frames = read_dump(os.path.join(workdir, "motion.dump"))
-    p["nrun"] = variables["nrun"]
+    p.update(variables)
     message, worst = verify_cycle(frames, p) if mode == "cycle" else verify(frames, mode, p)
     print(f"{mode}: {message}; worst relative error {worst:.3g}")
 

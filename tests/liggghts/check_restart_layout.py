@@ -1,0 +1,54 @@
+"""Restart files written with an older bond state layout (15 slots per bond,
+before the two-sided twisting/bending history) are refused, never misread:
+tests/liggghts/data/state_layout_1.restart (the flicked chain, LIGGGHTS) and
+tests/lammps/data/state_layout_1.restart (the wiggled pair, LAMMPS), both
+written by a granbond of that layout. LIGGGHTS refuses a contact history of
+another length itself; pair_style granbond writes its state layout version
+into LAMMPS restart files and refuses a file without it or with another.
+A file this granbond writes reads back (here for LIGGGHTS; the LAMMPS
+restart ctest for LAMMPS).
+
+usage: check_restart_layout.py --engine LIGGGHTS_GRANBOND [--lammps LMP_GRANBOND] --workdir DIR
+"""
+
+import argparse
+import os
+
+from liggghts_run import Failure, judge_refusal, main, run_deck, run_ok
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+EXAMPLE = os.path.join(HERE, "..", "..", "examples", "flicked_chain")
+LAMMPS_DECKS = os.path.join(HERE, "..", "lammps", "decks")
+
+
+def check(engine, lammps, workdir):
+    failures = []
+    rc, text = run_deck([engine], "restart_old_layout.in", os.path.join(workdir, "liggghts"),
+                        {"restart": os.path.join(HERE, "data", "state_layout_1.restart"),
+                         "params": os.path.join(EXAMPLE, "params.in"), "here": EXAMPLE})
+    judge_refusal("LIGGGHTS, older layout", rc, text, "contact history", failures)
+    # the control: the same deck continues a file this granbond wrote
+    fresh = os.path.join(workdir, "liggghts_fresh")
+    run_ok([engine], os.path.join(EXAMPLE, "in.flicked_chain"), fresh,
+           {"params": os.path.join(EXAMPLE, "params.in"), "here": EXAMPLE, "nrun": 100, "restart": 1})
+    run_ok([engine], "restart_old_layout.in", fresh,
+           {"restart": os.path.join(fresh, "chain.restart"), "params": os.path.join(EXAMPLE, "params.in"),
+            "here": EXAMPLE})
+    print("ok: LIGGGHTS continues a restart file of this layout")
+    if lammps:
+        rc, text = run_deck([lammps], os.path.join(LAMMPS_DECKS, "restart_continue.in"),
+                            os.path.join(workdir, "lammps"),
+                            {"restart": os.path.join(HERE, "..", "lammps", "data", "state_layout_1.restart"),
+                             "motion": "wiggle", "out": "second.txt", "nrun": 10})
+        judge_refusal("LAMMPS, older layout", rc, text, "older layout", failures)
+    if failures:
+        raise Failure("; ".join(failures))
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--engine", required=True)
+    parser.add_argument("--lammps")
+    parser.add_argument("--workdir", required=True)
+    a = parser.parse_args()
+    main(lambda: check(a.engine, a.lammps, a.workdir))
