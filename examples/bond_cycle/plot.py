@@ -1,5 +1,5 @@
 """Force-displacement loop of the two-sphere cycle (in.bond_cycle) over the
-spec's six-branch normal law (shared/spec/bond-nonlinear.md, "Normal force").
+six-branch normal law (docs/models/bond-nonlinear.md, eq. 6).
 
 Usage: plot.py OUT_DIR   (holding cycle.txt from the deck)
 Writes OUT_DIR/bond_cycle.png and prints the largest deviation between

@@ -5,7 +5,7 @@ Usage: plot.py OUT_DIR   (holding final.txt and tip.txt from the deck)
 Writes OUT_DIR/cantilever.png and prints the tip deflection, the two terms
 of the theory and their ratio.
 
-Beam equivalents of the bond (the deck's values; spec bond-nonlinear.md):
+Beam equivalents of the bond (the deck's values; docs/models/bond-nonlinear.md):
   bending:  EI_eff     = k_tt I L_b     (bond moment k_tt I theta, theta = curvature L_b)
   shear:    kGA_eff    = k_ft A L_b     (bond shear force k_ft A s)
   w(x) = F x^2 (3L - x) / (6 EI_eff)  +  F x / kGA_eff      (clamped at x = 0)

@@ -167,7 +167,7 @@ typedef struct GbLayout {
 } GbLayout;
 
 /**
- * Parameters of `bond/nonlinear` (spec: bond-nonlinear.md). Stiffnesses are
+ * Parameters of `bond/nonlinear` (docs/models/bond-nonlinear.md). Stiffnesses are
  * per unit area (N/m^3); switches are 0 (off) or 1 (on).
  */
 typedef struct GbBondParams {
@@ -214,7 +214,7 @@ typedef struct GbBondParams {
   double smooth_angular_velocity;
   /**
    * `delta_eps` (m): the square-root compression law is continued linearly
-   * below this compression, bounding its stiffness. 0 = off (the spec law).
+   * below this compression, bounding its stiffness. 0 = off (the law of docs/models/bond-nonlinear.md).
    */
   double compression_linear_below;
   /**
@@ -310,7 +310,7 @@ typedef struct GbSphereKinematics {
 
 /**
  * Linear spring-dashpot contact with Coulomb friction and rolling
- * resistance (spec: voigt-contact.md). Switches are 0 (off) or 1 (on).
+ * resistance (docs/models/voigt.md). Switches are 0 (off) or 1 (on).
  */
 typedef struct GbVoigtParams {
   /**

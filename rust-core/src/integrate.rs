@@ -1,4 +1,4 @@
-//! Symplectic Euler (spec "Time integration"): velocities from the current
+//! Symplectic Euler (docs/models/voigt.md, "Time integration"): velocities from the current
 //! loads, then positions from the new velocities. The engines integrate for
 //! themselves; this is for the crate's own scene runner and tests.
 

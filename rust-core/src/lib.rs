@@ -2,7 +2,7 @@
 //! contact model, written once in Rust and driven from LIGGGHTS / LAMMPS
 //! through the C ABI in [`ffi`].
 //!
-//! Every formula of the normative specs (`shared/spec/*.md`) lives in one
+//! Every formula of the models (`docs/models/*.md`) lives in one
 //! module of [`bond`] or [`contact`]; the engine adapters and the scene runner
 //! only call them.
 

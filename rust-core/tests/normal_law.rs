@@ -1,4 +1,4 @@
-//! The six-branch normal law (spec eq. 4-6), its history and its
+//! The six-branch normal law (docs/models/bond-nonlinear.md eq. 4-6), its history and its
 //! continuity.
 
 use granbond::bond::hysteresis::Loop;

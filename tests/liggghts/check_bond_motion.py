@@ -7,7 +7,7 @@ bond (created at step 1, r0 = r) lies along x, n = (x_2 - x_1)/r. The
 tangential and angular history integrates every step from step 1 on, so at
 step s the slip, twist and bend are sums over steps 1..s (the creation step
 included). rb = lambda min R, A = pi rb^2, J = pi rb^4/2, I = pi rb^4/4,
-rc_i = rc_j = r/2, no damping (eta = 0). Claims (spec bond-nonlinear.md):
+rc_i = rc_j = r/2, no damping (eta = 0). Claims (docs/models/bond-nonlinear.md):
 
 - shear (sphere 2 translates along y): F_2 = Fn n + Ft with
   Ft = -k_ft A u_t t, u_t = y_2(s) - y_2(0) the accumulated slip, t the unit

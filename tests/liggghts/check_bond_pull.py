@@ -1,7 +1,7 @@
 """A bond pulled apart (or pushed together) at constant velocity by fix move:
 two spheres (decks/bond_pull.in) or a sphere and a wall (decks/wall_pull.in).
 
-Claims (spec bond-nonlinear.md), every step, to 1e-6 relative:
+Claims (docs/models/bond-nonlinear.md), every step, to 1e-6 relative:
 - virgin tension: the force is k_fn2 A delta along the centre line
   (delta = r0 - r, A = pi (lambda min R)^2), equal and opposite on the spheres;
 - virgin compression (mode `compression`, spheres overlapping): k_fn1 A

@@ -1,4 +1,4 @@
-//! When a bond breaks (spec eq. 14-15).
+//! When a bond breaks (docs/models/bond-nonlinear.md eq. 14-15).
 
 use crate::real::Real;
 

@@ -1,4 +1,4 @@
-//! Percentage (non-viscous) damping of the bond (spec eq. 11-12): each force
+//! Percentage (non-viscous) damping of the bond (docs/models/bond-nonlinear.md eq. 11-12): each force
 //! and torque is reduced by a fraction of its magnitude, directed against the
 //! relative motion, so its power on that motion is never positive.
 

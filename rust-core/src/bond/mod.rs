@@ -1,5 +1,5 @@
 //! `bond/nonlinear`: the six-degree-of-freedom hysteretic bond
-//! (spec: bond-nonlinear.md). One module per law; [`kernel`] assembles them.
+//! (docs/models/bond-nonlinear.md). One module per law; [`kernel`] assembles them.
 
 pub mod breakage;
 mod chunk;

@@ -1,5 +1,5 @@
 //! Normal force of the bond: square-root law in compression, linear in
-//! tension, six branches with load history (spec eq. 4-6).
+//! tension, six branches with load history (docs/models/bond-nonlinear.md eq. 4-6).
 
 use super::hysteresis::{select, update_extremes, Loop};
 use crate::real::Real;

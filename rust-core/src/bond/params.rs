@@ -4,7 +4,7 @@
 //! [`PARAMETERS`] also gives the LIGGGHTS `fix property/global` name so an
 //! error can name what the user actually wrote.
 
-/// Parameters of `bond/nonlinear` (spec: bond-nonlinear.md). Stiffnesses are
+/// Parameters of `bond/nonlinear` (docs/models/bond-nonlinear.md). Stiffnesses are
 /// per unit area (N/m^3); switches are 0 (off) or 1 (on).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -41,7 +41,7 @@ pub struct BondParams {
     pub smooth_velocity: f64,
     pub smooth_angular_velocity: f64,
     /// `delta_eps` (m): the square-root compression law is continued linearly
-    /// below this compression, bounding its stiffness. 0 = off (the spec law).
+    /// below this compression, bounding its stiffness. 0 = off (the law of docs/models/bond-nonlinear.md).
     pub compression_linear_below: f64,
     /// Time step at which bonds are created (when `create_always` is off).
     pub create_step: i64,

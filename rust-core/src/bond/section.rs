@@ -1,4 +1,4 @@
-//! Cross-section of the bond cylinder (spec eq. 2-3) and where along the
+//! Cross-section of the bond cylinder (docs/models/bond-nonlinear.md eq. 2-3) and where along the
 //! centre line the bond's contact point sits.
 
 use crate::real::Real;

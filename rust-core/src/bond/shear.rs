@@ -1,4 +1,4 @@
-//! Incremental shear force of the bond (spec eq. 7-8).
+//! Incremental shear force of the bond (docs/models/bond-nonlinear.md eq. 7-8).
 
 use crate::real::Real;
 use crate::vector::{tangential_part, Vector};

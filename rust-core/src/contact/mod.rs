@@ -1,6 +1,6 @@
 //! `voigt`: linear spring-dashpot contact with Cundall-Strack tangential
 //! history, Coulomb friction and Iwashita-Oda rolling resistance
-//! (spec: voigt-contact.md).
+//! (docs/models/voigt.md).
 
 pub mod friction_cap;
 pub mod model;

@@ -5,7 +5,7 @@ use crate::parameters::{check_ranges, ParameterError};
 const MODEL: &str = "voigt";
 
 /// Linear spring-dashpot contact with Coulomb friction and rolling
-/// resistance (spec: voigt-contact.md). Switches are 0 (off) or 1 (on).
+/// resistance (docs/models/voigt.md). Switches are 0 (off) or 1 (on).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VoigtParams {

@@ -197,8 +197,8 @@ pub unsafe extern "C" fn granbond_voigt_compute_plane(
 
 /// The unchecked entries' bodies are compiled twice: for the x86-64
 /// baseline, and for AVX2, chosen at run time on CPUs that have it (the
-/// 3-vectors fit one register instead of two: about a fifth fewer
-/// instructions per contact). The same operations in the same order, and no
+/// 3-vectors fit one register instead of two, so fewer instructions per
+/// contact). The same operations in the same order, and no
 /// fused multiply-add (not enabled, and never formed from separate
 /// operations), so the same bits; the baseline-vs-checked tests compare them.
 macro_rules! compiled_twice {

@@ -89,7 +89,7 @@ thread_local! {
 /// Until one has, every thread's record is clear, and a successful call need
 /// not look at its own: with the core linked into a shared library (the
 /// engine adapters) that look-up is a call into the dynamic loader
-/// (`__tls_get_addr`), about 50 instructions on every call. Set by the
+/// (`__tls_get_addr`) on every call. Set by the
 /// recording thread itself before it writes its record, so it always sees
 /// its own store.
 static ANY_RECORDED: AtomicBool = AtomicBool::new(false);

@@ -223,7 +223,7 @@ impl Scene {
             let mut touching = HashMap::new();
             for (i, j) in close_pairs(&positions, 2.0 * max_radius) {
                 if let Some(&b) = self.bonded.get(&(i, j)) {
-                    // An intact bond replaces the contact model (spec).
+                    // An intact bond replaces the contact model (docs/models/bond-nonlinear.md).
                     if self.bonds[b].state.status() == BondStatus::Intact {
                         continue;
                     }

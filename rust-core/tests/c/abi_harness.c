@@ -9,8 +9,8 @@
  * header is C++-compatible, so it keeps to the common subset of C99 and
  * C++11: no designated initialisers, no compound literals, explicit casts.
  *
- * Expected values come from the specs (shared/spec/bond-nonlinear.md,
- * voigt-contact.md), evaluated here in C from the same inputs.
+ * Expected values come from the models (docs/models/bond-nonlinear.md,
+ * docs/models/voigt.md), evaluated here in C from the same inputs.
  */
 
 #include "granbond.h"
