@@ -14,7 +14,7 @@
 //!
 //! `c` makes the law continuous at `c x_max`; at `x_max` continuity holds by
 //! construction. Comparing `x` against `c x_max` instead of computing the
-//! spec's `delta_c1 = c^2 delta_max` avoids a square root and is the same
+//! model's `delta_c1 = c^2 delta_max` avoids a square root and is the same
 //! test, because `s` is monotonic.
 
 use crate::real::Real;

@@ -123,7 +123,7 @@ pub struct BondOutput {
     pub torque_j: [f64; 3],
     /// Undamped normal force, positive = repulsive.
     pub normal_force: f64,
-    /// Section stresses of the undamped loads (spec eq. 14).
+    /// Section stresses of the undamped loads (docs/models/bond-nonlinear.md, eq. 14).
     pub sigma: f64,
     pub tau: f64,
     /// `delta = r0 - r` (compression positive).
