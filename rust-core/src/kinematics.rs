@@ -138,9 +138,3 @@ pub fn slip_velocity<R: Real, V: Vector<R>>(v_rel: V, w_i: V, w_j: V, n: V, leve
     let vt = v_rel - n * v_rel.dot(&n);
     vt - (w_i * lever_i + w_j * lever_j).cross(&n)
 }
-
-/// [`slip_velocity`] of a pair of spheres.
-#[inline(always)]
-pub fn tangential_slip_velocity(k: &PairKinematics, n: Vec3, lever_i: f64, lever_j: f64) -> Vec3 {
-    slip_velocity(v3(k.v_i) - v3(k.v_j), v3(k.w_i), v3(k.w_j), n, lever_i, lever_j)
-}

@@ -71,13 +71,8 @@ pub fn damp_scalar<R: Real>(force: R, eta: f64, rate: R, eps: f64, smooth: bool)
     force - R::splat(eta) * force.abs() * sign(rate, eps, smooth)
 }
 
-/// `F - eta |F| v/|v|` for a force or torque vector.
-#[inline(always)]
-pub fn damp_vector<R: Real, V: Vector<R>>(force: V, eta: f64, rate: V, eps: f64, smooth: bool) -> V {
-    damp_along(force, force.norm(), eta, unit(rate, eps, smooth))
-}
-
-/// [`damp_vector`] given `|F|` and the (smooth) unit vector of the rate.
+/// `F - eta |F| v/|v|` for a force or torque vector, given `|F|` and the
+/// (smooth) unit vector of the rate.
 #[inline(always)]
 pub fn damp_along<R: Real, V: Vector<R>>(force: V, force_norm: R, eta: f64, unit_rate: V) -> V {
     force - unit_rate * (R::splat(eta) * force_norm)

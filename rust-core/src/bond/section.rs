@@ -37,13 +37,8 @@ pub fn reciprocals<R: Real>(sec: &Section<R>, radius_i: R, radius_j: R) -> (R, R
 }
 
 /// Distances from the centres of `i` and `j` to the contact point, which
-/// divides `r` in the ratio of the radii: `rc_i = r R_i / (R_i + R_j)`.
-#[inline(always)]
-pub fn lever_arms(r: f64, radius_i: f64, radius_j: f64) -> (f64, f64) {
-    lever_arms_scaled(r, 1.0 / (radius_i + radius_j), radius_i, radius_j)
-}
-
-/// [`lever_arms`] given `inv_radius_sum = 1 / (R_i + R_j)`.
+/// divides `r` in the ratio of the radii: `rc_i = r R_i / (R_i + R_j)`,
+/// given `inv_radius_sum = 1 / (R_i + R_j)`.
 #[inline(always)]
 pub fn lever_arms_scaled<R: Real>(r: R, inv_radius_sum: R, radius_i: R, radius_j: R) -> (R, R) {
     let s = r * inv_radius_sum;

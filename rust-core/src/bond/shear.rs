@@ -5,7 +5,7 @@ use crate::vector::{tangential_part, Vector};
 
 /// `Ft <- Ft - k_t A dt v_tr`, then projected onto the tangent plane of the
 /// current axis `n`. `v_tr` is the slip velocity at the contact point
-/// (`kinematics::tangential_slip_velocity`), which vanishes in rigid motion.
+/// (`kinematics::slip_velocity`), which vanishes in rigid motion.
 #[inline(always)]
 pub fn update_shear_force<R: Real, V: Vector<R>>(
     shear_force: V,

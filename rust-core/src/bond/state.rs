@@ -103,11 +103,6 @@ impl BondState {
         unsafe { &mut *(self as *mut Self as *mut [f64; BOND_STATE_LEN]) }
     }
 
-    pub fn from_slots(slots: &[f64; BOND_STATE_LEN]) -> &Self {
-        // SAFETY: same layout, f64 alignment.
-        unsafe { &*(slots as *const [f64; BOND_STATE_LEN] as *const Self) }
-    }
-
     pub fn from_slots_mut(slots: &mut [f64; BOND_STATE_LEN]) -> &mut Self {
         // SAFETY: same layout, f64 alignment.
         unsafe { &mut *(slots as *mut [f64; BOND_STATE_LEN] as *mut Self) }
