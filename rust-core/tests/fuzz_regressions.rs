@@ -155,10 +155,10 @@ fn the_critical_step_of_a_micrometre_sphere_with_rolling_damping_is_positive() {
     // SAFETY: valid pointers.
     let status = unsafe { granbond_voigt_critical_timestep(&voigt, radius, radius, mass, mass, &mut dt) };
     assert_eq!(status, Status::Ok, "{}", message());
-    // the rolling mode, overdamped: 2 (sqrt(1 + z^2) - z) / omega -> I / c
+    // the rolling mode, overdamped: 2 (sqrt(1 + z^2) - z) / omega -> 2 I / c
     // for the reduced inertia I = 0.2 m R^2 and the damping c
     let p = VoigtParams::default();
-    let overdamped = 0.2 * mass * radius * radius / (p.gamma_r + p.eta_r);
+    let overdamped = 2.0 * 0.2 * mass * radius * radius / (p.gamma_r + p.eta_r);
     assert!(
         (dt - overdamped).abs() <= 1e-6 * overdamped,
         "critical step {dt}, the overdamped rolling limit is {overdamped}"
@@ -199,4 +199,26 @@ fn estimates_that_underflow_are_refused_rather_than_answered_with_zero_or_nan() 
             }
         }
     }
+}
+
+#[test]
+fn a_centre_distance_that_overflows_gives_no_contact_frame() {
+    use granbond::contact::ContactFrame;
+    use granbond::ffi::contact::{granbond_contact_frame_pair, granbond_voigt_compute};
+    let k = PairKinematics {
+        x_i: [2.2e-3, -7.5e240, 0.0],
+        radius_i: 1e-3,
+        radius_j: 1e-3,
+        ..PairKinematics::default()
+    };
+    let mut frame = ContactFrame::default();
+    // SAFETY: valid pointers.
+    let status = unsafe { granbond_contact_frame_pair(&k, &mut frame) };
+    assert_eq!(status, Status::NonFiniteInput, "frame {frame:?}");
+    let voigt = VoigtModel::new(VoigtParams::default()).unwrap();
+    let mut state = [0.0; CONTACT_STATE_LEN];
+    let mut out = ContactOutput::default();
+    // SAFETY: valid pointers.
+    let status = unsafe { granbond_voigt_compute(&voigt, &k, 1e-7, state.as_mut_ptr(), &mut out) };
+    assert_eq!(status, Status::NonFiniteInput, "{out:?}");
 }
