@@ -60,11 +60,11 @@ done
 crashes=$(find "$run/artifacts" -type f ! -name '*.log' | wc -l)
 
 echo "== minimising the corpus"
-"$target" -merge=1 "$run/minimised" "$run/corpus" >"$run/merge.log" 2>&1
+"$target" -set_cover_merge=1 "$run/minimised" "$run/corpus" >"$run/merge.log" 2>&1
 if [ "$keep" = "--keep" ]; then
     find "$corpus" -type f ! -name 'regression-*' -delete
     cp "$run/minimised"/* "$corpus/"
-    echo "kept $(ls "$corpus" | wc -l) inputs ($(du -sh "$corpus" | cut -f1)) in rust-core/fuzz/corpus/abi"
+    echo "kept $(ls "$corpus" | wc -l) inputs ($(du -sh --apparent-size "$corpus" | cut -f1)) in rust-core/fuzz/corpus/abi"
 fi
 
 echo "== C harness with AddressSanitizer and UBSanitizer"
@@ -90,7 +90,7 @@ echo
 echo "== summary"
 echo "fuzzing:            $minutes min, ${executions:-?} executions, exit $fuzz_rc (log: $run/fuzz.log)"
 echo "crashing inputs:    $crashes (panics $panics, sanitizer reports $asan; in $run/artifacts)"
-echo "corpus:             $(ls "$run/corpus" | wc -l) inputs, minimised to $(ls "$run/minimised" | wc -l) ($(du -sh "$run/minimised" | cut -f1))"
+echo "corpus:             $(ls "$run/corpus" | wc -l) inputs, minimised to $(ls "$run/minimised" | wc -l) ($(du -sh --apparent-size "$run/minimised" | cut -f1))"
 echo "sanitized harness:  $(tail -1 "$run/harness.log"), exit $harness_rc, $harness_reports sanitizer reports (log: $run/harness.log)"
 grep -E '^  all entries:' "$run/answers.log" | sed 's/^  all entries:/status codes seen: /' || true
 if grep -q 'broke the ABI' "$run/answers.log"; then
