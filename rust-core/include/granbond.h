@@ -539,7 +539,8 @@ enum GbStatus granbond_bond_compute(const struct GbBondModel *model,
 /**
  * `granbond_bond_compute` over `count` bonds: `kinematics[count]`,
  * `states[count * GRANBOND_BOND_STATE_LEN]`, `out[count]`. Stops at the
- * first bad input and writes its index to `failed_index` (if not null).
+ * first bad input and writes its index to `failed_index` (if not null;
+ * a misaligned one is refused before any bond is advanced).
  *
  * # Safety
  * Pointers must be null or valid for the sizes above.
@@ -559,8 +560,9 @@ enum GbStatus granbond_bond_compute_batch(const struct GbBondModel *model,
  * are those of one `granbond_bond_compute` per bond, bit for bit; an engine
  * collects the bonds of a pass and makes one call, so the core can process
  * several bonds per instruction. Stops at the first bad input and writes
- * its index to `failed_index` (if not null); a null or misaligned
- * `states[k]` is reported before any bond is advanced.
+ * its index to `failed_index` (if not null); a misaligned `failed_index`
+ * and a null or misaligned `states[k]` are reported before any bond is
+ * advanced.
  *
  * # Safety
  * Pointers must be null or valid for the sizes above.
@@ -645,6 +647,8 @@ enum GbStatus granbond_bond_contact_distance_factor(const struct GbBondModel *mo
 /**
  * Critical time step of a bond of this type between spheres of the given
  * radii and masses (see the crate docs for the modes considered).
+ * Infinite without stiffness; radii and masses whose estimate underflows
+ * to zero or gives NaN are refused (`GB_STATUS_INVALID_ARGUMENT`).
  *
  * # Safety
  * Pointers must be null or valid.
@@ -715,7 +719,8 @@ enum GbStatus granbond_voigt_compute(const struct GbVoigtModel *model,
 /**
  * `granbond_voigt_compute` over `count` contacts (`states[count *
  * GRANBOND_CONTACT_STATE_LEN]`); stops at the first bad input and writes
- * its index to `failed_index` (if not null).
+ * its index to `failed_index` (if not null; a misaligned one is refused
+ * before any contact is advanced).
  *
  * # Safety
  * Pointers must be null or valid for the sizes above.
@@ -862,7 +867,7 @@ enum GbStatus granbond_voigt_rolling(const struct GbVoigtModel *model,
 
 /**
  * Critical time step of a contact of this type between spheres of the
- * given radii and masses.
+ * given radii and masses (refused as `granbond_bond_critical_timestep`).
  *
  * # Safety
  * Pointers must be null or valid.

@@ -14,7 +14,10 @@ pub fn oscillator_limit(inertia: f64, stiffness: f64, damping: f64) -> f64 {
     if !(stiffness > 0.0) {
         return f64::INFINITY;
     }
-    let omega = (stiffness / inertia).sqrt();
-    let zeta = damping / (2.0 * (stiffness * inertia).sqrt());
-    2.0 * ((1.0 + zeta * zeta).sqrt() - zeta) / omega
+    let (sqrt_k, sqrt_m) = (stiffness.sqrt(), inertia.sqrt());
+    let zeta = damping / (2.0 * sqrt_k * sqrt_m);
+    // sqrt(1 + zeta^2) - zeta = 1 / (sqrt(1 + zeta^2) + zeta): the difference
+    // cancels to 0 for heavy damping (zeta above ~1e8, as rolling damping
+    // of micrometre spheres), the sum does not; hypot does not overflow.
+    2.0 * (sqrt_m / sqrt_k) / (1f64.hypot(zeta) + zeta)
 }

@@ -15,6 +15,9 @@
 //! features differently), so [`static_library`] takes the newest one that is
 //! not newer than this executable.
 
+mod common;
+
+use common::header::header_functions;
 use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -120,8 +123,10 @@ fn run(mut cmd: Command, what: &str) {
     );
 }
 
-#[test]
-fn c_harness_passes_against_the_static_library() {
+/// Compiles the harness with `flags` (after the warning flags), links it
+/// against the static library, runs it with `env` and checks it ran every
+/// check; returns its output.
+fn harness_passes(variant: &str, flags: &[&str], env: &[(&str, &str)]) -> String {
     let library = static_library();
     println!("static library: {}", library.display());
 
@@ -133,9 +138,10 @@ fn c_harness_passes_against_the_static_library() {
     );
     // One executable per process: concurrent `cargo test` runs in the same
     // target directory must not overwrite (or fail to link over) each other's.
-    let exe = work_dir().join(format!("abi_harness-{}", std::process::id()));
+    let exe = work_dir().join(format!("abi_harness{variant}-{}", std::process::id()));
     let mut cmd = compiler.to_command();
     cmd.args(["-std=c99", "-pedantic-errors", "-Wall", "-Wextra", "-Werror"])
+        .args(flags)
         .arg("-I")
         .arg(crate_dir().join("include"))
         .arg(crate_dir().join(HARNESS))
@@ -145,7 +151,7 @@ fn c_harness_passes_against_the_static_library() {
         .arg(&exe);
     run(cmd, "compiling and linking the C harness");
 
-    let out = Command::new(&exe).output();
+    let out = Command::new(&exe).envs(env.iter().copied()).output();
     // Rebuilt on every run (the source and the command above reproduce it).
     let _ = std::fs::remove_file(&exe);
     let out = out.unwrap_or_else(|e| panic!("cannot run {}: {e}", exe.display()));
@@ -153,15 +159,73 @@ fn c_harness_passes_against_the_static_library() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
         out.status.success(),
-        "C harness failed ({}):\n--- stdout ---\n{stdout}\n--- stderr ---\n{stderr}",
+        "C harness{variant} failed ({}):\n--- stdout ---\n{stdout}\n--- stderr ---\n{stderr}",
         out.status
     );
     let last = stdout.lines().last().unwrap_or("");
     assert!(
         last.starts_with("abi_harness: all ") && last.ends_with(" checks passed"),
-        "C harness did not run to the end:\n{stdout}\n{stderr}"
+        "C harness{variant} did not run to the end:\n{stdout}\n{stderr}"
     );
     println!("{last}");
+    stderr.into_owned()
+}
+
+#[test]
+fn c_harness_passes_against_the_static_library() {
+    harness_passes("", &[], &[]);
+}
+
+/// AddressSanitizer and UBSanitizer flags, or `None` when this compiler
+/// cannot build and run a sanitized program (another toolchain, no
+/// libasan): the test says so and passes; scripts/fuzz.sh runs the same
+/// check with the core instrumented too.
+fn sanitizer_flags() -> Option<&'static [&'static str]> {
+    const FLAGS: &[&str] = &[
+        "-fsanitize=address,undefined",
+        "-fno-sanitize-recover=all",
+        "-fno-omit-frame-pointer",
+        "-g",
+    ];
+    let compiler = build(false).get_compiler();
+    let dir = work_dir();
+    let (probe, exe) = (
+        dir.join("sanitizer_probe.c"),
+        dir.join(format!("sanitizer_probe-{}", std::process::id())),
+    );
+    std::fs::write(&probe, "int main(void) { return 0; }\n").expect("write the probe");
+    let built = compiler
+        .to_command()
+        .args(FLAGS)
+        .arg(&probe)
+        .arg("-o")
+        .arg(&exe)
+        .output()
+        .is_ok_and(|o| o.status.success());
+    let ran = built && Command::new(&exe).output().is_ok_and(|o| o.status.success());
+    let _ = std::fs::remove_file(&exe);
+    ran.then_some(FLAGS)
+}
+
+#[test]
+fn c_harness_passes_under_address_and_undefined_behaviour_sanitizers() {
+    let Some(flags) = sanitizer_flags() else {
+        println!("the C compiler cannot build sanitized programs here; skipped");
+        return;
+    };
+    // a sanitizer report aborts the run (non-zero exit, harness_passes fails)
+    let stderr = harness_passes(
+        "-sanitized",
+        flags,
+        &[
+            ("ASAN_OPTIONS", "detect_leaks=1:abort_on_error=1"),
+            ("UBSAN_OPTIONS", "print_stacktrace=1:halt_on_error=1"),
+        ],
+    );
+    assert!(
+        !stderr.contains("Sanitizer") && !stderr.contains("runtime error:"),
+        "sanitizer output from the harness:\n{stderr}"
+    );
 }
 
 #[test]
@@ -197,28 +261,6 @@ fn header_compiles_as_cpp() {
     .arg(crate_dir().join("include"))
     .arg(crate_dir().join(HARNESS));
     run(cmd, "compiling the C harness as C++11");
-}
-
-/// Names of the functions `include/granbond.h` declares.
-fn header_functions() -> Vec<String> {
-    let header = std::fs::read_to_string(crate_dir().join("include/granbond.h")).expect("read granbond.h");
-    let mut names = Vec::new();
-    for line in header.lines().map(str::trim) {
-        if line.starts_with('*') || line.starts_with('/') || line.starts_with('#') {
-            continue;
-        }
-        let Some(start) = line.find("granbond_") else {
-            continue;
-        };
-        let rest = &line[start..];
-        let end = rest
-            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-            .unwrap_or(rest.len());
-        if rest[end..].starts_with('(') {
-            names.push(rest[..end].to_string());
-        }
-    }
-    names
 }
 
 #[test]

@@ -44,6 +44,11 @@ pub struct Plane {
 pub fn sphere_sphere(kin: &PairKinematics) -> Result<ContactFrame, KinematicsError> {
     kin.check()?;
     let line = centre_line(kin)?;
+    if line.r == f64::INFINITY {
+        // finite centres whose distance overflows (|x| ~ 1e154 and more):
+        // no direction (n = d / inf = 0) and no overlap to speak of
+        return Err(KinematicsError::NonFinite);
+    }
     Ok(ContactFrame {
         n: line.n.into(),
         overlap: kin.radius_i + kin.radius_j - line.r,

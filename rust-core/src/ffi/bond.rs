@@ -3,7 +3,7 @@
 use super::error::{Failure, Status};
 use super::guard::{
     call, check_dt, parameter_c_names, reference, reference_mut, slice, slice_mut, vector3,
-    write_parameter_name,
+    write_parameter_name, FailedIndex,
 };
 use crate::bond::creation::status_and_step_allow;
 use crate::bond::{
@@ -196,7 +196,8 @@ pub unsafe extern "C" fn granbond_bond_compute(
 
 /// `granbond_bond_compute` over `count` bonds: `kinematics[count]`,
 /// `states[count * GRANBOND_BOND_STATE_LEN]`, `out[count]`. Stops at the
-/// first bad input and writes its index to `failed_index` (if not null).
+/// first bad input and writes its index to `failed_index` (if not null;
+/// a misaligned one is refused before any bond is advanced).
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above.
@@ -212,14 +213,13 @@ pub unsafe extern "C" fn granbond_bond_compute_batch(
 ) -> Status {
     call("granbond_bond_compute_batch", || {
         let m = reference(model, "model")?;
+        let failed = FailedIndex::new(failed_index)?;
         let k = slice(kinematics, count, "kinematics")?;
         let s = slice_mut(states as *mut BondState, count, "states")?;
         let o = slice_mut(out, count, "out")?;
         check_dt(dt)?;
         m.step_batch(k, dt, s, o).map_err(|(index, e)| {
-            if !failed_index.is_null() {
-                *failed_index = index;
-            }
+            failed.report(index);
             let f = Failure::from(e);
             Failure::new(f.status, format!("bond {index}: {}", f.message))
         })
@@ -232,8 +232,9 @@ pub unsafe extern "C" fn granbond_bond_compute_batch(
 /// are those of one `granbond_bond_compute` per bond, bit for bit; an engine
 /// collects the bonds of a pass and makes one call, so the core can process
 /// several bonds per instruction. Stops at the first bad input and writes
-/// its index to `failed_index` (if not null); a null or misaligned
-/// `states[k]` is reported before any bond is advanced.
+/// its index to `failed_index` (if not null); a misaligned `failed_index`
+/// and a null or misaligned `states[k]` are reported before any bond is
+/// advanced.
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above.
@@ -248,8 +249,9 @@ pub unsafe extern "C" fn granbond_bond_compute_scattered(
     failed_index: *mut usize,
 ) -> Status {
     call("granbond_bond_compute_scattered", || {
+        let failed = FailedIndex::new(failed_index)?;
         let k = slice(kinematics, count, "kinematics")?;
-        scattered_states(model, count, dt, states, out, failed_index, |m, s, o| {
+        scattered_states(model, count, dt, states, out, failed, |m, s, o| {
             m.step_scattered(k, dt, s, o)
         })
     })
@@ -290,6 +292,7 @@ pub unsafe extern "C" fn granbond_bond_compute_indexed(
     failed_index: *mut usize,
 ) -> Status {
     call("granbond_bond_compute_indexed", || {
+        let failed = FailedIndex::new(failed_index)?;
         let a = reference(atoms, "atoms")?;
         let n = a.count;
         // the arrays' sizes in bytes must fit an isize (slices)
@@ -305,9 +308,7 @@ pub unsafe extern "C" fn granbond_bond_compute_indexed(
         };
         let p = slice(pairs as *const [i32; 2], count, "pairs")?;
         let kin = IndexedPairs::new(arrays, p).map_err(|e| {
-            if !failed_index.is_null() {
-                *failed_index = e.bond;
-            }
+            failed.report(e.bond);
             Failure::new(
                 Status::InvalidArgument,
                 format!(
@@ -316,7 +317,7 @@ pub unsafe extern "C" fn granbond_bond_compute_indexed(
                 ),
             )
         })?;
-        scattered_states(model, count, dt, states, out, failed_index, |m, s, o| {
+        scattered_states(model, count, dt, states, out, failed, |m, s, o| {
             m.step_indexed(&kin, dt, s, o)
         })
     })
@@ -331,7 +332,7 @@ unsafe fn scattered_states(
     dt: f64,
     states: *mut *mut f64,
     out: *mut BondOutput,
-    failed_index: *mut usize,
+    failed: FailedIndex,
     step: impl FnOnce(
         &BondModel,
         &mut [&mut BondState],
@@ -339,9 +340,7 @@ unsafe fn scattered_states(
     ) -> Result<(), (usize, KinematicsError)>,
 ) -> Result<(), Failure> {
     let fail_at = |index: usize, f: Failure| {
-        if !failed_index.is_null() {
-            *failed_index = index;
-        }
+        failed.report(index);
         Failure::new(f.status, format!("bond {index}: {}", f.message))
     };
     let m = reference(model, "model")?;
@@ -462,6 +461,8 @@ pub unsafe extern "C" fn granbond_bond_contact_distance_factor(
 
 /// Critical time step of a bond of this type between spheres of the given
 /// radii and masses (see the crate docs for the modes considered).
+/// Infinite without stiffness; radii and masses whose estimate underflows
+/// to zero or gives NaN are refused (`GB_STATUS_INVALID_ARGUMENT`).
 ///
 /// # Safety
 /// Pointers must be null or valid.
@@ -526,7 +527,19 @@ pub(crate) unsafe fn pair_estimate<M>(
         let o = reference_mut(out, "out")?;
         let [radius_i, radius_j, mass_i, mass_j] = bodies;
         check_bodies(radius_i, radius_j, mass_i, mass_j)?;
-        *o = estimate(m, radius_i, radius_j, mass_i, mass_j);
+        let dt = estimate(m, radius_i, radius_j, mass_i, mass_j);
+        // infinite is an answer (no stiffness: no limit); zero or NaN are
+        // the underflow or overflow of radii and masses far outside any
+        // physical range, not a limit
+        if !(dt > 0.0) {
+            return Err(Failure::new(
+                Status::InvalidArgument,
+                format!(
+                    "radius_i {radius_i}, radius_j {radius_j}, mass_i {mass_i}, mass_j {mass_j}: outside the range the estimate can evaluate (it gives {dt})"
+                ),
+            ));
+        }
+        *o = dt;
         Ok(())
     })
 }

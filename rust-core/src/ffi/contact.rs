@@ -2,7 +2,7 @@
 
 use super::bond::pair_estimate;
 use super::error::{record, Failure, Status};
-use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut};
+use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut, FailedIndex};
 use super::guard::{parameter_c_names, write_parameter_name};
 use crate::contact::model::{sphere_plane, sphere_sphere};
 use crate::contact::{
@@ -89,7 +89,8 @@ pub unsafe extern "C" fn granbond_voigt_compute(
 
 /// `granbond_voigt_compute` over `count` contacts (`states[count *
 /// GRANBOND_CONTACT_STATE_LEN]`); stops at the first bad input and writes
-/// its index to `failed_index` (if not null).
+/// its index to `failed_index` (if not null; a misaligned one is refused
+/// before any contact is advanced).
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above.
@@ -105,14 +106,13 @@ pub unsafe extern "C" fn granbond_voigt_compute_batch(
 ) -> Status {
     call("granbond_voigt_compute_batch", || {
         let m = reference(model, "model")?;
+        let failed = FailedIndex::new(failed_index)?;
         let k = slice(kinematics, count, "kinematics")?;
         let s = slice_mut(states as *mut ContactState, count, "states")?;
         let o = slice_mut(out, count, "out")?;
         check_dt(dt)?;
         if let Err((index, e)) = m.step_batch(k, dt, s, o) {
-            if !failed_index.is_null() {
-                *failed_index = index;
-            }
+            failed.report(index);
             let f = Failure::from(e);
             return Err(Failure::new(f.status, format!("contact {index}: {}", f.message)));
         }
@@ -577,7 +577,7 @@ pub unsafe extern "C" fn granbond_voigt_rolling(
 }
 
 /// Critical time step of a contact of this type between spheres of the
-/// given radii and masses.
+/// given radii and masses (refused as `granbond_bond_critical_timestep`).
 ///
 /// # Safety
 /// Pointers must be null or valid.

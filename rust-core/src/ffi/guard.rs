@@ -89,6 +89,31 @@ pub unsafe fn slice_mut<'a, T>(ptr: *mut T, len: usize, name: &str) -> Result<&'
     Ok(std::slice::from_raw_parts_mut(ptr, len))
 }
 
+/// The optional `failed_index` output of the batch calls: null (not
+/// wanted) or an aligned `size_t`, checked before the batch runs, so a
+/// misaligned one is refused rather than written through.
+#[derive(Clone, Copy)]
+pub struct FailedIndex(*mut usize);
+
+impl FailedIndex {
+    /// # Safety
+    /// A non-null `ptr` must be valid for writes of a `usize` while the
+    /// result is used.
+    pub unsafe fn new(ptr: *mut usize) -> Result<Self, Failure> {
+        if !ptr.is_null() {
+            check(ptr, "failed_index")?;
+        }
+        Ok(Self(ptr))
+    }
+
+    pub fn report(self, index: usize) {
+        if !self.0.is_null() {
+            // SAFETY: non-null, aligned and valid for writes (`new`).
+            unsafe { *self.0 = index };
+        }
+    }
+}
+
 /// A time step must be finite and non-negative.
 pub fn check_dt(dt: f64) -> Result<(), Failure> {
     if dt.is_finite() && dt >= 0.0 {

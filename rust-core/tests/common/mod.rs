@@ -2,6 +2,7 @@
 //! pair kinematics, rotations.
 #![allow(dead_code)]
 
+pub mod header;
 pub mod strategies;
 
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState};

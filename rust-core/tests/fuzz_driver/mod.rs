@@ -1,0 +1,1714 @@
+//! Turns arbitrary bytes into a sequence of calls of the C ABI and checks
+//! every answer. Shared by the fuzz target (`fuzz/fuzz_targets/abi.rs`) and
+//! the corpus replay in the normal suite (`tests/fuzz_corpus.rs`), so a
+//! corpus file means the same calls in both.
+//!
+//! What an answer must be:
+//! - never `GB_STATUS_PANIC`, and no panic escaping an `extern "C"` function
+//!   (that aborts, which the fuzzer reports as a crash);
+//! - after a checked call: OK with a clear error record, or an error code
+//!   with a message that starts with the function's name and a parameter id
+//!   exactly for `GB_STATUS_INVALID_PARAMETER`;
+//! - after OK: outputs in their documented ranges (status and break-mode
+//!   values, 0/1 flags, the length queries, positive time steps, frames
+//!   with a unit normal); a non-finite number in an OK answer computed from
+//!   finite input is counted in [`Tally::notes`] (docs/fuzzing.md);
+//! - the `*_unchecked` entries: OK or `GB_STATUS_NON_FINITE_INPUT`.
+//!
+//! The driver keeps to the callers' side of every `# Safety` contract (a
+//! pointer is null, misaligned or valid for its documented size; counts
+//! never exceed the buffers; no two scattered states alias; models are
+//! never used after free): what the ABI cannot check is not fuzzed.
+//! Everything it can check is: parameter structs, states (of any model,
+//! also another model's or a written-over one), kinematics, frames,
+//! planes, layouts, counts, indices, ids and kinds.
+#![allow(dead_code)]
+
+use granbond::bond::{BondModel, BondOutput, BondParams, BOND_STATE_LEN, PARAMETERS, WALL_BOND_STATE_LEN};
+use granbond::contact::{
+    ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN, VOIGT_PARAMETERS,
+};
+use granbond::ffi::abi::{self, library_layout, Layout};
+use granbond::ffi::bond::{self as fb, AtomArrayPointers};
+use granbond::ffi::contact::{self as fc, TangentialOutput};
+use granbond::ffi::error::{granbond_last_error_message, granbond_last_error_parameter};
+use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
+use granbond::ffi::Status;
+use granbond::kinematics::{PairKinematics, SphereKinematics};
+use std::collections::BTreeMap;
+use std::ffi::{c_char, CStr};
+use std::marker::PhantomData;
+use std::mem::{align_of, size_of};
+use std::ptr::{null, null_mut};
+
+/// Every `extern "C"` function of `include/granbond.h` (the header's
+/// `static inline` helper is compiled into the caller, not the library).
+pub const ENTRY_POINTS: [&str; 40] = [
+    "granbond_abi_version",
+    "granbond_check_layout",
+    "granbond_bond_params_default",
+    "granbond_bond_model_new",
+    "granbond_bond_model_free",
+    "granbond_bond_parameter_count",
+    "granbond_bond_parameter_name",
+    "granbond_bond_try_create",
+    "granbond_bond_may_create",
+    "granbond_bond_create_now",
+    "granbond_bond_compute",
+    "granbond_bond_compute_batch",
+    "granbond_bond_compute_scattered",
+    "granbond_bond_compute_indexed",
+    "granbond_wall_bond_try_create",
+    "granbond_wall_bond_compute",
+    "granbond_bond_max_distance",
+    "granbond_bond_contact_distance_factor",
+    "granbond_bond_critical_timestep",
+    "granbond_bond_recommended_timestep",
+    "granbond_voigt_params_default",
+    "granbond_voigt_model_new",
+    "granbond_voigt_model_free",
+    "granbond_voigt_compute",
+    "granbond_voigt_compute_batch",
+    "granbond_voigt_compute_plane",
+    "granbond_voigt_compute_frame_unchecked",
+    "granbond_voigt_compute_fields_unchecked",
+    "granbond_contact_frame_pair",
+    "granbond_contact_frame_plane",
+    "granbond_voigt_normal_force",
+    "granbond_voigt_tangential",
+    "granbond_voigt_rolling",
+    "granbond_voigt_critical_timestep",
+    "granbond_voigt_parameter_count",
+    "granbond_voigt_parameter_name",
+    "granbond_last_error_message",
+    "granbond_last_error_parameter",
+    "granbond_state_len",
+    "granbond_state_slot",
+];
+
+/// Entries that return no `GbStatus`: their answers are counted as OK when
+/// they are in range (a wrong one fails an assertion).
+const NOT_STATUS: i32 = 0;
+
+/// Status values, in `GbStatus` order, for the summary.
+pub const STATUS_NAMES: [&str; 9] = [
+    "OK",
+    "NULL_POINTER",
+    "INVALID_PARAMETER",
+    "NON_FINITE_INPUT",
+    "COINCIDENT_CENTRES",
+    "NON_POSITIVE_RADIUS",
+    "LAYOUT_MISMATCH",
+    "INVALID_ARGUMENT",
+    "PANIC",
+];
+
+/// How often each entry answered with each status.
+#[derive(Clone, Debug, Default)]
+pub struct Tally {
+    pub answers: BTreeMap<&'static str, [u64; 9]>,
+    pub inputs: u64,
+    /// OK answers with a non-finite number from finite input, per entry.
+    pub notes: BTreeMap<&'static str, u64>,
+}
+
+impl Tally {
+    fn count(&mut self, function: &'static str, code: i32) {
+        self.answers.entry(function).or_default()[code as usize] += 1;
+    }
+
+    pub fn merge(&mut self, other: &Tally) {
+        self.inputs += other.inputs;
+        for (f, n) in &other.notes {
+            *self.notes.entry(f).or_default() += n;
+        }
+        for (f, counts) in &other.answers {
+            let mine = self.answers.entry(f).or_default();
+            for (m, c) in mine.iter_mut().zip(counts) {
+                *m += c;
+            }
+        }
+    }
+
+    /// Total answers per status over all entries.
+    pub fn by_status(&self) -> [u64; 9] {
+        let mut total = [0; 9];
+        for counts in self.answers.values() {
+            for (t, c) in total.iter_mut().zip(counts) {
+                *t += c;
+            }
+        }
+        total
+    }
+}
+
+impl std::fmt::Display for Tally {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        writeln!(f, "{} inputs; answers per entry point and status:", self.inputs)?;
+        for (function, counts) in &self.answers {
+            let seen: Vec<String> = counts
+                .iter()
+                .zip(STATUS_NAMES)
+                .filter(|(c, _)| **c > 0)
+                .map(|(c, name)| format!("{name} {c}"))
+                .collect();
+            writeln!(f, "  {function}: {}", seen.join(", "))?;
+        }
+        let total = self.by_status();
+        let seen: Vec<String> = total
+            .iter()
+            .zip(STATUS_NAMES)
+            .map(|(c, name)| format!("{name} {c}"))
+            .collect();
+        for (function, n) in &self.notes {
+            writeln!(
+                f,
+                "  {function}: {n} OK answers with a non-finite output from finite input"
+            )?;
+        }
+        write!(f, "  all entries: {}", seen.join(", "))
+    }
+}
+
+/// The fuzzer's bytes, read front to back; past the end every byte is 0.
+pub struct Input<'a> {
+    data: &'a [u8],
+    pos: usize,
+}
+
+/// Numbers where code tends to break: NaN, infinities, signed zeros,
+/// subnormals, the extremes of the range, and the scales of the models.
+const SPECIAL: [f64; 32] = [
+    f64::NAN,
+    -f64::NAN,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    0.0,
+    -0.0,
+    f64::MIN_POSITIVE,
+    5e-324,
+    -5e-324,
+    1e-300,
+    -1e-300,
+    1e300,
+    -1e300,
+    f64::MAX,
+    f64::MIN,
+    f64::EPSILON,
+    1.0,
+    -1.0,
+    0.5,
+    2.0,
+    1e-3,
+    -1e-3,
+    2e-3,
+    1.1e-3,
+    2.2e-3,
+    1e-6,
+    1e-7,
+    1e-160,
+    1e154,
+    1e9,
+    1e13,
+    -1e-7,
+];
+
+impl<'a> Input<'a> {
+    pub fn new(data: &'a [u8]) -> Self {
+        Self { data, pos: 0 }
+    }
+
+    fn done(&self) -> bool {
+        self.pos >= self.data.len()
+    }
+
+    fn byte(&mut self) -> u8 {
+        let b = self.data.get(self.pos).copied().unwrap_or(0);
+        self.pos += 1;
+        b
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        self.byte() as usize % n
+    }
+
+    fn u64(&mut self) -> u64 {
+        (0..8).fold(0, |acc, _| (acc << 8) | self.byte() as u64)
+    }
+
+    /// Any double, biased towards [`SPECIAL`] and the models' scales.
+    fn f64(&mut self) -> f64 {
+        let tag = self.byte() as usize;
+        match tag {
+            t if t < SPECIAL.len() => SPECIAL[t],
+            // lengths around a millimetre sphere: -5e-3 ..= 5e-3
+            t if t < 128 => (t as f64 - 80.0) * 1e-4,
+            // velocities: -1.6 ..= 1.55
+            t if t < 192 => (t as f64 - 160.0) * 0.05,
+            // magnitudes 1e-16 ..= 1e15
+            t if t < 224 => 10f64.powi(t as i32 - 208),
+            _ => f64::from_bits(self.u64()),
+        }
+    }
+
+    /// An `i32` for switches, kinds and indices: mostly small.
+    fn i32(&mut self) -> i32 {
+        match self.byte() {
+            b if b < 240 => (b % 8) as i32 - 2,
+            240..=243 => i32::MIN,
+            244..=247 => i32::MAX,
+            _ => self.u64() as i32,
+        }
+    }
+
+    /// A count or id: mostly small, sometimes huge.
+    fn usize(&mut self) -> usize {
+        match self.byte() {
+            b if b < 248 => (b % 24) as usize,
+            248 | 249 => usize::MAX,
+            250 | 251 => usize::MAX / 8,
+            _ => self.u64() as usize,
+        }
+    }
+
+    fn step(&mut self) -> i64 {
+        match self.byte() {
+            b if b < 240 => (b % 12) as i64 - 2,
+            240..=243 => i64::MIN,
+            244..=247 => i64::MAX,
+            _ => self.u64() as i64,
+        }
+    }
+
+    fn vec3(&mut self) -> [f64; 3] {
+        [self.f64(), self.f64(), self.f64()]
+    }
+
+    fn pointer(&mut self) -> Pointer {
+        match self.byte() % 16 {
+            0 => Pointer::Null,
+            1 => Pointer::Misaligned,
+            _ => Pointer::Valid,
+        }
+    }
+
+    /// Overwrites a few 8-byte words of `value` with fuzzed bits: a double,
+    /// or two small `i32` (the switches and counts of the structs).
+    fn mutate<T: Copy>(&mut self, value: &mut T) {
+        let words = size_of::<T>() / 8;
+        for _ in 0..self.below(5) {
+            let w = self.below(words);
+            let bits = if self.byte() % 3 == 0 {
+                let (a, b) = (self.i32() as u32 as u64, self.i32() as u32 as u64);
+                a | (b << 32)
+            } else {
+                self.f64().to_bits()
+            };
+            // SAFETY: every struct fuzzed here is plain data (f64, integers,
+            // padding): any bits are a valid value.
+            unsafe { (value as *mut T as *mut u64).add(w).write_unaligned(bits) };
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Pointer {
+    Null,
+    Misaligned,
+    Valid,
+}
+
+/// Storage for one `T` with a word of room behind it, so a misaligned
+/// pointer (one byte in) still lies inside the allocation.
+struct Place<T> {
+    words: Vec<u64>,
+    _t: PhantomData<T>,
+}
+
+impl<T: Copy> Place<T> {
+    fn new(value: T) -> Self {
+        assert!(align_of::<T>() <= 8);
+        let mut words = vec![0u64; size_of::<T>().div_ceil(8) + 1];
+        // SAFETY: the words are 8-aligned and hold at least size_of::<T>() bytes.
+        unsafe { (words.as_mut_ptr() as *mut T).write(value) };
+        Self {
+            words,
+            _t: PhantomData,
+        }
+    }
+
+    fn get(&self) -> T {
+        // SAFETY: written by `new` (or by the ABI through a valid pointer).
+        unsafe { (self.words.as_ptr() as *const T).read() }
+    }
+
+    fn ptr(&mut self, how: Pointer) -> *mut T {
+        match how {
+            Pointer::Null => null_mut(),
+            Pointer::Misaligned => (self.words.as_mut_ptr() as *mut u8).wrapping_add(1) as *mut T,
+            Pointer::Valid => self.words.as_mut_ptr() as *mut T,
+        }
+    }
+}
+
+const fn max(a: usize, b: usize) -> usize {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
+/// Slots of the largest state: every pool entry can be handed to any model.
+const MAX_STATE: usize = max(max(BOND_STATE_LEN, WALL_BOND_STATE_LEN), CONTACT_STATE_LEN);
+const POOL: usize = 8;
+const MAX_BATCH: usize = 8;
+const MAX_ATOMS: usize = 8;
+
+/// A bond parameter set that makes forces: a hysteretic fixture in
+/// distance mode (`stress` off) or stress mode with finite strengths.
+fn bond_params(stress: bool) -> BondParams {
+    BondParams {
+        lambda: 0.5,
+        k_fn1: 2e9,
+        ku_fn1: 4e9,
+        kc_fn1: 1e8,
+        k_fn2: 1e10,
+        ku_fn2: 1e10,
+        kc_fn2: 1e9,
+        k_ft: 5e9,
+        k_tn: 1e9,
+        ku_tn: 2e9,
+        kc_tn: 1e8,
+        k_tt: 1e9,
+        ku_tt: 2e9,
+        kc_tt: 1e8,
+        eta_fn: 0.1,
+        eta_ft: 0.1,
+        eta_tn: 0.1,
+        eta_tt: 0.1,
+        max_distance: 2.2e-3,
+        max_sigma: if stress { 1e5 } else { f64::INFINITY },
+        max_tau: if stress { 1e5 } else { f64::INFINITY },
+        create_distance: 2.1e-3,
+        stress_break: stress as i32,
+        use_ratio: stress as i32,
+        tension_compression_ratio: 0.5,
+        compression_linear_below: if stress { 1e-7 } else { 0.0 },
+        damping_smooth: stress as i32,
+        ..BondParams::default()
+    }
+}
+
+/// Two millimetre spheres about a diameter apart, moving slowly.
+fn realistic_pair(input: &mut Input) -> PairKinematics {
+    let gap = (input.byte() as f64 - 128.0) * 2e-6;
+    PairKinematics {
+        x_i: [2e-3 + gap, 1e-5 * input.below(3) as f64, 0.0],
+        x_j: [0.0; 3],
+        v_i: [(input.byte() as f64 - 128.0) * 1e-3, 0.0, 0.0],
+        v_j: [0.0, (input.byte() as f64 - 128.0) * 1e-3, 0.0],
+        w_i: [0.0, 0.0, (input.byte() as f64 - 128.0) * 0.1],
+        w_j: [(input.byte() as f64 - 128.0) * 0.1, 0.0, 0.0],
+        radius_i: 1e-3,
+        radius_j: 1e-3 * (1.0 + input.below(3) as f64 * 0.25),
+    }
+}
+
+fn message() -> String {
+    let p = granbond_last_error_message();
+    assert!(!p.is_null(), "granbond_last_error_message returned NULL");
+    // SAFETY: the library returns a NUL-terminated string it owns.
+    unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned()
+}
+
+fn all_finite(values: &[f64]) -> bool {
+    values.iter().all(|x| x.is_finite())
+}
+
+fn bond_output_numbers(o: &BondOutput) -> Vec<f64> {
+    let mut v: Vec<f64> = o
+        .force_i
+        .iter()
+        .chain(&o.torque_i)
+        .chain(&o.torque_j)
+        .copied()
+        .collect();
+    v.extend([o.normal_force, o.sigma, o.tau, o.delta]);
+    v
+}
+
+fn contact_output_numbers(o: &ContactOutput) -> Vec<f64> {
+    let mut v: Vec<f64> = o
+        .force_i
+        .iter()
+        .chain(&o.torque_i)
+        .chain(&o.torque_j)
+        .copied()
+        .collect();
+    v.extend([o.normal_force, o.overlap]);
+    v
+}
+
+/// The calls one input makes, with the models and states they share.
+struct Session<'t> {
+    tally: &'t mut Tally,
+    bond_models: Vec<*mut BondModel>,
+    voigt_models: Vec<*mut VoigtModel>,
+    /// States of every kind, in one pool: any entry may be handed to any
+    /// model, so a state written by one model is read by another.
+    pool: Vec<[f64; MAX_STATE + 1]>,
+    /// Contiguous states of the batch calls, as many of the largest kind.
+    flat: Vec<f64>,
+    pair: PairKinematics,
+    frame: ContactFrame,
+}
+
+impl Drop for Session<'_> {
+    fn drop(&mut self) {
+        for &m in &self.bond_models {
+            // SAFETY: from granbond_bond_model_new, freed once.
+            unsafe { fb::granbond_bond_model_free(m) };
+        }
+        for &m in &self.voigt_models {
+            // SAFETY: from granbond_voigt_model_new, freed once.
+            unsafe { fc::granbond_voigt_model_free(m) };
+        }
+    }
+}
+
+impl<'t> Session<'t> {
+    fn new(tally: &'t mut Tally) -> Self {
+        let mut s = Self {
+            tally,
+            bond_models: Vec::new(),
+            voigt_models: Vec::new(),
+            pool: vec![[0.0; MAX_STATE + 1]; POOL],
+            flat: vec![0.0; MAX_BATCH * MAX_STATE + 1],
+            pair: realistic_pair(&mut Input::new(&[])),
+            frame: ContactFrame {
+                n: [1.0, 0.0, 0.0],
+                overlap: 1e-6,
+                lever_i: 1e-3,
+                lever_j: 1e-3,
+                r_eff: 5e-4,
+                v_i: [0.0, 1e-2, 0.0],
+                w_j: [0.0, 0.0, 1.0],
+                ..ContactFrame::default()
+            },
+        };
+        // one working model of each kind from the start, so short inputs
+        // reach past the model checks
+        s.new_bond_model(bond_params(false));
+        s.new_voigt_model(VoigtParams::default());
+        s
+    }
+
+    /// Checks a checked call's answer (see the module docs) and counts it.
+    fn answer(&mut self, function: &'static str, status: Status) -> bool {
+        let code = status as i32;
+        let text = message();
+        let parameter = granbond_last_error_parameter();
+        self.tally.count(function, code);
+        assert!(status != Status::Panic, "{function} panicked: {text}");
+        if status == Status::Ok {
+            assert!(
+                text.is_empty() && parameter == -1,
+                "{function} succeeded but left an error record: \"{text}\", parameter {parameter}"
+            );
+            return true;
+        }
+        assert!(
+            text.starts_with(function) && text.len() > function.len() + 2,
+            "{function} answered {status:?} with the message \"{text}\""
+        );
+        if status == Status::InvalidParameter {
+            assert!(
+                parameter >= 0,
+                "{function}: InvalidParameter without a parameter id"
+            );
+        } else {
+            assert_eq!(
+                parameter, -1,
+                "{function}: {status:?} with parameter id {parameter}"
+            );
+        }
+        false
+    }
+
+    /// The answer of an `*_unchecked` entry.
+    fn answer_unchecked(&mut self, function: &'static str, status: Status) -> bool {
+        self.tally.count(function, status as i32);
+        match status {
+            Status::Ok => true,
+            Status::NonFiniteInput => {
+                let text = message();
+                assert!(text.starts_with(function), "{function}: message \"{text}\"");
+                false
+            }
+            other => panic!("{function} answered {other:?}: {}", message()),
+        }
+    }
+
+    fn answer_value(&mut self, function: &'static str) {
+        self.tally.count(function, NOT_STATUS);
+    }
+
+    fn new_bond_model(&mut self, params: BondParams) {
+        let mut model: *mut BondModel = null_mut();
+        // SAFETY: valid pointers.
+        let status = unsafe { fb::granbond_bond_model_new(&params, &mut model) };
+        if self.answer("granbond_bond_model_new", status) {
+            assert!(!model.is_null(), "granbond_bond_model_new: OK without a model");
+            self.bond_models.push(model);
+        } else {
+            assert!(model.is_null(), "granbond_bond_model_new: {status:?} but a model");
+        }
+    }
+
+    fn new_voigt_model(&mut self, params: VoigtParams) {
+        let mut model: *mut VoigtModel = null_mut();
+        // SAFETY: valid pointers.
+        let status = unsafe { fc::granbond_voigt_model_new(&params, &mut model) };
+        if self.answer("granbond_voigt_model_new", status) {
+            assert!(!model.is_null(), "granbond_voigt_model_new: OK without a model");
+            self.voigt_models.push(model);
+        } else {
+            assert!(
+                model.is_null(),
+                "granbond_voigt_model_new: {status:?} but a model"
+            );
+        }
+    }
+
+    /// A live model, or null.
+    fn bond_model(&mut self, input: &mut Input) -> *const BondModel {
+        let n = self.bond_models.len();
+        match input.below(n + 1) {
+            i if i < n => self.bond_models[i],
+            _ => null(),
+        }
+    }
+
+    fn voigt_model(&mut self, input: &mut Input) -> *const VoigtModel {
+        let n = self.voigt_models.len();
+        match input.below(n + 1) {
+            i if i < n => self.voigt_models[i],
+            _ => null(),
+        }
+    }
+
+    /// A live model for the unchecked entries (which must get one), if any.
+    fn live_voigt_model(&mut self, input: &mut Input) -> Option<*const VoigtModel> {
+        let n = self.voigt_models.len();
+        (n > 0).then(|| self.voigt_models[input.below(n)] as *const VoigtModel)
+    }
+
+    /// The pair of the last call, moved or mutated, or a new one.
+    fn kinematics(&mut self, input: &mut Input) -> PairKinematics {
+        match input.below(6) {
+            0 | 1 => {}
+            2 => input.mutate(&mut self.pair),
+            3 => self.pair = realistic_pair(input),
+            4 => {
+                self.pair = realistic_pair(input);
+                input.mutate(&mut self.pair);
+            }
+            _ => {
+                // coincident or nearly coincident centres
+                self.pair = realistic_pair(input);
+                let offset = [0.0, 1e-300, 1e-160, 5e-324][input.below(4)];
+                self.pair.x_i = self.pair.x_j.map(|x| x + offset);
+            }
+        }
+        self.pair
+    }
+
+    fn sphere(&mut self, input: &mut Input) -> SphereKinematics {
+        let k = self.kinematics(input);
+        let mut s = SphereKinematics {
+            x: k.x_i,
+            v: k.v_i,
+            w: k.w_i,
+            radius: k.radius_i,
+        };
+        if input.below(4) == 0 {
+            input.mutate(&mut s);
+        }
+        s
+    }
+
+    fn plane(&mut self, input: &mut Input) -> Plane {
+        let mut normal = [[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.6, 0.8]][input.below(3)];
+        match input.below(8) {
+            0 => normal = input.vec3(),
+            1 => normal = [0.0; 3],
+            2 => normal[0] *= 1.0 + 1e-12 * input.f64(),
+            _ => {}
+        }
+        let mut p = Plane {
+            point: [self.pair.x_j[0] + 1e-3, 0.0, 0.0],
+            normal,
+            velocity: [0.0; 3],
+        };
+        if input.below(4) == 0 {
+            input.mutate(&mut p);
+        }
+        p
+    }
+
+    fn frame(&mut self, input: &mut Input) -> ContactFrame {
+        let mut f = self.frame;
+        if input.below(3) == 0 {
+            input.mutate(&mut f);
+        }
+        f
+    }
+
+    fn dt(&mut self, input: &mut Input) -> f64 {
+        match input.below(4) {
+            0 => input.f64(),
+            _ => 1e-7,
+        }
+    }
+
+    fn state(&mut self, input: &mut Input) -> usize {
+        input.below(POOL)
+    }
+
+    /// A pool entry as the ABI sees it: null, misaligned or valid.
+    fn state_ptr(&mut self, index: usize, how: Pointer) -> *mut f64 {
+        let p = self.pool[index].as_mut_ptr();
+        match how {
+            Pointer::Null => null_mut(),
+            Pointer::Misaligned => (p as *mut u8).wrapping_add(1) as *mut f64,
+            Pointer::Valid => p,
+        }
+    }
+
+    /// An OK answer with a non-finite number computed from finite input
+    /// (overflow or underflow of values far outside the physical range):
+    /// counted per entry point (docs/fuzzing.md, open findings), not a
+    /// wrong answer of the ABI, which promises a status, not the range.
+    fn note_finite(&mut self, function: &'static str, finite: bool) {
+        if !finite {
+            *self.tally.notes.entry(function).or_default() += 1;
+        }
+    }
+
+    fn check_state_finite(&mut self, function: &'static str, index: usize, len: usize, before: &[f64]) {
+        if all_finite(&before[..len]) {
+            let finite = all_finite(&self.pool[index][..len]);
+            self.note_finite(function, finite);
+        }
+    }
+
+    fn check_bond_output(&mut self, function: &'static str, o: &BondOutput) {
+        assert!(
+            (0..=2).contains(&o.status),
+            "{function}: status {} in the output",
+            o.status
+        );
+        assert!(
+            (0..=4).contains(&o.break_mode),
+            "{function}: break mode {}",
+            o.break_mode
+        );
+        self.note_finite(function, all_finite(&bond_output_numbers(o)));
+    }
+
+    fn check_contact_output(&mut self, function: &'static str, o: &ContactOutput) {
+        for flag in [o.touching, o.sliding, o.rolling_slip] {
+            assert!(flag == 0 || flag == 1, "{function}: flag {flag} in {o:?}");
+        }
+        self.note_finite(function, all_finite(&contact_output_numbers(o)));
+    }
+
+    /// One call, chosen by the next byte.
+    fn op(&mut self, input: &mut Input) {
+        match input.below(36) {
+            0 => self.bond_params_default(input),
+            1 => {
+                let mut p = match input.below(3) {
+                    0 => BondParams::default(),
+                    1 => bond_params(false),
+                    _ => bond_params(true),
+                };
+                input.mutate(&mut p);
+                self.bond_model_new(input, p);
+            }
+            2 => {
+                if !self.bond_models.is_empty() {
+                    let m = self.bond_models.remove(input.below(self.bond_models.len()));
+                    // SAFETY: from granbond_bond_model_new, not used again.
+                    unsafe { fb::granbond_bond_model_free(m) };
+                    self.answer_value("granbond_bond_model_free");
+                }
+                // SAFETY: null is allowed.
+                unsafe { fb::granbond_bond_model_free(null_mut()) };
+            }
+            3 => self.parameter_names(input, true),
+            4 => self.bond_create(input, false),
+            5 => self.bond_may_create(input),
+            6 => self.bond_create(input, true),
+            7 => self.bond_compute(input),
+            8 => self.bond_batch(input),
+            9 => self.bond_scattered(input),
+            10 => self.bond_indexed(input),
+            11 => self.wall_try_create(input),
+            12 => self.wall_compute(input),
+            13 | 14 => self.bond_reach(input),
+            15 | 16 => self.timestep(input),
+            17 => self.voigt_params_default(input),
+            18 => {
+                let mut p = VoigtParams::default();
+                if input.below(2) == 0 {
+                    p.no_attraction = 0;
+                    p.rolling = input.below(2) as i32;
+                }
+                input.mutate(&mut p);
+                self.voigt_model_new(input, p);
+            }
+            19 => {
+                if !self.voigt_models.is_empty() {
+                    let m = self.voigt_models.remove(input.below(self.voigt_models.len()));
+                    // SAFETY: from granbond_voigt_model_new, not used again.
+                    unsafe { fc::granbond_voigt_model_free(m) };
+                    self.answer_value("granbond_voigt_model_free");
+                }
+                // SAFETY: null is allowed.
+                unsafe { fc::granbond_voigt_model_free(null_mut()) };
+            }
+            20 => self.voigt_compute(input),
+            21 => self.voigt_batch(input),
+            22 => self.voigt_plane(input),
+            23 => self.voigt_frame_unchecked(input),
+            24 => self.voigt_fields_unchecked(input),
+            25 => self.frame_pair(input),
+            26 => self.frame_plane(input),
+            27 => self.voigt_normal_force(input),
+            28 => self.voigt_tangential(input),
+            29 => self.voigt_rolling(input),
+            30 => self.timestep(input),
+            31 => self.parameter_names(input, false),
+            32 => self.layout(input),
+            33 => self.state_layout(input),
+            34 => {
+                // write over a state: another model's, or garbage
+                let i = self.state(input);
+                for _ in 0..input.below(6) {
+                    let slot = input.below(MAX_STATE);
+                    self.pool[i][slot] = match input.below(3) {
+                        0 => [0.0, 1.0, 2.0, 3.0, -1.0][input.below(5)],
+                        _ => input.f64(),
+                    };
+                }
+            }
+            _ => self.march(input),
+        }
+    }
+
+    fn bond_params_default(&mut self, input: &mut Input) {
+        let mut p = Place::new(bond_params(true));
+        let how = input.pointer();
+        // SAFETY: null, misaligned (checked) or valid.
+        let status = unsafe { fb::granbond_bond_params_default(p.ptr(how)) };
+        if self.answer("granbond_bond_params_default", status) {
+            assert_eq!(p.get(), BondParams::default());
+        }
+    }
+
+    fn bond_model_new(&mut self, input: &mut Input, params: BondParams) {
+        let mut p = Place::new(params);
+        let mut m = Place::new(null_mut::<BondModel>());
+        let (hp, hm) = (input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid pointers.
+        let status = unsafe { fb::granbond_bond_model_new(p.ptr(hp), m.ptr(hm)) };
+        if self.answer("granbond_bond_model_new", status) {
+            assert!(!m.get().is_null(), "granbond_bond_model_new: OK without a model");
+            self.bond_models.push(m.get());
+        } else {
+            assert!(
+                m.get().is_null(),
+                "granbond_bond_model_new: {status:?} left a model"
+            );
+        }
+    }
+
+    fn voigt_params_default(&mut self, input: &mut Input) {
+        let mut p = Place::new(VoigtParams {
+            k_n: f64::NAN,
+            ..VoigtParams::default()
+        });
+        let how = input.pointer();
+        // SAFETY: null, misaligned or valid.
+        let status = unsafe { fc::granbond_voigt_params_default(p.ptr(how)) };
+        if self.answer("granbond_voigt_params_default", status) {
+            assert_eq!(p.get(), VoigtParams::default());
+        }
+    }
+
+    fn voigt_model_new(&mut self, input: &mut Input, params: VoigtParams) {
+        let mut p = Place::new(params);
+        let mut m = Place::new(null_mut::<VoigtModel>());
+        let (hp, hm) = (input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid pointers.
+        let status = unsafe { fc::granbond_voigt_model_new(p.ptr(hp), m.ptr(hm)) };
+        if self.answer("granbond_voigt_model_new", status) {
+            assert!(!m.get().is_null(), "granbond_voigt_model_new: OK without a model");
+            self.voigt_models.push(m.get());
+        } else {
+            assert!(
+                m.get().is_null(),
+                "granbond_voigt_model_new: {status:?} left a model"
+            );
+        }
+    }
+
+    fn parameter_names(&mut self, input: &mut Input, bond: bool) {
+        let (count, function) = if bond {
+            (
+                fb::granbond_bond_parameter_count(),
+                "granbond_bond_parameter_name",
+            )
+        } else {
+            (
+                fc::granbond_voigt_parameter_count(),
+                "granbond_voigt_parameter_name",
+            )
+        };
+        let rows = if bond {
+            PARAMETERS.len()
+        } else {
+            VOIGT_PARAMETERS.len()
+        };
+        assert_eq!(count, rows, "parameter count");
+        self.answer_value(if bond {
+            "granbond_bond_parameter_count"
+        } else {
+            "granbond_voigt_parameter_count"
+        });
+        let id = input.usize();
+        let mut keyword = Place::new(null::<c_char>());
+        let mut liggghts = Place::new(null::<c_char>());
+        let (hk, hl) = (input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid.
+        let status = unsafe {
+            if bond {
+                fb::granbond_bond_parameter_name(id, keyword.ptr(hk), liggghts.ptr(hl))
+            } else {
+                fc::granbond_voigt_parameter_name(id, keyword.ptr(hk), liggghts.ptr(hl))
+            }
+        };
+        if self.answer(function, status) {
+            assert!(id < count, "{function}: OK for id {id} of {count}");
+            for p in [keyword.get(), liggghts.get()] {
+                assert!(!p.is_null());
+                // SAFETY: static NUL-terminated storage of the library.
+                assert!(!unsafe { CStr::from_ptr(p) }.to_bytes().is_empty());
+            }
+        }
+    }
+
+    fn bond_create(&mut self, input: &mut Input, now: bool) {
+        let m = self.bond_model(input);
+        let mut k = Place::new(self.kinematics(input));
+        let step = input.step();
+        let i = self.state(input);
+        let mut created = Place::new(-7i32);
+        let (hk, hs, hc) = (input.pointer(), input.pointer(), input.pointer());
+        let before = self.pool[i];
+        let s = self.state_ptr(i, hs);
+        // SAFETY: pointers null, misaligned or valid; the state holds
+        // BOND_STATE_LEN doubles.
+        let (function, status) = unsafe {
+            if now {
+                let st = fb::granbond_bond_create_now(m, k.ptr(hk), s, created.ptr(hc));
+                ("granbond_bond_create_now", st)
+            } else {
+                let st = fb::granbond_bond_try_create(m, k.ptr(hk), step, s, created.ptr(hc));
+                ("granbond_bond_try_create", st)
+            }
+        };
+        if self.answer(function, status) {
+            let c = created.get();
+            assert!(c == 0 || c == 1, "{function}: created = {c}");
+            if c == 1 {
+                assert_eq!(
+                    self.pool[i][0], 1.0,
+                    "{function}: created, but the status slot is not intact"
+                );
+            }
+            self.check_state_finite(function, i, BOND_STATE_LEN, &before);
+        }
+    }
+
+    fn bond_may_create(&mut self, input: &mut Input) {
+        let m = self.bond_model(input);
+        let i = self.state(input);
+        let how = input.pointer();
+        let step = input.step();
+        let s = self.state_ptr(i, how);
+        // SAFETY: null, misaligned or valid.
+        let answer = unsafe { fb::granbond_bond_may_create(m, s, step) };
+        assert!(
+            answer == 0 || answer == 1,
+            "granbond_bond_may_create answered {answer}"
+        );
+        if m.is_null() || how != Pointer::Valid {
+            assert_eq!(
+                answer, 0,
+                "granbond_bond_may_create: 1 for a null or misaligned pointer"
+            );
+        }
+        self.answer_value("granbond_bond_may_create");
+    }
+
+    fn bond_compute(&mut self, input: &mut Input) {
+        let m = self.bond_model(input);
+        let mut k = Place::new(self.kinematics(input));
+        let dt = self.dt(input);
+        let i = self.state(input);
+        let mut out = Place::new(BondOutput::default());
+        let (hk, hs, ho) = (input.pointer(), input.pointer(), input.pointer());
+        let before = self.pool[i];
+        let s = self.state_ptr(i, hs);
+        // SAFETY: pointers null, misaligned or valid for their sizes.
+        let status = unsafe { fb::granbond_bond_compute(m, k.ptr(hk), dt, s, out.ptr(ho)) };
+        let function = "granbond_bond_compute";
+        if self.answer(function, status) {
+            if all_finite(&before[..BOND_STATE_LEN]) {
+                self.check_bond_output(function, &out.get());
+            }
+            self.check_state_finite(function, i, BOND_STATE_LEN, &before);
+        }
+    }
+
+    /// Several steps of one pair moving with its velocities: reaches the
+    /// hysteresis, damping and breakage paths that one step does not.
+    fn march(&mut self, input: &mut Input) {
+        let bond = input.below(2) == 0;
+        let i = self.state(input);
+        let mut k = self.kinematics(input);
+        let dt = [1e-7, 1e-6, 1e-5][input.below(3)];
+        let scale = [1.0, 10.0, 100.0, 1000.0][input.below(4)];
+        for _ in 0..input.below(32) {
+            for c in 0..3 {
+                k.x_i[c] += scale * k.v_i[c] * dt;
+                k.x_j[c] += scale * k.v_j[c] * dt;
+            }
+            let before = self.pool[i];
+            let s = self.pool[i].as_mut_ptr();
+            if bond {
+                let Some(&m) = self.bond_models.first() else {
+                    return;
+                };
+                let mut o = BondOutput::default();
+                let mut created = 0;
+                // SAFETY: valid pointers; the state holds BOND_STATE_LEN doubles.
+                let st = unsafe { fb::granbond_bond_try_create(m, &k, 0, s, &mut created) };
+                self.answer("granbond_bond_try_create", st);
+                // SAFETY: as above.
+                let st = unsafe { fb::granbond_bond_compute(m, &k, dt, s, &mut o) };
+                if self.answer("granbond_bond_compute", st) && all_finite(&before[..BOND_STATE_LEN]) {
+                    self.check_bond_output("granbond_bond_compute", &o);
+                }
+            } else {
+                let Some(&m) = self.voigt_models.first() else {
+                    return;
+                };
+                let mut o = ContactOutput::default();
+                // SAFETY: valid pointers; the state holds CONTACT_STATE_LEN doubles.
+                let st = unsafe { fc::granbond_voigt_compute(m, &k, dt, s, &mut o) };
+                if self.answer("granbond_voigt_compute", st) && all_finite(&before[..CONTACT_STATE_LEN]) {
+                    self.check_contact_output("granbond_voigt_compute", &o);
+                }
+            }
+        }
+        self.pair = k;
+    }
+
+    /// A count for a batch: at most the buffers' size.
+    fn count(&mut self, input: &mut Input) -> usize {
+        input.below(MAX_BATCH + 1)
+    }
+
+    fn pairs(&mut self, input: &mut Input, count: usize) -> Vec<PairKinematics> {
+        (0..count).map(|_| self.kinematics(input)).collect()
+    }
+
+    fn batch_ptr<T>(v: &mut [T], how: Pointer) -> *mut T {
+        match how {
+            Pointer::Null => null_mut(),
+            Pointer::Misaligned => (v.as_mut_ptr() as *mut u8).wrapping_add(1) as *mut T,
+            Pointer::Valid => v.as_mut_ptr(),
+        }
+    }
+
+    fn bond_batch(&mut self, input: &mut Input) {
+        let m = self.bond_model(input);
+        self.contiguous_batch(
+            input,
+            "granbond_bond_compute_batch",
+            BOND_STATE_LEN,
+            // SAFETY: buffers of at least `count` elements (null or
+            // misaligned pointers are checked); `failed` may be null.
+            |count, k, dt, s, o, failed| unsafe {
+                fb::granbond_bond_compute_batch(m, count, k, dt, s, o, failed)
+            },
+            Self::check_bond_output,
+        );
+    }
+
+    /// The batch calls over contiguous states: `call(count, kinematics,
+    /// dt, states, out, failed_index)`, each output checked by `check`.
+    fn contiguous_batch<O: Copy + Default>(
+        &mut self,
+        input: &mut Input,
+        function: &'static str,
+        state_len: usize,
+        call: impl FnOnce(usize, *const PairKinematics, f64, *mut f64, *mut O, *mut usize) -> Status,
+        check: fn(&mut Self, &'static str, &O),
+    ) {
+        let count = self.count(input);
+        // one more than `count`, so a misaligned pointer stays inside
+        let mut k = self.pairs(input, count + 1);
+        let dt = self.dt(input);
+        let mut out = vec![O::default(); count + 1];
+        let mut failed = Place::new(usize::MAX);
+        let (hk, hs, ho, hf) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
+        let before = self.flat.clone();
+        let s = Self::batch_ptr(&mut self.flat, hs);
+        let status = call(
+            count,
+            Self::batch_ptr(&mut k, hk),
+            dt,
+            s,
+            Self::batch_ptr(&mut out, ho),
+            failed.ptr(hf),
+        );
+        if self.answer(function, status) {
+            if all_finite(&before[..count * state_len]) {
+                for o in &out[..count] {
+                    check(self, function, o);
+                }
+            }
+        } else if hf == Pointer::Valid && failed.get() != usize::MAX {
+            assert!(
+                failed.get() < count,
+                "{function}: failed_index {} of {count}",
+                failed.get()
+            );
+        }
+    }
+
+    /// Distinct pool entries, then some of them replaced by null or
+    /// misaligned pointers.
+    fn scattered_pointers(&mut self, input: &mut Input, count: usize) -> Vec<*mut f64> {
+        let start = input.below(POOL);
+        let mut p: Vec<*mut f64> = (0..count)
+            .map(|c| self.pool[(start + c) % POOL].as_mut_ptr())
+            .collect();
+        if count > 0 && input.below(4) == 0 {
+            let c = input.below(count);
+            p[c] = match input.below(2) {
+                0 => null_mut(),
+                _ => (p[c] as *mut u8).wrapping_add(1) as *mut f64,
+            };
+        }
+        p
+    }
+
+    fn bond_scattered(&mut self, input: &mut Input) {
+        let m = self.bond_model(input);
+        let count = self.count(input).min(POOL);
+        let mut k = self.pairs(input, count + 1);
+        let dt = self.dt(input);
+        let mut states = self.scattered_pointers(input, count);
+        states.push(null_mut());
+        let mut out = vec![BondOutput::default(); count + 1];
+        let mut failed = Place::new(usize::MAX);
+        let (hk, hp, ho, hf) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
+        let before = self.pool.clone();
+        // SAFETY: `count` distinct states of BOND_STATE_LEN doubles, buffers
+        // of at least `count` elements (null or misaligned ones are checked).
+        let status = unsafe {
+            fb::granbond_bond_compute_scattered(
+                m,
+                count,
+                Self::batch_ptr(&mut k, hk),
+                dt,
+                Self::batch_ptr(&mut states, hp),
+                Self::batch_ptr(&mut out, ho),
+                failed.ptr(hf),
+            )
+        };
+        self.after_scattered(
+            "granbond_bond_compute_scattered",
+            status,
+            &out[..count],
+            &before,
+            hf,
+            &failed,
+        );
+    }
+
+    fn after_scattered(
+        &mut self,
+        function: &'static str,
+        status: Status,
+        out: &[BondOutput],
+        before: &[[f64; MAX_STATE + 1]],
+        hf: Pointer,
+        failed: &Place<usize>,
+    ) {
+        if self.answer(function, status) {
+            if before.iter().all(|s| all_finite(&s[..BOND_STATE_LEN])) {
+                for o in out {
+                    self.check_bond_output(function, o);
+                }
+            }
+        } else if hf == Pointer::Valid && failed.get() != usize::MAX {
+            assert!(
+                failed.get() < out.len(),
+                "{function}: failed_index {} of {}",
+                failed.get(),
+                out.len()
+            );
+        }
+    }
+
+    fn bond_indexed(&mut self, input: &mut Input) {
+        let m = self.bond_model(input);
+        let count = self.count(input).min(POOL);
+        let atoms = input.below(MAX_ATOMS + 1);
+        let mut x = Vec::with_capacity(3 * atoms + 1);
+        let mut v = Vec::with_capacity(3 * atoms + 1);
+        let mut w = Vec::with_capacity(3 * atoms + 1);
+        let mut radius = Vec::with_capacity(atoms + 1);
+        for a in 0..atoms {
+            let k = self.kinematics(input);
+            let (xs, vs, ws, r) = if a % 2 == 0 {
+                (k.x_i, k.v_i, k.w_i, k.radius_i)
+            } else {
+                (k.x_j, k.v_j, k.w_j, k.radius_j)
+            };
+            x.extend(xs);
+            v.extend(vs);
+            w.extend(ws);
+            radius.push(r);
+        }
+        for a in [&mut x, &mut v, &mut w, &mut radius] {
+            a.push(0.0);
+        }
+        let pairs: Vec<i32> = (0..2 * count + 1)
+            .map(|_| match input.below(8) {
+                0 => input.i32(),
+                1 => atoms as i32,
+                _ => input.below(atoms.max(1)) as i32,
+            })
+            .collect();
+        let (hx, hv, hw, hr) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
+        let mut a = Place::new(AtomArrayPointers {
+            x: Self::batch_ptr(&mut x, hx),
+            v: Self::batch_ptr(&mut v, hv),
+            omega: Self::batch_ptr(&mut w, hw),
+            radius: Self::batch_ptr(&mut radius, hr),
+            count: atoms,
+        });
+        if input.below(8) == 0 {
+            // a count the arrays cannot hold: only with null arrays, which
+            // the ABI must refuse before it reads them
+            a = Place::new(AtomArrayPointers {
+                x: null(),
+                v: null(),
+                omega: null(),
+                radius: null(),
+                count: input.usize(),
+            });
+        }
+        let dt = self.dt(input);
+        let mut states = self.scattered_pointers(input, count);
+        states.push(null_mut());
+        let mut out = vec![BondOutput::default(); count + 1];
+        let mut failed = Place::new(usize::MAX);
+        let (ha, hp, hs, ho, hf) = (
+            input.pointer(),
+            input.pointer(),
+            input.pointer(),
+            input.pointer(),
+            input.pointer(),
+        );
+        let mut pairs = pairs;
+        let before = self.pool.clone();
+        // SAFETY: arrays of `atoms->count` atoms, `count` distinct states,
+        // `2 count` indices, `count` outputs (null or misaligned checked).
+        let status = unsafe {
+            fb::granbond_bond_compute_indexed(
+                m,
+                count,
+                a.ptr(ha),
+                Self::batch_ptr(&mut pairs, hp),
+                dt,
+                Self::batch_ptr(&mut states, hs),
+                Self::batch_ptr(&mut out, ho),
+                failed.ptr(hf),
+            )
+        };
+        self.after_scattered(
+            "granbond_bond_compute_indexed",
+            status,
+            &out[..count],
+            &before,
+            hf,
+            &failed,
+        );
+    }
+
+    fn wall_try_create(&mut self, input: &mut Input) {
+        let m = self.bond_model(input);
+        let sphere = self.sphere(input);
+        let mut sp = Place::new(sphere);
+        let mut point = Place::new([sphere.x[0] + sphere.radius, sphere.x[1], sphere.x[2]]);
+        if input.below(3) == 0 {
+            point = Place::new(input.vec3());
+        }
+        let step = input.step();
+        let i = self.state(input);
+        let mut created = Place::new(-7i32);
+        let (h1, h2, h3, h4) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
+        let before = self.pool[i];
+        let s = self.state_ptr(i, h3);
+        // SAFETY: null, misaligned or valid; the state holds
+        // WALL_BOND_STATE_LEN doubles.
+        let status = unsafe {
+            fb::granbond_wall_bond_try_create(
+                m,
+                sp.ptr(h1),
+                point.ptr(h2) as *const f64,
+                step,
+                s,
+                created.ptr(h4),
+            )
+        };
+        let function = "granbond_wall_bond_try_create";
+        if self.answer(function, status) {
+            let c = created.get();
+            assert!(c == 0 || c == 1, "{function}: created = {c}");
+            self.check_state_finite(function, i, WALL_BOND_STATE_LEN, &before);
+        }
+    }
+
+    fn wall_compute(&mut self, input: &mut Input) {
+        let m = self.bond_model(input);
+        let mut sp = Place::new(self.sphere(input));
+        let mut velocity = Place::new(match input.below(3) {
+            0 => input.vec3(),
+            _ => [0.0; 3],
+        });
+        let dt = self.dt(input);
+        let i = self.state(input);
+        let mut out = Place::new(BondOutput::default());
+        let (h1, h2, h3, h4) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
+        let before = self.pool[i];
+        let s = self.state_ptr(i, h3);
+        // SAFETY: as in wall_try_create.
+        let status = unsafe {
+            fb::granbond_wall_bond_compute(m, sp.ptr(h1), velocity.ptr(h2) as *const f64, dt, s, out.ptr(h4))
+        };
+        let function = "granbond_wall_bond_compute";
+        if self.answer(function, status) {
+            if all_finite(&before[..WALL_BOND_STATE_LEN]) {
+                self.check_bond_output(function, &out.get());
+            }
+            self.check_state_finite(function, i, WALL_BOND_STATE_LEN, &before);
+        }
+    }
+
+    /// `granbond_bond_max_distance` and `_contact_distance_factor`.
+    fn bond_reach(&mut self, input: &mut Input) {
+        let m = self.bond_model(input);
+        let length = match input.below(2) {
+            0 => input.f64(),
+            _ => 2e-3,
+        };
+        let mut out = Place::new(f64::NAN);
+        let how = input.pointer();
+        // SAFETY: null, misaligned or valid.
+        let (function, status) = unsafe {
+            if input.below(2) == 0 {
+                let st = fb::granbond_bond_max_distance(m, length, out.ptr(how));
+                ("granbond_bond_max_distance", st)
+            } else {
+                let st = fb::granbond_bond_contact_distance_factor(m, length, out.ptr(how));
+                ("granbond_bond_contact_distance_factor", st)
+            }
+        };
+        if self.answer(function, status) {
+            let d = out.get();
+            // infinite is documented (a bond that never breaks); NaN is not
+            assert!(d >= 0.0, "{function}({length}) = {d}");
+        }
+    }
+
+    /// The three time-step estimates.
+    fn timestep(&mut self, input: &mut Input) {
+        let which = input.below(3);
+        let bodies: Vec<f64> = (0..4)
+            .map(|b| match input.below(3) {
+                0 => input.f64(),
+                _ => [1e-3, 1.3e-3, 1e-5, 2e-5][b],
+            })
+            .collect();
+        let mut out = Place::new(f64::NAN);
+        let how = input.pointer();
+        let (r1, r2, m1, m2) = (bodies[0], bodies[1], bodies[2], bodies[3]);
+        let (function, status) = if which == 2 {
+            let m = self.voigt_model(input);
+            // SAFETY: null, misaligned or valid.
+            let st = unsafe { fc::granbond_voigt_critical_timestep(m, r1, r2, m1, m2, out.ptr(how)) };
+            ("granbond_voigt_critical_timestep", st)
+        } else {
+            let m = self.bond_model(input);
+            // SAFETY: null, misaligned or valid.
+            unsafe {
+                if which == 0 {
+                    let st = fb::granbond_bond_critical_timestep(m, r1, r2, m1, m2, out.ptr(how));
+                    ("granbond_bond_critical_timestep", st)
+                } else {
+                    let st = fb::granbond_bond_recommended_timestep(m, r1, r2, m1, m2, out.ptr(how));
+                    ("granbond_bond_recommended_timestep", st)
+                }
+            }
+        };
+        if self.answer(function, status) {
+            let dt = out.get();
+            // infinite: a model without stiffness has no limit
+            assert!(dt > 0.0, "{function}({bodies:?}) = {dt}");
+        }
+    }
+
+    fn voigt_compute(&mut self, input: &mut Input) {
+        let m = self.voigt_model(input);
+        let mut k = Place::new(self.kinematics(input));
+        let dt = self.dt(input);
+        let i = self.state(input);
+        let mut out = Place::new(ContactOutput::default());
+        let (hk, hs, ho) = (input.pointer(), input.pointer(), input.pointer());
+        let before = self.pool[i];
+        let s = self.state_ptr(i, hs);
+        // SAFETY: null, misaligned or valid; the state holds CONTACT_STATE_LEN.
+        let status = unsafe { fc::granbond_voigt_compute(m, k.ptr(hk), dt, s, out.ptr(ho)) };
+        let function = "granbond_voigt_compute";
+        if self.answer(function, status) {
+            if all_finite(&before[..CONTACT_STATE_LEN]) {
+                self.check_contact_output(function, &out.get());
+            }
+            self.check_state_finite(function, i, CONTACT_STATE_LEN, &before);
+        }
+    }
+
+    fn voigt_batch(&mut self, input: &mut Input) {
+        let m = self.voigt_model(input);
+        self.contiguous_batch(
+            input,
+            "granbond_voigt_compute_batch",
+            CONTACT_STATE_LEN,
+            // SAFETY: as in bond_batch.
+            |count, k, dt, s, o, failed| unsafe {
+                fc::granbond_voigt_compute_batch(m, count, k, dt, s, o, failed)
+            },
+            Self::check_contact_output,
+        );
+    }
+
+    fn voigt_plane(&mut self, input: &mut Input) {
+        let m = self.voigt_model(input);
+        let mut sp = Place::new(self.sphere(input));
+        let mut pl = Place::new(self.plane(input));
+        let dt = self.dt(input);
+        let i = self.state(input);
+        let mut out = Place::new(ContactOutput::default());
+        let (h1, h2, h3, h4) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
+        let before = self.pool[i];
+        let s = self.state_ptr(i, h3);
+        // SAFETY: null, misaligned or valid.
+        let status =
+            unsafe { fc::granbond_voigt_compute_plane(m, sp.ptr(h1), pl.ptr(h2), dt, s, out.ptr(h4)) };
+        let function = "granbond_voigt_compute_plane";
+        if self.answer(function, status) {
+            if all_finite(&before[..CONTACT_STATE_LEN]) {
+                self.check_contact_output(function, &out.get());
+            }
+            self.check_state_finite(function, i, CONTACT_STATE_LEN, &before);
+        }
+    }
+
+    fn voigt_frame_unchecked(&mut self, input: &mut Input) {
+        let Some(m) = self.live_voigt_model(input) else {
+            return;
+        };
+        let f = self.frame(input);
+        let dt = self.dt(input);
+        let i = self.state(input);
+        let mut out = ContactOutput::default();
+        let s = self.pool[i].as_mut_ptr();
+        // SAFETY: every pointer valid (the entry's contract); the numbers
+        // are arbitrary, which it must answer with a status.
+        let status = unsafe { fc::granbond_voigt_compute_frame_unchecked(m, &f, dt, s, &mut out) };
+        if self.answer_unchecked("granbond_voigt_compute_frame_unchecked", status) {
+            self.check_unchecked_flags(&out);
+        }
+    }
+
+    fn voigt_fields_unchecked(&mut self, input: &mut Input) {
+        let Some(m) = self.live_voigt_model(input) else {
+            return;
+        };
+        let f = self.frame(input);
+        let dt = self.dt(input);
+        let i = self.state(input);
+        let mut out = ContactOutput::default();
+        let s = self.pool[i].as_mut_ptr();
+        // SAFETY: as in voigt_frame_unchecked.
+        let status = unsafe {
+            fc::granbond_voigt_compute_fields_unchecked(
+                m,
+                f.n.as_ptr(),
+                f.overlap,
+                f.lever_i,
+                f.lever_j,
+                f.r_eff,
+                f.v_i.as_ptr(),
+                f.v_j.as_ptr(),
+                f.w_i.as_ptr(),
+                f.w_j.as_ptr(),
+                dt,
+                s,
+                &mut out,
+            )
+        };
+        if self.answer_unchecked("granbond_voigt_compute_fields_unchecked", status) {
+            self.check_unchecked_flags(&out);
+        }
+    }
+
+    fn check_unchecked_flags(&self, o: &ContactOutput) {
+        for flag in [o.touching, o.sliding, o.rolling_slip] {
+            assert!(
+                flag == 0 || flag == 1,
+                "unchecked Voigt entry: flag {flag} in {o:?}"
+            );
+        }
+        let loads: Vec<f64> = o
+            .force_i
+            .iter()
+            .chain(&o.torque_i)
+            .chain(&o.torque_j)
+            .copied()
+            .collect();
+        assert!(all_finite(&loads), "unchecked Voigt entry: OK with loads {o:?}");
+    }
+
+    fn frame_pair(&mut self, input: &mut Input) {
+        let mut k = Place::new(self.kinematics(input));
+        let mut f = Place::new(ContactFrame::default());
+        let (hk, hf) = (input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid.
+        let status = unsafe { fc::granbond_contact_frame_pair(k.ptr(hk), f.ptr(hf)) };
+        if self.answer("granbond_contact_frame_pair", status) {
+            self.frame = f.get();
+            self.check_frame("granbond_contact_frame_pair", &(k.get()));
+        }
+    }
+
+    fn frame_plane(&mut self, input: &mut Input) {
+        let mut sp = Place::new(self.sphere(input));
+        let mut pl = Place::new(self.plane(input));
+        let mut f = Place::new(ContactFrame::default());
+        let (h1, h2, h3) = (input.pointer(), input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid.
+        let status = unsafe { fc::granbond_contact_frame_plane(sp.ptr(h1), pl.ptr(h2), f.ptr(h3)) };
+        if self.answer("granbond_contact_frame_plane", status) {
+            self.frame = f.get();
+            self.check_frame("granbond_contact_frame_plane", &(sp.get(), pl.get()));
+        }
+    }
+
+    /// A frame the ABI built from accepted input: finite, with a unit normal.
+    fn check_frame(&self, function: &str, context: &dyn std::fmt::Debug) {
+        let f = &self.frame;
+        let numbers: Vec<f64> =
+            f.n.iter()
+                .chain(&f.v_i)
+                .chain(&f.v_j)
+                .chain(&f.w_i)
+                .chain(&f.w_j)
+                .chain(&[f.overlap, f.lever_i, f.lever_j, f.r_eff])
+                .copied()
+                .collect();
+        assert!(
+            all_finite(&numbers),
+            "{function}: OK with the frame {f:?} for {context:?}"
+        );
+        let len = f.n.iter().map(|c| c * c).sum::<f64>().sqrt();
+        assert!(
+            (len - 1.0).abs() < 1e-9,
+            "{function}: |n| = {len} in {f:?} for {context:?}"
+        );
+    }
+
+    fn voigt_normal_force(&mut self, input: &mut Input) {
+        let m = self.voigt_model(input);
+        let mut f = Place::new(self.frame(input));
+        let mut out = Place::new(f64::NAN);
+        let (h1, h2) = (input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid.
+        let status = unsafe { fc::granbond_voigt_normal_force(m, f.ptr(h1), out.ptr(h2)) };
+        if self.answer("granbond_voigt_normal_force", status) {
+            self.note_finite("granbond_voigt_normal_force", out.get().is_finite());
+        }
+    }
+
+    fn normal_force(&mut self, input: &mut Input) -> f64 {
+        match input.below(3) {
+            0 => input.f64(),
+            _ => 1e-3,
+        }
+    }
+
+    fn voigt_tangential(&mut self, input: &mut Input) {
+        let m = self.voigt_model(input);
+        let mut f = Place::new(self.frame(input));
+        let fn_ = self.normal_force(input);
+        let dt = self.dt(input);
+        let i = self.state(input);
+        let mut out = Place::new(TangentialOutput::default());
+        let (h1, h2, h3) = (input.pointer(), input.pointer(), input.pointer());
+        let before = self.pool[i];
+        let spring = self.state_ptr(i, h2);
+        // SAFETY: null, misaligned or valid; the spring holds 3 doubles.
+        let status = unsafe { fc::granbond_voigt_tangential(m, f.ptr(h1), fn_, dt, spring, out.ptr(h3)) };
+        let function = "granbond_voigt_tangential";
+        if self.answer(function, status) {
+            let o = out.get();
+            assert!(o.sliding == 0 || o.sliding == 1);
+            if all_finite(&before[..3]) {
+                let loads: Vec<f64> = o
+                    .force_i
+                    .iter()
+                    .chain(&o.torque_i)
+                    .chain(&o.torque_j)
+                    .copied()
+                    .collect();
+                self.note_finite(function, all_finite(&loads));
+            }
+            self.check_state_finite(function, i, 3, &before);
+        }
+    }
+
+    fn voigt_rolling(&mut self, input: &mut Input) {
+        let m = self.voigt_model(input);
+        let mut f = Place::new(self.frame(input));
+        let fn_ = self.normal_force(input);
+        let dt = self.dt(input);
+        let i = self.state(input);
+        let mut torque = Place::new([f64::NAN; 3]);
+        let mut slip = Place::new(-7i32);
+        let (h1, h2, h3, h4) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
+        let before = self.pool[i];
+        let angle = self.state_ptr(i, h2);
+        // SAFETY: null, misaligned or valid; angle and torque hold 3 doubles.
+        let status = unsafe {
+            fc::granbond_voigt_rolling(
+                m,
+                f.ptr(h1),
+                fn_,
+                dt,
+                angle,
+                torque.ptr(h3) as *mut f64,
+                slip.ptr(h4),
+            )
+        };
+        let function = "granbond_voigt_rolling";
+        if self.answer(function, status) {
+            assert!(
+                slip.get() == 0 || slip.get() == 1,
+                "{function}: slip {}",
+                slip.get()
+            );
+            if all_finite(&before[..3]) {
+                self.note_finite(function, all_finite(&torque.get()));
+            }
+            self.check_state_finite(function, i, 3, &before);
+        }
+    }
+
+    fn layout(&mut self, input: &mut Input) {
+        assert_eq!(abi::granbond_abi_version(), abi::GRANBOND_ABI_VERSION);
+        self.answer_value("granbond_abi_version");
+        let mut l = library_layout();
+        let mutated = input.below(2) == 0;
+        if mutated {
+            input.mutate(&mut l);
+        }
+        let mut p = Place::new(l);
+        let how = input.pointer();
+        // SAFETY: null, misaligned or valid for a whole Layout.
+        let status = unsafe { abi::granbond_check_layout(p.ptr(how) as *const Layout) };
+        if self.answer("granbond_check_layout", status) {
+            assert_eq!(
+                l,
+                library_layout(),
+                "granbond_check_layout accepted a different layout"
+            );
+        } else if how == Pointer::Valid {
+            assert_ne!(
+                l,
+                library_layout(),
+                "granbond_check_layout refused the library's own layout"
+            );
+        }
+    }
+
+    fn state_layout(&mut self, input: &mut Input) {
+        let kind = input.i32();
+        let len = granbond_state_len(kind);
+        let want = match kind {
+            0 => BOND_STATE_LEN,
+            1 => WALL_BOND_STATE_LEN,
+            2 => CONTACT_STATE_LEN,
+            _ => 0,
+        };
+        assert_eq!(len, want, "granbond_state_len({kind})");
+        self.answer_value("granbond_state_len");
+        let index = input.usize();
+        let mut name = Place::new(null::<c_char>());
+        let mut flips = Place::new(-7i32);
+        let (h1, h2) = (input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid.
+        let status = unsafe { granbond_state_slot(kind, index, name.ptr(h1), flips.ptr(h2)) };
+        if self.answer("granbond_state_slot", status) {
+            assert!(index < len, "granbond_state_slot: OK for slot {index} of {len}");
+            assert!(flips.get() == 0 || flips.get() == 1);
+            // SAFETY: static NUL-terminated storage of the library.
+            assert!(!unsafe { CStr::from_ptr(name.get()) }.to_bytes().is_empty());
+        }
+    }
+}
+
+/// Runs the calls `data` describes, checking every answer (panics on a
+/// wrong one), and adds them to `tally`.
+pub fn run(data: &[u8], tally: &mut Tally) {
+    tally.inputs += 1;
+    let mut input = Input::new(data);
+    let mut session = Session::new(tally);
+    while !input.done() {
+        session.op(&mut input);
+    }
+    // the error record is reachable at every moment, also after the last call
+    let _ = message();
+    session.answer_value("granbond_last_error_message");
+    let _ = granbond_last_error_parameter();
+    session.answer_value("granbond_last_error_parameter");
+}

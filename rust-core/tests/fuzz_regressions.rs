@@ -1,0 +1,224 @@
+//! What the C ABI fuzz target found (docs/fuzzing.md), one claim per
+//! test; the inputs that found them are in `fuzz/corpus/abi/regression-*`.
+
+use granbond::bond::{BondModel, BondOutput, BondParams, BOND_STATE_LEN};
+use granbond::contact::{ContactOutput, VoigtModel, VoigtParams, CONTACT_STATE_LEN};
+use granbond::ffi::bond::{
+    granbond_bond_compute_batch, granbond_bond_compute_indexed, granbond_bond_compute_scattered,
+    granbond_bond_critical_timestep, granbond_bond_recommended_timestep, AtomArrayPointers,
+};
+use granbond::ffi::contact::{granbond_voigt_compute_batch, granbond_voigt_critical_timestep};
+use granbond::ffi::error::granbond_last_error_message;
+use granbond::ffi::Status;
+use granbond::kinematics::PairKinematics;
+use std::ffi::CStr;
+
+fn message() -> String {
+    // SAFETY: the library's NUL-terminated record.
+    unsafe { CStr::from_ptr(granbond_last_error_message()) }
+        .to_string_lossy()
+        .into_owned()
+}
+
+fn bond_model() -> BondModel {
+    BondModel::new(BondParams {
+        k_fn1: 1e9,
+        ku_fn1: 1e9,
+        k_fn2: 1e9,
+        ku_fn2: 1e9,
+        k_ft: 1e9,
+        k_tn: 1e9,
+        ku_tn: 1e9,
+        k_tt: 1e9,
+        ku_tt: 1e9,
+        ..BondParams::default()
+    })
+    .unwrap()
+}
+
+/// A `size_t` one byte past an aligned one, inside `words`.
+fn misaligned(words: &mut [u64; 2]) -> *mut usize {
+    (words.as_mut_ptr() as *mut u8).wrapping_add(1) as *mut usize
+}
+
+fn expect_failed_index_refused(function: &str, status: Status, words: &[u64; 2]) {
+    assert_eq!(status, Status::NullPointer, "{function}: {}", message());
+    let m = message();
+    assert!(
+        m.starts_with(function) && m.contains("`failed_index`") && m.contains("misaligned"),
+        "{function}: message \"{m}\""
+    );
+    assert_eq!(
+        *words,
+        [0, 0],
+        "{function} wrote through the misaligned failed_index"
+    );
+}
+
+#[test]
+fn a_misaligned_failed_index_is_refused_not_written_through() {
+    let model = bond_model();
+    // a pair the batch refuses (NaN), so the call has an index to report
+    let bad = PairKinematics {
+        x_i: [f64::NAN, 0.0, 0.0],
+        radius_i: 1e-3,
+        radius_j: 1e-3,
+        ..PairKinematics::default()
+    };
+    let mut state = [0.0; BOND_STATE_LEN];
+    let mut out = BondOutput::default();
+
+    let mut words = [0u64; 2];
+    // SAFETY: one bond, valid pointers but `failed_index`.
+    let status = unsafe {
+        granbond_bond_compute_batch(
+            &model,
+            1,
+            &bad,
+            1e-7,
+            state.as_mut_ptr(),
+            &mut out,
+            misaligned(&mut words),
+        )
+    };
+    expect_failed_index_refused("granbond_bond_compute_batch", status, &words);
+
+    let mut states = [state.as_mut_ptr()];
+    let mut words = [0u64; 2];
+    // SAFETY: as above.
+    let status = unsafe {
+        granbond_bond_compute_scattered(
+            &model,
+            1,
+            &bad,
+            1e-7,
+            states.as_mut_ptr(),
+            &mut out,
+            misaligned(&mut words),
+        )
+    };
+    expect_failed_index_refused("granbond_bond_compute_scattered", status, &words);
+
+    let (x, v, r) = ([0.0; 3], [0.0; 3], [1e-3]);
+    let atoms = AtomArrayPointers {
+        x: x.as_ptr(),
+        v: v.as_ptr(),
+        omega: v.as_ptr(),
+        radius: r.as_ptr(),
+        count: 1,
+    };
+    // an index outside the one atom
+    let pairs = [0i32, 5];
+    let mut words = [0u64; 2];
+    // SAFETY: as above.
+    let status = unsafe {
+        granbond_bond_compute_indexed(
+            &model,
+            1,
+            &atoms,
+            pairs.as_ptr(),
+            1e-7,
+            states.as_mut_ptr(),
+            &mut out,
+            misaligned(&mut words),
+        )
+    };
+    expect_failed_index_refused("granbond_bond_compute_indexed", status, &words);
+
+    let voigt = VoigtModel::new(VoigtParams::default()).unwrap();
+    let mut contact = [0.0; CONTACT_STATE_LEN];
+    let mut contact_out = ContactOutput::default();
+    let mut words = [0u64; 2];
+    // SAFETY: as above.
+    let status = unsafe {
+        granbond_voigt_compute_batch(
+            &voigt,
+            1,
+            &bad,
+            1e-7,
+            contact.as_mut_ptr(),
+            &mut contact_out,
+            misaligned(&mut words),
+        )
+    };
+    expect_failed_index_refused("granbond_voigt_compute_batch", status, &words);
+}
+
+#[test]
+fn the_critical_step_of_a_micrometre_sphere_with_rolling_damping_is_positive() {
+    // default rolling damping on a 1 um sphere: damping ratio ~1e8, where
+    // sqrt(1 + zeta^2) - zeta cancels to zero
+    let voigt = VoigtModel::new(VoigtParams::default()).unwrap();
+    let radius: f64 = 1e-6;
+    let mass = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * radius.powi(3);
+    let mut dt = f64::NAN;
+    // SAFETY: valid pointers.
+    let status = unsafe { granbond_voigt_critical_timestep(&voigt, radius, radius, mass, mass, &mut dt) };
+    assert_eq!(status, Status::Ok, "{}", message());
+    // the rolling mode, overdamped: 2 (sqrt(1 + z^2) - z) / omega -> 2 I / c
+    // for the reduced inertia I = 0.2 m R^2 and the damping c
+    let p = VoigtParams::default();
+    let overdamped = 2.0 * 0.2 * mass * radius * radius / (p.gamma_r + p.eta_r);
+    assert!(
+        (dt - overdamped).abs() <= 1e-6 * overdamped,
+        "critical step {dt}, the overdamped rolling limit is {overdamped}"
+    );
+}
+
+#[test]
+fn estimates_that_underflow_are_refused_rather_than_answered_with_zero_or_nan() {
+    let model = bond_model();
+    let voigt = VoigtModel::new(VoigtParams::default()).unwrap();
+    for (radius_j, mass_j) in [(1.3e-3, 5e-324), (1.3e-3, f64::MIN_POSITIVE), (1e-300, 1e-300)] {
+        let bodies = (1e-3, radius_j, 1e-5, mass_j);
+        for function in [
+            "granbond_bond_critical_timestep",
+            "granbond_bond_recommended_timestep",
+            "granbond_voigt_critical_timestep",
+        ] {
+            let mut dt = -1.0;
+            // SAFETY: valid pointers.
+            let status = unsafe {
+                match function {
+                    "granbond_bond_critical_timestep" => {
+                        granbond_bond_critical_timestep(&model, 1e-3, radius_j, 1e-5, mass_j, &mut dt)
+                    }
+                    "granbond_bond_recommended_timestep" => {
+                        granbond_bond_recommended_timestep(&model, 1e-3, radius_j, 1e-5, mass_j, &mut dt)
+                    }
+                    _ => granbond_voigt_critical_timestep(&voigt, 1e-3, radius_j, 1e-5, mass_j, &mut dt),
+                }
+            };
+            assert!(
+                status == Status::InvalidArgument || (status == Status::Ok && dt > 0.0),
+                "{function}{bodies:?}: {status:?} with {dt}"
+            );
+            if status == Status::InvalidArgument {
+                assert!(message().contains("mass_j"), "{}", message());
+                assert_eq!(dt, -1.0, "{function} wrote {dt} on failure");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_centre_distance_that_overflows_gives_no_contact_frame() {
+    use granbond::contact::ContactFrame;
+    use granbond::ffi::contact::{granbond_contact_frame_pair, granbond_voigt_compute};
+    let k = PairKinematics {
+        x_i: [2.2e-3, -7.5e240, 0.0],
+        radius_i: 1e-3,
+        radius_j: 1e-3,
+        ..PairKinematics::default()
+    };
+    let mut frame = ContactFrame::default();
+    // SAFETY: valid pointers.
+    let status = unsafe { granbond_contact_frame_pair(&k, &mut frame) };
+    assert_eq!(status, Status::NonFiniteInput, "frame {frame:?}");
+    let voigt = VoigtModel::new(VoigtParams::default()).unwrap();
+    let mut state = [0.0; CONTACT_STATE_LEN];
+    let mut out = ContactOutput::default();
+    // SAFETY: valid pointers.
+    let status = unsafe { granbond_voigt_compute(&voigt, &k, 1e-7, state.as_mut_ptr(), &mut out) };
+    assert_eq!(status, Status::NonFiniteInput, "{out:?}");
+}
