@@ -329,7 +329,10 @@ def mode_spinning(a):
     c = Case("spinning")
     m, kn = al_oxide()
     radius, density = AL_OXIDE["radius"], AL_OXIDE["density"]
-    v0, mu, e_n = 0.5, 0.092, 0.98
+    # v0 small: the spheres slide past each other by ~2 vy t_c, turning the
+    # normal (a geometric effect of order v0 t_c / R relative that the
+    # fixed-normal closed form leaves out; see the tolerance below)
+    v0, mu, e_n = 0.05, 0.092, 0.98
     m_eff = m / 2
     zeta = cf.zeta_for_restitution_no_attraction(e_n)
     gn = cf.gamma_n(kn, m_eff, zeta)
@@ -341,7 +344,7 @@ def mode_spinning(a):
     threshold = cf.spinning_pair_threshold(v0, radius, mu, e_n)
     for eng in engines(a):
         fn = liggghts_pair if eng == "liggghts" else lammps_pair
-        for w0 in (20.0, 50.0, 100.0, 150.0, 200.0, 300.0, 500.0, 1000.0):
+        for w0 in (2.0, 5.0, 10.0, 15.0, 20.0, 30.0, 50.0, 100.0):
             rows = fn(a, f"{eng}_spin_{w0:g}", radius=radius, density=density, v1=(v0, 0.0), v2=(-v0, 0.0),
                       w1=w0, w2=w0, kn=kn, gn=gn, kt=kt, gt=gt, mu=mu, dt=dt, nrun=nrun, gap=3 * 2 * v0 * dt)
             last = rows[-1]
@@ -631,7 +634,8 @@ def mode_cantilever(a):
     spacing, k_bend, k_shear, _, m = beam_numbers()
     nb = n - 1
     rows = run(a.liggghts, "liggghts_beam.in", a.workdir,
-               dict(n=n, load=load, damp=2.0e-3, nrun=40000, every=500), "cantilever", ["step", "ztip", "zp"])
+               dict(n=n, load=load, damp=2.0e-3, kb=BEAM["kb"], nrun=40000, every=500), "cantilever",
+               ["step", "ztip", "zp"])
     tip = -rows[-1]["ztip"]
     discrete = cf.cantilever_tip_discrete(nb, spacing, load, k_bend, k_shear)
     continuum = cf.cantilever_tip_continuum(nb * spacing, load, k_bend * spacing, k_shear * spacing)
@@ -688,7 +692,8 @@ def mode_beam_frequency(a):
     for eng in engines(a):
         if eng == "liggghts":
             rows = run(a.liggghts, "liggghts_beam.in", a.workdir,
-                       dict(n=n, vz=vz, dt=dt, nrun=nrun, every=1), "beam_free", ["step", "ztip", "zp"])
+                       dict(n=n, vz=vz, kb=BEAM["kb"], dt=dt, nrun=nrun, every=1), "beam_free",
+                       ["step", "ztip", "zp"])
         else:
             d_eps = 1.0e-6
             coeffs = (f"voigt 1e4 0 0 0 0 bond/nonlinear lambda {BEAM['lam']} "
