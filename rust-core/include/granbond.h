@@ -264,7 +264,7 @@ typedef struct GbBondOutput {
    */
   double normal_force;
   /**
-   * Section stresses of the undamped loads (spec eq. 14).
+   * Section stresses of the undamped loads (docs/models/bond-nonlinear.md, eq. 14).
    */
   double sigma;
   double tau;
