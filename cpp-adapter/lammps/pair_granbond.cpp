@@ -347,12 +347,14 @@ void PairGranbond::coeff(int narg, char **arg)
             tp.voigt.gamma_r = a.number("rolling <gammar>");
             tp.voigt.mu_r = a.number("rolling <mur>");
             tp.voigt.eta_r = a.number("rolling <etar>");
+        } else if (kw == "noattraction") {
+            tp.voigt.no_attraction = a.onOff("noattraction");
         } else if (kw == "bond/nonlinear") {
             checkBondKeywords(error);
             tp.hasBond = 1;
             parseBond(a, tp.bond);
         } else {
-            a.fail("unknown keyword '" + kw + "' (expected rolling or bond/nonlinear)");
+            a.fail("unknown keyword '" + kw + "' (expected rolling, noattraction or bond/nonlinear)");
         }
     }
 

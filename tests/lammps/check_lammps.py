@@ -288,6 +288,8 @@ BAD = [
     ("negative normal stiffness (core, voigt)", "voigt -1e4 0 0 0 0.5", "k_n"),
     ("unknown model", "hertz 1e4 0 0 0 0.5", "hertz"),
     ("unknown keyword after voigt", f"{VOIGT} rolling 1 2 3", "rolling"),
+    ("noattraction not yes/no", f"{VOIGT} noattraction maybe", "noattraction expects yes|no"),
+    ("noattraction without a value", f"{VOIGT} noattraction", "missing noattraction"),
 ]
 
 
