@@ -147,6 +147,15 @@ void copy3(double *to, const double *from)
     to[2] = from[2];
 }
 
+// The loads an intact bond applied in a force pass, kept in its history for
+// the setup pass of the next run (PairGranbond::kLoadSlots).
+void storeLoads(double *slots, const GbBondOutput &out)
+{
+    copy3(slots, out.force_i);
+    copy3(slots + 3, out.torque_i);
+    copy3(slots + 6, out.torque_j);
+}
+
 }
 
 PairGranbond::PairGranbond(LAMMPS *lmp) :
@@ -404,10 +413,12 @@ void PairGranbond::init_style()
             if (setflag[i][j] && pairs_[at(i, j)].hasBond) anyBond_ = true;
 
     // history: the Voigt contact state, then (if any type pair bonds) the
-    // bond state, with the core's sign-flip flags
-    const int size = static_cast<int>(contactLen_ + (anyBond_ ? bondLen_ : 0));
+    // bond state, with the core's sign-flip flags, and the loads the bond
+    // applied in the latest force pass (kLoadSlots, see transfer_history)
+    const int coreSlots = static_cast<int>(contactLen_ + (anyBond_ ? bondLen_ : 0));
+    const int size = coreSlots + (anyBond_ ? kLoadSlots : 0);
     transferSign_.assign(size, 1.0);
-    for (int k = 0; k < size; k++) {
+    for (int k = 0; k < coreSlots; k++) {
         const bool contact = k < static_cast<int>(contactLen_);
         int32_t flips = 0;
         const char *name = nullptr;
@@ -481,7 +492,18 @@ void PairGranbond::transfer_history(double *source, double *target, int, int)
 void PairGranbond::transfer_history(double *source, double *target)
 #endif
 {
-    for (int k = 0; k < sizeHistory_; k++) target[k] = transferSign_[k] * source[k];
+    const int coreSlots = anyBond_ ? sizeHistory_ - kLoadSlots : sizeHistory_;
+    for (int k = 0; k < coreSlots; k++) target[k] = transferSign_[k] * source[k];
+    if (!anyBond_) return;
+    // the bond's last loads seen from the other atom: the force on it is
+    // minus the force on this one, and the two torques change places
+    const double *from = source + coreSlots;
+    double *to = target + coreSlots;
+    for (int c = 0; c < 3; c++) {
+        to[c] = -from[c];
+        to[3 + c] = from[6 + c];
+        to[6 + c] = from[3 + c];
+    }
 }
 
 // ------------------------------------------------------------ compute
@@ -563,7 +585,7 @@ void PairGranbond::compute(int eflag, int vflag)
     double **firsthistory = fixHistory_->firstvalue;
     const int size = sizeHistory_;
 
-    double scratch[GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN];
+    double scratch[GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN + kLoadSlots];
     GbPairKinematics k;
 
     // One voigt step of a touching pair, from the geometry the loop has: the
@@ -588,6 +610,29 @@ void PairGranbond::compute(int eflag, int vflag)
             failPair(i, j, "granbond_voigt_compute_fields_unchecked");
     };
 
+    // The setup pass: the loads of the stored state, not advanced (the
+    // core's evaluation in the frame voigtStep hands over, field by field).
+    auto voigtEvaluate = [&](size_t tp, int i, int j, const double *del, double rsq, double radsum,
+                             const double *state, GbContactOutput &cout) {
+        const double radi = radius[i], radj = radius[j];
+        const double r = std::sqrt(rsq);
+        const double rinv = 1.0 / r;
+        GbContactFrame frame;
+        frame.n[0] = del[0] * rinv;
+        frame.n[1] = del[1] * rinv;
+        frame.n[2] = del[2] * rinv;
+        frame.overlap = radsum - r;
+        frame.lever_i = radi;
+        frame.lever_j = radj;
+        frame.r_eff = pairs_[tp].voigt.rolling ? radi * radj / radsum : 0.0;
+        copy3(frame.v_i, row(v0, i));
+        copy3(frame.v_j, row(v0, j));
+        copy3(frame.w_i, row(w0, i));
+        copy3(frame.w_j, row(w0, j));
+        if (granbond_voigt_evaluate_frame(voigt_[tp], &frame, state, &cout) != GB_STATUS_OK)
+            failPair(i, j, "granbond_voigt_evaluate_frame");
+    };
+
     // the queued bonds of a block (see PendingBond): advanced together, then
     // their loads (or, for a bond that broke, the contact's) applied
     for (BondBatch &b : bondBatches_) b.count = 0;
@@ -600,9 +645,10 @@ void PairGranbond::compute(int eflag, int vflag)
         for (size_t q = 0; q < n; q++) {
             const PendingBond &p = b.bonds[q];
             const GbBondOutput &out = b.outputs[q];
-            if (out.status == GB_BOND_STATUS_INTACT)
+            if (out.status == GB_BOND_STATUS_INTACT) {
+                storeLoads(p.history + size - kLoadSlots, out);
                 apply(f0, t0, p.i, p.j, out.force_i, out.torque_i, out.torque_j, p.del, nlocal, newton_pair);
-            else if (p.touching)
+            } else if (p.touching)
                 apply(f0, t0, p.i, p.j, p.contact.force_i, p.contact.torque_i, p.contact.torque_j, p.del, nlocal,
                       newton_pair);
             else {   // broken and apart: the pair is forgotten, as pair granular's
@@ -670,15 +716,21 @@ void PairGranbond::compute(int eflag, int vflag)
                 if (b.full()) advanceBonds(b);
                 return;
             }
-            if (bondState[0] == GB_BOND_STATUS_INTACT) {   // setup: on the scratch copy
-                pairKinematics(i, j);
-                if (granbond_bond_compute(bondModel, &k, dt, bondState, &bout) != GB_STATUS_OK)
-                    failPair(i, j, "granbond_bond_compute");
-                intact = bout.status == GB_BOND_STATUS_INTACT;
+            if (bondState[0] == GB_BOND_STATUS_INTACT) {
+                // setup: the loads of the latest force pass, as the
+                // LIGGGHTS adapter, so a second run or a restart starts
+                // from the forces an uninterrupted run has
+                const double *loads = history + size - kLoadSlots;
+                copy3(bout.force_i, loads);
+                copy3(bout.torque_i, loads + 3);
+                copy3(bout.torque_j, loads + 6);
+                intact = true;
             }
         }
         GbContactOutput cout;
-        if (touching) {
+        if (touching && !advance) {
+            voigtEvaluate(tp, i, j, del, rsq, radsum, contactState, cout);
+        } else if (touching) {
             voigtStep(tp, i, j, del, rsq, radsum, contactState, cout);
         } else {
             for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;

@@ -70,6 +70,9 @@ private:
     // breaks, the pair's contact loads of this step (kept here) act
     // instead, or, apart, the pair is forgotten, as in the per-pair path.
     static const size_t kBondBlock = 128;
+    // After the core's slots, if any type pair bonds: force_i, torque_i,
+    // torque_j of the bond's latest force pass.
+    static const int kLoadSlots = 9;
     struct PendingBond {
         int i, j;
         int *touch;

@@ -332,10 +332,21 @@ void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_force
             scratch[k] = (fusedRolling_ || k < 3) ? stored[k] : 0.0;
         state = scratch;
     }
+    GbContactOutput out;
+    if (state == scratch && !(sidata.computeflag && sidata.shearupdate)) {
+        // setup or output pass: the loads of the stored state, not advanced
+        GbContactFrame frame;
+        engineFrame(sidata, frame);
+        if (granbond_voigt_evaluate_frame(share_->fusedModel(sidata.itype, sidata.jtype), &frame, scratch, &out) !=
+            GB_STATUS_OK)
+            voigtFailed(lmp, sidata, "model voigt");
+        sidata.Fn = out.normal_force;
+        addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
+        return;
+    }
     // the frame's fields straight from the engine: no frame is built here
     // and read back by the core
     const EngineContact c = engineContact(sidata);
-    GbContactOutput out;
     if (granbond_voigt_compute_fields_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.overlap,
                                                 c.lever_i, c.lever_j, c.r_eff, c.v_i, c.v_j, c.w_i, c.w_j,
                                                 update->dt, state, &out) != GB_STATUS_OK)
@@ -433,9 +444,12 @@ void VoigtTangential::intersect(const SurfacesIntersectData &sidata, ForceData &
     double scratch[3];
     double *const spring = begin(sidata, false, scratch);
     GbTangentialOutput out;
-    if (granbond_voigt_tangential(models_.at(sidata.itype, sidata.jtype), &share_->frame, sidata.Fn, update->dt,
-                                  spring, &out) != GB_STATUS_OK)
-        voigtFailed(lmp, sidata, "tangential voigt");
+    const GbVoigtModel *model = models_.at(sidata.itype, sidata.jtype);
+    // setup and output passes: the loads of the stored spring, not advanced
+    const GbStatus status =
+        spring == scratch ? granbond_voigt_tangential_evaluate(model, &share_->frame, sidata.Fn, spring, &out)
+                          : granbond_voigt_tangential(model, &share_->frame, sidata.Fn, update->dt, spring, &out);
+    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "tangential voigt");
     addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
 }
 
@@ -507,9 +521,13 @@ void VoigtRolling::intersect(SurfacesIntersectData &sidata, ForceData &i_forces,
     double *const angle = begin(sidata, share_->fused(), scratch);
     double torque_i[3];
     int32_t slip = 0;
-    if (granbond_voigt_rolling(models_.at(sidata.itype, sidata.jtype), &share_->frame, sidata.Fn, update->dt, angle,
-                               torque_i, &slip) != GB_STATUS_OK)
-        voigtFailed(lmp, sidata, "rolling_friction voigt");
+    const GbVoigtModel *model = models_.at(sidata.itype, sidata.jtype);
+    // setup and output passes: the loads of the stored angle, not advanced
+    const GbStatus status =
+        angle == scratch
+            ? granbond_voigt_rolling_evaluate(model, &share_->frame, sidata.Fn, angle, torque_i, &slip)
+            : granbond_voigt_rolling(model, &share_->frame, sidata.Fn, update->dt, angle, torque_i, &slip);
+    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "rolling_friction voigt");
     const double none[3] = {0.0, 0.0, 0.0};
     const double torque_j[3] = {-torque_i[0], -torque_i[1], -torque_i[2]};
     addLoads(sidata, i_forces, j_forces, none, torque_i, torque_j);

@@ -866,6 +866,50 @@ enum GbStatus granbond_voigt_rolling(const struct GbVoigtModel *model,
                                      int32_t *slip);
 
 /**
+ * The loads of a contact from its stored state without advancing it
+ * (`state`: `GRANBOND_CONTACT_STATE_LEN` doubles, read only): no spring
+ * increment, and a spring in the tangent plane to round-off used as
+ * stored. For the passes of an engine that must not move the history on
+ * (the setup pass of a run, per-contact output): in the frame of the last
+ * step they report the loads it applied, so a second run or a restart
+ * continues as an uninterrupted run.
+ *
+ * # Safety
+ * Pointers must be null or valid for the sizes above.
+ */
+enum GbStatus granbond_voigt_evaluate_frame(const struct GbVoigtModel *model,
+                                            const struct GbContactFrame *frame,
+                                            const double *state,
+                                            struct GbContactOutput *out);
+
+/**
+ * `granbond_voigt_tangential` of the stored `spring` (3 doubles, read
+ * only), not advanced (see `granbond_voigt_evaluate_frame`).
+ *
+ * # Safety
+ * Pointers must be null or valid; `spring` holds 3 doubles.
+ */
+enum GbStatus granbond_voigt_tangential_evaluate(const struct GbVoigtModel *model,
+                                                 const struct GbContactFrame *frame,
+                                                 double normal_force,
+                                                 const double *spring,
+                                                 struct GbTangentialOutput *out);
+
+/**
+ * `granbond_voigt_rolling` of the stored `angle` (3 doubles, read only),
+ * not advanced (see `granbond_voigt_evaluate_frame`).
+ *
+ * # Safety
+ * Pointers must be null or valid; `angle` and `torque_i` hold 3 doubles.
+ */
+enum GbStatus granbond_voigt_rolling_evaluate(const struct GbVoigtModel *model,
+                                              const struct GbContactFrame *frame,
+                                              double normal_force,
+                                              const double *angle,
+                                              double *torque_i,
+                                              int32_t *slip);
+
+/**
  * Critical time step of a contact of this type between spheres of the
  * given radii and masses (refused as `granbond_bond_critical_timestep`).
  *

@@ -214,3 +214,41 @@ fn rolling_torque_is_capped_at_mu_r_fn_r_star_plus_the_viscous_term() {
     }
     assert!(capped, "the rolling spring reached its cap");
 }
+
+/// The evaluation a setup pass makes (`evaluate_frame`) gives, in the frame
+/// and with the velocities of the last step, the loads that step applied,
+/// bit for bit (no dashpots, below the caps), and leaves the state alone.
+#[test]
+fn evaluating_the_stored_state_gives_the_loads_of_the_last_step() {
+    let p = VoigtParams {
+        gamma_n: 0.0,
+        gamma_t: 0.0,
+        gamma_r: 0.0,
+        eta_r: 0.0,
+        rolling: 1,
+        ..VoigtParams::default()
+    };
+    let m = voigt(p);
+    // a normal off the axes, so that turning the stored spring into the
+    // plane again would change its last bits
+    let mut k = touching([3.0, -7.0, 30.0]);
+    let r = 2.0 * RADIUS - 1e-6;
+    k.x_i = [0.8 * r, 0.36 * r, 0.48 * r];
+    k.v_j = [0.013, 0.05, 0.01];
+    let mut state = ContactState::default();
+    let mut last = ContactOutput::default();
+    for _ in 0..50 {
+        m.step(&k, 1e-7, &mut state, &mut last).unwrap();
+    }
+    assert!(last.force_i[1] != 0.0 && last.torque_i[1] != 0.0, "{last:?}");
+    let kept = state;
+    let frame = granbond::contact::model::sphere_sphere(&k).unwrap();
+    let mut again = ContactOutput::default();
+    m.evaluate_frame(&frame, &state, &mut again);
+    assert_eq!(again, last);
+    assert_eq!(state, kept);
+    // a step instead adds one more spring increment
+    let mut stepped = ContactOutput::default();
+    m.step(&k, 1e-7, &mut state, &mut stepped).unwrap();
+    assert_ne!(stepped.force_i, last.force_i);
+}

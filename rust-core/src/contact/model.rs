@@ -194,6 +194,34 @@ impl VoigtModel {
         state: &mut ContactState,
         out: &mut ContactOutput,
     ) {
+        self.frame_kernel::<ROLLING, true>(f, dt, state, out)
+    }
+
+    /// The loads of a contact from its stored state, which is not advanced:
+    /// the springs are turned into the current plane but get no increment
+    /// (stock `pair granular` and LIGGGHTS do the same). This is what the setup
+    /// pass of a run applies: in the frame and with the velocities of the
+    /// last step, the loads that step applied (without dashpots and below
+    /// the caps; turning a spring already in the plane changes at most its
+    /// last bits), so a continued or restarted run starts from the same
+    /// forces as an uninterrupted one.
+    pub fn evaluate_frame(&self, f: &ContactFrame, state: &ContactState, out: &mut ContactOutput) {
+        let mut scratch = *state;
+        if self.rolling {
+            self.frame_kernel::<true, false>(f, 0.0, &mut scratch, out)
+        } else {
+            self.frame_kernel::<false, false>(f, 0.0, &mut scratch, out)
+        }
+    }
+
+    #[inline(always)]
+    fn frame_kernel<const ROLLING: bool, const ADVANCE: bool>(
+        &self,
+        f: &ContactFrame,
+        dt: f64,
+        state: &mut ContactState,
+        out: &mut ContactOutput,
+    ) {
         debug_assert_eq!(ROLLING, self.rolling);
         *out = ContactOutput {
             overlap: f.overlap,
@@ -204,10 +232,10 @@ impl VoigtModel {
             return;
         }
         let f_n = self.normal_force(f);
-        let t = self.tangential(f, f_n, dt, &mut state.tangential_spring);
+        let t = self.tangential_kernel::<ADVANCE>(f, f_n, dt, &mut state.tangential_spring);
         let (mut torque_i, mut torque_j) = (t.torque_i, t.torque_j);
         if ROLLING {
-            let (t_r, slip) = self.rolling_torque(f, f_n, dt, &mut state.rolling_angle);
+            let (t_r, slip) = self.rolling_kernel::<ADVANCE>(f, f_n, dt, &mut state.rolling_angle);
             torque_i += t_r;
             torque_j -= t_r;
             out.rolling_slip = slip as i32;
@@ -237,6 +265,24 @@ impl VoigtModel {
     /// spring elongation in place.
     #[inline(always)]
     pub fn tangential(&self, f: &ContactFrame, f_n: f64, dt: f64, spring: &mut [f64; 3]) -> TangentialLoad {
+        self.tangential_kernel::<true>(f, f_n, dt, spring)
+    }
+
+    /// [`Self::tangential`] of the stored spring, not advanced (see
+    /// [`Self::evaluate_frame`]).
+    pub fn tangential_held(&self, f: &ContactFrame, f_n: f64, spring: &[f64; 3]) -> TangentialLoad {
+        let mut scratch = *spring;
+        self.tangential_kernel::<false>(f, f_n, 0.0, &mut scratch)
+    }
+
+    #[inline(always)]
+    fn tangential_kernel<const ADVANCE: bool>(
+        &self,
+        f: &ContactFrame,
+        f_n: f64,
+        dt: f64,
+        spring: &mut [f64; 3],
+    ) -> TangentialLoad {
         let p = &self.params;
         let n = v3(f.n);
         let slip = slip_velocity(
@@ -247,7 +293,8 @@ impl VoigtModel {
             f.lever_i,
             f.lever_j,
         );
-        let trial = carry_spring(v3(*spring), n) + slip * dt;
+        let carried = carry_spring(v3(*spring), n);
+        let trial = if ADVANCE { carried + slip * dt } else { carried };
         let (force, kept, sliding) = capped_spring(trial, slip, p.k_t, p.gamma_t, p.mu * f_n.abs());
         *spring = kept.into();
         let arm = n.cross(&force);
@@ -264,10 +311,29 @@ impl VoigtModel {
     /// Updates the rolling angle in place; reports whether the cap was hit.
     #[inline(always)]
     pub fn rolling_torque(&self, f: &ContactFrame, f_n: f64, dt: f64, angle: &mut [f64; 3]) -> (Vec3, bool) {
+        self.rolling_kernel::<true>(f, f_n, dt, angle)
+    }
+
+    /// [`Self::rolling_torque`] of the stored angle, not advanced (see
+    /// [`Self::evaluate_frame`]).
+    pub fn rolling_torque_held(&self, f: &ContactFrame, f_n: f64, angle: &[f64; 3]) -> (Vec3, bool) {
+        let mut scratch = *angle;
+        self.rolling_kernel::<false>(f, f_n, 0.0, &mut scratch)
+    }
+
+    #[inline(always)]
+    fn rolling_kernel<const ADVANCE: bool>(
+        &self,
+        f: &ContactFrame,
+        f_n: f64,
+        dt: f64,
+        angle: &mut [f64; 3],
+    ) -> (Vec3, bool) {
         let p = &self.params;
         let n = v3(f.n);
         let spin = rolling_spin(v3(f.w_i), v3(f.w_j), n);
-        let trial = tangential_part(v3(*angle), n) + spin * dt;
+        let turned = tangential_part(v3(*angle), n);
+        let trial = if ADVANCE { turned + spin * dt } else { turned };
         let limit = p.mu_r * f_n.abs() * f.r_eff;
         let (t_r, kept, slip) = capped_spring(trial, spin, p.k_r, p.gamma_r, limit);
         *angle = kept.into();

@@ -6,8 +6,8 @@ use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut, F
 use super::guard::{parameter_c_names, write_parameter_name};
 use crate::contact::model::{sphere_plane, sphere_sphere};
 use crate::contact::{
-    ContactFrame, ContactOutput, ContactState, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN,
-    VOIGT_PARAMETERS,
+    ContactFrame, ContactOutput, ContactState, Plane, TangentialLoad, VoigtModel, VoigtParams,
+    CONTACT_STATE_LEN, VOIGT_PARAMETERS,
 };
 use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
 use std::ffi::{c_char, CString};
@@ -504,6 +504,17 @@ pub struct TangentialOutput {
     pub sliding: i32,
 }
 
+impl From<TangentialLoad> for TangentialOutput {
+    fn from(t: TangentialLoad) -> Self {
+        Self {
+            force_i: t.force.into(),
+            torque_i: t.torque_i.into(),
+            torque_j: t.torque_j.into(),
+            sliding: t.sliding as i32,
+        }
+    }
+}
+
 /// Cundall-Strack tangential force with the Coulomb cap `mu |normal_force|`;
 /// `spring` (3 doubles, zero for a new contact) is updated in place.
 ///
@@ -526,13 +537,7 @@ pub unsafe extern "C" fn granbond_voigt_tangential(
         check_dt(dt)?;
         check_frame(f)?;
         check_finite(normal_force, "normal_force")?;
-        let t = m.tangential(f, normal_force, dt, s);
-        *o = TangentialOutput {
-            force_i: t.force.into(),
-            torque_i: t.torque_i.into(),
-            torque_j: t.torque_j.into(),
-            sliding: t.sliding as i32,
-        };
+        *o = m.tangential(f, normal_force, dt, s).into();
         Ok(())
     })
 }
@@ -570,6 +575,96 @@ pub unsafe extern "C" fn granbond_voigt_rolling(
             return Ok(());
         }
         let (torque, capped) = m.rolling_torque(f, normal_force, dt, a);
+        *t = torque.into();
+        *sl = capped as i32;
+        Ok(())
+    })
+}
+
+/// The loads of a contact from its stored state without advancing it
+/// (`state`: `GRANBOND_CONTACT_STATE_LEN` doubles, read only): no spring
+/// increment, and a spring in the tangent plane to round-off used as
+/// stored. For the passes of an engine that must not move the history on
+/// (the setup pass of a run, per-contact output): in the frame of the last
+/// step they report the loads it applied, so a second run or a restart
+/// continues as an uninterrupted run.
+///
+/// # Safety
+/// Pointers must be null or valid for the sizes above.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_evaluate_frame(
+    model: *const VoigtModel,
+    frame: *const ContactFrame,
+    state: *const f64,
+    out: *mut ContactOutput,
+) -> Status {
+    call("granbond_voigt_evaluate_frame", || {
+        let m = reference(model, "model")?;
+        let f = reference(frame, "frame")?;
+        let slots = reference(state as *const [f64; CONTACT_STATE_LEN], "state")?;
+        let o = reference_mut(out, "out")?;
+        check_frame(f)?;
+        let s = ContactState {
+            tangential_spring: [slots[0], slots[1], slots[2]],
+            rolling_angle: [slots[3], slots[4], slots[5]],
+        };
+        m.evaluate_frame(f, &s, o);
+        Ok(())
+    })
+}
+
+/// `granbond_voigt_tangential` of the stored `spring` (3 doubles, read
+/// only), not advanced (see `granbond_voigt_evaluate_frame`).
+///
+/// # Safety
+/// Pointers must be null or valid; `spring` holds 3 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_tangential_evaluate(
+    model: *const VoigtModel,
+    frame: *const ContactFrame,
+    normal_force: f64,
+    spring: *const f64,
+    out: *mut TangentialOutput,
+) -> Status {
+    call("granbond_voigt_tangential_evaluate", || {
+        let m = reference(model, "model")?;
+        let f = reference(frame, "frame")?;
+        let s = reference(spring as *const [f64; 3], "spring")?;
+        let o = reference_mut(out, "out")?;
+        check_frame(f)?;
+        check_finite(normal_force, "normal_force")?;
+        *o = m.tangential_held(f, normal_force, s).into();
+        Ok(())
+    })
+}
+
+/// `granbond_voigt_rolling` of the stored `angle` (3 doubles, read only),
+/// not advanced (see `granbond_voigt_evaluate_frame`).
+///
+/// # Safety
+/// Pointers must be null or valid; `angle` and `torque_i` hold 3 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_rolling_evaluate(
+    model: *const VoigtModel,
+    frame: *const ContactFrame,
+    normal_force: f64,
+    angle: *const f64,
+    torque_i: *mut f64,
+    slip: *mut i32,
+) -> Status {
+    call("granbond_voigt_rolling_evaluate", || {
+        let m = reference(model, "model")?;
+        let f = reference(frame, "frame")?;
+        let a = reference(angle as *const [f64; 3], "angle")?;
+        let t = reference_mut(torque_i as *mut [f64; 3], "torque_i")?;
+        let sl = reference_mut(slip, "slip")?;
+        check_frame(f)?;
+        check_finite(normal_force, "normal_force")?;
+        let (torque, capped) = if m.rolling() {
+            m.rolling_torque_held(f, normal_force, a)
+        } else {
+            (crate::vector::Vec3::zeros(), false)
+        };
         *t = torque.into();
         *sl = capped as i32;
         Ok(())

@@ -2185,6 +2185,41 @@ static int test_voigt_parts(void)
         granbond_voigt_model_free(off);
     }
 
+    /* Evaluating without advancing: the stored state is read, not written,
+     * and a step of the same frame with dt = 0 gives the same loads. */
+    {
+        double held[GRANBOND_CONTACT_STATE_LEN] = {1.0e-7, -2.0e-7, 0.0, 3.0e-4, 1.0e-4, 0.0};
+        double copy[GRANBOND_CONTACT_STATE_LEN], tq[3], tq0[3];
+        GbContactOutput ev, st;
+        GbTangentialOutput te, t0;
+        int32_t sl = 0, sl0 = 0;
+        memcpy(copy, held, sizeof held);
+        EXPECT_OK(granbond_voigt_evaluate_frame(m, &frame, held, &ev), "granbond_voigt_evaluate_frame");
+        CHECK(memcmp(copy, held, sizeof held) == 0, "granbond_voigt_evaluate_frame leaves the state alone");
+        EXPECT_OK(granbond_voigt_compute_frame_unchecked(m, &frame, 0.0, copy, &st),
+                  "granbond_voigt_compute_frame_unchecked, dt = 0");
+        CHECK(close_to(ev.force_i[0], st.force_i[0], 1e-15) && close_to(ev.force_i[1], st.force_i[1], 1e-15) &&
+                  close_to(ev.torque_i[2], st.torque_i[2], 1e-15),
+              "evaluation = a step of zero length");
+        memcpy(copy, held, sizeof held);
+        EXPECT_OK(granbond_voigt_tangential_evaluate(m, &frame, fn, held, &te), "granbond_voigt_tangential_evaluate");
+        EXPECT_OK(granbond_voigt_tangential(m, &frame, fn, 0.0, copy, &t0), "granbond_voigt_tangential, dt = 0");
+        CHECK(close_to(te.force_i[1], t0.force_i[1], 1e-15), "tangential evaluation = a step of zero length");
+        EXPECT_OK(granbond_voigt_rolling_evaluate(m, &frame, fn, held + 3, tq, &sl), "granbond_voigt_rolling_evaluate");
+        EXPECT_OK(granbond_voigt_rolling(m, &frame, fn, 0.0, copy + 3, tq0, &sl0), "granbond_voigt_rolling, dt = 0");
+        CHECK(close_to(tq[0], tq0[0], 1e-15) && sl == sl0, "rolling evaluation = a step of zero length");
+        EXPECT_NULL_ARG(granbond_voigt_evaluate_frame(m, &frame, NULL, &ev), "granbond_voigt_evaluate_frame",
+                        "state");
+        EXPECT_NULL_ARG(granbond_voigt_tangential_evaluate(m, &frame, fn, NULL, &te),
+                        "granbond_voigt_tangential_evaluate", "spring");
+        EXPECT_NULL_ARG(granbond_voigt_rolling_evaluate(m, &frame, fn, held, NULL, &sl),
+                        "granbond_voigt_rolling_evaluate", "torque_i");
+        bad = frame;
+        bad.v_i[0] = NAN;
+        EXPECT(granbond_voigt_evaluate_frame(m, &bad, held, &ev), GB_STATUS_NON_FINITE_INPUT,
+               "granbond_voigt_evaluate_frame, NaN v_i");
+    }
+
     /* Errors. */
     bad = frame;
     bad.overlap = NAN;
