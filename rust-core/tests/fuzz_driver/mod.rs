@@ -43,7 +43,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 40] = [
+pub const ENTRY_POINTS: [&str; 43] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -77,6 +77,9 @@ pub const ENTRY_POINTS: [&str; 40] = [
     "granbond_voigt_normal_force",
     "granbond_voigt_tangential",
     "granbond_voigt_rolling",
+    "granbond_voigt_evaluate_frame",
+    "granbond_voigt_tangential_evaluate",
+    "granbond_voigt_rolling_evaluate",
     "granbond_voigt_critical_timestep",
     "granbond_voigt_parameter_count",
     "granbond_voigt_parameter_name",
@@ -1455,6 +1458,20 @@ impl<'t> Session<'t> {
         let s = self.pool[i].as_mut_ptr();
         // SAFETY: every pointer valid (the entry's contract); the numbers
         // are arbitrary, which it must answer with a status.
+        // The checked evaluation of the stored state first (valid pointers;
+        // no input consumed).
+        let before = self.pool[i];
+        let mut evaluated = ContactOutput::default();
+        // SAFETY: every pointer valid; the state is only read.
+        let status = unsafe { fc::granbond_voigt_evaluate_frame(m, &f, s as *const f64, &mut evaluated) };
+        if self.answer("granbond_voigt_evaluate_frame", status) {
+            self.check_contact_output("granbond_voigt_evaluate_frame", &evaluated);
+            assert_eq!(
+                self.pool[i].map(f64::to_bits),
+                before.map(f64::to_bits),
+                "evaluate wrote the state"
+            );
+        }
         let status = unsafe { fc::granbond_voigt_compute_frame_unchecked(m, &f, dt, s, &mut out) };
         if self.answer_unchecked("granbond_voigt_compute_frame_unchecked", status) {
             self.check_unchecked_flags(&out);
@@ -1588,6 +1605,21 @@ impl<'t> Session<'t> {
         let before = self.pool[i];
         let spring = self.state_ptr(i, h2);
         // SAFETY: null, misaligned or valid; the spring holds 3 doubles.
+        // The stored spring, not advanced, with the same pointers (no input
+        // consumed: the corpus decodes as before).
+        let mut evaluated = Place::new(TangentialOutput::default());
+        // SAFETY: as below; the spring is only read.
+        let status = unsafe {
+            fc::granbond_voigt_tangential_evaluate(m, f.ptr(h1), fn_, spring as *const f64, evaluated.ptr(h3))
+        };
+        if self.answer("granbond_voigt_tangential_evaluate", status) {
+            assert!(evaluated.get().sliding == 0 || evaluated.get().sliding == 1);
+            assert_eq!(
+                self.pool[i].map(f64::to_bits),
+                before.map(f64::to_bits),
+                "evaluate wrote the spring"
+            );
+        }
         let status = unsafe { fc::granbond_voigt_tangential(m, f.ptr(h1), fn_, dt, spring, out.ptr(h3)) };
         let function = "granbond_voigt_tangential";
         if self.answer(function, status) {
@@ -1618,6 +1650,27 @@ impl<'t> Session<'t> {
         let (h1, h2, h3, h4) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
         let before = self.pool[i];
         let angle = self.state_ptr(i, h2);
+        let mut evaluated = Place::new([f64::NAN; 3]);
+        let mut evaluated_slip = Place::new(-7i32);
+        // SAFETY: as below; the angle is only read (no input consumed).
+        let status = unsafe {
+            fc::granbond_voigt_rolling_evaluate(
+                m,
+                f.ptr(h1),
+                fn_,
+                angle as *const f64,
+                evaluated.ptr(h3) as *mut f64,
+                evaluated_slip.ptr(h4),
+            )
+        };
+        if self.answer("granbond_voigt_rolling_evaluate", status) {
+            assert!(evaluated_slip.get() == 0 || evaluated_slip.get() == 1);
+            assert_eq!(
+                self.pool[i].map(f64::to_bits),
+                before.map(f64::to_bits),
+                "evaluate wrote the angle"
+            );
+        }
         // SAFETY: null, misaligned or valid; angle and torque hold 3 doubles.
         let status = unsafe {
             fc::granbond_voigt_rolling(
