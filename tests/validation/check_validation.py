@@ -430,7 +430,7 @@ def mode_rolling(a):
     c = Case("rolling")
     if not a.liggghts:
         raise Failure("rolling needs --liggghts (a plane wall)")
-    m, inertia = seed_numbers()
+    m, _ = seed_numbers()
     radius, dt, every = SEED["radius"], 1.0e-6, 50
     cap = ROLL["mur"] * m * cf.G * radius
     theta_cap = cap / ROLL["kr"]
@@ -680,7 +680,7 @@ def zero_crossing_frequency(ts, ys):
 def mode_beam_frequency(a):
     c = Case("beam-frequency")
     n = 21
-    spacing, k_bend, k_shear, k_axial, m = beam_numbers()
+    spacing, k_bend, k_shear, _, m = beam_numbers()
     nf = n - 1
     w_disc, shape = cf.cantilever_first_frequency_discrete(nf, spacing, m, k_bend, k_shear)
     w_eb = cf.cantilever_first_frequency_continuum(nf * spacing, k_bend * spacing, m / spacing)
