@@ -1,5 +1,5 @@
-//! The kernel pairs independent square roots and divisions (twisting with
-//! bending, ...) into two-lane instructions, and selects hysteresis branches
+//! The kernel pairs independent square roots and divisions (the bending
+//! angle with its history extreme, ...) into two-lane instructions, and selects hysteresis branches
 //! without jumps. Both must give exactly, bit for bit, what the plain scalar
 //! formulas give.
 

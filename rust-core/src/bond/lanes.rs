@@ -4,8 +4,8 @@
 //! Square roots and divisions dominate the cost of a bond step: they all go
 //! through one divider unit, which takes about as long for two packed `f64`
 //! lanes as for one. The kernel pairs up the ones that do not depend on each
-//! other (twisting with bending, shear force with slip velocity, ...). Each
-//! lane is the correctly rounded IEEE result, exactly what `f64::sqrt` and
+//! other (the bending angle with its history extreme, shear force with slip
+//! velocity, ...). Each lane is the correctly rounded IEEE result, exactly what `f64::sqrt` and
 //! `/` give, so pairing changes no bit of any result.
 
 use crate::real::Real;
