@@ -165,7 +165,9 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     sizeHistory_(0),
     anyBond_(false),
     fixHistory_(nullptr),
-    lastBatch_(0)
+    lastBatch_(0),
+    checkedNatoms_(-1),
+    firstStep_(-1)
 {
     single_enable = 0;
     no_virial_fdotr_compute = 1;
@@ -452,16 +454,59 @@ void PairGranbond::init_style()
     fixHistory_ = static_cast<FixNeighHistory *>(modify->fix[ifix]);
 
     // per-type radii for the cutoffs (all ranks)
-    std::vector<double> lmax(n + 1, 0.0), lmin(n + 1, std::numeric_limits<double>::infinity());
-    for (int i = 0; i < atom->nlocal; i++) {
-        const int t = atom->type[i];
-        lmax[t] = std::max(lmax[t], atom->radius[i]);
-        lmin[t] = std::min(lmin[t], atom->radius[i]);
-    }
+    const std::vector<GbTypeBodies> bodies =
+        gatherTypeBodies(n, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
     maxrad_.assign(n + 1, 0.0);
-    minrad_.assign(n + 1, 0.0);
-    MPI_Allreduce(lmax.data(), maxrad_.data(), n + 1, MPI_DOUBLE, MPI_MAX, world);
-    MPI_Allreduce(lmin.data(), minrad_.data(), n + 1, MPI_DOUBLE, MPI_MIN, world);
+    minrad_.assign(n + 1, std::numeric_limits<double>::infinity());
+    for (int t = 1; t <= n; t++) {
+        maxrad_[t] = bodies[t].radius_max;
+        minrad_[t] = bodies[t].radius_min;
+    }
+    if (firstStep_ < 0) firstStep_ = update->ntimestep;
+    if (anyBond_) checkRenumbering();
+    runChecks(bodies, true);
+}
+
+// Ends the run if atoms were renumbered since the previous run while bonds
+// may exist (renumberedAtoms); the IDs live in a fix property/atom.
+void PairGranbond::checkRenumbering()
+{
+    const char *const name = "granbond_atom_id";
+    int flag = 0, cols = 0;
+    int index = atom->find_custom(name, flag, cols);
+    if (index < 0) {
+        modify->add_fix(std::string("GRANBOND_ATOM_ID all property/atom i_") + name);
+        index = atom->find_custom(name, flag, cols);
+    }
+    if (index < 0 || flag != 0 || cols != 0)
+        error->all(FLERR, std::string("pair granbond: per-atom integer ") + name + " not available");
+    const long long renumbered = renumberedAtoms(atom->nlocal, atom->tag, atom->ivector[index], world);
+    if (renumbered > 0) error->all(FLERR, renumberedMessage("pair granbond (bond/nonlinear)", renumbered));
+}
+
+// The core's checks: the time step against the stiffest contact and bond
+// (warned at a run's start, and when the atom count changes if the limit
+// moved) and, at a run's start, the bonds' creation rules (each finding
+// once).
+void PairGranbond::runChecks(const std::vector<GbTypeBodies> &bodies, bool runStart)
+{
+    checkedNatoms_ = atom->natoms;
+    const int n = atom->ntypes;
+    GbCheckReport report;
+    const char *const contact = "pair granbond (voigt)", *const bond = "pair granbond (bond/nonlinear)";
+    if (granbond_voigt_timestep_check(voigt_.data(), n, bodies.data(), update->dt, contact, &report) != GB_STATUS_OK)
+        error->all(FLERR, std::string(contact) + ": " + granbond_last_error_message());
+    if (contactWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
+    if (!anyBond_) return;
+    if (granbond_bond_timestep_check(bond_.data(), n, bodies.data(), update->dt, bond, &report) != GB_STATUS_OK)
+        error->all(FLERR, std::string(bond) + ": " + granbond_last_error_message());
+    if (bondWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
+    if (!runStart) return;
+    if (granbond_bond_creation_check(bond_.data(), n, bodies.data(), firstStep_, 0, 0, bond, &report) !=
+        GB_STATUS_OK)
+        error->all(FLERR, std::string(bond) + ": " + granbond_last_error_message());
+    for (const std::string &line : reportLines(report))
+        if (said_.first(line) && comm->me == 0) error->warning(FLERR, line);
 }
 
 double PairGranbond::init_one(int i, int j)
@@ -571,6 +616,9 @@ void PairGranbond::compute(int eflag, int vflag)
     const double *const v0 = atom->nmax > 0 ? atom->v[0] : nullptr;
     const double *const w0 = atom->nmax > 0 ? atom->omega[0] : nullptr;
     auto row = [](const double *block, int atom) { return block + 3 * static_cast<size_t>(atom); };
+
+    if (atom->natoms != checkedNatoms_)
+        runChecks(gatherTypeBodies(atom->ntypes, nlocal, type, radius, atom->rmass, world), false);
 
     // setup (run/minimize start) evaluates forces without advancing history
     const bool advance = !update->setupflag;

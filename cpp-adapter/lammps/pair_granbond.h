@@ -13,6 +13,7 @@
 #include "pair.h"
 #include "granbond.h"
 #include "bond_queue.h"
+#include "run_checks.h"
 
 #include <string>
 #include <vector>
@@ -63,6 +64,8 @@ private:
     void apply(double *f, double *torque, int i, int j, const double *fi, const double *ti, const double *tj,
                const double *del, int nlocal, int newton_pair);
     size_t at(int i, int j) const;
+    void runChecks(const std::vector<GbTypeBodies> &bodies, bool runStart);
+    void checkRenumbering();
 
     // An intact bond of a force pass, queued (bond_queue.h): every
     // kBondBlock bonds of one bond model, and at the end of the pass, one
@@ -95,6 +98,10 @@ private:
     std::string message_;                   // outlives error->one's use
     std::vector<BondBatch> bondBatches_;    // per bond model; reused from pass to pass
     size_t lastBatch_;
+    LAMMPS_NS::bigint checkedNatoms_;       // atom count of the latest checks
+    LAMMPS_NS::bigint firstStep_;           // where the first run started
+    TimestepWarning contactWarning_, bondWarning_;
+    SaidOnce said_;
 };
 
 }

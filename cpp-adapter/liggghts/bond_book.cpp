@@ -25,14 +25,15 @@ void BondBook::remove(BondTally *t)
     tallies_.erase(std::remove(tallies_.begin(), tallies_.end(), t), tallies_.end());
 }
 
-void BondBook::localTotals(double out[6], bigint step) const
+void BondBook::localTotals(double out[kTotals], bigint step) const
 {
-    for (int k = 0; k < 6; k++) out[k] = 0.0;
+    for (int k = 0; k < kTotals; k++) out[k] = 0.0;
     for (const BondTally *t : tallies_) {
         double *o = out + (t->wall ? 3 : 0);
         o[0] += static_cast<double>(t->created);
         o[1] += static_cast<double>(t->broken);
         if (t->passStep == step) o[2] += static_cast<double>(t->intact);
+        out[t->wall ? 7 : 6] += static_cast<double>(t->lost);
     }
 }
 
@@ -43,11 +44,13 @@ using LAMMPS_NS::LAMMPS;
 // ---------------------------------------------------------------- compute
 // compute ID group bond/counter [cumulative yes|no]
 //
-// Global vector of 6: pair bonds created, broken, intact; wall bonds
-// created, broken, intact. As in LIGGGHTS-INL, created/broken count the
-// events since this compute's previous output (`cumulative yes`: since the
-// start of the run series); intact is the number of intact bonds at the step
-// of the output. Summed over all ranks.
+// Global vector of 8: pair bonds created, broken, intact; wall bonds
+// created, broken, intact (the 6 of LIGGGHTS-INL); pair and wall bonds
+// lost, which vanished with their atoms (lost or deleted) without breaking.
+// As in LIGGGHTS-INL, created/broken (and lost) count the events since this
+// compute's previous output (`cumulative yes`: since the start of the run
+// series); intact is the number of intact bonds at the step of the output.
+// Summed over all ranks.
 class ComputeBondCounter : public LAMMPS_NS::Compute {
 public:
     ComputeBondCounter(LAMMPS *lmp, int &iarg, int narg, char **arg) :
@@ -68,10 +71,10 @@ public:
             }
         }
         vector_flag = 1;
-        size_vector = 6;
+        size_vector = BondBook::kTotals;
         extvector = 1;
         vector = values_;
-        for (int k = 0; k < 6; k++) values_[k] = reported_[k] = 0.0;
+        for (int k = 0; k < BondBook::kTotals; k++) values_[k] = reported_[k] = 0.0;
     }
 
     void init() {}
@@ -79,25 +82,26 @@ public:
     void compute_vector()
     {
         invoked_vector = update->ntimestep;
-        double local[6], total[6];
+        const int n = BondBook::kTotals;
+        double local[n], total[n];
         BondBook::of(lmp).localTotals(local, update->ntimestep);
-        MPI_Allreduce(local, total, 6, MPI_DOUBLE, MPI_SUM, world);
-        for (int k = 0; k < 6; k++) values_[k] = total[k];
+        MPI_Allreduce(local, total, n, MPI_DOUBLE, MPI_SUM, world);
+        for (int k = 0; k < n; k++) values_[k] = total[k];
         if (!cumulative_) {
-            for (int k : {0, 1, 3, 4}) values_[k] = total[k] - reported_[k];
+            for (int k : {0, 1, 3, 4, 6, 7}) values_[k] = total[k] - reported_[k];
             if (update->ntimestep != lastStep_)
-                for (int k = 0; k < 6; k++) reported_[k] = total[k];
+                for (int k = 0; k < n; k++) reported_[k] = total[k];
             else
-                for (int k : {0, 1, 3, 4}) values_[k] = lastValues_[k];
+                for (int k : {0, 1, 3, 4, 6, 7}) values_[k] = lastValues_[k];
         }
         lastStep_ = update->ntimestep;
-        for (int k = 0; k < 6; k++) lastValues_[k] = values_[k];
+        for (int k = 0; k < n; k++) lastValues_[k] = values_[k];
     }
 
 private:
     bool cumulative_;
     bigint lastStep_;
-    double values_[6], reported_[6], lastValues_[6];
+    double values_[BondBook::kTotals], reported_[BondBook::kTotals], lastValues_[BondBook::kTotals];
 };
 
 // ------------------------------------------------------------------- fix

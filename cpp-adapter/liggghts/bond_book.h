@@ -33,6 +33,7 @@ struct BondTally {
     bool wall = false;
     long long created = 0;     // events on this rank since the start of the run series
     long long broken = 0;
+    long long lost = 0;        // bonds that vanished with their atoms (counted on rank 0)
     long long intact = 0;      // intact bonds seen in the force pass `pass`
     long long pass = -1;       // 2*ntimestep + setupflag of that pass
     bigint passStep = -1;
@@ -56,9 +57,10 @@ public:
         t.intact = 0;
     }
 
-    // Sums over this rank's models: [pair created, broken, intact, wall created, broken, intact].
-    // Intact counts only of models whose latest pass is the current step.
-    void localTotals(double out[6], bigint step) const;
+    // Sums over this rank's models: [pair created, broken, intact, wall created, broken, intact,
+    // pair lost, wall lost]. Intact counts only of models whose latest pass is the current step.
+    static const int kTotals = 8;
+    void localTotals(double out[kTotals], bigint step) const;
 
     bool logging() const { return logUsers_ > 0; }
     void addLogUser() { logUsers_++; }

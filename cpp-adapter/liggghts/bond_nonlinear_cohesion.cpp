@@ -69,7 +69,9 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     outputOffset_(-1),
     clumpIds_(0),
     checkedNatoms_(-1),
-    warnedCritical_(0.0),
+    firstStep_(-1),
+    lossCheck_(false),
+    warnedLost_(false),
     pair_(cmb->is_wall() ? 0 : dynamic_cast<LAMMPS_NS::PairGran *>(hsetup)),
     deferring_(false),
     lastBatch_(0)
@@ -99,12 +101,16 @@ void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
     clumpIds_ = isWall_ ? 0
                         : static_cast<LAMMPS_NS::FixPropertyAtom *>(modify->find_fix_property(
                               "bond_random_id", "property/atom", "scalar", 0, 0, "cohesion bond/nonlinear", false));
-    checkTimestep();
+    runChecks(true);
+    lossCheck_ = !isWall_;
 }
 
 void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
 {
-    if (atom->natoms != checkedNatoms_) checkTimestep();
+    if (atom->natoms != checkedNatoms_) {
+        runChecks(false);
+        lossCheck_ = !isWall_;
+    }
     // Queue the bonds of force passes, unless something in the engine
     // reads each pair's forces as the loop applies them (CFD coupling,
     // stored contact forces, summed normal forces) or the loop's radii are
@@ -118,10 +124,39 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
 
 void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceData &)
 {
-    if (!deferring_) return;
-    for (size_t b = 0; b < batches_.size(); b++)
-        if (batches_[b].count) advanceBatch(batches_[b]);
-    deferring_ = false;
+    if (deferring_) {
+        for (size_t b = 0; b < batches_.size(); b++)
+            if (batches_[b].count) advanceBatch(batches_[b]);
+        deferring_ = false;
+    }
+    if (lossCheck_) countVanished();
+}
+
+// Bonds vanish only with their atoms, so after the atom count changed, or a
+// run started (atoms deleted between runs), the counts of the pass just
+// completed must balance those of the previous check: intact then + created
+// - broken since = intact now. What is missing vanished without breaking.
+void BondNonlinearCohesion::countVanished()
+{
+    lossCheck_ = false;
+    book_->beginPassIfNew(tally_, update);   // a rank without bonds in this pass: 0 intact
+    const double mine[3] = {static_cast<double>(tally_.created), static_cast<double>(tally_.broken),
+                            static_cast<double>(tally_.intact)};
+    double all[3];
+    MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
+    const double vanished = balance_[2] + (all[0] - balance_[0]) - (all[1] - balance_[1]) - all[2];
+    for (int k = 0; k < 3; k++) balance_[k] = all[k];
+    if (!(vanished > 0.0) || comm->me != 0) return;
+    tally_.lost += static_cast<long long>(vanished);
+    if (warnedLost_) return;
+    warnedLost_ = true;
+    char msg[400];
+    snprintf(msg, sizeof msg,
+             "cohesion bond/nonlinear: %.0f bonds vanished with their atoms (lost or deleted) by step " BIGINT_FORMAT
+             ", without breaking; they are counted as lost in compute bond/counter (columns 7 and 8), "
+             "later ones without a warning",
+             vanished, update->ntimestep);
+    error->warning(FLERR, msg);
 }
 
 inline void BondNonlinearCohesion::pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const
@@ -213,51 +248,26 @@ void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
     }
 }
 
-void BondNonlinearCohesion::checkTimestep()
+void BondNonlinearCohesion::runChecks(bool runStart)
 {
     checkedNatoms_ = atom->natoms;
-    const int ntypes = atom->ntypes;
-    const double inf = std::numeric_limits<double>::infinity();
-    std::vector<double> local(2 * (ntypes + 1), inf), least(2 * (ntypes + 1), inf);
-    for (int i = 0; i < atom->nlocal; i++) {
-        const int t = atom->type[i];
-        if (t < 1 || t > ntypes) continue;
-        local[2 * t] = std::min(local[2 * t], atom->radius[i]);
-        local[2 * t + 1] = std::min(local[2 * t + 1], atom->rmass[i]);
-    }
-    MPI_Allreduce(local.data(), least.data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_MIN, world);
-
-    double critical = inf, recommended = inf;
-    int ta = 0, tb = 0;
-    for (int a = 1; a <= ntypes; a++)
-        for (int b = a; b <= ntypes; b++) {
-            const GbBondModel *m = parameters_.model(a, b);
-            const double ra = least[2 * a], ma = least[2 * a + 1], rb = least[2 * b], mb = least[2 * b + 1];
-            if (!m || !std::isfinite(ra * ma * rb * mb)) continue;   // type not present
-            double c = inf, r = inf;
-            if (granbond_bond_critical_timestep(m, ra, rb, ma, mb, &c) != GB_STATUS_OK ||
-                granbond_bond_recommended_timestep(m, ra, rb, ma, mb, &r) != GB_STATUS_OK)
-                continue;
-            if (r < recommended) {
-                critical = c;
-                recommended = r;
-                ta = a;
-                tb = b;
-            }
-        }
-    const double dt = update->dt;
-    if (!(dt > recommended) || comm->me != 0) return;
-    if (warnedCritical_ == critical) return;   // said already
-    warnedCritical_ = critical;
-    char msg[700];
-    snprintf(msg, sizeof msg,
-             "cohesion bond/nonlinear%s: time step %g s %s the %s step %g s of the stiffest bond (atom types %d "
-             "and %d, smallest radius %g / %g m, lightest mass %g / %g kg; critical step %g s). Use "
-             "timestep <= %g s (the core's recommended step)",
-             isWall_ ? " (wall)" : "", dt, dt > critical ? "EXCEEDS" : "exceeds",
-             dt > critical ? "critical" : "recommended", dt > critical ? critical : recommended, ta, tb,
-             least[2 * ta], least[2 * tb], least[2 * ta + 1], least[2 * tb + 1], critical, recommended);
-    error->warning(FLERR, msg);
+    if (firstStep_ < 0) firstStep_ = update->ntimestep;
+    const int ntypes = parameters_.ntypes();
+    const std::vector<GbTypeBodies> bodies =
+        gatherTypeBodies(ntypes, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
+    const char *style = isWall_ ? "cohesion bond/nonlinear (wall)" : "cohesion bond/nonlinear";
+    GbCheckReport report;
+    if (granbond_bond_timestep_check(parameters_.table(), ntypes, bodies.data(), update->dt, style, &report) !=
+        GB_STATUS_OK)
+        endRun(error, FLERR, std::string(style) + ": " + granbond_last_error_message());
+    if (timestepWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
+    if (!runStart) return;
+    if (granbond_bond_creation_check(parameters_.table(), ntypes, bodies.data(), firstStep_, isWall_ ? 1 : 0, 1,
+                                     style, &report) != GB_STATUS_OK)
+        endRun(error, FLERR, std::string(style) + ": " + granbond_last_error_message());
+    const std::vector<std::string> lines = reportLines(report);
+    for (size_t k = 0; k < lines.size(); k++)
+        if (said_.first(lines[k]) && comm->me == 0) error->warning(FLERR, lines[k].c_str());
 }
 
 bool BondNonlinearCohesion::countsHere(int i, int j) const

@@ -11,6 +11,7 @@
 #include "bond_nonlinear_parameters.h"
 #include "bond_book.h"
 #include "bond_queue.h"
+#include "run_checks.h"
 
 #include <vector>
 
@@ -91,9 +92,13 @@ private:
     bool countsHere(int i, int j) const;
     void storeOutput(double *slots, const GbBondOutput &out) const;
     void loadOutput(const double *slots, GbBondOutput &out) const;
-    // Warns (rank 0) if the step exceeds the critical / recommended step of
-    // the stiffest bond between the smallest and lightest spheres present.
-    void checkTimestep();
+    // The core's checks of the time step (warned at a run's start, and when
+    // the atom count changes if the limit moved) and, at a run's start, of
+    // the creation rules (each finding once).
+    void runChecks(bool runStart);
+    // Counts the bonds that vanished with their atoms (pair bonds; see the
+    // definition); collective, at the end of a pass.
+    void countVanished();
 
     BondNonlinearParameters parameters_;
     const bool isWall_;
@@ -105,7 +110,12 @@ private:
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)
     LAMMPS_NS::FixPropertyAtom *clumpIds_;
     bigint checkedNatoms_;
-    double warnedCritical_;
+    bigint firstStep_;          // where this model's first run started
+    TimestepWarning timestepWarning_;
+    SaidOnce said_;
+    bool lossCheck_;            // count vanished bonds at the end of this pass
+    bool warnedLost_;
+    double balance_[3] = {0.0, 0.0, 0.0};   // created, broken, intact (all ranks) at the latest count
 
     LAMMPS_NS::PairGran *pair_;   // null for walls
     bool deferring_;              // this pass queues intact bonds

@@ -32,6 +32,10 @@ public:
         return models_[itype * (ntypes_ + 1) + jtype];
     }
 
+    // The models as the core's checks take them: entry a * (ntypes() + 1) + b.
+    const GbBondModel *const *table() const { return models_.data(); }
+    int ntypes() const { return ntypes_; }
+
 private:
     BondNonlinearParameters(const BondNonlinearParameters &);
     BondNonlinearParameters &operator=(const BondNonlinearParameters &);

@@ -248,7 +248,10 @@ VoigtNormal::VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup 
     gamma_t_(0),
     no_attraction_(true),
     fused_(false),
-    fusedRolling_(false)
+    fusedRolling_(false),
+    wall_(cmb->is_wall()),
+    checkPending_(true),
+    checkedNatoms_(-1)
 {
     bool first;
     share_ = VoigtContactShare::attach(owner_, &first);
@@ -287,6 +290,23 @@ void VoigtNormal::connectToProperties(::PropertyRegistry &registry)
     share_->contribute(error, ntypes, own);
     fused_ = share_->fused();   // every sub-model exists by now
     fusedRolling_ = share_->fusedRolling();
+    checkPending_ = true;
+}
+
+void VoigtNormal::checkTimestep()
+{
+    const bool runStart = checkPending_;
+    checkPending_ = false;
+    checkedNatoms_ = atom->natoms;
+    const VoigtModelTable &table = fused_ ? share_->fusedTable() : models_;
+    const int ntypes = table.ntypes();
+    const std::vector<GbTypeBodies> bodies =
+        gatherTypeBodies(ntypes, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
+    GbCheckReport report;
+    if (granbond_voigt_timestep_check(table.data(), ntypes, bodies.data(), update->dt, "model voigt", &report) !=
+        GB_STATUS_OK)
+        endRun(error, FLERR, std::string("model voigt: ") + granbond_last_error_message());
+    if (timestepWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
 }
 
 void VoigtNormal::handOn(SurfacesIntersectData &sidata)

@@ -20,6 +20,7 @@
 #include "tangential_model_base.h"
 #include "rolling_model_base.h"
 #include "granbond.h"
+#include "run_checks.h"
 
 #include <vector>
 
@@ -40,6 +41,9 @@ public:
     // the core ends the run with its message (which names the property).
     void build(LAMMPS_NS::Error *error, const char *who, int ntypes, const std::vector<GbVoigtParams> &params);
     const GbVoigtModel *at(int itype, int jtype) const { return models_[itype * stride_ + jtype]; }
+    // As the core's checks take the table: entry a * (ntypes() + 1) + b.
+    const GbVoigtModel *const *data() const { return models_.data(); }
+    int ntypes() const { return stride_ - 1; }
 
 private:
     VoigtModelTable(const VoigtModelTable &);
@@ -77,6 +81,7 @@ public:
     bool fused() const { return normal && tangential_offset >= 0; }
     bool fusedRolling() const { return fused() && rolling_offset == tangential_offset + 3; }
     const GbVoigtModel *fusedModel(int itype, int jtype) const { return table_.at(itype, jtype); }
+    const VoigtModelTable &fusedTable() const { return table_; }
 
     GbContactFrame frame;
     bool normal;               // model voigt present
@@ -117,10 +122,20 @@ public:
             normalPart(sidata, i_forces, j_forces);
     }
     void surfacesClose(SurfacesCloseData &, ForceData &, ForceData &) {}
-    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
+    {
+        if (!wall_ && (checkPending_ || atom->natoms != checkedNatoms_)) checkTimestep();
+    }
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
+    // The core's time-step check of the whole contact (the combined model
+    // when tangential, and rolling, are voigt too; else the normal part):
+    // warned at a run's first pass, and when the atom count changes if the
+    // limit moved. At the first pass, not when connected: the other voigt
+    // sub-models connect after this one. Pair contacts only (wall_: this
+    // instance serves a wall).
+    void checkTimestep();
     // what the stock tangential, rolling and cohesion models read: kn, kt,
     // gamman, gammat of the type pair
     void handOn(SurfacesIntersectData &sidata);
@@ -133,6 +148,10 @@ private:
     double **k_n_, **k_t_, **gamma_n_, **gamma_t_;
     bool no_attraction_;
     bool fused_, fusedRolling_;   // share_->fused(), fusedRolling(), known once connected
+    const bool wall_;
+    bool checkPending_;           // a run starts: check at its first pass
+    LAMMPS_NS::bigint checkedNatoms_;
+    TimestepWarning timestepWarning_;
 };
 
 // What tangential and rolling voigt have in common: three slots of the

@@ -10,18 +10,6 @@
 
 #define GRANBOND_BOND_STATE_LEN 19
 
-/**
- * The recommended step as a fraction of [`BondModel::critical_timestep`]
- * (docs/speed-accuracy.md). The estimate is the limit of one bond between
- * two spheres; a sphere bonded to six neighbours (a cubic packing) was
- * measured unstable from 0.65-0.75 of it (hysteretic and elastic bonds), and
- * the square root's rattle amplitude shrinks as the fourth power of the step.
- * At 0.2 the margin to the coordinated limit is 3x, the periods of the
- * reference oscillators are within 2e-3, and the cantilever's first
- * frequency within 1e-7.
- */
-#define RECOMMENDED_FRACTION 0.2
-
 #define GRANBOND_WALL_BOND_STATE_LEN (GRANBOND_BOND_STATE_LEN + 3)
 
 #define GRANBOND_CONTACT_STATE_LEN 6
@@ -29,7 +17,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 4
+#define GRANBOND_ABI_VERSION 5
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -37,6 +25,23 @@
  * restart files written with another layout instead of misreading them.
  */
 #define GRANBOND_STATE_LAYOUT_VERSION 2
+
+/**
+ * Capacity of [`CheckReport::message`], terminating NUL included.
+ */
+#define GRANBOND_CHECK_MESSAGE_LEN 2048
+
+/**
+ * The recommended step as a fraction of the critical step, for bonds and
+ * contacts alike (docs/speed-accuracy.md). The estimates are the limit of
+ * one bond or contact between two spheres; a sphere bonded to six
+ * neighbours (a cubic packing) was measured unstable from 0.65-0.75 of it
+ * (hysteretic and elastic bonds), and the square root's rattle amplitude
+ * shrinks as the fourth power of the step. At 0.2 the margin to the
+ * coordinated limit is 3x, the periods of the reference oscillators are
+ * within 2e-3, and the cantilever's first frequency within 1e-7.
+ */
+#define RECOMMENDED_FRACTION 0.2
 
 /**
  * Lifecycle of a pair's bond, stored as a number in slot 0.
@@ -161,6 +166,8 @@ typedef struct GbLayout {
   size_t contact_output;
   size_t contact_frame;
   size_t tangential_output;
+  size_t type_bodies;
+  size_t check_report;
   size_t bond_state_len;
   size_t wall_bond_state_len;
   size_t contact_state_len;
@@ -307,6 +314,33 @@ typedef struct GbSphereKinematics {
   double w[3];
   double radius;
 } GbSphereKinematics;
+
+/**
+ * The extremes of one atom type over the whole simulation (all ranks).
+ * A type with no atom has infinite `radius_min` and `mass_min`.
+ */
+typedef struct GbTypeBodies {
+  double radius_min;
+  double radius_max;
+  double mass_min;
+} GbTypeBodies;
+
+/**
+ * What a check found. `level`: 0 nothing to say; for the time-step checks
+ * 1 above the recommended step, 2 above the critical step; for the
+ * creation check the number of findings. `message`: the warning (NUL
+ * terminated, several findings separated by newlines; empty at level 0).
+ * The time-step checks also give the limiting type pair and its steps
+ * (`type_a = 0` and infinite steps when nothing limits).
+ */
+typedef struct GbCheckReport {
+  int32_t level;
+  int32_t type_a;
+  int32_t type_b;
+  double critical;
+  double recommended;
+  char message[GRANBOND_CHECK_MESSAGE_LEN];
+} GbCheckReport;
 
 /**
  * Linear spring-dashpot contact with Coulomb friction and rolling
@@ -677,6 +711,61 @@ enum GbStatus granbond_bond_recommended_timestep(const struct GbBondModel *model
                                                  double *out);
 
 /**
+ * Checks the time step `dt` against the bonds of every pair of atom types
+ * present: `models[a * (ntypes + 1) + b]` the bond model of types `a`, `b`
+ * (null: none), `bodies[t]` the smallest and largest radius and the
+ * lightest mass of type `t` over all ranks (index 0 unused; a type without
+ * atoms has infinite `radius_min`). `style` names the deck command in the
+ * message. The pair with the shortest critical step limits; `out` says how
+ * `dt` compares with it and holds the warning to print.
+ *
+ * # Safety
+ * Pointers must be null or valid for the sizes above; `style` a NUL
+ * terminated string.
+ */
+enum GbStatus granbond_bond_timestep_check(const struct GbBondModel *const *models,
+                                           int32_t ntypes,
+                                           const struct GbTypeBodies *bodies,
+                                           double dt,
+                                           const char *style,
+                                           struct GbCheckReport *out);
+
+/**
+ * `granbond_bond_timestep_check` for the Voigt contact.
+ *
+ * # Safety
+ * As `granbond_bond_timestep_check`.
+ */
+enum GbStatus granbond_voigt_timestep_check(const struct GbVoigtModel *const *models,
+                                            int32_t ntypes,
+                                            const struct GbTypeBodies *bodies,
+                                            double dt,
+                                            const char *style,
+                                            struct GbCheckReport *out);
+
+/**
+ * Checks the creation and break rules of the bond models (tables as in
+ * `granbond_bond_timestep_check`) against each other and the spheres
+ * present: a creation distance beyond the break distance, a creation
+ * distance below contact, a creation step that has passed (`first_step`:
+ * the step the model's first run started from). `wall` non-zero: wall bonds
+ * (the sphere's radius alone is the contact distance; the wall's type needs
+ * no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the message.
+ * `out->level` is the number of findings.
+ *
+ * # Safety
+ * As `granbond_bond_timestep_check`.
+ */
+enum GbStatus granbond_bond_creation_check(const struct GbBondModel *const *models,
+                                           int32_t ntypes,
+                                           const struct GbTypeBodies *bodies,
+                                           int64_t first_step,
+                                           int32_t wall,
+                                           int32_t naming,
+                                           const char *style,
+                                           struct GbCheckReport *out);
+
+/**
  * Fills `params` with Table 1 of the seed.
  *
  * # Safety
@@ -996,6 +1085,8 @@ static inline GbLayout granbond_header_layout(void)
     l.contact_output = sizeof(GbContactOutput);
     l.contact_frame = sizeof(GbContactFrame);
     l.tangential_output = sizeof(GbTangentialOutput);
+    l.type_bodies = sizeof(GbTypeBodies);
+    l.check_report = sizeof(GbCheckReport);
     l.bond_state_len = GRANBOND_BOND_STATE_LEN;
     l.wall_bond_state_len = GRANBOND_WALL_BOND_STATE_LEN;
     l.contact_state_len = GRANBOND_CONTACT_STATE_LEN;

@@ -17,4 +17,5 @@ pub mod real;
 pub mod scene;
 pub mod stability;
 pub mod state_layout;
+pub mod timestep_check;
 pub mod vector;

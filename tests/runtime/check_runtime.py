@@ -15,6 +15,30 @@
               bonded spheres, bond damping on) and --scene pair (a voigt
               pair, sliding and rolling; both engines).
 
+  timestep    the core's time-step check, in both engines: above the
+              recommended step a run warns (EXCEEDS above the critical
+              step), for a bond (LAMMPS; LIGGGHTS bonds: check_bond_book.py)
+              and for a contact (both), at every `run`, and again in a run
+              whose atom count changes to a new, shorter limit (LIGGGHTS
+              insertion); at a safe step nothing is said.
+  creation    the bond's creation and break rules checked against each
+              other at a run's start, in both engines: createDistance >
+              maxDistance (bonds created and broken, every step under
+              createBondAlways), createDistance below contact, a creation
+              step that has passed, maxDistance below contact; each a
+              warning naming the parameters as the engine's deck spells
+              them, said once over two runs; consistent rules say nothing.
+  renumber    `delete_atoms ... compress yes` (which renumbers the atom IDs
+              the engines key each pair's history by) while bonds exist:
+              the next run ends with an error naming `compress no` (LAMMPS);
+              with `compress no` the run goes on and the atom that
+              never bonded feels no force from the deleted atom's bond.
+  lost        (LIGGGHTS) bonds that vanish with their atoms (an atom deleted
+              between runs, atoms lost through a fixed boundary) are
+              counted as lost in compute bond/counter (column 7), so that
+              created = broken + intact + lost at every output, with one
+              warning naming the number; 1 and 2 ranks.
+
 usage: check_runtime.py --mode MODE --engine BIN --kind lammps|liggghts
                         [--scene S] [--mpiexec MPIEXEC] --workdir DIR
 """
@@ -44,6 +68,13 @@ def run_ok(command, deck, workdir, variables):
     if rc != 0:
         raise Failure(f"{deck} {variables} exited with {rc}:\n{text[-3000:]}")
     return text
+
+
+def warnings_in_log(workdir, prefix=""):
+    """The WARNING lines of the run's log (run_deck's text holds them twice:
+    screen and log)."""
+    with open(os.path.join(workdir, "log.lammps"), encoding="utf-8", errors="replace") as f:
+        return [x for x in f.read().splitlines() if x.startswith("WARNING: " + prefix)]
 
 
 def last_snapshot(path, step):
@@ -130,10 +161,172 @@ def check_continuity(a, workdir):
         raise Failure("not continuous: " + ", ".join(failed))
 
 
+# ------------------------------------------------------------ timestep
+
+# (model, dt, expected warnings in order: (phrase, atom types of the limit))
+LAMMPS_TIMESTEP = [
+    ("bond", 5e-6, [("EXCEEDS the critical step", "1 and 1"), ("EXCEEDS the critical step", "2 and 2")]),
+    ("bond", 2e-6, [("exceeds the recommended step", "1 and 1"), ("exceeds the recommended step", "2 and 2")]),
+    ("bond", 5e-7, []),
+    ("voigt", 5e-5, [("EXCEEDS the critical step", "1 and 1"), ("EXCEEDS the critical step", "2 and 2")]),
+    ("voigt", 2e-6, []),
+]
+# LIGGGHTS voigt: run 1, run 2 (same atoms), the insertion ten steps into run 2
+LIGGGHTS_TIMESTEP = [
+    (1e-3, [("EXCEEDS the critical step", "1 and 1")] * 2 + [("EXCEEDS the critical step", "2 and 2")]),
+    (2e-6, []),
+]
+
+
+def check_timestep(a, workdir):
+    if a.kind == "lammps":
+        cases = [(m, dt, want, f"pair granbond ({'bond/nonlinear' if m == 'bond' else 'voigt'}): time step")
+                 for m, dt, want in LAMMPS_TIMESTEP]
+    else:
+        cases = [("voigt", dt, want, "model voigt: time step") for dt, want in LIGGGHTS_TIMESTEP]
+    failed = []
+    for model, dt, want, prefix in cases:
+        deck = "timestep_lammps.in" if a.kind == "lammps" else "timestep_liggghts.in"
+        v = {"dt": dt, "nrun": 20}
+        if a.kind == "lammps":
+            v["model"] = model
+        run_ok([a.engine], deck, os.path.join(workdir, f"{model}-{dt:g}"), v)
+        got = [line for line in warnings_in_log(os.path.join(workdir, f"{model}-{dt:g}")) if "time step" in line]
+        ours = [line for line in got if prefix in line]
+        ok = len(ours) == len(want) and all(
+            phrase in line and f"atom types {types}" in line for line, (phrase, types) in zip(ours, want))
+        print(f"{model} dt {dt:g}: {len(ours)} warning(s), {len(want)} expected" + "".join(
+            f"\n    {line[:150]}" for line in ours))
+        if not ok:
+            failed.append(f"{model} dt {dt:g}")
+        if not want and got:   # a safe step: no style warns
+            failed.append(f"{model} dt {dt:g}: unexpected {got}")
+    if failed:
+        raise Failure("time-step warnings not as expected: " + "; ".join(failed))
+
+
+# ------------------------------------------------------------ creation
+
+# (case, deck variables, phrases of the expected findings, one list each)
+CREATION = [
+    ("consistent", {}, []),
+    ("created-broken-always", {"cdist": 2.2e-3, "gap": 1e-4, "always": True},
+     [["{create} 2.2e-3 m > {reach} 2.08e-3 m", "bonded and broken every step ({always} on)",
+       "Set {create} <= {reach}"]]),
+    ("created-broken-touching", {"cdist": 2.2e-3, "maxdist": 1.9e-3},
+     [["{create} 2.2e-3 m > {reach} 1.9e-3 m", "in the step it forms",
+       "a bond between touching spheres breaks too"]]),
+    ("create-below-contact", {"cdist": 1.5e-3},
+     [["{create} 1.5e-3 m is below the contact distance 2e-3 m", "overlapping by more than 5e-4 m"]]),
+    ("create-step-0", {"ts": 0}, [["{ts} 0 is not after step 0", "{always} is off: no bond forms"]]),
+    ("create-step-negative", {"ts": -5}, [["{ts} -5 is not after step 0"]]),
+]
+NAMES = {
+    "liggghts": {"create": "createDistanceBondnonlinear", "reach": "maxDistanceBondnonlinear",
+                 "always": "createBondAlways", "ts": "tsCreateBondnonlinear"},
+    "lammps": {"create": "create_distance", "reach": "max_distance", "always": "create_always",
+               "ts": "create_step"},
+}
+
+
+def check_creation(a, workdir):
+    names = NAMES[a.kind]
+    style = "cohesion bond/nonlinear (" if a.kind == "liggghts" else "pair granbond (bond/nonlinear) ("
+    failed = []
+    for case, v, want in CREATION:
+        v = dict(v, nrun=20)
+        always = v.pop("always", False)
+        if a.kind == "liggghts":
+            v["sw"] = "createBondAlways on" if always else "createBondAlways off"
+        else:
+            v["always"] = "yes" if always else "no"
+        deck = f"creation_{a.kind}.in"
+        run_ok([a.engine], deck, os.path.join(workdir, case), v)
+        got = warnings_in_log(os.path.join(workdir, case), style)
+        want = [[phrase.format(**names) for phrase in finding] for finding in want]
+        ok = len(got) == len(want) and all(
+            any(all(p in line for p in finding) for line in got) for finding in want)
+        print(f"{case}: {len(got)} warning(s), {len(want)} expected" + "".join(f"\n    {g}" for g in got))
+        if not ok:
+            failed.append(case)
+    if failed:
+        raise Failure("creation-rule warnings not as expected: " + ", ".join(failed))
+
+
+# ------------------------------------------------------------ renumber
+
+def thermo_column(text, name):
+    """Values of thermo column `name` in every block that has it (LIGGGHTS
+    heads compute columns without the `c_`)."""
+    names = {name, name[2:] if name.startswith("c_") else name}
+    values, header, column = [], None, None
+    for line in text.splitlines():
+        words = line.split()
+        if words[:1] == ["Step"]:
+            found = [k for k, w in enumerate(words) if w in names]
+            header, column = (words, found[0]) if found else (None, None)
+        elif line.startswith("Loop time"):
+            header = None
+        elif header and len(words) == len(header) and words[0].isdigit():
+            values.append(float(words[column]))
+    return values
+
+
+def check_renumber(a, workdir):
+    if a.kind != "lammps":
+        raise Failure("renumber: LAMMPS only")
+    deck = "renumber_lammps.in"
+    rc, out = run_deck([a.engine], deck, os.path.join(workdir, "compress-yes"), {"comp": "yes"})
+    want = ["atoms changed their atom IDs", "delete_atoms ... compress no"]
+    if rc == 0 or not all(w in out for w in want):
+        raise Failure(f"compress yes: exit {rc}, the run did not end with the renumbering error:\n{out[-2500:]}")
+    line = next(x for x in out.splitlines() if "changed their atom IDs" in x)
+    print(f"compress yes: refused: {line.strip()[:160]}")
+    run_ok([a.engine], deck, os.path.join(workdir, "compress-no"), {"comp": "no"})
+    with open(os.path.join(workdir, "compress-no", "log.lammps"), encoding="utf-8") as f:
+        fx3 = thermo_column(f.read(), "c_fx3")
+    if len(fx3) < 2 or any(f != 0.0 for f in fx3):
+        raise Failure(f"compress no: force on the never-bonded atom {fx3} (want 0 throughout)")
+    print(f"compress no: runs on; force on the never-bonded atom 0 in all {len(fx3)} rows")
+
+
+# ------------------------------------------------------------ lost
+
+def check_lost(a, workdir):
+    ranks = {"1": [a.engine]}
+    if a.mpiexec:
+        ranks["2"] = mpi_prefix(a.mpiexec) + [a.engine]
+    for n, command in ranks.items():
+        run_ok(command, "lost_liggghts.in", os.path.join(workdir, f"np{n}"), {})
+        with open(os.path.join(workdir, f"np{n}", "log.lammps"), encoding="utf-8") as f:
+            out = f.read()
+        cols = [thermo_column(out, c) for c in ("c_bc[1]", "c_bc[2]", "c_bc[3]", "c_bc[7]")]
+        rows = list(zip(*cols))
+        if not rows:
+            raise Failure(f"{n} rank(s): no counter rows")
+        unbalanced = [r for r in rows if r[0] != r[1] + r[2] + r[3]]
+        if unbalanced:
+            raise Failure(f"{n} rank(s): created != broken + intact + lost in rows {unbalanced[:3]}")
+        if rows[-1] != (3.0, 0.0, 0.0, 3.0):
+            raise Failure(f"{n} rank(s): final created, broken, intact, lost {rows[-1]} (want 3 0 0 3)")
+        warned = [x for x in warnings_in_log(os.path.join(workdir, f"np{n}")) if "bonds vanished" in x]
+        if len(warned) != 1 or "2 bonds vanished" not in warned[0]:
+            raise Failure(f"{n} rank(s): want one warning naming the 2 bonds of the deleted atom: {warned}")
+        print(f"{n} rank(s): final counter {rows[-1]}; {warned[0]}")
+
+
 def run(a):
     workdir = os.path.abspath(a.workdir)
     if a.mode == "continuity":
         check_continuity(a, workdir)
+    elif a.mode == "timestep":
+        check_timestep(a, workdir)
+    elif a.mode == "creation":
+        check_creation(a, workdir)
+    elif a.mode == "renumber":
+        check_renumber(a, workdir)
+    elif a.mode == "lost":
+        check_lost(a, workdir)
     else:
         raise Failure(f"unknown mode {a.mode}")
 

@@ -4,6 +4,7 @@
 pub mod breakage;
 mod chunk;
 pub mod creation;
+pub mod creation_check;
 pub mod damping;
 pub mod energy;
 pub mod hysteresis;

@@ -11,15 +11,7 @@ use crate::stability::{oscillator_limit, sphere_inertia};
 /// (its stiffness is unbounded at zero compression), as a fraction of `rb`.
 pub const REFERENCE_COMPRESSION: f64 = 1e-3;
 
-/// The recommended step as a fraction of [`BondModel::critical_timestep`]
-/// (docs/speed-accuracy.md). The estimate is the limit of one bond between
-/// two spheres; a sphere bonded to six neighbours (a cubic packing) was
-/// measured unstable from 0.65-0.75 of it (hysteretic and elastic bonds), and
-/// the square root's rattle amplitude shrinks as the fourth power of the step.
-/// At 0.2 the margin to the coordinated limit is 3x, the periods of the
-/// reference oscillators are within 2e-3, and the cantilever's first
-/// frequency within 1e-7.
-pub const RECOMMENDED_FRACTION: f64 = 0.2;
+pub use crate::stability::RECOMMENDED_FRACTION;
 
 impl BondModel {
     /// Critical step of this bond type between spheres of the given radii and

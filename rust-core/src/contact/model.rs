@@ -8,7 +8,7 @@ use super::state::{ContactOutput, ContactState};
 use super::tangential::carry_spring;
 use crate::kinematics::{centre_line, slip_velocity, KinematicsError, PairKinematics, SphereKinematics};
 use crate::parameters::ParameterError;
-use crate::stability::{oscillator_limit, sphere_inertia};
+use crate::stability::{oscillator_limit, sphere_inertia, RECOMMENDED_FRACTION};
 use crate::vector::{tangential_part, v3, Vec3};
 
 /// Where and how deep two bodies touch, how far from each centre the
@@ -356,5 +356,11 @@ impl VoigtModel {
             dt = dt.min(oscillator_limit(i_eff, p.k_r, p.gamma_r + p.eta_r));
         }
         dt
+    }
+
+    /// [`RECOMMENDED_FRACTION`] of [`VoigtModel::critical_timestep`]: the
+    /// step above which the engines warn.
+    pub fn recommended_timestep(&self, radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> f64 {
+        RECOMMENDED_FRACTION * self.critical_timestep(radius_i, radius_j, mass_i, mass_j)
     }
 }

@@ -5,12 +5,14 @@ use super::guard::{call, reference};
 use crate::bond::{BondOutput, BondParams, BOND_STATE_LEN, WALL_BOND_STATE_LEN};
 use crate::contact::{ContactFrame, ContactOutput, Plane, VoigtParams, CONTACT_STATE_LEN};
 use crate::ffi::bond::{AtomArrayPointers, SphereKinematics};
+use crate::ffi::checks::CheckReport;
 use crate::ffi::contact::TangentialOutput;
 use crate::kinematics::PairKinematics;
+use crate::timestep_check::TypeBodies;
 use std::mem::size_of;
 
 /// Bumped whenever a struct, a function or a meaning changes.
-pub const GRANBOND_ABI_VERSION: u32 = 4;
+pub const GRANBOND_ABI_VERSION: u32 = 5;
 
 /// The meaning of the state slots (`granbond_state_slot`): bumped whenever a
 /// slot is added, removed or changes meaning, so that engines can refuse
@@ -36,6 +38,8 @@ pub struct Layout {
     pub contact_output: usize,
     pub contact_frame: usize,
     pub tangential_output: usize,
+    pub type_bodies: usize,
+    pub check_report: usize,
     pub bond_state_len: usize,
     pub wall_bond_state_len: usize,
     pub contact_state_len: usize,
@@ -63,6 +67,8 @@ pub fn library_layout() -> Layout {
         contact_output: size_of::<ContactOutput>(),
         contact_frame: size_of::<ContactFrame>(),
         tangential_output: size_of::<TangentialOutput>(),
+        type_bodies: size_of::<TypeBodies>(),
+        check_report: size_of::<CheckReport>(),
         bond_state_len: BOND_STATE_LEN,
         wall_bond_state_len: WALL_BOND_STATE_LEN,
         contact_state_len: CONTACT_STATE_LEN,
@@ -95,7 +101,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
             ));
         }
         let e = reference(expected, "expected")?;
-        let items: [(&str, usize, usize); 13] = [
+        let items: [(&str, usize, usize); 15] = [
             ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
             ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
             ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
@@ -114,6 +120,8 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
                 e.tangential_output,
                 l.tangential_output,
             ),
+            ("sizeof(GbTypeBodies)", e.type_bodies, l.type_bodies),
+            ("sizeof(GbCheckReport)", e.check_report, l.check_report),
             ("bond state length", e.bond_state_len, l.bond_state_len),
             (
                 "wall bond state length",

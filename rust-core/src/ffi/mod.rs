@@ -8,6 +8,7 @@
 
 pub mod abi;
 pub mod bond;
+pub mod checks;
 pub mod contact;
 pub mod error;
 pub mod guard;

@@ -30,11 +30,13 @@ use granbond::contact::{
 };
 use granbond::ffi::abi::{self, library_layout, Layout};
 use granbond::ffi::bond::{self as fb, AtomArrayPointers};
+use granbond::ffi::checks::{self as fk, CheckReport};
 use granbond::ffi::contact::{self as fc, TangentialOutput};
 use granbond::ffi::error::{granbond_last_error_message, granbond_last_error_parameter};
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
+use granbond::timestep_check::TypeBodies;
 use std::collections::BTreeMap;
 use std::ffi::{c_char, CStr};
 use std::marker::PhantomData;
@@ -43,7 +45,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 43] = [
+pub const ENTRY_POINTS: [&str; 46] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -64,6 +66,9 @@ pub const ENTRY_POINTS: [&str; 43] = [
     "granbond_bond_contact_distance_factor",
     "granbond_bond_critical_timestep",
     "granbond_bond_recommended_timestep",
+    "granbond_bond_timestep_check",
+    "granbond_voigt_timestep_check",
+    "granbond_bond_creation_check",
     "granbond_voigt_params_default",
     "granbond_voigt_model_new",
     "granbond_voigt_model_free",
@@ -1366,13 +1371,16 @@ impl<'t> Session<'t> {
         let mut out = Place::new(f64::NAN);
         let how = input.pointer();
         let (r1, r2, m1, m2) = (bodies[0], bodies[1], bodies[2], bodies[3]);
+        let (mut voigt, mut bond) = (null(), null());
         let (function, status) = if which == 2 {
             let m = self.voigt_model(input);
+            voigt = m;
             // SAFETY: null, misaligned or valid.
             let st = unsafe { fc::granbond_voigt_critical_timestep(m, r1, r2, m1, m2, out.ptr(how)) };
             ("granbond_voigt_critical_timestep", st)
         } else {
             let m = self.bond_model(input);
+            bond = m;
             // SAFETY: null, misaligned or valid.
             unsafe {
                 if which == 0 {
@@ -1388,6 +1396,53 @@ impl<'t> Session<'t> {
             let dt = out.get();
             // infinite: a model without stiffness has no limit
             assert!(dt > 0.0, "{function}({bodies:?}) = {dt}");
+        }
+        self.run_check(which, bond, voigt, &bodies, how);
+    }
+
+    /// The run checks over one atom type with the model (`bond` or `voigt`)
+    /// and bodies the estimate just had (no input read: the corpus decodes as before):
+    /// `which` 0 the bond time-step check, 1 the creation check, 2 the
+    /// Voigt time-step check.
+    fn run_check(&mut self, which: usize, bond: *const BondModel, voigt: *const VoigtModel, bodies: &[f64], how: Pointer) {
+        let types = [
+            TypeBodies::none(),
+            TypeBodies {
+                radius_min: bodies[0],
+                radius_max: bodies[1],
+                mass_min: bodies[2],
+            },
+        ];
+        let mut report = Place::new(unsafe { std::mem::zeroed::<CheckReport>() });
+        let style = c"fuzz";
+        let dt = bodies[3];
+        // SAFETY: tables of (1 + 1)^2 models and 2 bodies; null, misaligned or valid report.
+        let (function, status) = unsafe {
+            match which {
+                2 => {
+                    let table = [null(), null(), null(), voigt];
+                    let st = fk::granbond_voigt_timestep_check(table.as_ptr(), 1, types.as_ptr(), dt, style.as_ptr(), report.ptr(how));
+                    ("granbond_voigt_timestep_check", st)
+                }
+                _ => {
+                    let table = [null(), null(), null(), bond];
+                    if which == 0 {
+                        let st = fk::granbond_bond_timestep_check(table.as_ptr(), 1, types.as_ptr(), dt, style.as_ptr(), report.ptr(how));
+                        ("granbond_bond_timestep_check", st)
+                    } else {
+                        let st = fk::granbond_bond_creation_check(table.as_ptr(), 1, types.as_ptr(), 0, 0, 0, style.as_ptr(), report.ptr(how));
+                        ("granbond_bond_creation_check", st)
+                    }
+                }
+            }
+        };
+        if self.answer(function, status) {
+            let r = report.get();
+            let text = unsafe { std::ffi::CStr::from_ptr(r.message.as_ptr()) }.to_string_lossy().into_owned();
+            assert!(r.level >= 0 && (r.level == 0) == text.is_empty(), "{function}: level {} message \"{text}\"", r.level);
+            if which != 1 {
+                assert!(r.level <= 2 && (r.critical > 0.0), "{function}: level {} critical {}", r.level, r.critical);
+            }
         }
     }
 

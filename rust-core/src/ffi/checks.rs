@@ -1,0 +1,249 @@
+//! `extern "C"` surface of the checks engines run at every `run`: the time
+//! step against the stiffest bond or contact present, and the bond's
+//! creation and break rules against each other. Each returns a report whose
+//! message the adapter prints as an engine warning.
+
+use super::error::{Failure, Status};
+use super::guard::{call, check_dt, reference, reference_mut, slice};
+use crate::bond::creation_check::{findings, message, Naming};
+use crate::bond::BondModel;
+use crate::contact::VoigtModel;
+use crate::timestep_check::{scan, TimestepLevel, TypeBodies};
+use std::ffi::{c_char, CStr};
+
+/// Capacity of [`CheckReport::message`], terminating NUL included.
+pub const GRANBOND_CHECK_MESSAGE_LEN: usize = 2048;
+
+/// What a check found. `level`: 0 nothing to say; for the time-step checks
+/// 1 above the recommended step, 2 above the critical step; for the
+/// creation check the number of findings. `message`: the warning (NUL
+/// terminated, several findings separated by newlines; empty at level 0).
+/// The time-step checks also give the limiting type pair and its steps
+/// (`type_a = 0` and infinite steps when nothing limits).
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub struct CheckReport {
+    pub level: i32,
+    pub type_a: i32,
+    pub type_b: i32,
+    pub critical: f64,
+    pub recommended: f64,
+    pub message: [c_char; GRANBOND_CHECK_MESSAGE_LEN],
+}
+
+impl CheckReport {
+    fn write(&mut self, level: i32, text: &str) {
+        self.level = level;
+        // cut at a character boundary so the message stays UTF-8
+        let mut end = text.len().min(GRANBOND_CHECK_MESSAGE_LEN - 1);
+        while !text.is_char_boundary(end) {
+            end -= 1;
+        }
+        for (d, s) in self.message.iter_mut().zip(text[..end].bytes()) {
+            *d = s as c_char;
+        }
+        self.message[end] = 0;
+    }
+
+    fn clear(&mut self) {
+        self.type_a = 0;
+        self.type_b = 0;
+        self.critical = f64::INFINITY;
+        self.recommended = f64::INFINITY;
+        self.write(0, "");
+    }
+}
+
+/// The per-type table arguments: `ntypes >= 0`, `bodies[ntypes + 1]`,
+/// `models[(ntypes + 1)^2]` (entry `a * (ntypes + 1) + b`, null = no model).
+unsafe fn tables<'a, M>(
+    ntypes: i32,
+    models: *const *const M,
+    bodies: *const TypeBodies,
+) -> Result<(usize, &'a [*const M], &'a [TypeBodies]), Failure> {
+    let n = usize::try_from(ntypes)
+        .ok()
+        .filter(|&n| n < 1 << 15)
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("ntypes must be 0..32767; got {ntypes}")))?;
+    let models = slice(models, (n + 1) * (n + 1), "models")?;
+    let bodies = slice(bodies, n + 1, "bodies")?;
+    Ok((n, models, bodies))
+}
+
+/// The model of `(a, b)` in the table, checked.
+unsafe fn model_at<'a, M>(models: &[*const M], n: usize, a: usize, b: usize) -> Result<Option<&'a M>, Failure> {
+    let p = models[a * (n + 1) + b];
+    if p.is_null() {
+        Ok(None)
+    } else {
+        reference(p, "models[a * (ntypes + 1) + b]").map(Some)
+    }
+}
+
+unsafe fn style_name(style: *const c_char) -> Result<String, Failure> {
+    if style.is_null() {
+        return Err(Failure::new(Status::NullPointer, "argument `style` is null"));
+    }
+    Ok(CStr::from_ptr(style).to_string_lossy().into_owned())
+}
+
+/// Body of both time-step checks.
+#[allow(clippy::too_many_arguments)]
+unsafe fn timestep_check<M>(
+    function: &str,
+    what: &str,
+    models: *const *const M,
+    ntypes: i32,
+    bodies: *const TypeBodies,
+    dt: f64,
+    style: *const c_char,
+    out: *mut CheckReport,
+    critical: fn(&M, f64, f64, f64, f64) -> f64,
+) -> Status {
+    call(function, || {
+        let report = reference_mut(out, "out")?;
+        report.clear();
+        check_dt(dt)?;
+        let style = style_name(style)?;
+        let (n, models, bodies) = tables(ntypes, models, bodies)?;
+        // every model pointer is checked before any is used
+        let mut table = Vec::with_capacity(models.len());
+        for a in 0..=n {
+            for b in 0..=n {
+                table.push(model_at(models, n, a, b)?);
+            }
+        }
+        let verdict = scan(n, bodies, |a, b| table[a * (n + 1) + b], |m, ri, rj, mi, mj| critical(m, ri, rj, mi, mj), dt)
+            .map_err(|(a, b, c)| {
+                Failure::new(
+                    Status::InvalidArgument,
+                    format!("atom types {a} and {b}: radii and masses outside the range the estimate can evaluate (it gives {c})"),
+                )
+            })?;
+        if let Some(v) = verdict {
+            report.type_a = v.type_a as i32;
+            report.type_b = v.type_b as i32;
+            report.critical = v.critical;
+            report.recommended = v.recommended;
+            report.write(v.level as i32, &v.message(&style, what, bodies));
+            debug_assert_eq!(report.level != 0, v.level != TimestepLevel::Safe);
+        }
+        Ok(())
+    })
+}
+
+/// Checks the time step `dt` against the bonds of every pair of atom types
+/// present: `models[a * (ntypes + 1) + b]` the bond model of types `a`, `b`
+/// (null: none), `bodies[t]` the smallest and largest radius and the
+/// lightest mass of type `t` over all ranks (index 0 unused; a type without
+/// atoms has infinite `radius_min`). `style` names the deck command in the
+/// message. The pair with the shortest critical step limits; `out` says how
+/// `dt` compares with it and holds the warning to print.
+///
+/// # Safety
+/// Pointers must be null or valid for the sizes above; `style` a NUL
+/// terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_timestep_check(
+    models: *const *const BondModel,
+    ntypes: i32,
+    bodies: *const TypeBodies,
+    dt: f64,
+    style: *const c_char,
+    out: *mut CheckReport,
+) -> Status {
+    timestep_check(
+        "granbond_bond_timestep_check",
+        "bond",
+        models,
+        ntypes,
+        bodies,
+        dt,
+        style,
+        out,
+        BondModel::critical_timestep,
+    )
+}
+
+/// `granbond_bond_timestep_check` for the Voigt contact.
+///
+/// # Safety
+/// As `granbond_bond_timestep_check`.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_timestep_check(
+    models: *const *const VoigtModel,
+    ntypes: i32,
+    bodies: *const TypeBodies,
+    dt: f64,
+    style: *const c_char,
+    out: *mut CheckReport,
+) -> Status {
+    timestep_check(
+        "granbond_voigt_timestep_check",
+        "contact",
+        models,
+        ntypes,
+        bodies,
+        dt,
+        style,
+        out,
+        VoigtModel::critical_timestep,
+    )
+}
+
+/// Checks the creation and break rules of the bond models (tables as in
+/// `granbond_bond_timestep_check`) against each other and the spheres
+/// present: a creation distance beyond the break distance, a creation
+/// distance below contact, a creation step that has passed (`first_step`:
+/// the step the model's first run started from). `wall` non-zero: wall bonds
+/// (the sphere's radius alone is the contact distance; the wall's type needs
+/// no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the message.
+/// `out->level` is the number of findings.
+///
+/// # Safety
+/// As `granbond_bond_timestep_check`.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_creation_check(
+    models: *const *const BondModel,
+    ntypes: i32,
+    bodies: *const TypeBodies,
+    first_step: i64,
+    wall: i32,
+    naming: i32,
+    style: *const c_char,
+    out: *mut CheckReport,
+) -> Status {
+    call("granbond_bond_creation_check", || {
+        let report = reference_mut(out, "out")?;
+        report.clear();
+        let naming = match naming {
+            0 => Naming::Lammps,
+            1 => Naming::Liggghts,
+            _ => {
+                return Err(Failure::new(
+                    Status::InvalidArgument,
+                    format!("naming must be 0 (LAMMPS) or 1 (LIGGGHTS); got {naming}"),
+                ))
+            }
+        };
+        let style = style_name(style)?;
+        let (n, models, bodies) = tables(ntypes, models, bodies)?;
+        let mut table = Vec::with_capacity(models.len());
+        for a in 0..=n {
+            for b in 0..=n {
+                table.push(model_at(models, n, a, b)?.map(|m| m.params));
+            }
+        }
+        let wall = wall != 0;
+        let found = findings(n, bodies, |a, b| table[a * (n + 1) + b], first_step, wall);
+        let text: Vec<String> = found
+            .iter()
+            .map(|&(f, a, b)| {
+                let p = table[a * (n + 1) + b].expect("a finding has a model");
+                message(f, a, b, &p, bodies, first_step, wall, naming, &style)
+            })
+            .collect();
+        report.write(found.len() as i32, &text.join("\n"));
+        Ok(())
+    })
+}
