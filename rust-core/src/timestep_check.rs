@@ -148,7 +148,12 @@ mod tests {
 
     #[test]
     fn the_lightest_stiffest_pair_limits_and_absent_types_are_skipped() {
-        let bodies = [TypeBodies::none(), sphere(1e-3, 1e-5), sphere(1e-3, 4e-5), TypeBodies::none()];
+        let bodies = [
+            TypeBodies::none(),
+            sphere(1e-3, 1e-5),
+            sphere(1e-3, 4e-5),
+            TypeBodies::none(),
+        ];
         let stiffness = |a: usize, b: usize| Some(if a == b { 1e4 } else { 1e6 });
         let v = scan(3, &bodies, stiffness, spring, 1e-9).unwrap().unwrap();
         assert_eq!((v.type_a, v.type_b), (1, 2));
@@ -161,13 +166,23 @@ mod tests {
     fn levels_follow_the_two_limits() {
         let bodies = [TypeBodies::none(), sphere(1e-3, 1e-5)];
         let c = spring(&1e4, 0.0, 0.0, 1e-5, 1e-5);
-        let level = |dt: f64| scan(1, &bodies, |_, _| Some(1e4), spring, dt).unwrap().unwrap().level;
+        let level = |dt: f64| {
+            scan(1, &bodies, |_, _| Some(1e4), spring, dt)
+                .unwrap()
+                .unwrap()
+                .level
+        };
         assert_eq!(level(RECOMMENDED_FRACTION * c), TimestepLevel::Safe);
         assert_eq!(level(0.5 * c), TimestepLevel::AboveRecommended);
         assert_eq!(level(1.01 * c), TimestepLevel::AboveCritical);
-        let v = scan(1, &bodies, |_, _| Some(1e4), spring, 1.01 * c).unwrap().unwrap();
+        let v = scan(1, &bodies, |_, _| Some(1e4), spring, 1.01 * c)
+            .unwrap()
+            .unwrap();
         let msg = v.message("pair granbond", "contact", &bodies);
-        assert!(msg.starts_with("pair granbond: time step") && msg.contains("EXCEEDS the critical step"), "{msg}");
+        assert!(
+            msg.starts_with("pair granbond: time step") && msg.contains("EXCEEDS the critical step"),
+            "{msg}"
+        );
     }
 
     #[test]

@@ -48,7 +48,10 @@ pub fn findings(
 ) -> Vec<(Finding, usize, usize)> {
     let mut found: Vec<(Finding, usize, usize)> = Vec::new();
     let mut note = |f: Finding, a: usize, b: usize| {
-        if !found.iter().any(|(g, _, _)| std::mem::discriminant(g) == std::mem::discriminant(&f)) {
+        if !found
+            .iter()
+            .any(|(g, _, _)| std::mem::discriminant(g) == std::mem::discriminant(&f))
+        {
             found.push((f, a, b));
         }
     };
@@ -176,7 +179,10 @@ mod tests {
     }
 
     fn kinds(p: BondParams, step: i64) -> Vec<Finding> {
-        findings(1, &spheres(1e-3), |_, _| Some(p), step, false).into_iter().map(|f| f.0).collect()
+        findings(1, &spheres(1e-3), |_, _| Some(p), step, false)
+            .into_iter()
+            .map(|f| f.0)
+            .collect()
     }
 
     #[test]
@@ -189,16 +195,32 @@ mod tests {
     fn each_contradiction_is_found() {
         assert_eq!(
             kinds(bond(2.2e-3, 2.08e-3, 1, true), 0),
-            [Finding::CreatedBroken { touching_breaks: false }]
+            [Finding::CreatedBroken {
+                touching_breaks: false
+            }]
         );
         assert_eq!(
             kinds(bond(2.2e-3, 1.9e-3, 1, false), 0),
-            [Finding::CreatedBroken { touching_breaks: true }]
+            [Finding::CreatedBroken {
+                touching_breaks: true
+            }]
         );
-        assert_eq!(kinds(bond(1.5e-3, 2.08e-3, 1, false), 0), [Finding::CreateBelowContact]);
-        assert_eq!(kinds(bond(2.05e-3, 2.08e-3, 0, false), 0), [Finding::CreateStepPassed]);
-        assert_eq!(kinds(bond(2.05e-3, 2.08e-3, -5, false), 0), [Finding::CreateStepPassed]);
-        assert_eq!(kinds(bond(2.05e-3, 2.08e-3, 100, false), 100), [Finding::CreateStepPassed]);
+        assert_eq!(
+            kinds(bond(1.5e-3, 2.08e-3, 1, false), 0),
+            [Finding::CreateBelowContact]
+        );
+        assert_eq!(
+            kinds(bond(2.05e-3, 2.08e-3, 0, false), 0),
+            [Finding::CreateStepPassed]
+        );
+        assert_eq!(
+            kinds(bond(2.05e-3, 2.08e-3, -5, false), 0),
+            [Finding::CreateStepPassed]
+        );
+        assert_eq!(
+            kinds(bond(2.05e-3, 2.08e-3, 100, false), 100),
+            [Finding::CreateStepPassed]
+        );
     }
 
     #[test]
@@ -215,20 +237,51 @@ mod tests {
         let bodies = spheres(1e-3);
         let p = bond(1.05e-3, 1.1e-3, 1, false);
         assert!(findings(1, &bodies, |_, _| Some(p), 0, true).is_empty());
-        assert_eq!(findings(1, &bodies, |_, _| Some(p), 0, false)[0].0, Finding::CreateBelowContact);
+        assert_eq!(
+            findings(1, &bodies, |_, _| Some(p), 0, false)[0].0,
+            Finding::CreateBelowContact
+        );
     }
 
     #[test]
     fn messages_name_the_parameters_as_each_engine_spells_them() {
         let bodies = spheres(1e-3);
         let p = bond(2.2e-3, 2.08e-3, 1, true);
-        let f = Finding::CreatedBroken { touching_breaks: false };
-        let lig = message(f, 1, 1, &p, &bodies, 0, false, Naming::Liggghts, "cohesion bond/nonlinear");
-        assert!(lig.contains("createDistanceBondnonlinear") && lig.contains("maxDistanceBondnonlinear"), "{lig}");
+        let f = Finding::CreatedBroken {
+            touching_breaks: false,
+        };
+        let lig = message(
+            f,
+            1,
+            1,
+            &p,
+            &bodies,
+            0,
+            false,
+            Naming::Liggghts,
+            "cohesion bond/nonlinear",
+        );
+        assert!(
+            lig.contains("createDistanceBondnonlinear") && lig.contains("maxDistanceBondnonlinear"),
+            "{lig}"
+        );
         assert!(lig.contains("every step (createBondAlways on)"), "{lig}");
         let lmp = message(f, 1, 1, &p, &bodies, 0, false, Naming::Lammps, "pair granbond");
-        assert!(lmp.contains("create_distance") && lmp.contains("max_distance"), "{lmp}");
-        let s = message(Finding::CreateStepPassed, 1, 1, &p, &bodies, 7, false, Naming::Liggghts, "x");
+        assert!(
+            lmp.contains("create_distance") && lmp.contains("max_distance"),
+            "{lmp}"
+        );
+        let s = message(
+            Finding::CreateStepPassed,
+            1,
+            1,
+            &p,
+            &bodies,
+            7,
+            false,
+            Naming::Liggghts,
+            "x",
+        );
         assert!(s.contains("tsCreateBondnonlinear 1 is not after step 7,"), "{s}");
     }
 }

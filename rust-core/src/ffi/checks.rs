@@ -64,14 +64,24 @@ unsafe fn tables<'a, M>(
     let n = usize::try_from(ntypes)
         .ok()
         .filter(|&n| n < 1 << 15)
-        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("ntypes must be 0..32767; got {ntypes}")))?;
+        .ok_or_else(|| {
+            Failure::new(
+                Status::InvalidArgument,
+                format!("ntypes must be 0..32767; got {ntypes}"),
+            )
+        })?;
     let models = slice(models, (n + 1) * (n + 1), "models")?;
     let bodies = slice(bodies, n + 1, "bodies")?;
     Ok((n, models, bodies))
 }
 
 /// The model of `(a, b)` in the table, checked.
-unsafe fn model_at<'a, M>(models: &[*const M], n: usize, a: usize, b: usize) -> Result<Option<&'a M>, Failure> {
+unsafe fn model_at<'a, M>(
+    models: &[*const M],
+    n: usize,
+    a: usize,
+    b: usize,
+) -> Result<Option<&'a M>, Failure> {
     let p = models[a * (n + 1) + b];
     if p.is_null() {
         Ok(None)

@@ -1404,7 +1404,14 @@ impl<'t> Session<'t> {
     /// and bodies the estimate just had (no input read: the corpus decodes as before):
     /// `which` 0 the bond time-step check, 1 the creation check, 2 the
     /// Voigt time-step check.
-    fn run_check(&mut self, which: usize, bond: *const BondModel, voigt: *const VoigtModel, bodies: &[f64], how: Pointer) {
+    fn run_check(
+        &mut self,
+        which: usize,
+        bond: *const BondModel,
+        voigt: *const VoigtModel,
+        bodies: &[f64],
+        how: Pointer,
+    ) {
         let types = [
             TypeBodies::none(),
             TypeBodies {
@@ -1421,16 +1428,39 @@ impl<'t> Session<'t> {
             match which {
                 2 => {
                     let table = [null(), null(), null(), voigt];
-                    let st = fk::granbond_voigt_timestep_check(table.as_ptr(), 1, types.as_ptr(), dt, style.as_ptr(), report.ptr(how));
+                    let st = fk::granbond_voigt_timestep_check(
+                        table.as_ptr(),
+                        1,
+                        types.as_ptr(),
+                        dt,
+                        style.as_ptr(),
+                        report.ptr(how),
+                    );
                     ("granbond_voigt_timestep_check", st)
                 }
                 _ => {
                     let table = [null(), null(), null(), bond];
                     if which == 0 {
-                        let st = fk::granbond_bond_timestep_check(table.as_ptr(), 1, types.as_ptr(), dt, style.as_ptr(), report.ptr(how));
+                        let st = fk::granbond_bond_timestep_check(
+                            table.as_ptr(),
+                            1,
+                            types.as_ptr(),
+                            dt,
+                            style.as_ptr(),
+                            report.ptr(how),
+                        );
                         ("granbond_bond_timestep_check", st)
                     } else {
-                        let st = fk::granbond_bond_creation_check(table.as_ptr(), 1, types.as_ptr(), 0, 0, 0, style.as_ptr(), report.ptr(how));
+                        let st = fk::granbond_bond_creation_check(
+                            table.as_ptr(),
+                            1,
+                            types.as_ptr(),
+                            0,
+                            0,
+                            0,
+                            style.as_ptr(),
+                            report.ptr(how),
+                        );
                         ("granbond_bond_creation_check", st)
                     }
                 }
@@ -1438,10 +1468,21 @@ impl<'t> Session<'t> {
         };
         if self.answer(function, status) {
             let r = report.get();
-            let text = unsafe { std::ffi::CStr::from_ptr(r.message.as_ptr()) }.to_string_lossy().into_owned();
-            assert!(r.level >= 0 && (r.level == 0) == text.is_empty(), "{function}: level {} message \"{text}\"", r.level);
+            let text = unsafe { std::ffi::CStr::from_ptr(r.message.as_ptr()) }
+                .to_string_lossy()
+                .into_owned();
+            assert!(
+                r.level >= 0 && (r.level == 0) == text.is_empty(),
+                "{function}: level {} message \"{text}\"",
+                r.level
+            );
             if which != 1 {
-                assert!(r.level <= 2 && (r.critical > 0.0), "{function}: level {} critical {}", r.level, r.critical);
+                assert!(
+                    r.level <= 2 && (r.critical > 0.0),
+                    "{function}: level {} critical {}",
+                    r.level,
+                    r.critical
+                );
             }
         }
     }
