@@ -6,7 +6,7 @@
 use super::error::{Failure, Status};
 use super::guard::{call, check_dt, reference, reference_mut, slice};
 use crate::bond::creation_check::{findings, message, Naming};
-use crate::bond::BondModel;
+use crate::bond::{BondModel, BondParams};
 use crate::contact::VoigtModel;
 use crate::timestep_check::{scan, TimestepLevel, TypeBodies};
 use std::ffi::{c_char, CStr};
@@ -55,12 +55,14 @@ impl CheckReport {
 }
 
 /// The per-type table arguments: `ntypes >= 0`, `bodies[ntypes + 1]`,
-/// `models[(ntypes + 1)^2]` (entry `a * (ntypes + 1) + b`, null = no model).
+/// `models[(ntypes + 1)^2]` (entry `a * (ntypes + 1) + b`, null = no model),
+/// every model pointer checked before any is used.
+#[allow(clippy::type_complexity)]
 unsafe fn tables<'a, M>(
     ntypes: i32,
     models: *const *const M,
     bodies: *const TypeBodies,
-) -> Result<(usize, &'a [*const M], &'a [TypeBodies]), Failure> {
+) -> Result<(usize, Vec<Option<&'a M>>, &'a [TypeBodies]), Failure> {
     let n = usize::try_from(ntypes)
         .ok()
         .filter(|&n| n < 1 << 15)
@@ -70,24 +72,16 @@ unsafe fn tables<'a, M>(
                 format!("ntypes must be 0..32767; got {ntypes}"),
             )
         })?;
-    let models = slice(models, (n + 1) * (n + 1), "models")?;
-    let bodies = slice(bodies, n + 1, "bodies")?;
-    Ok((n, models, bodies))
-}
-
-/// The model of `(a, b)` in the table, checked.
-unsafe fn model_at<'a, M>(
-    models: &[*const M],
-    n: usize,
-    a: usize,
-    b: usize,
-) -> Result<Option<&'a M>, Failure> {
-    let p = models[a * (n + 1) + b];
-    if p.is_null() {
-        Ok(None)
-    } else {
-        reference(p, "models[a * (ntypes + 1) + b]").map(Some)
+    let mut table = Vec::with_capacity((n + 1) * (n + 1));
+    for &p in slice(models, (n + 1) * (n + 1), "models")? {
+        table.push(if p.is_null() {
+            None
+        } else {
+            Some(reference(p, "models[a * (ntypes + 1) + b]")?)
+        });
     }
+    let bodies = slice(bodies, n + 1, "bodies")?;
+    Ok((n, table, bodies))
 }
 
 unsafe fn style_name(style: *const c_char) -> Result<String, Failure> {
@@ -115,15 +109,14 @@ unsafe fn timestep_check<M>(
         report.clear();
         check_dt(dt)?;
         let style = style_name(style)?;
-        let (n, models, bodies) = tables(ntypes, models, bodies)?;
-        // every model pointer is checked before any is used
-        let mut table = Vec::with_capacity(models.len());
-        for a in 0..=n {
-            for b in 0..=n {
-                table.push(model_at(models, n, a, b)?);
-            }
-        }
-        let verdict = scan(n, bodies, |a, b| table[a * (n + 1) + b], |m, ri, rj, mi, mj| critical(m, ri, rj, mi, mj), dt)
+        let (n, table, bodies) = tables(ntypes, models, bodies)?;
+        let verdict = scan(
+            n,
+            bodies,
+            |a, b| table[a * (n + 1) + b],
+            |m: &&M, ri, rj, mi, mj| critical(m, ri, rj, mi, mj),
+            dt,
+        )
             .map_err(|(a, b, c)| {
                 Failure::new(
                     Status::InvalidArgument,
@@ -238,12 +231,7 @@ pub unsafe extern "C" fn granbond_bond_creation_check(
         };
         let style = style_name(style)?;
         let (n, models, bodies) = tables(ntypes, models, bodies)?;
-        let mut table = Vec::with_capacity(models.len());
-        for a in 0..=n {
-            for b in 0..=n {
-                table.push(model_at(models, n, a, b)?.map(|m| m.params));
-            }
-        }
+        let table: Vec<Option<BondParams>> = models.iter().map(|m| m.map(|m| m.params)).collect();
         let wall = wall != 0;
         let found = findings(n, bodies, |a, b| table[a * (n + 1) + b], first_step, wall);
         let text: Vec<String> = found
