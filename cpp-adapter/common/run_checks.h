@@ -44,35 +44,6 @@ inline std::vector<GbTypeBodies> gatherTypeBodies(int ntypes, int nlocal, const 
     return bodies;
 }
 
-// Atom renumbering (`delete_atoms ... compress yes`, the default, or
-// `reset_atom_ids`) while bonds may exist. The engines keep each pair's
-// history under the partner's atom ID, so renumbered IDs would hand a
-// bond's state to a pair that never bonded. `stored`: a per-atom value that
-// migrates (and restarts) with the atom, the ID seen at the latest check (0:
-// not seen yet). Counts the atoms whose ID changed, over all ranks
-// (collective), and stores the current IDs.
-template<class Stored, class Tag>
-long long renumberedAtoms(int nlocal, const Tag *tag, Stored *stored, MPI_Comm world)
-{
-    long long mine = 0, all = 0;
-    for (int i = 0; i < nlocal; i++) {
-        const Stored now = static_cast<Stored>(tag[i]);
-        if (stored[i] != 0 && stored[i] != now) mine++;
-        stored[i] = now;
-    }
-    MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
-    return all;
-}
-
-// The error for renumbered atoms; `style` names the deck command.
-inline std::string renumberedMessage(const char *style, long long count)
-{
-    return std::string(style) + ": " + std::to_string(count) +
-           " atoms changed their atom IDs since the previous run (delete_atoms with compress yes, its "
-           "default, or reset_atom_ids). Bonds are kept under the partner's atom ID, so a bond would act on "
-           "a pair that never bonded. Delete atoms with `delete_atoms ... compress no`";
-}
-
 // When a time-step report is printed: at a run's start, and within a run
 // only when the atoms that arrived set a new limit.
 class TimestepWarning {
@@ -88,31 +59,28 @@ private:
     double last_ = 0.0;
 };
 
-// Warnings already printed, so that a finding repeated at every run is
-// said once.
+// Findings already printed, so that one repeated at every run is said
+// once.
 class SaidOnce {
 public:
-    // True the first time `message` is seen.
-    bool first(const std::string &message) { return said_.insert(message).second; }
+    // The lines of the report's message (one finding each) not printed yet.
+    std::vector<std::string> fresh(const GbCheckReport &report)
+    {
+        std::vector<std::string> lines;
+        const std::string all(report.message);
+        for (size_t start = 0; start < all.size();) {
+            size_t end = all.find('\n', start);
+            if (end == std::string::npos) end = all.size();
+            const std::string line = all.substr(start, end - start);
+            if (said_.insert(line).second) lines.push_back(line);
+            start = end + 1;
+        }
+        return lines;
+    }
 
 private:
     std::set<std::string> said_;
 };
-
-// The lines of a report's message (findings are separated by newlines).
-inline std::vector<std::string> reportLines(const GbCheckReport &report)
-{
-    std::vector<std::string> lines;
-    std::string all(report.message);
-    size_t start = 0;
-    while (start < all.size()) {
-        size_t end = all.find('\n', start);
-        if (end == std::string::npos) end = all.size();
-        lines.push_back(all.substr(start, end - start));
-        start = end + 1;
-    }
-    return lines;
-}
 
 }
 

@@ -453,22 +453,19 @@ void PairGranbond::init_style()
     if (ifix < 0) error->all(FLERR, "pair granbond: fix neigh/history not found");
     fixHistory_ = static_cast<FixNeighHistory *>(modify->fix[ifix]);
 
-    // per-type radii for the cutoffs (all ranks)
-    const std::vector<GbTypeBodies> bodies =
-        gatherTypeBodies(n, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
-    maxrad_.assign(n + 1, 0.0);
-    minrad_.assign(n + 1, std::numeric_limits<double>::infinity());
-    for (int t = 1; t <= n; t++) {
-        maxrad_[t] = bodies[t].radius_max;
-        minrad_[t] = bodies[t].radius_min;
-    }
+    // per-type radii (for the cutoffs) and masses, all ranks
+    bodies_ = gatherTypeBodies(n, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
     if (firstStep_ < 0) firstStep_ = update->ntimestep;
     if (anyBond_) checkRenumbering();
-    runChecks(bodies, true);
+    runChecks(bodies_, true);
 }
 
-// Ends the run if atoms were renumbered since the previous run while bonds
-// may exist (renumberedAtoms); the IDs live in a fix property/atom.
+// Ends the run if atoms were renumbered (`delete_atoms ... compress yes`,
+// its default, or `reset_atom_ids`) since the previous run while bonds may
+// exist. LAMMPS keeps each pair's history under the partner's atom ID, so
+// renumbered IDs would hand a bond's state to a pair that never bonded. The
+// ID each atom had at the previous run lives in a fix property/atom that
+// migrates and restarts with it (0: not seen yet).
 void PairGranbond::checkRenumbering()
 {
     const char *const name = "granbond_atom_id";
@@ -480,8 +477,20 @@ void PairGranbond::checkRenumbering()
     }
     if (index < 0 || flag != 0 || cols != 0)
         error->all(FLERR, std::string("pair granbond: per-atom integer ") + name + " not available");
-    const long long renumbered = renumberedAtoms(atom->nlocal, atom->tag, atom->ivector[index], world);
-    if (renumbered > 0) error->all(FLERR, renumberedMessage("pair granbond (bond/nonlinear)", renumbered));
+    int *const stored = atom->ivector[index];
+    long long mine = 0, renumbered = 0;
+    for (int i = 0; i < atom->nlocal; i++) {
+        const int now = static_cast<int>(atom->tag[i]);
+        if (stored[i] != 0 && stored[i] != now) mine++;
+        stored[i] = now;
+    }
+    MPI_Allreduce(&mine, &renumbered, 1, MPI_LONG_LONG, MPI_SUM, world);
+    if (renumbered > 0)
+        error->all(FLERR, "pair granbond (bond/nonlinear): " + std::to_string(renumbered) +
+                              " atoms changed their atom IDs since the previous run (delete_atoms with compress "
+                              "yes, its default, or reset_atom_ids). Bonds are kept under the partner's atom ID, "
+                              "so a bond would act on a pair that never bonded. Delete atoms with "
+                              "`delete_atoms ... compress no`");
 }
 
 // The core's checks: the time step against the stiffest contact and bond
@@ -505,8 +514,8 @@ void PairGranbond::runChecks(const std::vector<GbTypeBodies> &bodies, bool runSt
     if (granbond_bond_creation_check(bond_.data(), n, bodies.data(), firstStep_, 0, 0, bond, &report) !=
         GB_STATUS_OK)
         error->all(FLERR, std::string(bond) + ": " + granbond_last_error_message());
-    for (const std::string &line : reportLines(report))
-        if (said_.first(line) && comm->me == 0) error->warning(FLERR, line);
+    for (const std::string &line : said_.fresh(report))
+        if (comm->me == 0) error->warning(FLERR, line);
 }
 
 double PairGranbond::init_one(int i, int j)
@@ -514,9 +523,9 @@ double PairGranbond::init_one(int i, int j)
     if (!setflag[i][j])
         error->all(FLERR, "pair granbond: no pair_coeff for atom types " + std::to_string(i) + " and " +
                               std::to_string(j));
-    double cut = maxrad_[i] + maxrad_[j];
+    double cut = bodies_[i].radius_max + bodies_[j].radius_max;
     const GbBondModel *b = bond_[at(std::min(i, j), std::max(i, j))];
-    const double rmin = std::min(minrad_[i], minrad_[j]);
+    const double rmin = std::min(bodies_[i].radius_min, bodies_[j].radius_min);
     if (b && std::isfinite(rmin) && rmin > 0.0) {
         // the core's neighbour-list reach that keeps every intact bond
         double factor = 0.0;

@@ -89,7 +89,7 @@ private:
     std::vector<TypePair> pairs_;
     std::vector<GbVoigtModel *> voigt_;
     std::vector<GbBondModel *> bond_;
-    std::vector<double> maxrad_, minrad_;   // per type, over all ranks
+    std::vector<GbTypeBodies> bodies_;      // per type, over all ranks, at the latest run start
     std::vector<double> transferSign_;      // per history slot: +1 copy, -1 negate
     size_t contactLen_, bondLen_;
     int sizeHistory_;

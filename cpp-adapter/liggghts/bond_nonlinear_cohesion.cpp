@@ -265,9 +265,9 @@ void BondNonlinearCohesion::runChecks(bool runStart)
     if (granbond_bond_creation_check(parameters_.table(), ntypes, bodies.data(), firstStep_, isWall_ ? 1 : 0, 1,
                                      style, &report) != GB_STATUS_OK)
         endRun(error, FLERR, std::string(style) + ": " + granbond_last_error_message());
-    const std::vector<std::string> lines = reportLines(report);
+    const std::vector<std::string> lines = said_.fresh(report);
     for (size_t k = 0; k < lines.size(); k++)
-        if (said_.first(lines[k]) && comm->me == 0) error->warning(FLERR, lines[k].c_str());
+        if (comm->me == 0) error->warning(FLERR, lines[k].c_str());
 }
 
 bool BondNonlinearCohesion::countsHere(int i, int j) const
