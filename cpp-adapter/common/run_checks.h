@@ -82,6 +82,40 @@ private:
     std::set<std::string> said_;
 };
 
+// Engines keep a pair's history under the partner's atom ID, so renumbered
+// IDs (`delete_atoms ... compress yes`, its default) hand a bond's state to
+// a pair that never bonded. `stored` is a per-atom value that migrates and
+// restarts with its atom: the ID it had when last remembered (0: not seen
+// yet). Returns how many atoms changed their ID, over all ranks
+// (collective).
+template <class Tag, class Stored>
+long long countRenumbered(int nlocal, const Tag *tag, const Stored *stored, MPI_Comm world)
+{
+    long long mine = 0, all = 0;
+    for (int i = 0; i < nlocal; i++)
+        if (stored[i] != 0 && stored[i] != static_cast<Stored>(tag[i])) mine++;
+    MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+    return all;
+}
+
+template <class Tag, class Stored>
+void rememberIds(int nlocal, const Tag *tag, Stored *stored)
+{
+    for (int i = 0; i < nlocal; i++) stored[i] = static_cast<Stored>(tag[i]);
+}
+
+// The error that ends a run after renumbering while bonds exist.
+inline std::string renumberedMessage(const char *style, long long renumbered)
+{
+    return std::string(style) + ": " + std::to_string(renumbered) +
+           " atoms changed their atom IDs since the previous run (delete_atoms with compress yes, its "
+           "default, or reset_atom_ids). Bonds are kept under the partner's atom ID, so a bond would act on "
+           "a pair that never bonded. Delete atoms with `delete_atoms ... compress no`";
+}
+
+// The name of the per-atom value countRenumbered keeps.
+inline const char *renumberingProperty() { return "granbond_atom_id"; }
+
 }
 
 #endif

@@ -460,15 +460,11 @@ void PairGranbond::init_style()
     runChecks(bodies_, true);
 }
 
-// Ends the run if atoms were renumbered (`delete_atoms ... compress yes`,
-// its default, or `reset_atom_ids`) since the previous run while bonds may
-// exist. LAMMPS keeps each pair's history under the partner's atom ID, so
-// renumbered IDs would hand a bond's state to a pair that never bonded. The
-// ID each atom had at the previous run lives in a fix property/atom that
-// migrates and restarts with it (0: not seen yet).
+// Ends the run if atoms were renumbered since the previous run while bonds
+// may exist (countRenumbered).
 void PairGranbond::checkRenumbering()
 {
-    const char *const name = "granbond_atom_id";
+    const char *const name = renumberingProperty();
     int flag = 0, cols = 0;
     int index = atom->find_custom(name, flag, cols);
     if (index < 0) {
@@ -478,19 +474,9 @@ void PairGranbond::checkRenumbering()
     if (index < 0 || flag != 0 || cols != 0)
         error->all(FLERR, std::string("pair granbond: per-atom integer ") + name + " not available");
     int *const stored = atom->ivector[index];
-    long long mine = 0, renumbered = 0;
-    for (int i = 0; i < atom->nlocal; i++) {
-        const int now = static_cast<int>(atom->tag[i]);
-        if (stored[i] != 0 && stored[i] != now) mine++;
-        stored[i] = now;
-    }
-    MPI_Allreduce(&mine, &renumbered, 1, MPI_LONG_LONG, MPI_SUM, world);
-    if (renumbered > 0)
-        error->all(FLERR, "pair granbond (bond/nonlinear): " + std::to_string(renumbered) +
-                              " atoms changed their atom IDs since the previous run (delete_atoms with compress "
-                              "yes, its default, or reset_atom_ids). Bonds are kept under the partner's atom ID, "
-                              "so a bond would act on a pair that never bonded. Delete atoms with "
-                              "`delete_atoms ... compress no`");
+    const long long renumbered = countRenumbered(atom->nlocal, atom->tag, stored, world);
+    if (renumbered > 0) error->all(FLERR, renumberedMessage("pair granbond (bond/nonlinear)", renumbered));
+    rememberIds(atom->nlocal, atom->tag, stored);
 }
 
 // The core's checks: the time step against the stiffest contact and bond

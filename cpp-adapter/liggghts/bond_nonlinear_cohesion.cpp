@@ -68,6 +68,8 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     offset_(-1),
     outputOffset_(-1),
     clumpIds_(0),
+    atomIds_(0),
+    idsDue_(false),
     checkedNatoms_(-1),
     firstStep_(-1),
     lossCheck_(false),
@@ -101,8 +103,34 @@ void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
     clumpIds_ = isWall_ ? 0
                         : static_cast<LAMMPS_NS::FixPropertyAtom *>(modify->find_fix_property(
                               "bond_random_id", "property/atom", "scalar", 0, 0, "cohesion bond/nonlinear", false));
+    if (!isWall_) checkRenumbering();
     runChecks(true);
     lossCheck_ = !isWall_;
+}
+
+// Ends the run if atoms were renumbered since the previous run after bonds
+// formed (countRenumbered). Wall bonds live with their particle and are
+// not affected. The IDs are remembered in the run's first pass after its
+// setup pass: values written before that (at init) do not survive into
+// the run.
+void BondNonlinearCohesion::checkRenumbering()
+{
+    const char *const name = renumberingProperty();
+    if (!atomIds_) {
+        atomIds_ = static_cast<LAMMPS_NS::FixPropertyAtom *>(
+            modify->find_fix_property(name, "property/atom", "scalar", 0, 0, "cohesion bond/nonlinear", false));
+        if (!atomIds_) {
+            // restart yes, no ghost communication; 0 for atoms not seen yet
+            const char *args[] = {"GRANBOND_ATOM_ID", "all", "property/atom", name, "scalar", "yes", "no", "no", "0"};
+            atomIds_ = modify->add_fix_property_atom(9, const_cast<char **>(args), "cohesion bond/nonlinear");
+        }
+    }
+    const long long renumbered = countRenumbered(atom->nlocal, atom->tag, atomIds_->vector_atom, world);
+    idsDue_ = true;
+    long long mine = tally_.created, created = 0;
+    MPI_Allreduce(&mine, &created, 1, MPI_LONG_LONG, MPI_SUM, world);
+    if (renumbered > 0 && created > 0)
+        endRun(error, FLERR, renumberedMessage("cohesion bond/nonlinear", renumbered));
 }
 
 void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
@@ -130,6 +158,10 @@ void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceD
         deferring_ = false;
     }
     if (lossCheck_) countVanished();
+    if (idsDue_ && update->ntimestep > update->firststep) {
+        rememberIds(atom->nlocal, atom->tag, atomIds_->vector_atom);
+        idsDue_ = false;
+    }
 }
 
 // Bonds vanish only with their atoms, so after the atom count changed, or a

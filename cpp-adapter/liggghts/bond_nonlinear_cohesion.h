@@ -99,6 +99,7 @@ private:
     // Counts the bonds that vanished with their atoms (pair bonds; see the
     // definition); collective, at the end of a pass.
     void countVanished();
+    void checkRenumbering();
 
     BondNonlinearParameters parameters_;
     const bool isWall_;
@@ -109,6 +110,9 @@ private:
     BondBook *book_;    // this instance's book (looked up once: std::map)
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)
     LAMMPS_NS::FixPropertyAtom *clumpIds_;
+    // the atom IDs of the previous run (run_checks.h, countRenumbered)
+    LAMMPS_NS::FixPropertyAtom *atomIds_;
+    bool idsDue_;   // remember the IDs at the end of a pass (checkRenumbering)
     bigint checkedNatoms_;
     bigint firstStep_;          // where this model's first run started
     TimestepWarning timestepWarning_;
