@@ -113,6 +113,35 @@ inline std::string renumberedMessage(const char *style, long long renumbered)
            "a pair that never bonded. Delete atoms with `delete_atoms ... compress no`";
 }
 
+// Bonds vanish only with their atoms, so between two counts, intact then +
+// created - broken since = intact now; what is missing vanished without
+// breaking (atoms deleted or lost). Counts are over all ranks, each pair
+// once.
+class BondBalance {
+public:
+    // `created` and `broken` since the first run, `intact` now. Returns the
+    // bonds that vanished since the previous count.
+    long long vanished(double created, double broken, double intact)
+    {
+        const double gone = intact_ + (created - created_) - (broken - broken_) - intact;
+        created_ = created;
+        broken_ = broken;
+        intact_ = intact;
+        return gone > 0.0 ? static_cast<long long>(gone) : 0;
+    }
+
+private:
+    double created_ = 0.0, broken_ = 0.0, intact_ = 0.0;
+};
+
+// The warning that names them; `more` says where they are counted.
+inline std::string vanishedMessage(const char *style, long long vanished, long long step, const char *more)
+{
+    return std::string(style) + ": " + std::to_string(vanished) +
+           " bonds vanished with their atoms (lost or deleted) by step " + std::to_string(step) +
+           ", without breaking; " + more;
+}
+
 // The name of the per-atom value countRenumbered keeps.
 inline const char *renumberingProperty() { return "granbond_atom_id"; }
 

@@ -167,7 +167,10 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     fixHistory_(nullptr),
     lastBatch_(0),
     checkedNatoms_(-1),
-    firstStep_(-1)
+    firstStep_(-1),
+    created_(0),
+    broken_(0),
+    lossCheck_(false)
 {
     single_enable = 0;
     no_virial_fdotr_compute = 1;
@@ -612,8 +615,11 @@ void PairGranbond::compute(int eflag, int vflag)
     const double *const w0 = atom->nmax > 0 ? atom->omega[0] : nullptr;
     auto row = [](const double *block, int atom) { return block + 3 * static_cast<size_t>(atom); };
 
-    if (atom->natoms != checkedNatoms_)
+    if (atom->natoms != checkedNatoms_) {
         runChecks(gatherTypeBodies(atom->ntypes, nlocal, type, radius, atom->rmass, world), false);
+        lossCheck_ = anyBond_;
+    }
+    if (update->setupflag) lossCheck_ = anyBond_;   // atoms may have been deleted between runs
 
     // setup (run/minimize start) evaluates forces without advancing history
     const bool advance = !update->setupflag;
@@ -691,7 +697,10 @@ void PairGranbond::compute(int eflag, int vflag)
             if (out.status == GB_BOND_STATUS_INTACT) {
                 storeLoads(p.history + size - kLoadSlots, out);
                 apply(f0, t0, p.i, p.j, out.force_i, out.torque_i, out.torque_j, p.del, nlocal, newton_pair);
-            } else if (p.touching)
+                continue;
+            }
+            if (countsHere(p.i, p.j)) broken_++;
+            if (p.touching)
                 apply(f0, t0, p.i, p.j, p.contact.force_i, p.contact.torque_i, p.contact.torque_j, p.del, nlocal,
                       newton_pair);
             else {   // broken and apart: the pair is forgotten, as pair granular's
@@ -739,6 +748,7 @@ void PairGranbond::compute(int eflag, int vflag)
                 int32_t created = 0;
                 if (granbond_bond_try_create(bondModel, &k, step, bondState, &created) != GB_STATUS_OK)
                     failPair(i, j, "granbond_bond_try_create");
+                if (created && countsHere(i, j)) created_++;
             }
             if (bondState[0] == GB_BOND_STATUS_INTACT && advance) {
                 // a force pass: the contact steps now (its history moves
@@ -838,6 +848,43 @@ void PairGranbond::compute(int eflag, int vflag)
     }
     for (BondBatch &b : bondBatches_)
         if (b.count) advanceBonds(b);
+    if (lossCheck_) countVanished();
+}
+
+// A pair on two ranks (newton off) is computed on both: it counts on the
+// rank that owns the lower atom ID.
+inline bool PairGranbond::countsHere(int i, int j) const
+{
+    return j < atom->nlocal || atom->tag[i] < atom->tag[j];
+}
+
+// The bonds intact after this pass, balanced against the created and
+// broken ones since the previous count (BondBalance); collective.
+void PairGranbond::countVanished()
+{
+    lossCheck_ = false;
+    long long intact = 0;
+    for (int ii = 0; ii < list->inum; ii++) {
+        const int i = list->ilist[ii];
+        const int *jlist = list->firstneigh[i];
+        const double *allhistory = fixHistory_->firstvalue[i];
+        for (int jj = 0; jj < list->numneigh[i]; jj++) {
+            const int j = jlist[jj] & NEIGHMASK;
+            const int ti = atom->type[i], tj = atom->type[j];
+            if (bond_[at(std::min(ti, tj), std::max(ti, tj))] && allhistory[sizeHistory_ * jj + contactLen_] == GB_BOND_STATUS_INTACT &&
+                countsHere(i, j))
+                intact++;
+        }
+    }
+    const double mine[3] = {static_cast<double>(created_), static_cast<double>(broken_),
+                            static_cast<double>(intact)};
+    double all[3];
+    MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
+    const long long vanished = balance_.vanished(all[0], all[1], all[2]);
+    if (vanished > 0 && comm->me == 0)
+        error->warning(FLERR, vanishedMessage("pair granbond (bond/nonlinear)", vanished, update->ntimestep,
+                                              "warned each time bonds are found missing (at a run's start, and "
+                                              "when the atom count changes)"));
 }
 
 // ------------------------------------------------------------ restart

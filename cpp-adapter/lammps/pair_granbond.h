@@ -66,6 +66,8 @@ private:
     size_t at(int i, int j) const;
     void runChecks(const std::vector<GbTypeBodies> &bodies, bool runStart);
     void checkRenumbering();
+    bool countsHere(int i, int j) const;
+    void countVanished();
 
     // An intact bond of a force pass, queued (bond_queue.h): every
     // kBondBlock bonds of one bond model, and at the end of the pass, one
@@ -102,6 +104,11 @@ private:
     LAMMPS_NS::bigint firstStep_;           // where the first run started
     TimestepWarning contactWarning_, bondWarning_;
     SaidOnce said_;
+    // bonds created and broken on this rank (each pair once), and whether
+    // this pass ends with a count of the bonds that vanished (countVanished)
+    long long created_, broken_;
+    bool lossCheck_;
+    BondBalance balance_;
 };
 
 }

@@ -164,10 +164,9 @@ void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceD
     }
 }
 
-// Bonds vanish only with their atoms, so after the atom count changed, or a
-// run started (atoms deleted between runs), the counts of the pass just
-// completed must balance those of the previous check: intact then + created
-// - broken since = intact now. What is missing vanished without breaking.
+// After the atom count changed, or a run started (atoms deleted between
+// runs), the counts of the pass just completed are balanced against those
+// of the previous check (BondBalance).
 void BondNonlinearCohesion::countVanished()
 {
     lossCheck_ = false;
@@ -176,19 +175,15 @@ void BondNonlinearCohesion::countVanished()
                             static_cast<double>(tally_.intact)};
     double all[3];
     MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
-    const double vanished = balance_[2] + (all[0] - balance_[0]) - (all[1] - balance_[1]) - all[2];
-    for (int k = 0; k < 3; k++) balance_[k] = all[k];
-    if (!(vanished > 0.0) || comm->me != 0) return;
-    tally_.lost += static_cast<long long>(vanished);
+    const long long vanished = balance_.vanished(all[0], all[1], all[2]);
+    if (vanished == 0 || comm->me != 0) return;
+    tally_.lost += vanished;
     if (warnedLost_) return;
     warnedLost_ = true;
-    char msg[400];
-    snprintf(msg, sizeof msg,
-             "cohesion bond/nonlinear: %.0f bonds vanished with their atoms (lost or deleted) by step " BIGINT_FORMAT
-             ", without breaking; they are counted as lost in compute bond/counter (columns 7 and 8), "
-             "later ones without a warning",
-             vanished, update->ntimestep);
-    error->warning(FLERR, msg);
+    error->warning(FLERR, vanishedMessage("cohesion bond/nonlinear", vanished, update->ntimestep,
+                                          "they are counted as lost in compute bond/counter (columns 7 and 8), "
+                                          "later ones without a warning")
+                              .c_str());
 }
 
 inline void BondNonlinearCohesion::pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const

@@ -119,7 +119,7 @@ private:
     SaidOnce said_;
     bool lossCheck_;            // count vanished bonds at the end of this pass
     bool warnedLost_;
-    double balance_[3] = {0.0, 0.0, 0.0};   // created, broken, intact (all ranks) at the latest count
+    BondBalance balance_;
 
     LAMMPS_NS::PairGran *pair_;   // null for walls
     bool deferring_;              // this pass queues intact bonds
