@@ -1,13 +1,17 @@
 //! What the C ABI fuzz target found (docs/fuzzing.md), one claim per
 //! test; the inputs that found them are in `fuzz/corpus/abi/regression-*`.
 
+use granbond::bond::BondState;
 use granbond::bond::{BondModel, BondOutput, BondParams, BOND_STATE_LEN};
 use granbond::contact::{ContactOutput, VoigtModel, VoigtParams, CONTACT_STATE_LEN};
 use granbond::ffi::bond::{
-    granbond_bond_compute_batch, granbond_bond_compute_indexed, granbond_bond_compute_scattered,
-    granbond_bond_critical_timestep, granbond_bond_recommended_timestep, AtomArrayPointers,
+    granbond_bond_compute, granbond_bond_compute_batch, granbond_bond_compute_indexed,
+    granbond_bond_compute_scattered, granbond_bond_critical_timestep, granbond_bond_recommended_timestep,
+    AtomArrayPointers,
 };
-use granbond::ffi::contact::{granbond_voigt_compute_batch, granbond_voigt_critical_timestep};
+use granbond::ffi::contact::{
+    granbond_voigt_compute, granbond_voigt_compute_batch, granbond_voigt_critical_timestep,
+};
 use granbond::ffi::error::granbond_last_error_message;
 use granbond::ffi::Status;
 use granbond::kinematics::PairKinematics;
@@ -221,4 +225,120 @@ fn a_centre_distance_that_overflows_gives_no_contact_frame() {
     // SAFETY: valid pointers.
     let status = unsafe { granbond_voigt_compute(&voigt, &k, 1e-7, state.as_mut_ptr(), &mut out) };
     assert_eq!(status, Status::NonFiniteInput, "{out:?}");
+}
+
+#[test]
+fn a_bond_whose_section_underflows_is_refused_rather_than_answered_with_nan_stresses() {
+    let model = bond_model();
+    // radii of 1e-150 m: the section's rb^3 underflows to 0, so the bending
+    // and twisting stresses are 0 / 0
+    let r = 1e-150;
+    let k = PairKinematics {
+        x_i: [1.5 * r, 0.0, 0.0],
+        radius_i: r,
+        radius_j: r,
+        ..PairKinematics::default()
+    };
+    let mut state = BondState::created(2.0 * r);
+    let mut out = BondOutput::default();
+    // SAFETY: valid pointers of the documented sizes.
+    let status = unsafe {
+        granbond_bond_compute(
+            &model,
+            &k,
+            1e-7,
+            &mut state as *mut BondState as *mut f64,
+            &mut out,
+        )
+    };
+    assert_eq!(status, Status::NonFiniteInput, "{:?}: {}", out, message());
+    let m = message();
+    assert!(
+        m.starts_with("granbond_bond_compute") && m.contains("non-finite"),
+        "message \"{m}\""
+    );
+}
+
+#[test]
+fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
+    let model = bond_model();
+    let k = PairKinematics {
+        x_i: [2e-3, 0.0, 0.0],
+        v_i: [0.0, 1e300, 0.0],
+        w_i: [0.0, 0.0, 1e300],
+        radius_i: 1e-3,
+        radius_j: 1e-3,
+        ..PairKinematics::default()
+    };
+    let fresh = BondState::created(2e-3);
+    let mut states = [fresh, fresh];
+    let mut out = [BondOutput::default(); 2];
+    let calm = PairKinematics {
+        v_i: [0.0; 3],
+        w_i: [0.0; 3],
+        ..k
+    };
+    let kin = [calm, k];
+    let mut failed = usize::MAX;
+    // SAFETY: two bonds, valid pointers of the documented sizes.
+    let status = unsafe {
+        granbond_bond_compute_batch(
+            &model,
+            2,
+            kin.as_ptr(),
+            1e-7,
+            states.as_mut_ptr() as *mut f64,
+            out.as_mut_ptr(),
+            &mut failed,
+        )
+    };
+    assert_eq!(status, Status::NonFiniteInput, "{}", message());
+    assert_eq!(failed, 1, "{}", message());
+    assert!(message().contains("bond 1:"), "{}", message());
+
+    let mut states = [fresh, fresh];
+    let mut pointers: Vec<*mut f64> = states
+        .iter_mut()
+        .map(|s| s as *mut BondState as *mut f64)
+        .collect();
+    failed = usize::MAX;
+    // SAFETY: as above, two distinct states.
+    let status = unsafe {
+        granbond_bond_compute_scattered(
+            &model,
+            2,
+            kin.as_ptr(),
+            1e-7,
+            pointers.as_mut_ptr(),
+            out.as_mut_ptr(),
+            &mut failed,
+        )
+    };
+    assert_eq!(status, Status::NonFiniteInput, "{}", message());
+    assert_eq!(failed, 1, "{}", message());
+}
+
+#[test]
+fn a_contact_whose_tangential_spring_overflows_is_refused() {
+    let model = VoigtModel::new(VoigtParams {
+        k_n: 1e4,
+        k_t: 1e4,
+        mu: 0.5,
+        ..VoigtParams::default()
+    })
+    .unwrap();
+    let k = PairKinematics {
+        x_i: [1.9e-3, 0.0, 0.0],
+        v_i: [0.0, 1e300, 0.0],
+        v_j: [0.0, -1e300, 0.0],
+        radius_i: 1e-3,
+        radius_j: 1e-3,
+        ..PairKinematics::default()
+    };
+    let mut state = [0.0; CONTACT_STATE_LEN];
+    let mut out = ContactOutput::default();
+    // SAFETY: valid pointers of the documented sizes.
+    let status = unsafe { granbond_voigt_compute(&model, &k, 1e300, state.as_mut_ptr(), &mut out) };
+    assert_eq!(status, Status::NonFiniteInput, "{out:?}: {}", message());
+    assert!(message().starts_with("granbond_voigt_compute"), "{}", message());
 }

@@ -5,6 +5,7 @@ use super::guard::{
     call, check_dt, parameter_c_names, reference, reference_mut, slice, slice_mut, vector3,
     write_parameter_name, FailedIndex,
 };
+use super::results;
 use crate::bond::creation::status_and_step_allow;
 use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, WallBondState, BOND_STATE_LEN, PARAMETERS,
@@ -190,7 +191,7 @@ pub unsafe extern "C" fn granbond_bond_compute(
         let o = reference_mut(out, "out")?;
         check_dt(dt)?;
         m.step(k, dt, s, o)?;
-        Ok(())
+        results::bond(s, o)
     })
 }
 
@@ -218,11 +219,13 @@ pub unsafe extern "C" fn granbond_bond_compute_batch(
         let s = slice_mut(states as *mut BondState, count, "states")?;
         let o = slice_mut(out, count, "out")?;
         check_dt(dt)?;
-        m.step_batch(k, dt, s, o).map_err(|(index, e)| {
+        let fail_at = |index: usize, f: Failure| {
             failed.report(index);
-            let f = Failure::from(e);
             Failure::new(f.status, format!("bond {index}: {}", f.message))
-        })
+        };
+        m.step_batch(k, dt, s, o)
+            .map_err(|(index, e)| fail_at(index, Failure::from(e)))?;
+        results::bonds(count, |k| &s[k], o).map_err(|(index, f)| fail_at(index, f))
     })
 }
 
@@ -355,7 +358,8 @@ unsafe fn scattered_states(
     let s = slice_mut(states as *mut &mut BondState, count, "states")?;
     let o = slice_mut(out, count, "out")?;
     check_dt(dt)?;
-    step(m, s, o).map_err(|(index, e)| fail_at(index, Failure::from(e)))
+    step(m, s, o).map_err(|(index, e)| fail_at(index, Failure::from(e)))?;
+    results::bonds(count, |k| &*s[k], o).map_err(|(index, f)| fail_at(index, f))
 }
 
 /// Bonds a sphere to a wall it touches at `contact_point` (`double[3]`)
@@ -404,7 +408,8 @@ pub unsafe extern "C" fn granbond_wall_bond_compute(
         let o = reference_mut(out, "out")?;
         check_dt(dt)?;
         m.step_wall(sp, wv, dt, s, o)?;
-        Ok(())
+        results::bond(&s.bond, o)?;
+        results::vector("wall bond state", &s.partner)
     })
 }
 

@@ -4,6 +4,7 @@ use super::bond::pair_estimate;
 use super::error::{record, Failure, Status};
 use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut, FailedIndex};
 use super::guard::{parameter_c_names, write_parameter_name};
+use super::results;
 use crate::contact::model::{sphere_plane, sphere_sphere};
 use crate::contact::{
     ContactFrame, ContactOutput, ContactState, Plane, TangentialLoad, VoigtModel, VoigtParams,
@@ -83,7 +84,7 @@ pub unsafe extern "C" fn granbond_voigt_compute(
         let o = reference_mut(out, "out")?;
         check_dt(dt)?;
         m.step(k, dt, s, o)?;
-        Ok(())
+        results::contact(s, o)
     })
 }
 
@@ -111,10 +112,14 @@ pub unsafe extern "C" fn granbond_voigt_compute_batch(
         let s = slice_mut(states as *mut ContactState, count, "states")?;
         let o = slice_mut(out, count, "out")?;
         check_dt(dt)?;
-        if let Err((index, e)) = m.step_batch(k, dt, s, o) {
+        let fail_at = |index: usize, f: Failure| {
             failed.report(index);
-            let f = Failure::from(e);
-            return Err(Failure::new(f.status, format!("contact {index}: {}", f.message)));
+            Failure::new(f.status, format!("contact {index}: {}", f.message))
+        };
+        m.step_batch(k, dt, s, o)
+            .map_err(|(index, e)| fail_at(index, Failure::from(e)))?;
+        for (index, (s, o)) in s.iter().zip(o.iter()).enumerate() {
+            results::contact(s, o).map_err(|f| fail_at(index, f))?;
         }
         Ok(())
     })
@@ -191,7 +196,7 @@ pub unsafe extern "C" fn granbond_voigt_compute_plane(
         check_dt(dt)?;
         check_plane(sp, pl)?;
         m.step_frame(&sphere_plane(sp, pl), dt, s, o);
-        Ok(())
+        results::contact(s, o)
     })
 }
 
@@ -490,7 +495,7 @@ pub unsafe extern "C" fn granbond_voigt_normal_force(
         let o = reference_mut(normal_force, "normal_force")?;
         check_frame(f)?;
         *o = m.normal_force(f);
-        Ok(())
+        results::vector("normal force", &[*o])
     })
 }
 
@@ -513,6 +518,11 @@ impl From<TangentialLoad> for TangentialOutput {
             sliding: t.sliding as i32,
         }
     }
+}
+
+fn tangential_numbers(o: &TangentialOutput) -> [f64; 9] {
+    let (f, ti, tj) = (o.force_i, o.torque_i, o.torque_j);
+    [f[0], f[1], f[2], ti[0], ti[1], ti[2], tj[0], tj[1], tj[2]]
 }
 
 /// Cundall-Strack tangential force with the Coulomb cap `mu |normal_force|`;
@@ -538,7 +548,8 @@ pub unsafe extern "C" fn granbond_voigt_tangential(
         check_frame(f)?;
         check_finite(normal_force, "normal_force")?;
         *o = m.tangential(f, normal_force, dt, s).into();
-        Ok(())
+        results::vector("tangential force or torque", &tangential_numbers(o))?;
+        results::vector("tangential spring", s)
     })
 }
 
@@ -577,7 +588,8 @@ pub unsafe extern "C" fn granbond_voigt_rolling(
         let (torque, capped) = m.rolling_torque(f, normal_force, dt, a);
         *t = torque.into();
         *sl = capped as i32;
-        Ok(())
+        results::vector("rolling torque", t)?;
+        results::vector("rolling angle", a)
     })
 }
 
@@ -609,7 +621,7 @@ pub unsafe extern "C" fn granbond_voigt_evaluate_frame(
             rolling_angle: [slots[3], slots[4], slots[5]],
         };
         m.evaluate_frame(f, &s, o);
-        Ok(())
+        results::contact(&s, o)
     })
 }
 
@@ -634,7 +646,7 @@ pub unsafe extern "C" fn granbond_voigt_tangential_evaluate(
         check_frame(f)?;
         check_finite(normal_force, "normal_force")?;
         *o = m.tangential_held(f, normal_force, s).into();
-        Ok(())
+        results::vector("tangential force or torque", &tangential_numbers(o))
     })
 }
 
@@ -667,7 +679,7 @@ pub unsafe extern "C" fn granbond_voigt_rolling_evaluate(
         };
         *t = torque.into();
         *sl = capped as i32;
-        Ok(())
+        results::vector("rolling torque", t)
     })
 }
 

@@ -13,5 +13,6 @@ pub mod contact;
 pub mod error;
 pub mod guard;
 pub mod layout;
+pub mod results;
 
 pub use error::Status;
