@@ -3,6 +3,7 @@
 
 use granbond::bond::BondState;
 use granbond::bond::{BondModel, BondOutput, BondParams, BOND_STATE_LEN};
+use granbond::contact::{ContactFrame, Plane};
 use granbond::contact::{ContactOutput, VoigtModel, VoigtParams, CONTACT_STATE_LEN};
 use granbond::ffi::bond::{
     granbond_bond_compute, granbond_bond_compute_batch, granbond_bond_compute_indexed,
@@ -10,7 +11,8 @@ use granbond::ffi::bond::{
     AtomArrayPointers,
 };
 use granbond::ffi::contact::{
-    granbond_voigt_compute, granbond_voigt_compute_batch, granbond_voigt_critical_timestep,
+    granbond_contact_frame_plane, granbond_voigt_compute, granbond_voigt_compute_batch,
+    granbond_voigt_critical_timestep,
 };
 use granbond::ffi::error::granbond_last_error_message;
 use granbond::ffi::Status;
@@ -341,4 +343,23 @@ fn a_contact_whose_tangential_spring_overflows_is_refused() {
     let status = unsafe { granbond_voigt_compute(&model, &k, 1e300, state.as_mut_ptr(), &mut out) };
     assert_eq!(status, Status::NonFiniteInput, "{out:?}: {}", message());
     assert!(message().starts_with("granbond_voigt_compute"), "{}", message());
+}
+
+#[test]
+fn a_plane_whose_distance_overflows_gives_no_contact_frame() {
+    let sphere = granbond::kinematics::SphereKinematics {
+        x: [1e300, 0.0, 0.0],
+        v: [0.0; 3],
+        w: [0.0; 3],
+        radius: 1e-3,
+    };
+    let plane = Plane {
+        point: [-f64::MAX, 0.0, 0.0],
+        normal: [1.0, 0.0, 0.0],
+        velocity: [0.0; 3],
+    };
+    let mut frame = ContactFrame::default();
+    // SAFETY: valid pointers.
+    let status = unsafe { granbond_contact_frame_plane(&sphere, &plane, &mut frame) };
+    assert_eq!(status, Status::NonFiniteInput, "{frame:?}: {}", message());
 }

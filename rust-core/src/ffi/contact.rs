@@ -473,7 +473,10 @@ pub unsafe extern "C" fn granbond_contact_frame_plane(
         let pl = reference(plane, "plane")?;
         let f = reference_mut(frame, "frame")?;
         check_plane(sp, pl)?;
-        *f = sphere_plane(sp, pl);
+        // finite input whose distance to the plane overflows
+        let built = sphere_plane(sp, pl);
+        check_frame(&built)?;
+        *f = built;
         Ok(())
     })
 }
