@@ -113,6 +113,14 @@ inline std::string renumberedMessage(const char *style, long long renumbered)
            "a pair that never bonded. Delete atoms with `delete_atoms ... compress no`";
 }
 
+// A pair on two ranks (newton off) is computed on both: it counts once, on
+// the rank that owns the lower atom ID (`j` local, or the lower tag).
+template <class Tag>
+inline bool pairCountsHere(int i, int j, int nlocal, const Tag *tag)
+{
+    return j < nlocal || tag[i] < tag[j];
+}
+
 // Bonds vanish only with their atoms, so between two counts, intact then +
 // created - broken since = intact now; what is missing vanished without
 // breaking (atoms deleted or lost). Counts are over all ranks, each pair

@@ -851,11 +851,9 @@ void PairGranbond::compute(int eflag, int vflag)
     if (lossCheck_) countVanished();
 }
 
-// A pair on two ranks (newton off) is computed on both: it counts on the
-// rank that owns the lower atom ID.
 inline bool PairGranbond::countsHere(int i, int j) const
 {
-    return j < atom->nlocal || atom->tag[i] < atom->tag[j];
+    return pairCountsHere(i, j, atom->nlocal, atom->tag);
 }
 
 // The bonds intact after this pass, balanced against the created and
@@ -871,8 +869,8 @@ void PairGranbond::countVanished()
         for (int jj = 0; jj < list->numneigh[i]; jj++) {
             const int j = jlist[jj] & NEIGHMASK;
             const int ti = atom->type[i], tj = atom->type[j];
-            if (bond_[at(std::min(ti, tj), std::max(ti, tj))] && allhistory[sizeHistory_ * jj + contactLen_] == GB_BOND_STATUS_INTACT &&
-                countsHere(i, j))
+            const bool bonds = bond_[at(std::min(ti, tj), std::max(ti, tj))] != nullptr;
+            if (bonds && allhistory[sizeHistory_ * jj + contactLen_] == GB_BOND_STATUS_INTACT && countsHere(i, j))
                 intact++;
         }
     }

@@ -127,10 +127,10 @@ void BondNonlinearCohesion::checkRenumbering()
     }
     const long long renumbered = countRenumbered(atom->nlocal, atom->tag, atomIds_->vector_atom, world);
     idsDue_ = true;
+    if (renumbered == 0) return;   // the same on every rank
     long long mine = tally_.created, created = 0;
     MPI_Allreduce(&mine, &created, 1, MPI_LONG_LONG, MPI_SUM, world);
-    if (renumbered > 0 && created > 0)
-        endRun(error, FLERR, renumberedMessage("cohesion bond/nonlinear", renumbered));
+    if (created > 0) endRun(error, FLERR, renumberedMessage("cohesion bond/nonlinear", renumbered));
 }
 
 void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
@@ -261,7 +261,7 @@ void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
         const GbBondOutput &out = b.outputs[k];
         if (out.status == GB_BOND_STATUS_INTACT) {
             // account() for an intact bond, inline: the common case
-            const bool counts = p.j < nlocal || tag[p.i] < tag[p.j];
+            const bool counts = pairCountsHere(p.i, p.j, nlocal, tag);
             tally_.intact += counts;
             tally_.created += counts && p.created;
             storeOutput(p.history + outputOffset_, out);
@@ -301,7 +301,7 @@ bool BondNonlinearCohesion::countsHere(int i, int j) const
 {
     // walls: only the particle's owner computes the contact; pairs: once
     // per pair, even where the pair straddles two ranks
-    return isWall_ || j < atom->nlocal || atom->tag[i] < atom->tag[j];
+    return isWall_ || pairCountsHere(i, j, atom->nlocal, atom->tag);
 }
 
 void BondNonlinearCohesion::storeOutput(double *slots, const GbBondOutput &out) const
