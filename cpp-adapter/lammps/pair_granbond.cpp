@@ -49,95 +49,24 @@ namespace {
 const char *const kFixDummy = "NEIGH_HISTORY_GRANBOND_DUMMY";
 const char *const kFix = "NEIGH_HISTORY_GRANBOND";
 
-// Deck keyword -> field of GbBondParams. The keywords are the core's
-// (granbond_bond_parameter_name); checkBondKeywords() verifies the two agree.
-struct DoubleField {
-    const char *keyword;
-    double GbBondParams::*field;
-};
-struct SwitchField {
-    const char *keyword;
-    int32_t GbBondParams::*field;
-};
-
-const DoubleField kDoubles[] = {
-    {"lambda", &GbBondParams::lambda},
-    {"k_fn1", &GbBondParams::k_fn1},
-    {"ku_fn1", &GbBondParams::ku_fn1},
-    {"kc_fn1", &GbBondParams::kc_fn1},
-    {"k_fn2", &GbBondParams::k_fn2},
-    {"ku_fn2", &GbBondParams::ku_fn2},
-    {"kc_fn2", &GbBondParams::kc_fn2},
-    {"k_ft", &GbBondParams::k_ft},
-    {"k_tn", &GbBondParams::k_tn},
-    {"ku_tn", &GbBondParams::ku_tn},
-    {"kc_tn", &GbBondParams::kc_tn},
-    {"k_tt", &GbBondParams::k_tt},
-    {"ku_tt", &GbBondParams::ku_tt},
-    {"kc_tt", &GbBondParams::kc_tt},
-    {"eta_fn", &GbBondParams::eta_fn},
-    {"eta_ft", &GbBondParams::eta_ft},
-    {"eta_tn", &GbBondParams::eta_tn},
-    {"eta_tt", &GbBondParams::eta_tt},
-    {"max_distance", &GbBondParams::max_distance},
-    {"max_sigma", &GbBondParams::max_sigma},
-    {"max_tau", &GbBondParams::max_tau},
-    {"tension_compression_ratio", &GbBondParams::tension_compression_ratio},
-    {"create_distance", &GbBondParams::create_distance},
-    {"smooth_velocity", &GbBondParams::smooth_velocity},
-    {"smooth_angular_velocity", &GbBondParams::smooth_angular_velocity},
-    {"compression_linear_below", &GbBondParams::compression_linear_below},
-};
-const SwitchField kSwitches[] = {
-    {"stress_break", &GbBondParams::stress_break},
-    {"use_ratio", &GbBondParams::use_ratio},
-    {"create_always", &GbBondParams::create_always},
-    {"history_reset", &GbBondParams::history_reset},
-    {"damping", &GbBondParams::damping},
-    {"damping_smooth", &GbBondParams::damping_smooth},
-    {"smooth_damping", &GbBondParams::damping_smooth},   // the spelling
-    {"tension", &GbBondParams::tension},
-    {"compression", &GbBondParams::compression},
-    {"shear", &GbBondParams::shear},
-    {"twist", &GbBondParams::twist},
-    {"bend", &GbBondParams::bend},
-};
-
-const DoubleField *findDouble(const std::string &kw)
+// The core's row of a bond/nonlinear keyword (its parameter table is the
+// deck's list of keywords).
+bool bondRow(const std::string &keyword, GbParameterInfo &info)
 {
-    for (const DoubleField &f : kDoubles)
-        if (kw == f.keyword) return &f;
-    return nullptr;
-}
-
-const SwitchField *findSwitch(const std::string &kw)
-{
-    for (const SwitchField &f : kSwitches)
-        if (kw == f.keyword) return &f;
-    return nullptr;
+    const size_t n = granbond_bond_parameter_count();
+    for (size_t id = 0; id < n; id++)
+        if (granbond_bond_parameter_info(id, &info) == GB_STATUS_OK && keyword == info.keyword) return true;
+    return false;
 }
 
 std::string knownBondKeywords()
 {
-    std::string s;
-    for (const DoubleField &f : kDoubles) s += std::string(f.keyword) + " ";
-    s += "create_step break history_reset smooth_damping tension compression shear twist bend";
-    return s;
-}
-
-// Every keyword of the core's parameter table must be settable from a deck.
-void checkBondKeywords(Error *error)
-{
+    std::string s = "break";
     const size_t n = granbond_bond_parameter_count();
-    for (size_t id = 0; id < n; id++) {
-        const char *keyword = nullptr, *liggghtsName = nullptr;
-        if (granbond_bond_parameter_name(id, &keyword, &liggghtsName) != GB_STATUS_OK || !keyword)
-            error->all(FLERR, "pair granbond: granbond_bond_parameter_name failed");
-        const std::string kw(keyword);
-        if (!findDouble(kw) && !findSwitch(kw) && kw != "create_step")
-            error->all(FLERR, "pair granbond: the core's bond parameter '" + kw +
-                                  "' has no deck keyword in this adapter (rebuild the adapter)");
-    }
+    GbParameterInfo info;
+    for (size_t id = 0; id < n; id++)
+        if (granbond_bond_parameter_info(id, &info) == GB_STATUS_OK) s += std::string(" ") + info.keyword;
+    return s + " smooth_damping";
 }
 
 void copy3(double *to, const double *from)
@@ -293,38 +222,50 @@ private:
     int at_;
 };
 
+// The core stores each value and refuses one out of range, naming it.
+void setBond(Args &a, GbBondParams &p, const char *keyword, double value)
+{
+    if (granbond_bond_params_set(&p, keyword, value) != GB_STATUS_OK)
+        a.fail(std::string("bond/nonlinear: ") + granbond_last_error_message());
+}
+
 void parseBond(Args &a, GbBondParams &p)
 {
     while (!a.done()) {
-        const std::string kw = a.word("bond/nonlinear keyword");
+        std::string kw = a.word("bond/nonlinear keyword");
         const std::string what = "bond/nonlinear " + kw;
         if (kw == "break") {
             const std::string mode = a.word("break mode (distance|stress)");
             if (mode == "distance") {
-                p.stress_break = 0;
-                p.max_distance = a.number("break distance <rmax>");
+                setBond(a, p, "stress_break", 0);
+                setBond(a, p, "max_distance", a.number("break distance <rmax>"));
             } else if (mode == "stress") {
-                p.stress_break = 1;
-                p.max_sigma = a.number("break stress <sigma_max>");
-                p.max_tau = a.number("break stress <tau_max>");
+                setBond(a, p, "stress_break", 1);
+                setBond(a, p, "max_sigma", a.number("break stress <sigma_max>"));
+                setBond(a, p, "max_tau", a.number("break stress <tau_max>"));
                 if (a.peek() == "ratio") {
                     a.word("ratio");
-                    p.use_ratio = 1;
-                    p.tension_compression_ratio = a.number("break stress ratio <gamma>");
+                    setBond(a, p, "use_ratio", 1);
+                    setBond(a, p, "tension_compression_ratio", a.number("break stress ratio <gamma>"));
                 }
             } else {
                 a.fail("bond/nonlinear break expects distance or stress, got '" + mode + "'");
             }
-        } else if (kw == "create_step") {
-            p.create_step = a.integer(what);
-            p.create_always = 0;
-        } else if (const DoubleField *f = findDouble(kw)) {
-            p.*(f->field) = a.number(what);
-        } else if (const SwitchField *s = findSwitch(kw)) {
-            p.*(s->field) = a.onOff(what);
-        } else {
-            a.fail("unknown bond/nonlinear keyword '" + kw + "' (known: " + knownBondKeywords() + ")");
+            continue;
         }
+        if (kw == "smooth_damping") kw = "damping_smooth";   // the spelling
+        GbParameterInfo info;
+        if (!bondRow(kw, info))
+            a.fail("unknown bond/nonlinear keyword '" + kw + "' (known: " + knownBondKeywords() + ")");
+        double value = 0.0;
+        switch (info.kind) {
+        case GB_PARAMETER_KIND_SWITCH: value = a.onOff(what); break;
+        case GB_PARAMETER_KIND_INTEGER: value = static_cast<double>(a.integer(what)); break;
+        default: value = a.number(what); break;
+        }
+        setBond(a, p, info.keyword, value);
+        // a creation step means bonds are created at that step only
+        if (kw == "create_step") setBond(a, p, "create_always", 0);
     }
 }
 
@@ -364,7 +305,6 @@ void PairGranbond::coeff(int narg, char **arg)
         } else if (kw == "noattraction") {
             tp.voigt.no_attraction = a.onOff("noattraction");
         } else if (kw == "bond/nonlinear") {
-            checkBondKeywords(error);
             tp.hasBond = 1;
             parseBond(a, tp.bond);
         } else {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <utility>
 
@@ -17,50 +18,27 @@ namespace {
 
 const char *const kCaller = "cohesion bond/nonlinear";
 
-// Which switch setting makes a property required; the others are ignored
-// even when a deck defines them (decks written for LIGGGHTS-INL do).
-enum Need { ALWAYS, DAMPING, DISTANCE_MODE, STRESS_MODE, STRESS_RATIO };
+// The engine's registry takes a plain function per property name, so there
+// is one creator per row id of the core's table, reading the row's name.
+const size_t kMaxRows = 64;
 
-struct PerTypePairProperty {
-    const char *name;               // fix property/global name, as in LIGGGHTS-INL
-    double GbBondParams::*field;
-    Need need;
-};
+GbParameterInfo row(size_t id)
+{
+    GbParameterInfo info;
+    if (granbond_bond_parameter_info(id, &info) != GB_STATUS_OK) std::abort();   // id < count, checked
+    return info;
+}
 
-const PerTypePairProperty kProperties[] = {
-    {"radiusMultiplierBondnonlinear", &GbBondParams::lambda, ALWAYS},
-    {"stiffnessPerUnitAreaK_fn1", &GbBondParams::k_fn1, ALWAYS},
-    {"stiffnessPerUnitAreaKu_fn1", &GbBondParams::ku_fn1, ALWAYS},
-    {"stiffnessPerUnitAreaKc_fn1", &GbBondParams::kc_fn1, ALWAYS},
-    {"stiffnessPerUnitAreaK_fn2", &GbBondParams::k_fn2, ALWAYS},
-    {"stiffnessPerUnitAreaKu_fn2", &GbBondParams::ku_fn2, ALWAYS},
-    {"stiffnessPerUnitAreaKc_fn2", &GbBondParams::kc_fn2, ALWAYS},
-    {"stiffnessPerUnitAreaK_ft", &GbBondParams::k_ft, ALWAYS},
-    {"stiffnessPerUnitAreaK_tn", &GbBondParams::k_tn, ALWAYS},
-    {"stiffnessPerUnitAreaKu_tn", &GbBondParams::ku_tn, ALWAYS},
-    {"stiffnessPerUnitAreaKc_tn", &GbBondParams::kc_tn, ALWAYS},
-    {"stiffnessPerUnitAreaK_tt", &GbBondParams::k_tt, ALWAYS},
-    {"stiffnessPerUnitAreaKu_tt", &GbBondParams::ku_tt, ALWAYS},
-    {"stiffnessPerUnitAreaKc_tt", &GbBondParams::kc_tt, ALWAYS},
-    {"createDistanceBondnonlinear", &GbBondParams::create_distance, ALWAYS},
-    {"dampingNormalForceBondnonlinear", &GbBondParams::eta_fn, DAMPING},
-    {"dampingTangentialForceBondnonlinear", &GbBondParams::eta_ft, DAMPING},
-    {"dampingNormalTorqueBondnonlinear", &GbBondParams::eta_tn, DAMPING},
-    {"dampingTangentialTorqueBondnonlinear", &GbBondParams::eta_tt, DAMPING},
-    {"maxDistanceBondnonlinear", &GbBondParams::max_distance, DISTANCE_MODE},
-    {"maxSigmaBondnonlinear", &GbBondParams::max_sigma, STRESS_MODE},
-    {"maxTauBondnonlinear", &GbBondParams::max_tau, STRESS_MODE},
-    {"ratioTensionCompressionBondnonlinear", &GbBondParams::tension_compression_ratio, STRESS_RATIO},
-};
-const size_t kPropertyCount = sizeof(kProperties) / sizeof(kProperties[0]);
-
-const char *const kCreateStep = "tsCreateBondnonlinear";   // scalar
-
-// The engine's registry takes a plain function per property name.
 template<size_t N>
 MatrixProperty *createPerTypePair(PropertyRegistry &registry, const char *caller, bool)
 {
-    return MODEL_PARAMS::createPerTypePairProperty(registry, kProperties[N].name, caller);
+    return MODEL_PARAMS::createPerTypePairProperty(registry, row(N).liggghts_name, caller);
+}
+
+template<size_t N>
+ScalarProperty *createScalar(PropertyRegistry &registry, const char *caller, bool)
+{
+    return MODEL_PARAMS::createScalarProperty(registry, row(N).liggghts_name, caller);
 }
 
 template<size_t... N>
@@ -69,24 +47,30 @@ std::array<MatrixPropertyCreator, sizeof...(N)> perTypePairCreators(std::index_s
     return {{&createPerTypePair<N>...}};
 }
 
-const std::array<MatrixPropertyCreator, kPropertyCount> kCreators =
-    perTypePairCreators(std::make_index_sequence<kPropertyCount>());
-
-ScalarProperty *createCreateStep(PropertyRegistry &registry, const char *caller, bool)
+template<size_t... N>
+std::array<ScalarPropertyCreator, sizeof...(N)> scalarCreators(std::index_sequence<N...>)
 {
-    return MODEL_PARAMS::createScalarProperty(registry, kCreateStep, caller);
+    return {{&createScalar<N>...}};
 }
 
-int32_t onOff(bool b) { return b ? 1 : 0; }
+const std::array<MatrixPropertyCreator, kMaxRows> kPerTypePairCreators =
+    perTypePairCreators(std::make_index_sequence<kMaxRows>());
+const std::array<ScalarPropertyCreator, kMaxRows> kScalarCreators =
+    scalarCreators(std::make_index_sequence<kMaxRows>());
 
 }
 
 BondNonlinearParameters::BondNonlinearParameters(LAMMPS_NS::LAMMPS *lmp) :
-    Pointers(lmp),
-    stressBreak_(false), tension_(true), compression_(true), shear_(true), twist_(true), bend_(true),
-    createAlways_(false), damping_(true), dampingSmooth_(false), useRatio_(false), historyReset_(false),
-    perTypePair_(kPropertyCount, static_cast<double **>(0)), createStep_(0.0), ntypes_(0)
+    Pointers(lmp), rows_(granbond_bond_parameter_count()), ntypes_(0)
 {
+    if (rows_ > kMaxRows)
+        error->all(FLERR, "cohesion bond/nonlinear: the core's parameter table has more rows than this adapter "
+                          "has property creators (raise kMaxRows)");
+    granbond_bond_params_default(&switches_);
+    switchValues_.assign(rows_, false);
+    perTypePair_.assign(rows_, static_cast<double **>(0));
+    scalars_.assign(rows_, 0.0);
+    connectedScalar_.assign(rows_, false);
 }
 
 BondNonlinearParameters::~BondNonlinearParameters() { freeModels(); }
@@ -100,46 +84,48 @@ void BondNonlinearParameters::freeModels()
 
 void BondNonlinearParameters::registerSettings(Settings &settings)
 {
-    settings.registerOnOff("stressBreak", stressBreak_, false);
-    settings.registerOnOff("tensionStress", tension_, true);
-    settings.registerOnOff("compressionStress", compression_, true);
-    settings.registerOnOff("shearStress", shear_, true);
-    settings.registerOnOff("normalTorqueStress", twist_, true);
-    settings.registerOnOff("shearTorqueStress", bend_, true);
-    settings.registerOnOff("createBondAlways", createAlways_, false);
-    settings.registerOnOff("dampingBond", damping_, true);
-    settings.registerOnOff("dampingBondSmooth", dampingSmooth_, false);
-    settings.registerOnOff("ratioTensionCompressionBond", useRatio_, false);
-    settings.registerOnOff("historyReset", historyReset_, false);
+    for (size_t k = 0; k < rows_; k++) {
+        const GbParameterInfo info = row(k);
+        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
+            settings.registerOnOff(info.liggghts_name, switchValues_[k], info.default_value != 0.0);
+    }
 }
 
-void BondNonlinearParameters::connectPerTypePair(PropertyRegistry &registry, size_t index)
+// Stores a deck value in `p`; the core refuses an unknown name or a value
+// outside the row's range, naming the parameter.
+void BondNonlinearParameters::set(GbBondParams &p, const GbParameterInfo &info, double value, const std::string &where)
 {
-    registry.registerProperty(kProperties[index].name, kCreators[index]);
-    registry.connect(kProperties[index].name, perTypePair_[index], kCaller);
+    if (granbond_bond_params_set(&p, info.keyword, value) != GB_STATUS_OK)
+        endRun(error, FLERR, std::string(kCaller) + where + ": " + granbond_last_error_message());
 }
 
 void BondNonlinearParameters::connectToProperties(PropertyRegistry &registry)
 {
-    // smoothing is a kind of damping (as in the reference)
-    if (dampingSmooth_) damping_ = true;
-
-    for (size_t k = 0; k < kPropertyCount; k++) {
-        perTypePair_[k] = 0;
-        bool wanted = false;
-        switch (kProperties[k].need) {
-        case ALWAYS: wanted = true; break;
-        case DAMPING: wanted = damping_; break;
-        case DISTANCE_MODE: wanted = !stressBreak_; break;
-        case STRESS_MODE: wanted = stressBreak_; break;
-        case STRESS_RATIO: wanted = stressBreak_ && useRatio_; break;
-        }
-        if (wanted) connectPerTypePair(registry, k);
+    granbond_bond_params_default(&switches_);
+    for (size_t k = 0; k < rows_; k++) {
+        const GbParameterInfo info = row(k);
+        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH) set(switches_, info, switchValues_[k] ? 1.0 : 0.0, "");
     }
-    createStep_ = 0.0;
-    if (!createAlways_) {
-        registry.registerProperty(kCreateStep, &createCreateStep);
-        registry.connect(kCreateStep, createStep_, kCaller);
+
+    // only what the model reads with these switches is asked of the deck;
+    // the rest is ignored even when a deck defines it (LIGGGHTS-INL decks do)
+    for (size_t k = 0; k < rows_; k++) {
+        perTypePair_[k] = 0;
+        scalars_[k] = 0.0;
+        connectedScalar_[k] = false;
+        const GbParameterInfo info = row(k);
+        int32_t needed = 0;
+        if (granbond_bond_parameter_needed(&switches_, k, &needed) != GB_STATUS_OK)
+            endRun(error, FLERR, std::string(kCaller) + ": " + granbond_last_error_message());
+        if (!needed) continue;
+        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_PER_TYPE_PAIR) {
+            registry.registerProperty(info.liggghts_name, kPerTypePairCreators[k]);
+            registry.connect(info.liggghts_name, perTypePair_[k], kCaller);
+        } else if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SCALAR) {
+            registry.registerProperty(info.liggghts_name, kScalarCreators[k]);
+            registry.connect(info.liggghts_name, scalars_[k], kCaller);
+            connectedScalar_[k] = true;
+        }
     }
 
     buildModels(registry);
@@ -155,29 +141,16 @@ void BondNonlinearParameters::buildModels(PropertyRegistry &registry)
 
     for (int a = 1; a <= ntypes; a++)
         for (int b = 1; b <= ntypes; b++) {
-            GbBondParams p;
-            granbond_bond_params_default(&p);
-            for (size_t k = 0; k < kPropertyCount; k++)
-                if (perTypePair_[k]) p.*(kProperties[k].field) = perTypePair_[k][a][b];
-            // the reference truncates the step number to an int
-            p.create_step = static_cast<int64_t>(createStep_);
-            p.stress_break = onOff(stressBreak_);
-            p.use_ratio = onOff(useRatio_);
-            p.create_always = onOff(createAlways_);
-            p.history_reset = onOff(historyReset_);
-            p.damping = onOff(damping_);
-            p.damping_smooth = onOff(dampingSmooth_);
-            p.tension = onOff(tension_);
-            p.compression = onOff(compression_);
-            p.shear = onOff(shear_);
-            p.twist = onOff(twist_);
-            p.bend = onOff(bend_);
-
-            GbBondModel *m = 0;
-            if (granbond_bond_model_new(&p, &m) != GB_STATUS_OK) {
-                endRun(error, FLERR, std::string(kCaller) + " (atom types " + std::to_string(a) + " and " +
-                                         std::to_string(b) + "): " + granbond_last_error_message());
+            const std::string where = " (atom types " + std::to_string(a) + " and " + std::to_string(b) + ")";
+            GbBondParams p = switches_;
+            for (size_t k = 0; k < rows_; k++) {
+                if (perTypePair_[k]) set(p, row(k), perTypePair_[k][a][b], where);
+                // the reference truncates a step number to an int
+                if (connectedScalar_[k]) set(p, row(k), std::trunc(scalars_[k]), where);
             }
+            GbBondModel *m = 0;
+            if (granbond_bond_model_new(&p, &m) != GB_STATUS_OK)
+                endRun(error, FLERR, std::string(kCaller) + where + ": " + granbond_last_error_message());
             models_[a * (ntypes + 1) + b] = m;
         }
 }
@@ -190,7 +163,8 @@ void BondNonlinearParameters::registerContactDistanceFactor(PropertyRegistry &re
     if (!(minRadius > 0.0))
         error->all(FLERR, "cohesion bond/nonlinear: the smallest particle radius is not known or not positive; "
                           "define the particles (or their templates) before the first run");
-    const char *limit = stressBreak_ ? "maxSigmaBondnonlinear (or raise stiffnessPerUnitAreaK_fn2)"
+    const bool stressBreak = switches_.stress_break != 0;
+    const char *limit = stressBreak ? "maxSigmaBondnonlinear (or raise stiffnessPerUnitAreaK_fn2)"
                                      : "maxDistanceBondnonlinear";
     double factor = 1.0;
     for (int a = 1; a <= ntypes_; a++)
@@ -204,7 +178,7 @@ void BondNonlinearParameters::registerContactDistanceFactor(PropertyRegistry &re
                 snprintf(msg, sizeof msg,
                          "%s: bonds of atom types %d and %d never break by stretching, so no neighbour list "
                          "can keep them; set a finite %s%s", kCaller, a, b, limit,
-                         stressBreak_ ? " and keep tensionStress on" : "");
+                         stressBreak ? " and keep tensionStress on" : "");
                 endRun(error, FLERR, msg);
             }
             if (f > 10.0) {

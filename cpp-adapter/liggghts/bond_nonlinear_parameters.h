@@ -8,6 +8,8 @@
 #include "liggghts_engine.h"
 #include "granbond.h"
 
+#include <deque>
+#include <string>
 #include <vector>
 
 namespace granbond {
@@ -45,13 +47,15 @@ private:
     void buildModels(::PropertyRegistry &registry);
     void registerContactDistanceFactor(::PropertyRegistry &registry);
 
-    // switches (registered with the engine's Settings)
-    bool stressBreak_, tension_, compression_, shear_, twist_, bend_;
-    bool createAlways_, damping_, dampingSmooth_, useRatio_, historyReset_;
+    void set(GbBondParams &p, const GbParameterInfo &info, double value, const std::string &where);
 
-    // connected property storage, indexed like the property table
-    std::vector<double **> perTypePair_;
-    double createStep_;
+    // indexed by row of the core's parameter table
+    size_t rows_;
+    std::deque<bool> switchValues_;        // the engine's Settings take a bool&
+    std::vector<double **> perTypePair_;   // connected per-type-pair properties
+    std::vector<double> scalars_;          // connected scalar properties
+    std::vector<bool> connectedScalar_;
+    GbBondParams switches_;                // the defaults with the deck's switches
 
     int ntypes_;
     std::vector<GbBondModel *> models_;

@@ -17,7 +17,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 5
+#define GRANBOND_ABI_VERSION 6
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -91,6 +91,46 @@ enum GbBreakMode
 #ifndef __cplusplus
 typedef int32_t GbBreakMode;
 #endif // __cplusplus
+
+/**
+ * Where a LIGGGHTS deck gives a value.
+ */
+typedef enum GbLiggghtsSource {
+  /**
+   * `fix property/global NAME peratomtypepair N ...`
+   */
+  GB_LIGGGHTS_SOURCE_PER_TYPE_PAIR = 0,
+  /**
+   * `fix property/global NAME scalar VALUE`
+   */
+  GB_LIGGGHTS_SOURCE_SCALAR = 1,
+  /**
+   * An on/off switch of the `pair_style gran` command.
+   */
+  GB_LIGGGHTS_SOURCE_SWITCH = 2,
+  /**
+   * Not settable from LIGGGHTS decks: the default applies.
+   */
+  GB_LIGGGHTS_SOURCE_FIXED = 3,
+} GbLiggghtsSource;
+
+/**
+ * How a deck writes a value.
+ */
+typedef enum GbParameterKind {
+  /**
+   * A real number.
+   */
+  GB_PARAMETER_KIND_REAL = 0,
+  /**
+   * An integer (a time step).
+   */
+  GB_PARAMETER_KIND_INTEGER = 1,
+  /**
+   * On or off (1 or 0).
+   */
+  GB_PARAMETER_KIND_SWITCH = 2,
+} GbParameterKind;
 
 /**
  * Which state array.
@@ -450,6 +490,35 @@ typedef struct GbTangentialOutput {
   double torque_j[3];
   int32_t sliding;
 } GbTangentialOutput;
+
+/**
+ * One row of a parameter table (strings in static storage).
+ */
+typedef struct GbParameterInfo {
+  /**
+   * The LAMMPS keyword (the field name of the parameter struct).
+   */
+  const char *keyword;
+  /**
+   * The LIGGGHTS property or switch name.
+   */
+  const char *liggghts_name;
+  enum GbParameterKind kind;
+  enum GbLiggghtsSource liggghts_source;
+  /**
+   * SI unit, "-" when dimensionless.
+   */
+  const char *unit;
+  /**
+   * The allowed values, in words.
+   */
+  const char *range;
+  /**
+   * When the model reads it, in words (see `granbond_*_parameter_needed`).
+   */
+  const char *needed_when;
+  double default_value;
+} GbParameterInfo;
 
 #ifdef __cplusplus
 extern "C" {
@@ -1056,6 +1125,68 @@ enum GbStatus granbond_state_slot(int32_t kind,
                                   size_t index,
                                   const char **name,
                                   int32_t *flips_on_swap);
+
+/**
+ * Row `id` of the bond parameter table (`id < granbond_bond_parameter_count()`).
+ *
+ * # Safety
+ * `info` must be null or valid for writes.
+ */
+enum GbStatus granbond_bond_parameter_info(size_t id, struct GbParameterInfo *info);
+
+/**
+ * Row `id` of the Voigt parameter table.
+ *
+ * # Safety
+ * `info` must be null or valid for writes.
+ */
+enum GbStatus granbond_voigt_parameter_info(size_t id, struct GbParameterInfo *info);
+
+/**
+ * Sets the bond parameter a deck names (LAMMPS keyword or LIGGGHTS name)
+ * to `value` (switches 1 or 0, steps as exact doubles). An unknown name
+ * gives `GB_STATUS_INVALID_ARGUMENT` with the known keywords in the
+ * message; a value out of range `GB_STATUS_INVALID_PARAMETER` naming the
+ * parameter, as `granbond_bond_model_new` does.
+ *
+ * # Safety
+ * `params` must be null or point to a `GbBondParams`; `name` null or a
+ * NUL-terminated string.
+ */
+enum GbStatus granbond_bond_params_set(struct GbBondParams *params, const char *name, double value);
+
+/**
+ * `granbond_bond_params_set` for the Voigt contact.
+ *
+ * # Safety
+ * As `granbond_bond_params_set`, with a `GbVoigtParams`.
+ */
+enum GbStatus granbond_voigt_params_set(struct GbVoigtParams *params,
+                                        const char *name,
+                                        double value);
+
+/**
+ * Whether a bond model with the switches of `params` reads parameter `id`
+ * (1) or ignores it (0): engines that ask the deck for every value ask only
+ * for these.
+ *
+ * # Safety
+ * `params` must be null or point to a `GbBondParams`; `needed` null or
+ * valid for writes.
+ */
+enum GbStatus granbond_bond_parameter_needed(const struct GbBondParams *params,
+                                             size_t id,
+                                             int32_t *needed);
+
+/**
+ * `granbond_bond_parameter_needed` for the Voigt contact.
+ *
+ * # Safety
+ * As `granbond_bond_parameter_needed`, with a `GbVoigtParams`.
+ */
+enum GbStatus granbond_voigt_parameter_needed(const struct GbVoigtParams *params,
+                                              size_t id,
+                                              int32_t *needed);
 
 #ifdef __cplusplus
 }  // extern "C"

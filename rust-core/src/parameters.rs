@@ -43,14 +43,128 @@ impl Range {
     }
 }
 
+/// How a deck writes a value.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParameterKind {
+    /// A real number.
+    Real = 0,
+    /// An integer (a time step).
+    Integer = 1,
+    /// On or off (1 or 0).
+    Switch = 2,
+}
+
+/// Where a LIGGGHTS deck gives a value.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LiggghtsSource {
+    /// `fix property/global NAME peratomtypepair N ...`
+    PerTypePair = 0,
+    /// `fix property/global NAME scalar VALUE`
+    Scalar = 1,
+    /// An on/off switch of the `pair_style gran` command.
+    Switch = 2,
+    /// Not settable from LIGGGHTS decks: the default applies.
+    Fixed = 3,
+}
+
+/// When a model reads a parameter, judged from the switches of a parameter
+/// set: engines that must ask the deck for each value (LIGGGHTS) ask only
+/// for what is read.
+pub struct Need<T> {
+    /// For messages and documentation ("always", "damping on", ...).
+    pub when: &'static str,
+    pub applies: fn(&T) -> bool,
+}
+
 /// One row of a parameter table.
 pub struct ParameterInfo<T> {
     /// Field name = LAMMPS keyword.
     pub name: &'static str,
     /// The name LIGGGHTS decks use (`fix property/global` or switch).
     pub liggghts_name: &'static str,
+    pub source: LiggghtsSource,
+    /// SI unit ("-" for dimensionless, "switch", "step").
+    pub unit: &'static str,
     pub range: Range,
+    pub need: Need<T>,
     pub get: fn(&T) -> f64,
+    /// Stores a value [`Range::admits`]; integers and switches arrive as
+    /// exact doubles.
+    pub set: fn(&mut T, f64),
+}
+
+impl<T> ParameterInfo<T> {
+    pub fn kind(&self) -> ParameterKind {
+        match self.range {
+            Range::Switch => ParameterKind::Switch,
+            Range::Step => ParameterKind::Integer,
+            _ => ParameterKind::Real,
+        }
+    }
+
+    /// The value in `T::default()`, the one source of every default.
+    pub fn default_value(&self) -> f64
+    where
+        T: Default,
+    {
+        (self.get)(&T::default())
+    }
+
+    pub fn needed(&self, params: &T) -> bool {
+        (self.need.applies)(params)
+    }
+}
+
+/// The row of `table` a deck names, by LAMMPS keyword or LIGGGHTS name.
+pub fn find<'a, T>(table: &'a [ParameterInfo<T>], name: &str) -> Option<(usize, &'a ParameterInfo<T>)> {
+    table
+        .iter()
+        .enumerate()
+        .find(|(_, p)| p.name == name || p.liggghts_name == name)
+}
+
+/// Sets the parameter a deck names to `value`, refusing an unknown name
+/// (the message lists the known keywords) and a value outside the row's
+/// range (the message names the parameter, as model validation does).
+pub fn set_by_name<T>(
+    model: &str,
+    table: &[ParameterInfo<T>],
+    params: &mut T,
+    name: &str,
+    value: f64,
+) -> Result<usize, SetError> {
+    let Some((id, info)) = find(table, name) else {
+        let known: Vec<&str> = table.iter().map(|p| p.name).collect();
+        return Err(SetError::Unknown(format!(
+            "{} has no parameter '{}' (known: {})",
+            model,
+            name,
+            known.join(" ")
+        )));
+    };
+    let integral = value.fract() == 0.0 && value.abs() < 9.0e15;
+    if !info.range.admits(value) || (info.kind() != ParameterKind::Real && !integral) {
+        return Err(SetError::Refused(refuse(
+            model,
+            table,
+            info.name,
+            info.range.describe(),
+            value,
+        )));
+    }
+    (info.set)(params, value);
+    Ok(id)
+}
+
+/// Why [`set_by_name`] refused.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SetError {
+    /// No row has this name; the message lists the keywords.
+    Unknown(String),
+    /// The value is outside the row's range.
+    Refused(ParameterError),
 }
 
 /// A refused parameter: its id (row of the model's table) and a message
@@ -94,17 +208,22 @@ pub fn check_ranges<T>(model: &str, table: &[ParameterInfo<T>], params: &T) -> R
     Ok(())
 }
 
-/// `parameter_table!(NAME: Type { field, "liggghts name", Range; ... })`
-/// defines the table `NAME` for the struct `Type`.
+/// `parameter_table!(NAME: Type { field, "liggghts name", Source, "unit", Range, NEED; ... })`
+/// defines the table `NAME` for the struct `Type`; `NEED` is a
+/// [`Need<Type>`](Need) constant in scope.
 #[macro_export]
 macro_rules! parameter_table {
-    ($table:ident : $ty:ty { $( $field:ident, $liggghts:literal, $range:ident; )* }) => {
+    ($table:ident : $ty:ty { $( $field:ident, $liggghts:literal, $source:ident, $unit:literal, $range:ident, $need:ident; )* }) => {
         pub const $table: &[$crate::parameters::ParameterInfo<$ty>] = &[
             $( $crate::parameters::ParameterInfo {
                 name: stringify!($field),
                 liggghts_name: $liggghts,
+                source: $crate::parameters::LiggghtsSource::$source,
+                unit: $unit,
                 range: $crate::parameters::Range::$range,
+                need: $need,
                 get: |p: &$ty| p.$field as f64,
+                set: |p: &mut $ty, v: f64| p.$field = v as _,
             }, )*
         ];
     };

@@ -150,3 +150,166 @@ fn bad_voigt_values_are_refused_with_the_parameter_named() {
         assert!(e.message.contains(name), "{}", e.message);
     }
 }
+
+#[test]
+fn every_row_sets_its_field_by_either_name_and_reads_it_back() {
+    use granbond::parameters::{set_by_name, ParameterKind};
+    for (id, row) in PARAMETERS.iter().enumerate() {
+        // a value the range admits that differs from the default
+        let value = match row.kind() {
+            ParameterKind::Switch => 1.0 - row.default_value(),
+            ParameterKind::Integer => 41.0,
+            ParameterKind::Real => row.default_value().min(0.5) * 0.5 + 0.25,
+        };
+        for name in [row.name, row.liggghts_name] {
+            let mut p = BondParams::default();
+            assert_eq!(
+                set_by_name("bond/nonlinear", PARAMETERS, &mut p, name, value),
+                Ok(id),
+                "{name}"
+            );
+            assert_eq!((row.get)(&p), value, "{name} sets its own field");
+            let others = PARAMETERS
+                .iter()
+                .filter(|r| r.name != row.name)
+                .all(|r| (r.get)(&p) == (r.get)(&BondParams::default()));
+            assert!(others, "{name} sets no other field");
+        }
+    }
+}
+
+#[test]
+fn setting_refuses_unknown_names_and_values_out_of_range_naming_the_parameter() {
+    use granbond::parameters::{set_by_name, SetError};
+    let mut p = BondParams::default();
+    match set_by_name("bond/nonlinear", PARAMETERS, &mut p, "k_fnl", 1.0) {
+        Err(SetError::Unknown(m)) => assert!(m.contains("'k_fnl'") && m.contains("k_fn1"), "{m}"),
+        other => panic!("unknown name accepted: {other:?}"),
+    }
+    for (name, value) in [
+        ("eta_fn", 1.0),
+        ("damping", 0.5),
+        ("create_step", 2.5),
+        ("lambda", -1.0),
+    ] {
+        match set_by_name("bond/nonlinear", PARAMETERS, &mut p, name, value) {
+            Err(SetError::Refused(e)) => {
+                assert_eq!(PARAMETERS[e.parameter].name, name);
+                assert!(
+                    e.message.contains(name) && e.message.contains("must be"),
+                    "{}",
+                    e.message
+                );
+            }
+            other => panic!("{name} = {value} accepted: {other:?}"),
+        }
+    }
+    assert_eq!(
+        p,
+        BondParams::default(),
+        "a refused value leaves the parameters alone"
+    );
+}
+
+#[test]
+fn the_switches_decide_which_values_the_model_reads() {
+    let needed = |p: &BondParams| -> Vec<&str> {
+        PARAMETERS
+            .iter()
+            .filter(|r| r.needed(p))
+            .map(|r| r.name)
+            .collect()
+    };
+    let d = BondParams::default();
+    let distance = needed(&d);
+    assert!(distance.contains(&"max_distance") && !distance.contains(&"max_sigma"));
+    assert!(distance.contains(&"eta_fn") && distance.contains(&"create_step"));
+    let stress = needed(&BondParams {
+        stress_break: 1,
+        damping: 0,
+        create_always: 1,
+        ..d
+    });
+    assert!(stress.contains(&"max_sigma") && stress.contains(&"max_tau"));
+    assert!(!stress.contains(&"max_distance") && !stress.contains(&"tension_compression_ratio"));
+    assert!(!stress.contains(&"eta_fn") && !stress.contains(&"create_step"));
+    let ratio = needed(&BondParams {
+        stress_break: 1,
+        use_ratio: 1,
+        ..d
+    });
+    assert!(ratio.contains(&"tension_compression_ratio"));
+    // smooth damping is damping: the ratios are read with `damping` off
+    let smooth = needed(&BondParams {
+        damping: 0,
+        damping_smooth: 1,
+        ..d
+    });
+    assert!(smooth.contains(&"eta_fn") && smooth.contains(&"smooth_velocity"));
+}
+
+#[test]
+fn smooth_damping_switches_damping_on() {
+    use granbond::bond::kernel::{DAMPING, SMOOTH};
+    let p = BondParams {
+        damping: 0,
+        damping_smooth: 1,
+        eta_fn: 0.1,
+        k_fn1: 1e9,
+        ku_fn1: 1e9,
+        ..BondParams::default()
+    };
+    let m = BondModel::new(p).unwrap();
+    assert_eq!(m.features & (DAMPING | SMOOTH), DAMPING | SMOOTH);
+}
+
+/// The reference table of docs/models/bond-nonlinear.md, row by row: each
+/// keyword of the core's table is listed there with the core's unit and
+/// default, so the documentation cannot drift from the table.
+#[test]
+fn the_documented_parameter_table_agrees_with_the_core() {
+    use granbond::parameters::ParameterKind;
+    let doc = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../docs/models/bond-nonlinear.md"
+    ))
+    .unwrap();
+    let rows: Vec<Vec<String>> = doc
+        .lines()
+        .skip_while(|l| !l.starts_with("| LAMMPS keyword"))
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            l.trim_matches('|')
+                .split('|')
+                .map(|c| c.trim().to_string())
+                .collect()
+        })
+        .collect();
+    assert!(rows.len() > 10, "the table is found");
+    for p in PARAMETERS {
+        let keyword = format!("`{}`", p.name);
+        let row = rows
+            .iter()
+            .find(|r| r[0].split_whitespace().any(|w| w == keyword))
+            .unwrap_or_else(|| panic!("{} is documented", p.name));
+        assert_eq!(row[3], p.unit, "unit of {}", p.name);
+        let default = p.default_value();
+        let documented = match row[5].as_str() {
+            "on" => 1.0,
+            "off" => 0.0,
+            "inf" => f64::INFINITY,
+            s => s
+                .parse::<f64>()
+                .unwrap_or_else(|_| panic!("default of {}: {s}", p.name)),
+        };
+        assert_eq!(documented, default, "default of {}", p.name);
+        if p.kind() == ParameterKind::Switch {
+            assert!(
+                row[1].contains(&format!("`{}`", p.liggghts_name)),
+                "LIGGGHTS switch of {}",
+                p.name
+            );
+        }
+    }
+}

@@ -44,7 +44,7 @@ impl BondModel {
         }
         // Damping with every ratio zero changes nothing: leave it out.
         let any_eta = p.eta_fn > 0.0 || p.eta_ft > 0.0 || p.eta_tn > 0.0 || p.eta_tt > 0.0;
-        if on(p.damping) && any_eta {
+        if p.damping_on() && any_eta {
             features |= kernel::DAMPING;
             if on(p.damping_smooth) {
                 features |= kernel::SMOOTH;

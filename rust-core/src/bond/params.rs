@@ -107,54 +107,90 @@ impl Default for BondParams {
 }
 
 pub use crate::parameters::ParameterError;
-use crate::parameters::{check_ranges, refuse};
+use crate::parameters::{check_ranges, refuse, Need};
 
 const MODEL: &str = "bond/nonlinear";
 
+const ALWAYS: Need<BondParams> = Need {
+    when: "always",
+    applies: |_| true,
+};
+const DAMPING: Need<BondParams> = Need {
+    when: "damping on",
+    applies: |p| p.damping_on(),
+};
+const SMOOTH_DAMPING: Need<BondParams> = Need {
+    when: "smooth damping on",
+    applies: |p| BondParams::switch(p.damping_smooth),
+};
+const DISTANCE_MODE: Need<BondParams> = Need {
+    when: "distance mode (stress break off)",
+    applies: |p| !BondParams::switch(p.stress_break),
+};
+const STRESS_MODE: Need<BondParams> = Need {
+    when: "stress mode (stress break on)",
+    applies: |p| BondParams::switch(p.stress_break),
+};
+const STRESS_RATIO: Need<BondParams> = Need {
+    when: "stress mode with the tension ratio on",
+    applies: |p| BondParams::switch(p.stress_break) && BondParams::switch(p.use_ratio),
+};
+const AT_STEP: Need<BondParams> = Need {
+    when: "bonds created at one step (create always off)",
+    applies: |p| !BondParams::switch(p.create_always),
+};
+
+// name (= LAMMPS keyword), LIGGGHTS name, where LIGGGHTS decks give it, unit,
+// allowed values, when the model reads it. Defaults: `BondParams::default`.
 crate::parameter_table!(PARAMETERS: BondParams {
-    lambda, "radiusMultiplierBondnonlinear", Positive;
-    k_fn1, "stiffnessPerUnitAreaK_fn1", NonNegative;
-    ku_fn1, "stiffnessPerUnitAreaKu_fn1", NonNegative;
-    kc_fn1, "stiffnessPerUnitAreaKc_fn1", NonNegative;
-    k_fn2, "stiffnessPerUnitAreaK_fn2", NonNegative;
-    ku_fn2, "stiffnessPerUnitAreaKu_fn2", NonNegative;
-    kc_fn2, "stiffnessPerUnitAreaKc_fn2", NonNegative;
-    k_ft, "stiffnessPerUnitAreaK_ft", NonNegative;
-    k_tn, "stiffnessPerUnitAreaK_tn", NonNegative;
-    ku_tn, "stiffnessPerUnitAreaKu_tn", NonNegative;
-    kc_tn, "stiffnessPerUnitAreaKc_tn", NonNegative;
-    k_tt, "stiffnessPerUnitAreaK_tt", NonNegative;
-    ku_tt, "stiffnessPerUnitAreaKu_tt", NonNegative;
-    kc_tt, "stiffnessPerUnitAreaKc_tt", NonNegative;
-    eta_fn, "dampingNormalForceBondnonlinear", Fraction;
-    eta_ft, "dampingTangentialForceBondnonlinear", Fraction;
-    eta_tn, "dampingNormalTorqueBondnonlinear", Fraction;
-    eta_tt, "dampingTangentialTorqueBondnonlinear", Fraction;
-    max_distance, "maxDistanceBondnonlinear", PositiveOrInfinite;
-    max_sigma, "maxSigmaBondnonlinear", PositiveOrInfinite;
-    max_tau, "maxTauBondnonlinear", PositiveOrInfinite;
-    tension_compression_ratio, "ratioTensionCompressionBondnonlinear", Positive;
-    create_distance, "createDistanceBondnonlinear", NonNegative;
-    smooth_velocity, "dampingBondSmooth velocity", Positive;
-    smooth_angular_velocity, "dampingBondSmooth angular velocity", Positive;
-    compression_linear_below, "compressionLinearBelow", NonNegative;
-    create_step, "tsCreateBondnonlinear", Step;
-    stress_break, "stressBreak", Switch;
-    use_ratio, "ratioTensionCompressionBond", Switch;
-    create_always, "createBondAlways", Switch;
-    history_reset, "historyReset", Switch;
-    damping, "dampingBond", Switch;
-    damping_smooth, "dampingBondSmooth", Switch;
-    tension, "tensionStress", Switch;
-    compression, "compressionStress", Switch;
-    shear, "shearStress", Switch;
-    twist, "normalTorqueStress", Switch;
-    bend, "shearTorqueStress", Switch;
+    lambda, "radiusMultiplierBondnonlinear", PerTypePair, "-", Positive, ALWAYS;
+    k_fn1, "stiffnessPerUnitAreaK_fn1", PerTypePair, "N/m^2.5", NonNegative, ALWAYS;
+    ku_fn1, "stiffnessPerUnitAreaKu_fn1", PerTypePair, "N/m^2.5", NonNegative, ALWAYS;
+    kc_fn1, "stiffnessPerUnitAreaKc_fn1", PerTypePair, "N/m^2.5", NonNegative, ALWAYS;
+    k_fn2, "stiffnessPerUnitAreaK_fn2", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    ku_fn2, "stiffnessPerUnitAreaKu_fn2", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    kc_fn2, "stiffnessPerUnitAreaKc_fn2", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    k_ft, "stiffnessPerUnitAreaK_ft", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    k_tn, "stiffnessPerUnitAreaK_tn", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    ku_tn, "stiffnessPerUnitAreaKu_tn", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    kc_tn, "stiffnessPerUnitAreaKc_tn", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    k_tt, "stiffnessPerUnitAreaK_tt", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    ku_tt, "stiffnessPerUnitAreaKu_tt", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    kc_tt, "stiffnessPerUnitAreaKc_tt", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+    eta_fn, "dampingNormalForceBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
+    eta_ft, "dampingTangentialForceBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
+    eta_tn, "dampingNormalTorqueBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
+    eta_tt, "dampingTangentialTorqueBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
+    max_distance, "maxDistanceBondnonlinear", PerTypePair, "m", PositiveOrInfinite, DISTANCE_MODE;
+    max_sigma, "maxSigmaBondnonlinear", PerTypePair, "Pa", PositiveOrInfinite, STRESS_MODE;
+    max_tau, "maxTauBondnonlinear", PerTypePair, "Pa", PositiveOrInfinite, STRESS_MODE;
+    tension_compression_ratio, "ratioTensionCompressionBondnonlinear", PerTypePair, "-", Positive, STRESS_RATIO;
+    create_distance, "createDistanceBondnonlinear", PerTypePair, "m", NonNegative, ALWAYS;
+    smooth_velocity, "dampingBondSmooth velocity", Fixed, "m/s", Positive, SMOOTH_DAMPING;
+    smooth_angular_velocity, "dampingBondSmooth angular velocity", Fixed, "rad/s", Positive, SMOOTH_DAMPING;
+    compression_linear_below, "compressionLinearBelow", Fixed, "m", NonNegative, ALWAYS;
+    create_step, "tsCreateBondnonlinear", Scalar, "step", Step, AT_STEP;
+    stress_break, "stressBreak", Switch, "switch", Switch, ALWAYS;
+    use_ratio, "ratioTensionCompressionBond", Switch, "switch", Switch, ALWAYS;
+    create_always, "createBondAlways", Switch, "switch", Switch, ALWAYS;
+    history_reset, "historyReset", Switch, "switch", Switch, ALWAYS;
+    damping, "dampingBond", Switch, "switch", Switch, ALWAYS;
+    damping_smooth, "dampingBondSmooth", Switch, "switch", Switch, ALWAYS;
+    tension, "tensionStress", Switch, "switch", Switch, ALWAYS;
+    compression, "compressionStress", Switch, "switch", Switch, ALWAYS;
+    shear, "shearStress", Switch, "switch", Switch, ALWAYS;
+    twist, "normalTorqueStress", Switch, "switch", Switch, ALWAYS;
+    bend, "shearTorqueStress", Switch, "switch", Switch, ALWAYS;
 });
 
 impl BondParams {
     pub fn switch(v: i32) -> bool {
         v != 0
+    }
+
+    /// Smooth damping is a kind of damping: either switch turns it on.
+    pub fn damping_on(&self) -> bool {
+        Self::switch(self.damping) || Self::switch(self.damping_smooth)
     }
 
     /// Checks every value against its range, then the relations between

@@ -1,6 +1,6 @@
 //! Parameters of the Voigt contact, defaults of the seed's Table 1.
 
-use crate::parameters::{check_ranges, ParameterError};
+use crate::parameters::{check_ranges, Need, ParameterError};
 
 const MODEL: &str = "voigt";
 
@@ -48,18 +48,29 @@ impl Default for VoigtParams {
     }
 }
 
+const ALWAYS: Need<VoigtParams> = Need {
+    when: "always",
+    applies: |_| true,
+};
+const ROLLING: Need<VoigtParams> = Need {
+    when: "rolling on",
+    applies: |p| p.rolling != 0,
+};
+
+// name (= field), LIGGGHTS name, where LIGGGHTS decks give it, unit, allowed
+// values, when the model reads it. Defaults: `VoigtParams::default`.
 crate::parameter_table!(VOIGT_PARAMETERS: VoigtParams {
-    k_n, "kn", Positive;
-    gamma_n, "gamman_abs", NonNegative;
-    k_t, "kt", NonNegative;
-    gamma_t, "gammat_abs", NonNegative;
-    mu, "coefficientFriction", NonNegative;
-    k_r, "rollingStiffness", NonNegative;
-    gamma_r, "rollingDamping", NonNegative;
-    mu_r, "coefficientRollingFriction", NonNegative;
-    eta_r, "rollingViscousDamping", NonNegative;
-    no_attraction, "noAttraction", Switch;
-    rolling, "rolling_friction voigt", Switch;
+    k_n, "kn", PerTypePair, "N/m", Positive, ALWAYS;
+    gamma_n, "gamman_abs", PerTypePair, "kg/s", NonNegative, ALWAYS;
+    k_t, "kt", PerTypePair, "N/m", NonNegative, ALWAYS;
+    gamma_t, "gammat_abs", PerTypePair, "kg/s", NonNegative, ALWAYS;
+    mu, "coefficientFriction", PerTypePair, "-", NonNegative, ALWAYS;
+    k_r, "rollingStiffness", PerTypePair, "N m/rad", NonNegative, ROLLING;
+    gamma_r, "rollingDamping", PerTypePair, "N m s/rad", NonNegative, ROLLING;
+    mu_r, "coefficientRollingFriction", PerTypePair, "-", NonNegative, ROLLING;
+    eta_r, "rollingViscousDamping", PerTypePair, "N m s", NonNegative, ROLLING;
+    no_attraction, "noAttraction", Switch, "switch", Switch, ALWAYS;
+    rolling, "rolling_friction voigt", Fixed, "switch", Switch, ALWAYS;
 });
 
 impl VoigtParams {

@@ -13,6 +13,7 @@ pub mod contact;
 pub mod error;
 pub mod guard;
 pub mod layout;
+pub mod parameters;
 pub mod results;
 
 pub use error::Status;

@@ -496,53 +496,161 @@ struct field {
     enum field_type type;
 };
 
-#define BOND_D(f, l) {#f, l, offsetof(GbBondParams, f), F_DOUBLE}
-#define BOND_I(f, l) {#f, l, offsetof(GbBondParams, f), F_INT32}
-
-/* Every field of GbBondParams in declaration order, which is the order of
- * the library's parameter table (ids of granbond_last_error_parameter). */
-static const struct field BOND_FIELDS[] = {
-    BOND_D(lambda, "radiusMultiplierBondnonlinear"),
-    BOND_D(k_fn1, "stiffnessPerUnitAreaK_fn1"),
-    BOND_D(ku_fn1, "stiffnessPerUnitAreaKu_fn1"),
-    BOND_D(kc_fn1, "stiffnessPerUnitAreaKc_fn1"),
-    BOND_D(k_fn2, "stiffnessPerUnitAreaK_fn2"),
-    BOND_D(ku_fn2, "stiffnessPerUnitAreaKu_fn2"),
-    BOND_D(kc_fn2, "stiffnessPerUnitAreaKc_fn2"),
-    BOND_D(k_ft, "stiffnessPerUnitAreaK_ft"),
-    BOND_D(k_tn, "stiffnessPerUnitAreaK_tn"),
-    BOND_D(ku_tn, "stiffnessPerUnitAreaKu_tn"),
-    BOND_D(kc_tn, "stiffnessPerUnitAreaKc_tn"),
-    BOND_D(k_tt, "stiffnessPerUnitAreaK_tt"),
-    BOND_D(ku_tt, "stiffnessPerUnitAreaKu_tt"),
-    BOND_D(kc_tt, "stiffnessPerUnitAreaKc_tt"),
-    BOND_D(eta_fn, "dampingNormalForceBondnonlinear"),
-    BOND_D(eta_ft, "dampingTangentialForceBondnonlinear"),
-    BOND_D(eta_tn, "dampingNormalTorqueBondnonlinear"),
-    BOND_D(eta_tt, "dampingTangentialTorqueBondnonlinear"),
-    BOND_D(max_distance, "maxDistanceBondnonlinear"),
-    BOND_D(max_sigma, "maxSigmaBondnonlinear"),
-    BOND_D(max_tau, "maxTauBondnonlinear"),
-    BOND_D(tension_compression_ratio, "ratioTensionCompressionBondnonlinear"),
-    BOND_D(create_distance, "createDistanceBondnonlinear"),
-    BOND_D(smooth_velocity, "dampingBondSmooth velocity"),
-    BOND_D(smooth_angular_velocity, "dampingBondSmooth angular velocity"),
-    BOND_D(compression_linear_below, "compressionLinearBelow"),
-    {"create_step", "tsCreateBondnonlinear", offsetof(GbBondParams, create_step), F_INT64},
-    BOND_I(stress_break, "stressBreak"),
-    BOND_I(use_ratio, "ratioTensionCompressionBond"),
-    BOND_I(create_always, "createBondAlways"),
-    BOND_I(history_reset, "historyReset"),
-    BOND_I(damping, "dampingBond"),
-    BOND_I(damping_smooth, "dampingBondSmooth"),
-    BOND_I(tension, "tensionStress"),
-    BOND_I(compression, "compressionStress"),
-    BOND_I(shear, "shearStress"),
-    BOND_I(twist, "normalTorqueStress"),
-    BOND_I(bend, "shearTorqueStress"),
+/* A parameter table as the library describes it. */
+struct table {
+    const char *what;
+    size_t size; /* of the parameter struct */
+    size_t (*count)(void);
+    GbStatus (*info)(size_t, GbParameterInfo *);
+    GbStatus (*set)(void *, const char *, double);
+    GbStatus (*defaults)(void *);
 };
 
-#define N_BOND_FIELDS (sizeof BOND_FIELDS / sizeof BOND_FIELDS[0])
+static GbStatus bond_set(void *p, const char *name, double v) { return granbond_bond_params_set((GbBondParams *)p, name, v); }
+static GbStatus bond_defaults(void *p) { return granbond_bond_params_default((GbBondParams *)p); }
+static GbStatus voigt_set(void *p, const char *name, double v) { return granbond_voigt_params_set((GbVoigtParams *)p, name, v); }
+static GbStatus voigt_defaults(void *p) { return granbond_voigt_params_default((GbVoigtParams *)p); }
+
+static const struct table BOND_TABLE = {"bond", sizeof(GbBondParams), granbond_bond_parameter_count,
+                                        granbond_bond_parameter_info, bond_set, bond_defaults};
+static const struct table VOIGT_TABLE = {"voigt", sizeof(GbVoigtParams), granbond_voigt_parameter_count,
+                                         granbond_voigt_parameter_info, voigt_set, voigt_defaults};
+
+#define MAX_FIELDS 64
+#define MAX_PARAMS_SIZE 512
+
+static double field_value(const unsigned char *params, size_t offset, enum field_type type)
+{
+    double d;
+    int64_t i64;
+    int32_t i32;
+    switch (type) {
+    case F_DOUBLE: memcpy(&d, params + offset, sizeof d); return d;
+    case F_INT64: memcpy(&i64, params + offset, sizeof i64); return (double)i64;
+    default: memcpy(&i32, params + offset, sizeof i32); return (double)i32;
+    }
+}
+
+/* Reads the library's table `t` into `fields`, finding each row's field by
+ * setting the row by name and looking for the bytes that changed. So the
+ * rows are checked against the header's struct (one row per field, in
+ * declaration order, each name setting its own field, the default the
+ * struct's default) without a copy of the table here. */
+static int load_table(const struct table *t, struct field *fields, size_t *n)
+{
+    unsigned char base[MAX_PARAMS_SIZE], p[MAX_PARAMS_SIZE], q[MAX_PARAMS_SIZE];
+    size_t i, k, end = 0;
+
+    *n = t->count();
+    CHECK(*n > 0 && *n <= MAX_FIELDS, say("%s table has 1..%d rows", t->what, MAX_FIELDS));
+    CHECK(t->size <= MAX_PARAMS_SIZE, say("%s parameters fit the scratch buffer", t->what));
+    EXPECT_OK(t->defaults(base), say("%s defaults", t->what));
+    for (i = 0; i < *n; i++) {
+        GbParameterInfo info;
+        enum field_type type;
+        size_t width, first = (size_t)-1, last = 0, offset;
+        double v;
+
+        EXPECT_OK(t->info(i, &info), say("%s parameter info %u", t->what, (unsigned)i));
+        CHECK(info.keyword && info.liggghts_name && info.unit && info.range && info.needed_when,
+              say("%s parameter %u has its names, unit, range and need", t->what, (unsigned)i));
+        type = info.kind == GB_PARAMETER_KIND_REAL ? F_DOUBLE
+               : info.kind == GB_PARAMETER_KIND_INTEGER ? F_INT64 : F_INT32;
+        width = type == F_INT32 ? 4 : 8;
+        v = type == F_INT32 ? 1.0 - info.default_value
+            : type == F_INT64 ? 41.0 : (info.default_value == 0.375 ? 0.25 : 0.375);
+        memcpy(p, base, t->size);
+        EXPECT_OK(t->set(p, info.keyword, v), say("%s set %s = %g", t->what, info.keyword, v));
+        for (k = 0; k < t->size; k++)
+            if (p[k] != base[k]) {
+                if (first == (size_t)-1)
+                    first = k;
+                last = k;
+            }
+        CHECK(first != (size_t)-1, say("setting %s changes the parameters", info.keyword));
+        offset = first - first % width;
+        CHECK(last < offset + width, say("setting %s changes one field", info.keyword));
+        CHECK(offset == (end + width - 1) / width * width,
+              say("%s is the field after the previous row's (declaration order, no gap)", info.keyword));
+        CHECK(field_value(p, offset, type) == v, say("%s = %g reads back", info.keyword, v));
+        CHECK(field_value(base, offset, type) == info.default_value ||
+                  (isnan(info.default_value) && isnan(field_value(base, offset, type))),
+              say("%s default %g is the struct's", info.keyword, info.default_value));
+        memcpy(q, base, t->size);
+        EXPECT_OK(t->set(q, info.liggghts_name, v), say("%s set by LIGGGHTS name %s", t->what, info.liggghts_name));
+        CHECK(memcmp(p, q, t->size) == 0, say("%s and %s set the same field", info.keyword, info.liggghts_name));
+        end = offset + width;
+        fields[i].keyword = info.keyword;
+        fields[i].liggghts = info.liggghts_name;
+        fields[i].offset = offset;
+        fields[i].type = type;
+    }
+    CHECK((end + 7) / 8 * 8 == t->size, say("the %s rows cover the whole struct", t->what));
+    return 0;
+}
+
+static struct field BOND_FIELDS[MAX_FIELDS];
+static size_t N_BOND_FIELDS;
+static struct field VOIGT_FIELDS[MAX_FIELDS];
+static size_t N_VOIGT_FIELDS;
+
+static int test_parameter_tables(void)
+{
+    GbBondParams p;
+    if (load_table(&BOND_TABLE, BOND_FIELDS, &N_BOND_FIELDS) || load_table(&VOIGT_TABLE, VOIGT_FIELDS, &N_VOIGT_FIELDS))
+        return 1;
+    granbond_bond_params_default(&p);
+    EXPECT(granbond_bond_params_set(&p, "k_fnl", 1.0), GB_STATUS_INVALID_ARGUMENT, "set an unknown name");
+    EXPECT_MESSAGE("k_fnl");
+    EXPECT_MESSAGE("known: lambda k_fn1");
+    EXPECT(granbond_bond_params_set(&p, "stiffnessPerUnitAreaK_fn1", -1.0), GB_STATUS_INVALID_PARAMETER,
+           "set k_fn1 = -1");
+    EXPECT_MESSAGE("k_fn1 (stiffnessPerUnitAreaK_fn1) must be finite and >= 0; got -1");
+    CHECK(granbond_last_error_parameter() == 1, "the refused row's id");
+    EXPECT(granbond_bond_params_set(&p, "damping", 0.5), GB_STATUS_INVALID_PARAMETER, "set damping = 0.5");
+    EXPECT(granbond_bond_params_set(&p, "create_step", 2.5), GB_STATUS_INVALID_PARAMETER, "set create_step = 2.5");
+    EXPECT_NULL_ARG(granbond_bond_params_set(NULL, "lambda", 1.0), "granbond_bond_params_set", "params");
+    EXPECT_NULL_ARG(granbond_bond_params_set(&p, NULL, 1.0), "granbond_bond_params_set", "name");
+    EXPECT_NULL_ARG(granbond_bond_parameter_info(0, NULL), "granbond_bond_parameter_info", "info");
+    {
+        GbParameterInfo info;
+        int32_t needed = -1;
+        size_t eta = 14, max_sigma = 19;
+        EXPECT(granbond_bond_parameter_info(N_BOND_FIELDS, &info), GB_STATUS_INVALID_ARGUMENT, "info(count)");
+        EXPECT_MESSAGE("out of range");
+        granbond_bond_params_default(&p);
+        CHECK(strcmp(BOND_FIELDS[eta].keyword, "eta_fn") == 0 && strcmp(BOND_FIELDS[max_sigma].keyword, "max_sigma") == 0,
+              "rows 14 and 19 are eta_fn and max_sigma");
+        EXPECT_OK(granbond_bond_parameter_needed(&p, max_sigma, &needed), "needed(max_sigma)");
+        CHECK(needed == 0, "max_sigma is not read in distance mode");
+        p.stress_break = 1;
+        EXPECT_OK(granbond_bond_parameter_needed(&p, max_sigma, &needed), "needed(max_sigma)");
+        CHECK(needed == 1, "max_sigma is read in stress mode");
+        p.damping = 0;
+        p.damping_smooth = 1;
+        EXPECT_OK(granbond_bond_parameter_needed(&p, eta, &needed), "needed(eta_fn)");
+        CHECK(needed == 1, "smooth damping reads the damping ratios");
+        EXPECT_NULL_ARG(granbond_bond_parameter_needed(&p, eta, NULL), "granbond_bond_parameter_needed", "needed");
+        EXPECT_NULL_ARG(granbond_bond_parameter_needed(NULL, eta, &needed), "granbond_bond_parameter_needed",
+                        "params");
+    }
+    {
+        GbVoigtParams v;
+        GbParameterInfo info;
+        int32_t needed = -1;
+        size_t k_r = 5;
+        EXPECT(granbond_voigt_parameter_info(N_VOIGT_FIELDS, &info), GB_STATUS_INVALID_ARGUMENT, "voigt info(count)");
+        CHECK(strcmp(VOIGT_FIELDS[k_r].keyword, "k_r") == 0, "voigt row 5 is k_r");
+        granbond_voigt_params_default(&v);
+        v.rolling = 0;
+        EXPECT_OK(granbond_voigt_parameter_needed(&v, k_r, &needed), "voigt needed(k_r)");
+        CHECK(needed == 0, "k_r is not read without rolling");
+        EXPECT_OK(granbond_voigt_params_set(&v, "rolling", 1.0), "voigt set rolling = 1");
+        EXPECT_OK(granbond_voigt_parameter_needed(&v, k_r, &needed), "voigt needed(k_r)");
+        CHECK(needed == 1, "k_r is read with rolling");
+    }
+    return 0;
+}
 
 static size_t bond_field_id(const char *keyword)
 {
@@ -1665,26 +1773,6 @@ static int test_run_checks(void)
 /* Voigt contact                                                             */
 /* ------------------------------------------------------------------------ */
 
-#define VOIGT_D(f, l) {#f, l, offsetof(GbVoigtParams, f), F_DOUBLE}
-#define VOIGT_I(f, l) {#f, l, offsetof(GbVoigtParams, f), F_INT32}
-
-/* GbVoigtParams in declaration order = the ids the library reports, with
- * the names granbond_voigt_parameter_name gives. */
-static const struct field VOIGT_FIELDS[] = {
-    VOIGT_D(k_n, "kn"),
-    VOIGT_D(gamma_n, "gamman_abs"),
-    VOIGT_D(k_t, "kt"),
-    VOIGT_D(gamma_t, "gammat_abs"),
-    VOIGT_D(mu, "coefficientFriction"),
-    VOIGT_D(k_r, "rollingStiffness"),
-    VOIGT_D(gamma_r, "rollingDamping"),
-    VOIGT_D(mu_r, "coefficientRollingFriction"),
-    VOIGT_D(eta_r, "rollingViscousDamping"),
-    VOIGT_I(no_attraction, "noAttraction"),
-    VOIGT_I(rolling, "rolling_friction voigt"),
-};
-
-#define N_VOIGT_FIELDS (sizeof VOIGT_FIELDS / sizeof VOIGT_FIELDS[0])
 
 static int expect_voigt_refused(const GbVoigtParams *p, size_t id, const char *what)
 {
@@ -2396,7 +2484,7 @@ static int test_error_state_and_free(void)
 
 int main(void)
 {
-    int failed = test_version_and_layout() || test_state_layout() || test_bond_params() ||
+    int failed = test_version_and_layout() || test_state_layout() || test_parameter_tables() || test_bond_params() ||
                  test_bond_create_and_force() || test_bond_errors() || test_bond_batch() || test_bond_scattered() ||
                  test_bond_indexed() ||
                  test_bond_break() ||

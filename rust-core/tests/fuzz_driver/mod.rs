@@ -34,6 +34,7 @@ use granbond::ffi::checks::{self as fk, CheckReport};
 use granbond::ffi::contact::{self as fc, TangentialOutput};
 use granbond::ffi::error::{granbond_last_error_message, granbond_last_error_parameter};
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
+use granbond::ffi::parameters::{self as fp, ParameterRow};
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
 use granbond::timestep_check::TypeBodies;
@@ -45,7 +46,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 46] = [
+pub const ENTRY_POINTS: [&str; 52] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -88,6 +89,12 @@ pub const ENTRY_POINTS: [&str; 46] = [
     "granbond_voigt_critical_timestep",
     "granbond_voigt_parameter_count",
     "granbond_voigt_parameter_name",
+    "granbond_bond_parameter_info",
+    "granbond_voigt_parameter_info",
+    "granbond_bond_params_set",
+    "granbond_voigt_params_set",
+    "granbond_bond_parameter_needed",
+    "granbond_voigt_parameter_needed",
     "granbond_last_error_message",
     "granbond_last_error_parameter",
     "granbond_state_len",
@@ -903,6 +910,82 @@ impl<'t> Session<'t> {
                 assert!(!p.is_null());
                 // SAFETY: static NUL-terminated storage of the library.
                 assert!(!unsafe { CStr::from_ptr(p) }.to_bytes().is_empty());
+            }
+        }
+        self.parameter_rows(input, bond, count);
+    }
+
+    /// Row info, set-by-name and the need of a row, with null, misaligned
+    /// and valid pointers, ids in and out of range, and names from the
+    /// table or not.
+    fn parameter_rows(&mut self, input: &mut Input, bond: bool, count: usize) {
+        let id = input.usize();
+        let mut row = Place::new(ParameterRow {
+            keyword: null(),
+            liggghts_name: null(),
+            kind: granbond::parameters::ParameterKind::Real,
+            liggghts_source: granbond::parameters::LiggghtsSource::Fixed,
+            unit: null(),
+            range: null(),
+            needed_when: null(),
+            default_value: 0.0,
+        });
+        let h = input.pointer();
+        let (function, status) = if bond {
+            ("granbond_bond_parameter_info", unsafe {
+                fp::granbond_bond_parameter_info(id, row.ptr(h))
+            })
+        } else {
+            ("granbond_voigt_parameter_info", unsafe {
+                fp::granbond_voigt_parameter_info(id, row.ptr(h))
+            })
+        };
+        let known = self.answer(function, status);
+        if known {
+            assert!(id < count, "{function}: OK for id {id} of {count}");
+        }
+        let name: &[u8] = match input.below(3) {
+            0 if known => unsafe { CStr::from_ptr(row.get().keyword) }.to_bytes_with_nul(),
+            1 if known => unsafe { CStr::from_ptr(row.get().liggghts_name) }.to_bytes_with_nul(),
+            _ => b"no_such_parameter\0",
+        };
+        let value = input.f64();
+        let (hp, hn, hd) = (input.pointer(), input.pointer(), input.pointer());
+        let name_ptr = if input.below(8) == 0 {
+            null()
+        } else {
+            name.as_ptr() as *const c_char
+        };
+        let mut needed = Place::new(-1i32);
+        if bond {
+            let mut p = Place::new(BondParams::default());
+            // SAFETY: null, misaligned or valid pointers; the name is NUL-terminated.
+            let status = unsafe { fp::granbond_bond_params_set(p.ptr(hp), name_ptr, value) };
+            if self.answer("granbond_bond_params_set", status) {
+                let ranges = granbond::parameters::check_ranges("bond/nonlinear", PARAMETERS, &p.get());
+                assert!(
+                    ranges.is_ok(),
+                    "granbond_bond_params_set stored a value out of range: {ranges:?}"
+                );
+            }
+            let status = unsafe { fp::granbond_bond_parameter_needed(p.ptr(hp), id, needed.ptr(hn)) };
+            if self.answer("granbond_bond_parameter_needed", status) {
+                assert!(needed.get() == 0 || needed.get() == 1);
+            }
+        } else {
+            let mut p = Place::new(VoigtParams::default());
+            // SAFETY: as above.
+            let status = unsafe { fp::granbond_voigt_params_set(p.ptr(hp), name_ptr, value) };
+            if self.answer("granbond_voigt_params_set", status) {
+                let ranges = granbond::parameters::check_ranges("voigt", VOIGT_PARAMETERS, &p.get());
+                assert!(
+                    ranges.is_ok(),
+                    "granbond_voigt_params_set stored a value out of range: {ranges:?}"
+                );
+            }
+            let status = unsafe { fp::granbond_voigt_parameter_needed(p.ptr(hd), id, needed.ptr(hn)) };
+            if self.answer("granbond_voigt_parameter_needed", status) {
+                assert!(needed.get() == 0 || needed.get() == 1);
             }
         }
     }

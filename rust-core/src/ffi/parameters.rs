@@ -1,0 +1,214 @@
+//! `extern "C"` surface of the parameter tables: what each row is, and
+//! setting a parameter by the name a deck uses. Adapters iterate these, so
+//! a parameter added to a table reaches both engines' decks.
+
+use super::error::{Failure, Status};
+use super::guard::{call, reference, reference_mut};
+use crate::bond::{BondParams, PARAMETERS};
+use crate::contact::{VoigtParams, VOIGT_PARAMETERS};
+use crate::parameters::{set_by_name, ParameterInfo, SetError};
+pub use crate::parameters::{LiggghtsSource, ParameterKind};
+use std::ffi::{c_char, CStr, CString};
+use std::sync::OnceLock;
+
+/// One row of a parameter table (strings in static storage).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct ParameterRow {
+    /// The LAMMPS keyword (the field name of the parameter struct).
+    pub keyword: *const c_char,
+    /// The LIGGGHTS property or switch name.
+    pub liggghts_name: *const c_char,
+    pub kind: ParameterKind,
+    pub liggghts_source: LiggghtsSource,
+    /// SI unit, "-" when dimensionless.
+    pub unit: *const c_char,
+    /// The allowed values, in words.
+    pub range: *const c_char,
+    /// When the model reads it, in words (see `granbond_*_parameter_needed`).
+    pub needed_when: *const c_char,
+    pub default_value: f64,
+}
+
+/// The C strings of a table's rows, built once per table.
+struct RowStrings([CString; 5]);
+
+// SAFETY: the rows point into `RowStrings` that live in a `static`; they
+// are read-only after construction.
+unsafe impl Send for ParameterRow {}
+unsafe impl Sync for ParameterRow {}
+
+fn rows<T: Default>(table: &[ParameterInfo<T>]) -> (Vec<RowStrings>, Vec<ParameterRow>) {
+    let c = |s: &str| CString::new(s).expect("no NUL in a parameter table");
+    let strings: Vec<RowStrings> = table
+        .iter()
+        .map(|p| {
+            RowStrings([
+                c(p.name),
+                c(p.liggghts_name),
+                c(p.unit),
+                c(p.range.describe()),
+                c(p.need.when),
+            ])
+        })
+        .collect();
+    let rows = table
+        .iter()
+        .zip(&strings)
+        .map(|(p, s)| ParameterRow {
+            keyword: s.0[0].as_ptr(),
+            liggghts_name: s.0[1].as_ptr(),
+            kind: p.kind(),
+            liggghts_source: p.source,
+            unit: s.0[2].as_ptr(),
+            range: s.0[3].as_ptr(),
+            needed_when: s.0[4].as_ptr(),
+            default_value: p.default_value(),
+        })
+        .collect();
+    (strings, rows)
+}
+
+type Rows = (Vec<RowStrings>, Vec<ParameterRow>);
+
+fn bond_rows() -> &'static [ParameterRow] {
+    static ROWS: OnceLock<Rows> = OnceLock::new();
+    &ROWS.get_or_init(|| rows(PARAMETERS)).1
+}
+
+fn voigt_rows() -> &'static [ParameterRow] {
+    static ROWS: OnceLock<Rows> = OnceLock::new();
+    &ROWS.get_or_init(|| rows(VOIGT_PARAMETERS)).1
+}
+
+unsafe fn write_row(rows: &[ParameterRow], id: usize, out: *mut ParameterRow) -> Result<(), Failure> {
+    let out = reference_mut(out, "info")?;
+    *out = *rows
+        .get(id)
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?;
+    Ok(())
+}
+
+unsafe fn set<T>(
+    model: &str,
+    table: &[ParameterInfo<T>],
+    params: *mut T,
+    name: *const c_char,
+    value: f64,
+) -> Result<(), Failure> {
+    let params = reference_mut(params, "params")?;
+    reference(name, "name")?;
+    let name = CStr::from_ptr(name)
+        .to_str()
+        .map_err(|_| Failure::new(Status::InvalidArgument, "parameter name is not UTF-8"))?;
+    match set_by_name(model, table, params, name, value) {
+        Ok(_) => Ok(()),
+        Err(SetError::Unknown(message)) => Err(Failure::new(Status::InvalidArgument, message)),
+        Err(SetError::Refused(e)) => Err(e.into()),
+    }
+}
+
+unsafe fn needed<T>(
+    table: &[ParameterInfo<T>],
+    params: *const T,
+    id: usize,
+    out: *mut i32,
+) -> Result<(), Failure> {
+    let params = reference(params, "params")?;
+    let out = reference_mut(out, "needed")?;
+    let row = table
+        .get(id)
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?;
+    *out = row.needed(params) as i32;
+    Ok(())
+}
+
+/// Row `id` of the bond parameter table (`id < granbond_bond_parameter_count()`).
+///
+/// # Safety
+/// `info` must be null or valid for writes.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_parameter_info(id: usize, info: *mut ParameterRow) -> Status {
+    call("granbond_bond_parameter_info", || {
+        write_row(bond_rows(), id, info)
+    })
+}
+
+/// Row `id` of the Voigt parameter table.
+///
+/// # Safety
+/// `info` must be null or valid for writes.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_parameter_info(id: usize, info: *mut ParameterRow) -> Status {
+    call("granbond_voigt_parameter_info", || {
+        write_row(voigt_rows(), id, info)
+    })
+}
+
+/// Sets the bond parameter a deck names (LAMMPS keyword or LIGGGHTS name)
+/// to `value` (switches 1 or 0, steps as exact doubles). An unknown name
+/// gives `GB_STATUS_INVALID_ARGUMENT` with the known keywords in the
+/// message; a value out of range `GB_STATUS_INVALID_PARAMETER` naming the
+/// parameter, as `granbond_bond_model_new` does.
+///
+/// # Safety
+/// `params` must be null or point to a `GbBondParams`; `name` null or a
+/// NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_params_set(
+    params: *mut BondParams,
+    name: *const c_char,
+    value: f64,
+) -> Status {
+    call("granbond_bond_params_set", || {
+        set("bond/nonlinear", PARAMETERS, params, name, value)
+    })
+}
+
+/// `granbond_bond_params_set` for the Voigt contact.
+///
+/// # Safety
+/// As `granbond_bond_params_set`, with a `GbVoigtParams`.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_params_set(
+    params: *mut VoigtParams,
+    name: *const c_char,
+    value: f64,
+) -> Status {
+    call("granbond_voigt_params_set", || {
+        set("voigt", VOIGT_PARAMETERS, params, name, value)
+    })
+}
+
+/// Whether a bond model with the switches of `params` reads parameter `id`
+/// (1) or ignores it (0): engines that ask the deck for every value ask only
+/// for these.
+///
+/// # Safety
+/// `params` must be null or point to a `GbBondParams`; `needed` null or
+/// valid for writes.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_parameter_needed(
+    params: *const BondParams,
+    id: usize,
+    needed: *mut i32,
+) -> Status {
+    call("granbond_bond_parameter_needed", || {
+        self::needed(PARAMETERS, params, id, needed)
+    })
+}
+
+/// `granbond_bond_parameter_needed` for the Voigt contact.
+///
+/// # Safety
+/// As `granbond_bond_parameter_needed`, with a `GbVoigtParams`.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_parameter_needed(
+    params: *const VoigtParams,
+    id: usize,
+    needed: *mut i32,
+) -> Status {
+    call("granbond_voigt_parameter_needed", || {
+        self::needed(VOIGT_PARAMETERS, params, id, needed)
+    })
+}
