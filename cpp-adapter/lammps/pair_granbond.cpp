@@ -577,48 +577,28 @@ void PairGranbond::compute(int eflag, int vflag)
     double scratch[GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN + kLoadSlots];
     GbPairKinematics k;
 
-    // One voigt step of a touching pair, from the geometry the loop has: the
-    // fields of the frame granbond_contact_frame_pair would build (same
-    // operations, same bits: n = (x_i - x_j) / r by one reciprocal, overlap
-    // radsum - r, levers R_i and R_j, R* = R_i R_j / (R_i + R_j), which only
-    // enters the rolling cap and is left out without rolling), handed over
-    // one by one, the velocities and spins where LAMMPS keeps them. The
+    // One voigt step of a touching pair from what the loop has: the
+    // separation and the radii (the core builds the frame: normal, overlap,
+    // levers, R*), the velocities and spins where LAMMPS keeps them. The
     // core reads what was just written one double at a time, so no load
     // waits for stores in flight, and nothing is copied; it still checks
     // the result (non-finite force or torque).
-    auto voigtStep = [&](size_t tp, int i, int j, const double *del, double rsq, double radsum, double *state,
+    auto voigtStep = [&](size_t tp, int i, int j, const double *del, double rsq, double *state,
                          GbContactOutput &cout) {
-        const double radi = radius[i], radj = radius[j];
-        const double r = std::sqrt(rsq);
-        const double rinv = 1.0 / r;
-        const double n[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
-        const double r_eff = pairs_[tp].voigt.rolling ? radi * radj / radsum : 0.0;
-        if (granbond_voigt_compute_fields_unchecked(voigt_[tp], n, radsum - r, radi, radj, r_eff, row(v0, i),
-                                                    row(v0, j), row(w0, i), row(w0, j), dt, state,
-                                                    &cout) != GB_STATUS_OK)
-            failPair(i, j, "granbond_voigt_compute_fields_unchecked");
+        if (granbond_voigt_compute_separation_unchecked(voigt_[tp], del, rsq, radius[i], radius[j], row(v0, i),
+                                                        row(v0, j), row(w0, i), row(w0, j), dt, state,
+                                                        &cout) != GB_STATUS_OK)
+            failPair(i, j, "granbond_voigt_compute_separation_unchecked");
     };
 
-    // The setup pass: the loads of the stored state, not advanced (the
-    // core's evaluation in the frame voigtStep hands over, field by field).
-    auto voigtEvaluate = [&](size_t tp, int i, int j, const double *del, double rsq, double radsum,
-                             const double *state, GbContactOutput &cout) {
-        const double radi = radius[i], radj = radius[j];
-        const double r = std::sqrt(rsq);
-        const double rinv = 1.0 / r;
+    // The setup pass: the loads of the stored state, not advanced, in the
+    // frame voigtStep steps in.
+    auto voigtEvaluate = [&](size_t tp, int i, int j, const double *del, double rsq, const double *state,
+                             GbContactOutput &cout) {
         GbContactFrame frame;
-        frame.n[0] = del[0] * rinv;
-        frame.n[1] = del[1] * rinv;
-        frame.n[2] = del[2] * rinv;
-        frame.overlap = radsum - r;
-        frame.lever_i = radi;
-        frame.lever_j = radj;
-        frame.r_eff = pairs_[tp].voigt.rolling ? radi * radj / radsum : 0.0;
-        copy3(frame.v_i, row(v0, i));
-        copy3(frame.v_j, row(v0, j));
-        copy3(frame.w_i, row(w0, i));
-        copy3(frame.w_j, row(w0, j));
-        if (granbond_voigt_evaluate_frame(voigt_[tp], &frame, state, &cout) != GB_STATUS_OK)
+        if (granbond_contact_frame_separation(del, rsq, radius[i], radius[j], row(v0, i), row(v0, j), row(w0, i),
+                                              row(w0, j), &frame) != GB_STATUS_OK ||
+            granbond_voigt_evaluate_frame(voigt_[tp], &frame, state, &cout) != GB_STATUS_OK)
             failPair(i, j, "granbond_voigt_evaluate_frame");
     };
 
@@ -664,7 +644,7 @@ void PairGranbond::compute(int eflag, int vflag)
     // pairs, the setup pass), out of line: the plain contacts' loop stays
     // small.
     auto otherPair = [&](int i, int j, int jj, int *touch, double *history, const double *del, double rsq,
-                         double radsum, bool touching, size_t tp, const GbBondModel *bondModel)
+                         bool touching, size_t tp, const GbBondModel *bondModel)
                          __attribute__((noinline)) {
         double *state = history;
         if (!advance) {
@@ -702,7 +682,7 @@ void PairGranbond::compute(int eflag, int vflag)
                 p.touching = touching;
                 copy3(p.del, del);
                 if (touching)
-                    voigtStep(tp, i, j, del, rsq, radsum, contactState, p.contact);
+                    voigtStep(tp, i, j, del, rsq, contactState, p.contact);
                 else
                     for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
                 touch[jj] = 1;
@@ -722,9 +702,9 @@ void PairGranbond::compute(int eflag, int vflag)
         }
         GbContactOutput cout;
         if (touching && !advance) {
-            voigtEvaluate(tp, i, j, del, rsq, radsum, contactState, cout);
+            voigtEvaluate(tp, i, j, del, rsq, contactState, cout);
         } else if (touching) {
-            voigtStep(tp, i, j, del, rsq, radsum, contactState, cout);
+            voigtStep(tp, i, j, del, rsq, contactState, cout);
         } else {
             for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
         }
@@ -778,12 +758,12 @@ void PairGranbond::compute(int eflag, int vflag)
             if (!bondModel && advance) {     // plain contact, touching
                 touch[jj] = 1;
                 GbContactOutput cout;
-                voigtStep(tp, i, j, del, rsq, radsum, history, cout);
+                voigtStep(tp, i, j, del, rsq, history, cout);
                 apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
                 continue;
             }
 
-            otherPair(i, j, jj, touch, history, del, rsq, radsum, touching, tp, bondModel);
+            otherPair(i, j, jj, touch, history, del, rsq, touching, tp, bondModel);
         }
     }
     for (BondBatch &b : bondBatches_)

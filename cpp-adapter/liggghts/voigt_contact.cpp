@@ -138,15 +138,15 @@ static inline void subtractFrom(double &x, double d)
     v = v - d;
 }
 
-// The engine's description of a touching contact in the core's terms
-// (what granbond_contact_frame_pair / _plane compute, from the geometry the
-// engine has already worked out): for a pair the engine's unit normal en
-// (x_i - x_j over its length) and overlap deltan = radsum - r; for a wall the
-// sphere on the plane through the contact point with normal en, moving with
-// the wall velocity there. The vectors stay where the engine keeps them.
+// The engine's description of a touching contact as the core takes it:
+// the engine's unit normal en (x_i - x_j over its length), the centre
+// distance and the radii; for a wall (radius_j = 0) the centre's distance
+// from the plane through the contact point with normal en, the wall moving
+// with its velocity there. The core builds overlap, levers and R*. The
+// vectors stay where the engine keeps them.
 struct EngineContact {
     const double *n, *v_i, *v_j, *w_i, *w_j;
-    double overlap, lever_i, lever_j, r_eff;
+    double distance, radius_i, radius_j;
 };
 
 static const double NO_MOTION[3] = {0.0, 0.0, 0.0};
@@ -157,40 +157,30 @@ static inline EngineContact engineContact(const SurfacesIntersectData &d)
     c.n = d.en;
     c.v_i = d.v_i;
     c.w_i = d.omega_i;
-    c.lever_i = d.radi;
+    c.radius_i = d.radi;
     if (d.is_wall) {
         const double *const en = d.en;
-        c.overlap = d.radi - (fresh(d.delta[0]) * fresh(en[0]) + fresh(d.delta[1]) * fresh(en[1]) +
-                              fresh(d.delta[2]) * fresh(en[2]));
-        c.lever_j = 0.0;
-        c.r_eff = d.radi;
+        c.distance = fresh(d.delta[0]) * fresh(en[0]) + fresh(d.delta[1]) * fresh(en[1]) +
+                     fresh(d.delta[2]) * fresh(en[2]);
+        c.radius_j = 0.0;
         c.v_j = d.v_j ? d.v_j : NO_MOTION;
         c.w_j = NO_MOTION;
         return c;
     }
-    c.overlap = d.deltan;
-    c.lever_j = d.radj;
-    c.r_eff = d.radi * d.radj / (d.radi + d.radj);
+    c.distance = d.r;
+    c.radius_j = d.radj;
     c.v_j = d.v_j;
     c.w_j = d.omega_j;
     return c;
 }
 
-// The same as a core frame, for the calls that take one.
-static inline void engineFrame(const SurfacesIntersectData &d, GbContactFrame &f)
+// The core's frame of the contact, for the calls that take one.
+static inline void engineFrame(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, GbContactFrame &f)
 {
     const EngineContact c = engineContact(d);
-    for (int k = 0; k < 3; k++) {
-        f.n[k] = fresh(c.n[k]);
-        f.v_i[k] = c.v_i[k];
-        f.v_j[k] = c.v_j[k];
-        f.w_i[k] = c.w_i[k];
-        f.w_j[k] = c.w_j[k];
-    }
-    f.overlap = c.overlap;
-    f.lever_i = c.lever_i;
-    f.lever_j = c.lever_j;
-    f.r_eff = c.r_eff;
+    if (granbond_contact_frame_normal(c.n, c.distance, c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, &f) !=
+        GB_STATUS_OK)
+        voigtFailed(lmp, d, "model voigt");
 }
 
 // Adds a force on i (and its opposite on j for a pair) and the torques.
@@ -322,7 +312,7 @@ void VoigtNormal::normalPart(SurfacesIntersectData &sidata, ForceData &i_forces,
 {
     handOn(sidata);
     GbContactFrame &frame = share_->frame;
-    engineFrame(sidata, frame);
+    engineFrame(lmp, sidata, frame);
     double fn = 0.0;
     if (granbond_voigt_normal_force(models_.at(sidata.itype, sidata.jtype), &frame, &fn) != GB_STATUS_OK)
         voigtFailed(lmp, sidata, "model voigt");
@@ -356,7 +346,7 @@ void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_force
     if (state == scratch && !(sidata.computeflag && sidata.shearupdate)) {
         // setup or output pass: the loads of the stored state, not advanced
         GbContactFrame frame;
-        engineFrame(sidata, frame);
+        engineFrame(lmp, sidata, frame);
         if (granbond_voigt_evaluate_frame(share_->fusedModel(sidata.itype, sidata.jtype), &frame, scratch, &out) !=
             GB_STATUS_OK)
             voigtFailed(lmp, sidata, "model voigt");
@@ -367,9 +357,9 @@ void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_force
     // the frame's fields straight from the engine: no frame is built here
     // and read back by the core
     const EngineContact c = engineContact(sidata);
-    if (granbond_voigt_compute_fields_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.overlap,
-                                                c.lever_i, c.lever_j, c.r_eff, c.v_i, c.v_j, c.w_i, c.w_j,
-                                                update->dt, state, &out) != GB_STATUS_OK)
+    if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
+                                                c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt, state,
+                                                &out) != GB_STATUS_OK)
         voigtFailed(lmp, sidata, "model voigt");
     if (state == scratch && sidata.computeflag && sidata.shearupdate)
         for (int k = 0; k < 3; k++)
@@ -400,7 +390,7 @@ VoigtHistoryModel<EngineBase>::~VoigtHistoryModel()
 template<class EngineBase>
 double *VoigtHistoryModel<EngineBase>::begin(const SurfacesIntersectData &sidata, bool always, double *scratch)
 {
-    if (computesFrame_ || always) engineFrame(sidata, share_->frame);
+    if (computesFrame_ || always) engineFrame(this->lmp, sidata, share_->frame);
     double *const stored = &sidata.contact_history[offset_];
     if (sidata.computeflag && sidata.shearupdate) return stored;
     for (int k = 0; k < 3; k++)

@@ -1097,6 +1097,87 @@ enum GbStatus granbond_voigt_parameter_name(size_t id,
                                             const char **liggghts_name);
 
 /**
+ * `granbond_voigt_compute_fields_unchecked` for a touching pair given by
+ * its separation `del = x_i - x_j` (3 doubles) and `rsq = |del|^2`: the
+ * normal is `del / sqrt(rsq)` (one reciprocal), the overlap
+ * `(radius_i + radius_j) - sqrt(rsq)`, the levers the radii and `R*` (only
+ * with rolling) `R_i R_j / (R_i + R_j)`.
+ *
+ * # Safety
+ * As `granbond_voigt_compute_fields_unchecked`; `del` three doubles,
+ * `rsq > 0`.
+ */
+enum GbStatus granbond_voigt_compute_separation_unchecked(const struct GbVoigtModel *model,
+                                                          const double *del,
+                                                          double rsq,
+                                                          double radius_i,
+                                                          double radius_j,
+                                                          const double *v_i,
+                                                          const double *v_j,
+                                                          const double *w_i,
+                                                          const double *w_j,
+                                                          double dt,
+                                                          double *state,
+                                                          struct GbContactOutput *out);
+
+/**
+ * `granbond_voigt_compute_fields_unchecked` for a contact whose unit
+ * normal `n` (from `j` to `i`) the engine has built, with the centre
+ * distance `distance`; for a wall `radius_j = 0` and `distance` is the
+ * centre's distance from the wall along `n` (so the overlap is
+ * `radius_i - distance`, the lever of the wall 0 and `R* = R_i`).
+ *
+ * # Safety
+ * As `granbond_voigt_compute_fields_unchecked`.
+ */
+enum GbStatus granbond_voigt_compute_normal_unchecked(const struct GbVoigtModel *model,
+                                                      const double *n,
+                                                      double distance,
+                                                      double radius_i,
+                                                      double radius_j,
+                                                      const double *v_i,
+                                                      const double *v_j,
+                                                      const double *w_i,
+                                                      const double *w_j,
+                                                      double dt,
+                                                      double *state,
+                                                      struct GbContactOutput *out);
+
+/**
+ * The contact frame `granbond_voigt_compute_separation_unchecked` builds
+ * (with `R*` whatever the model), for the calls that take a frame.
+ *
+ * # Safety
+ * Pointers must be null or valid (`del`, `v_*`, `w_*` three doubles each).
+ */
+enum GbStatus granbond_contact_frame_separation(const double *del,
+                                                double rsq,
+                                                double radius_i,
+                                                double radius_j,
+                                                const double *v_i,
+                                                const double *v_j,
+                                                const double *w_i,
+                                                const double *w_j,
+                                                struct GbContactFrame *out);
+
+/**
+ * The contact frame `granbond_voigt_compute_normal_unchecked` builds
+ * (with `R*` whatever the model), for the calls that take a frame.
+ *
+ * # Safety
+ * Pointers must be null or valid (`n`, `v_*`, `w_*` three doubles each).
+ */
+enum GbStatus granbond_contact_frame_normal(const double *n,
+                                            double distance,
+                                            double radius_i,
+                                            double radius_j,
+                                            const double *v_i,
+                                            const double *v_j,
+                                            const double *w_i,
+                                            const double *w_j,
+                                            struct GbContactFrame *out);
+
+/**
  * Message of the last failed call on this thread ("" after a success).
  * Valid until the next granbond call on the same thread.
  */

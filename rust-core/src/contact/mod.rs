@@ -3,6 +3,7 @@
 //! (docs/models/voigt.md).
 
 pub mod friction_cap;
+pub mod geometry;
 pub mod model;
 pub mod normal;
 pub mod params;
@@ -10,6 +11,6 @@ pub mod rolling;
 pub mod state;
 pub mod tangential;
 
-pub use model::{ContactFrame, Plane, TangentialLoad, VoigtModel};
+pub use model::{sphere_plane, sphere_sphere, ContactFrame, Plane, TangentialLoad, VoigtModel};
 pub use params::{VoigtParams, VOIGT_PARAMETERS};
 pub use state::{ContactOutput, ContactState, CONTACT_SLOTS, CONTACT_STATE_LEN};

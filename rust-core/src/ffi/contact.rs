@@ -207,12 +207,12 @@ pub unsafe extern "C" fn granbond_voigt_compute_plane(
 /// fused multiply-add (not enabled, and never formed from separate
 /// operations), so the same bits; the baseline-vs-checked tests compare them.
 macro_rules! compiled_twice {
-    (fn $base:ident($($arg:ident: $ty:ty),* $(,)?) $body:block) => {
+    ($vis:vis fn $base:ident($($arg:ident: $ty:ty),* $(,)?) $body:block) => {
         // the entry only chooses (this is inlined into it); each copy is a
         // function of its own
         #[inline(always)]
         #[allow(clippy::too_many_arguments)]
-        unsafe fn $base($($arg: $ty),*) -> Status {
+        $vis unsafe fn $base($($arg: $ty),*) -> Status {
             #[inline(always)]
             #[allow(clippy::too_many_arguments)]
             unsafe fn body($($arg: $ty),*) -> Status $body
@@ -328,12 +328,26 @@ pub unsafe extern "C" fn granbond_voigt_compute_fields_unchecked(
     out: *mut ContactOutput,
 ) -> Status {
     fields_step(
-        model, n, overlap, lever_i, lever_j, r_eff, v_i, v_j, w_i, w_j, dt, state, out,
+        "granbond_voigt_compute_fields_unchecked",
+        model,
+        n,
+        overlap,
+        lever_i,
+        lever_j,
+        r_eff,
+        v_i,
+        v_j,
+        w_i,
+        w_j,
+        dt,
+        state,
+        out,
     )
 }
 
 compiled_twice! {
-    fn fields_step(
+    pub(super) fn fields_step(
+        function: &'static str,
         model: *const VoigtModel,
         n: *const f64,
         overlap: f64,
@@ -359,7 +373,6 @@ compiled_twice! {
             w_i: *(w_i as *const [f64; 3]),
             w_j: *(w_j as *const [f64; 3]),
         };
-        let function = "granbond_voigt_compute_fields_unchecked";
         step_unchecked(function, model, &frame, dt, state, out)
     }
 }
@@ -400,7 +413,7 @@ unsafe fn load(p: *const f64) -> f64 {
 }
 
 #[inline(always)]
-unsafe fn load3(p: *const [f64; 3]) -> [f64; 3] {
+pub(super) unsafe fn load3(p: *const [f64; 3]) -> [f64; 3] {
     let p = p as *const f64;
     [load(p), load(p.add(1)), load(p.add(2))]
 }

@@ -10,6 +10,7 @@ pub mod abi;
 pub mod bond;
 pub mod checks;
 pub mod contact;
+pub mod contact_geometry;
 pub mod error;
 pub mod guard;
 pub mod layout;

@@ -2282,7 +2282,10 @@ static int test_voigt_parts(void)
     GbContactOutput fast;
     double state_whole[GRANBOND_CONTACT_STATE_LEN], state_parts[GRANBOND_CONTACT_STATE_LEN];
     double state_fast[GRANBOND_CONTACT_STATE_LEN], state_fields[GRANBOND_CONTACT_STATE_LEN];
-    GbContactOutput fields;
+    double state_sep[GRANBOND_CONTACT_STATE_LEN], state_normal[GRANBOND_CONTACT_STATE_LEN];
+    GbContactOutput fields, sep, normal;
+    GbContactFrame built;
+    double del[3], rsq, distance;
     double fn = 0.0, v_rel[3], torque[3], spring[3] = {0.0, 0.0, 0.0}, angle[3] = {0.0, 0.0, 0.0};
     int32_t slip = 0;
     int step, c;
@@ -2296,6 +2299,8 @@ static int test_voigt_parts(void)
     memset(state_parts, 0, sizeof state_parts);
     memset(state_fast, 0, sizeof state_fast);
     memset(state_fields, 0, sizeof state_fields);
+    memset(state_sep, 0, sizeof state_sep);
+    memset(state_normal, 0, sizeof state_normal);
     for (step = 0; step < 4; step++) {
         contact_at(&k, 1.0e-5 + 1.0e-6 * step, 0.01);
         k.v_i[0] += 2.0e-3;
@@ -2318,7 +2323,38 @@ static int test_voigt_parts(void)
                   say("granbond_voigt_compute_fields_unchecked, step %d", step));
         CHECK(identical_contact_output(&fields, &fast) && memcmp(state_fields, state_fast, sizeof state_fast) == 0,
               say("step %d: unchecked step on the frame's fields = on the frame, bit for bit", step));
+        /* From the engine's geometry and the radii: the same frame, the same bits. */
+        for (c = 0; c < 3; c++)
+            del[c] = k.x_i[c] - k.x_j[c];
+        rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+        distance = sqrt(rsq);
+        EXPECT_OK(granbond_contact_frame_separation(del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j,
+                                                    &built),
+                  say("granbond_contact_frame_separation, step %d", step));
+        CHECK(memcmp(&built, &frame, sizeof built) == 0,
+              say("step %d: the frame from the separation = granbond_contact_frame_pair, bit for bit", step));
+        EXPECT_OK(granbond_contact_frame_normal(frame.n, distance, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j,
+                                                &built),
+                  say("granbond_contact_frame_normal, step %d", step));
+        CHECK(memcmp(&built, &frame, sizeof built) == 0,
+              say("step %d: the frame from the normal and distance = granbond_contact_frame_pair", step));
+        EXPECT_OK(granbond_voigt_compute_separation_unchecked(m, del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i,
+                                                              k.w_j, DT, state_sep, &sep),
+                  say("granbond_voigt_compute_separation_unchecked, step %d", step));
+        CHECK(identical_contact_output(&sep, &fast) && memcmp(state_sep, state_fast, sizeof state_fast) == 0,
+              say("step %d: unchecked step on the separation = on the frame, bit for bit", step));
+        EXPECT_OK(granbond_voigt_compute_normal_unchecked(m, frame.n, distance, k.radius_i, k.radius_j, k.v_i, k.v_j,
+                                                          k.w_i, k.w_j, DT, state_normal, &normal),
+                  say("granbond_voigt_compute_normal_unchecked, step %d", step));
+        CHECK(identical_contact_output(&normal, &fast) && memcmp(state_normal, state_fast, sizeof state_fast) == 0,
+              say("step %d: unchecked step on the normal and distance = on the frame, bit for bit", step));
     }
+    EXPECT_NULL_ARG(granbond_contact_frame_separation(NULL, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j,
+                                                      &built),
+                    "granbond_contact_frame_separation", "del");
+    EXPECT_NULL_ARG(granbond_contact_frame_normal(frame.n, distance, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j,
+                                                  NULL),
+                    "granbond_contact_frame_normal", "frame");
     bad = frame;
     bad.w_j[2] = NAN;
     EXPECT(granbond_voigt_compute_frame_unchecked(m, &bad, DT, state_fast, &fast), GB_STATUS_NON_FINITE_INPUT,

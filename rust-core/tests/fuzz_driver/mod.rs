@@ -32,6 +32,7 @@ use granbond::ffi::abi::{self, library_layout, Layout};
 use granbond::ffi::bond::{self as fb, AtomArrayPointers};
 use granbond::ffi::checks::{self as fk, CheckReport};
 use granbond::ffi::contact::{self as fc, TangentialOutput};
+use granbond::ffi::contact_geometry as fcg;
 use granbond::ffi::error::{granbond_last_error_message, granbond_last_error_parameter};
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::parameters::{self as fp, ParameterRow};
@@ -46,7 +47,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 52] = [
+pub const ENTRY_POINTS: [&str; 56] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -79,6 +80,10 @@ pub const ENTRY_POINTS: [&str; 52] = [
     "granbond_voigt_compute_frame_unchecked",
     "granbond_voigt_compute_fields_unchecked",
     "granbond_contact_frame_pair",
+    "granbond_voigt_compute_separation_unchecked",
+    "granbond_voigt_compute_normal_unchecked",
+    "granbond_contact_frame_separation",
+    "granbond_contact_frame_normal",
     "granbond_contact_frame_plane",
     "granbond_voigt_normal_force",
     "granbond_voigt_tangential",
@@ -1676,6 +1681,53 @@ impl<'t> Session<'t> {
         if self.answer_unchecked("granbond_voigt_compute_fields_unchecked", status) {
             self.check_unchecked_flags(&out);
         }
+        // the same contact as the engines hand it over: separation or
+        // normal and distance, with the radii (a wall as radius 0)
+        let distance = f.lever_i + f.lever_j - f.overlap;
+        let del = [f.n[0] * distance, f.n[1] * distance, f.n[2] * distance];
+        let rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+        let mut copy = self.pool[i];
+        // SAFETY: as above; `del` three doubles, `copy` a whole state.
+        let status = unsafe {
+            fcg::granbond_voigt_compute_separation_unchecked(
+                m,
+                del.as_ptr(),
+                rsq,
+                f.lever_i,
+                f.lever_j,
+                f.v_i.as_ptr(),
+                f.v_j.as_ptr(),
+                f.w_i.as_ptr(),
+                f.w_j.as_ptr(),
+                dt,
+                copy.as_mut_ptr(),
+                &mut out,
+            )
+        };
+        if rsq > 0.0 && self.answer_unchecked("granbond_voigt_compute_separation_unchecked", status) {
+            self.check_unchecked_flags(&out);
+        }
+        let mut copy = self.pool[i];
+        // SAFETY: as above.
+        let status = unsafe {
+            fcg::granbond_voigt_compute_normal_unchecked(
+                m,
+                f.n.as_ptr(),
+                distance,
+                f.lever_i,
+                f.lever_j,
+                f.v_i.as_ptr(),
+                f.v_j.as_ptr(),
+                f.w_i.as_ptr(),
+                f.w_j.as_ptr(),
+                dt,
+                copy.as_mut_ptr(),
+                &mut out,
+            )
+        };
+        if self.answer_unchecked("granbond_voigt_compute_normal_unchecked", status) {
+            self.check_unchecked_flags(&out);
+        }
     }
 
     fn check_unchecked_flags(&self, o: &ContactOutput) {
@@ -1705,6 +1757,49 @@ impl<'t> Session<'t> {
             self.frame = f.get();
             self.check_frame("granbond_contact_frame_pair", &(k.get()));
         }
+        // the frame from the separation or from a normal and a distance
+        let kin = k.get();
+        let mut del = Place::new([
+            kin.x_i[0] - kin.x_j[0],
+            kin.x_i[1] - kin.x_j[1],
+            kin.x_i[2] - kin.x_j[2],
+        ]);
+        let rsq = del.get().iter().map(|d| d * d).sum::<f64>();
+        let radius_j = if input.below(4) == 0 { 0.0 } else { kin.radius_j };
+        let mut v = Place::new(kin.v_i);
+        let (hd, hv, hf) = (input.pointer(), input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid.
+        let status = unsafe {
+            fcg::granbond_contact_frame_separation(
+                del.ptr(hd) as *const f64,
+                rsq,
+                kin.radius_i,
+                radius_j,
+                v.ptr(hv) as *const f64,
+                kin.v_j.as_ptr(),
+                kin.w_i.as_ptr(),
+                kin.w_j.as_ptr(),
+                f.ptr(hf),
+            )
+        };
+        self.answer("granbond_contact_frame_separation", status);
+        let n = self.frame.n;
+        let (hv, hf) = (input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid.
+        let status = unsafe {
+            fcg::granbond_contact_frame_normal(
+                n.as_ptr(),
+                rsq.sqrt(),
+                kin.radius_i,
+                radius_j,
+                v.ptr(hv) as *const f64,
+                kin.v_j.as_ptr(),
+                kin.w_i.as_ptr(),
+                kin.w_j.as_ptr(),
+                f.ptr(hf),
+            )
+        };
+        self.answer("granbond_contact_frame_normal", status);
     }
 
     fn frame_plane(&mut self, input: &mut Input) {

@@ -1,0 +1,181 @@
+//! Voigt entries that take the geometry an engine's pair loop has (the
+//! separation vector, or the engine's normal and centre distance) and the
+//! radii, a wall written as radius 0: the core builds the frame's normal,
+//! overlap, levers and `R*` ([`crate::contact::geometry`]).
+
+use super::contact::{fields_step, load3};
+use super::error::Status;
+use super::guard::{call, reference_mut, vector3};
+use crate::contact::geometry::{from_normal, from_separation, Geometry};
+use crate::contact::{ContactFrame, ContactOutput, VoigtModel};
+
+/// `granbond_voigt_compute_fields_unchecked` for a touching pair given by
+/// its separation `del = x_i - x_j` (3 doubles) and `rsq = |del|^2`: the
+/// normal is `del / sqrt(rsq)` (one reciprocal), the overlap
+/// `(radius_i + radius_j) - sqrt(rsq)`, the levers the radii and `R*` (only
+/// with rolling) `R_i R_j / (R_i + R_j)`.
+///
+/// # Safety
+/// As `granbond_voigt_compute_fields_unchecked`; `del` three doubles,
+/// `rsq > 0`.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_compute_separation_unchecked(
+    model: *const VoigtModel,
+    del: *const f64,
+    rsq: f64,
+    radius_i: f64,
+    radius_j: f64,
+    v_i: *const f64,
+    v_j: *const f64,
+    w_i: *const f64,
+    w_j: *const f64,
+    dt: f64,
+    state: *mut f64,
+    out: *mut ContactOutput,
+) -> Status {
+    let g = from_separation(
+        load3(del as *const [f64; 3]),
+        rsq,
+        radius_i,
+        radius_j,
+        (*model).rolling(),
+    );
+    let function = "granbond_voigt_compute_separation_unchecked";
+    step(function, model, &g, v_i, v_j, w_i, w_j, dt, state, out)
+}
+
+/// `granbond_voigt_compute_fields_unchecked` for a contact whose unit
+/// normal `n` (from `j` to `i`) the engine has built, with the centre
+/// distance `distance`; for a wall `radius_j = 0` and `distance` is the
+/// centre's distance from the wall along `n` (so the overlap is
+/// `radius_i - distance`, the lever of the wall 0 and `R* = R_i`).
+///
+/// # Safety
+/// As `granbond_voigt_compute_fields_unchecked`.
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_compute_normal_unchecked(
+    model: *const VoigtModel,
+    n: *const f64,
+    distance: f64,
+    radius_i: f64,
+    radius_j: f64,
+    v_i: *const f64,
+    v_j: *const f64,
+    w_i: *const f64,
+    w_j: *const f64,
+    dt: f64,
+    state: *mut f64,
+    out: *mut ContactOutput,
+) -> Status {
+    let g = from_normal(
+        load3(n as *const [f64; 3]),
+        distance,
+        radius_i,
+        radius_j,
+        (*model).rolling(),
+    );
+    let function = "granbond_voigt_compute_normal_unchecked";
+    step(function, model, &g, v_i, v_j, w_i, w_j, dt, state, out)
+}
+
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn step(
+    function: &'static str,
+    model: *const VoigtModel,
+    g: &Geometry,
+    v_i: *const f64,
+    v_j: *const f64,
+    w_i: *const f64,
+    w_j: *const f64,
+    dt: f64,
+    state: *mut f64,
+    out: *mut ContactOutput,
+) -> Status {
+    fields_step(
+        function,
+        model,
+        g.n.as_ptr(),
+        g.overlap,
+        g.lever_i,
+        g.lever_j,
+        g.r_eff,
+        v_i,
+        v_j,
+        w_i,
+        w_j,
+        dt,
+        state,
+        out,
+    )
+}
+
+#[allow(clippy::too_many_arguments)]
+unsafe fn frame(
+    g: Geometry,
+    v_i: *const f64,
+    v_j: *const f64,
+    w_i: *const f64,
+    w_j: *const f64,
+    out: *mut ContactFrame,
+) -> Result<(), super::error::Failure> {
+    let f = ContactFrame {
+        n: g.n,
+        overlap: g.overlap,
+        lever_i: g.lever_i,
+        lever_j: g.lever_j,
+        r_eff: g.r_eff,
+        v_i: vector3(v_i, "v_i")?,
+        v_j: vector3(v_j, "v_j")?,
+        w_i: vector3(w_i, "w_i")?,
+        w_j: vector3(w_j, "w_j")?,
+    };
+    *reference_mut(out, "frame")? = f;
+    Ok(())
+}
+
+/// The contact frame `granbond_voigt_compute_separation_unchecked` builds
+/// (with `R*` whatever the model), for the calls that take a frame.
+///
+/// # Safety
+/// Pointers must be null or valid (`del`, `v_*`, `w_*` three doubles each).
+#[no_mangle]
+pub unsafe extern "C" fn granbond_contact_frame_separation(
+    del: *const f64,
+    rsq: f64,
+    radius_i: f64,
+    radius_j: f64,
+    v_i: *const f64,
+    v_j: *const f64,
+    w_i: *const f64,
+    w_j: *const f64,
+    out: *mut ContactFrame,
+) -> Status {
+    call("granbond_contact_frame_separation", || {
+        let g = from_separation(vector3(del, "del")?, rsq, radius_i, radius_j, true);
+        frame(g, v_i, v_j, w_i, w_j, out)
+    })
+}
+
+/// The contact frame `granbond_voigt_compute_normal_unchecked` builds
+/// (with `R*` whatever the model), for the calls that take a frame.
+///
+/// # Safety
+/// Pointers must be null or valid (`n`, `v_*`, `w_*` three doubles each).
+#[no_mangle]
+pub unsafe extern "C" fn granbond_contact_frame_normal(
+    n: *const f64,
+    distance: f64,
+    radius_i: f64,
+    radius_j: f64,
+    v_i: *const f64,
+    v_j: *const f64,
+    w_i: *const f64,
+    w_j: *const f64,
+    out: *mut ContactFrame,
+) -> Status {
+    call("granbond_contact_frame_normal", || {
+        let g = from_normal(vector3(n, "n")?, distance, radius_i, radius_j, true);
+        frame(g, v_i, v_j, w_i, w_j, out)
+    })
+}
