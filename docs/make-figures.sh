@@ -7,6 +7,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=docs/figures
 mkdir -p "$out/data"
-cargo build --release -p granbond --example study
+cargo build --release -p granbond-scene --example study
 ./target/release/examples/study "$out/data" "$@"
 python3 docs/plots.py "$out/data" "$out"

@@ -3,7 +3,7 @@
 
     python3 docs/plots.py CSV_DIR FIG_DIR
 
-CSV_DIR is what `cargo run --release --example study -- CSV_DIR` wrote.
+CSV_DIR is what `cargo run --release -p granbond-scene --example study -- CSV_DIR` wrote.
 One PNG per figure in FIG_DIR; docs/make-figures.sh runs both steps.
 """
 import csv

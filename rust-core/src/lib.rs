@@ -4,7 +4,7 @@
 //!
 //! Every formula of the models (`docs/models/*.md`) lives in one
 //! module of [`bond`] or [`contact`]; the engine adapters and the scene runner
-//! only call them.
+//! (crate `granbond-scene`) only call them.
 
 pub mod bond;
 pub mod contact;
@@ -14,7 +14,6 @@ pub mod kinematics;
 pub mod pair_source;
 pub mod parameters;
 pub mod real;
-pub mod scene;
 pub mod stability;
 pub mod state_layout;
 pub mod timestep_check;

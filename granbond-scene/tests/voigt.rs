@@ -1,13 +1,14 @@
 //! The Voigt contact against closed forms: restitution, contact time,
 //! stick/slip at mu Fn, rolling at 5/7 v0, rolling resistance on rolling only.
 
+#[path = "../../rust-core/tests/common/mod.rs"]
 mod common;
 
 use common::{DENSITY, RADIUS};
 use granbond::contact::{ContactOutput, ContactState, Plane, VoigtModel, VoigtParams};
 use granbond::kinematics::PairKinematics;
-use granbond::scene::{Scene, Sphere};
 use granbond::vector::{v3, Vec3};
+use granbond_scene::{Scene, Sphere};
 
 fn voigt(p: VoigtParams) -> VoigtModel {
     VoigtModel::new(p).expect("valid parameters")

@@ -1,13 +1,13 @@
 //! The scene: spheres, bonds, contacts, planes, and one time step.
 
 use super::cells::close_pairs;
-use crate::bond::{BondModel, BondOutput, BondState, BondStatus, BreakMode};
-use crate::contact::model::{sphere_plane, sphere_sphere};
-use crate::contact::{ContactOutput, ContactState, Plane, VoigtModel};
-use crate::integrate::{symplectic_euler, Body};
-use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
-use crate::stability::sphere_inertia;
-use crate::vector::{v3, Vec3};
+use granbond::bond::{BondModel, BondOutput, BondState, BondStatus, BreakMode};
+use granbond::contact::model::{sphere_plane, sphere_sphere};
+use granbond::contact::{ContactOutput, ContactState, Plane, VoigtModel};
+use granbond::integrate::{symplectic_euler, Body};
+use granbond::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
+use granbond::stability::sphere_inertia;
+use granbond::vector::{v3, Vec3};
 use std::collections::HashMap;
 
 /// A sphere of the scene. A `fixed` sphere moves with its prescribed

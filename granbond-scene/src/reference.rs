@@ -6,10 +6,10 @@
 
 use super::builders::lattice_ball;
 use super::runner::{Scene, SceneError, Sphere};
-use crate::bond::section::section;
-use crate::bond::{BondModel, BondParams};
-use crate::stability::sphere_inertia;
-use crate::vector::Vec3;
+use granbond::bond::section::section;
+use granbond::bond::{BondModel, BondParams};
+use granbond::stability::sphere_inertia;
+use granbond::vector::Vec3;
 use nalgebra::{DMatrix, SymmetricEigen};
 use std::f64::consts::PI;
 use std::time::Instant;

@@ -1,20 +1,20 @@
 //! Command-line scene runner: runs the models without an engine and writes
 //! CSV (and VTK snapshots for the agglomerate).
 //!
-//!     cargo run --release --example scene -- agglomerate OUT_DIR [--steps N] [--speed V]
-//!     cargo run --release --example scene -- cycle OUT_DIR
-//!     cargo run --release --example scene -- collision OUT_DIR
+//!     cargo run --release -p granbond-scene --example scene -- agglomerate OUT_DIR [--steps N] [--speed V]
+//!     cargo run --release -p granbond-scene --example scene -- cycle OUT_DIR
+//!     cargo run --release -p granbond-scene --example scene -- collision OUT_DIR
 //!
 //! Progress goes to stderr; a summary line with the output files at the end.
 
 use granbond::bond::{BondModel, BondParams};
 use granbond::contact::{Plane, VoigtModel, VoigtParams};
 use granbond::kinematics::PairKinematics;
-use granbond::scene::builders::lattice_ball;
-use granbond::scene::csv::CsvWriter;
-use granbond::scene::vtk::write_snapshot;
-use granbond::scene::{Scene, Sphere};
 use granbond::vector::Vec3;
+use granbond_scene::builders::lattice_ball;
+use granbond_scene::csv::CsvWriter;
+use granbond_scene::vtk::write_snapshot;
+use granbond_scene::{Scene, Sphere};
 use std::fs::{self, File};
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};

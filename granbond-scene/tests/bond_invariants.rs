@@ -1,14 +1,15 @@
 //! Invariants of the assembled bond: Newton's third law, momentum,
 //! rigid-motion indifference, frame indifference, swap symmetry, damping.
 
+#[path = "../../rust-core/tests/common/mod.rs"]
 mod common;
 
 use common::*;
 use granbond::bond::{BondOutput, BondParams, BondState, BOND_SLOTS};
 use granbond::kinematics::PairKinematics;
-use granbond::scene::{Scene, Sphere};
 use granbond::state_layout::swap_state;
 use granbond::vector::{v3, Vec3};
+use granbond_scene::{Scene, Sphere};
 
 /// A loaded, moving, slightly oblique pair with history on every law.
 fn loaded_pair() -> (PairKinematics, BondState) {

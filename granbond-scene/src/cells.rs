@@ -1,7 +1,7 @@
 //! Cell-list search for pairs of spheres closer than a cut-off: O(N) for
 //! clusters of roughly uniform density.
 
-use crate::vector::Vec3;
+use granbond::vector::Vec3;
 use std::collections::HashMap;
 
 /// Every pair `(i, j)`, `i < j`, whose centres are closer than `cutoff`.

@@ -2,10 +2,10 @@
 //! around the defaults (at the step the defaults chose), overlaps down to
 //! 1e-15 of a radius, coincident centres and non-finite inputs. The region
 //! "silently wrong" (blew up, nothing reported) must stay empty. The study
-//! (`cargo run --release --example study -- sweep OUT`) runs a finer grid and
+//! (`cargo run --release -p granbond-scene --example study -- sweep OUT`) runs a finer grid and
 //! longer; this is the debug-fast version (a few seconds).
 
-use granbond::scene::sweep::*;
+use granbond_scene::sweep::*;
 
 fn report(cases: &[Case]) -> String {
     cases
@@ -97,7 +97,7 @@ fn the_recommended_step_is_a_fifth_of_the_estimate_and_keeps_a_six_bond_sphere_s
 #[test]
 fn without_tension_the_square_root_rattles_within_the_reported_noise_floor() {
     use granbond::bond::{BondModel, BondParams};
-    use granbond::scene::reference::{sphere_mass, study_bond, SqrtOscillator, DENSITY, RADIUS};
+    use granbond_scene::reference::{sphere_mass, study_bond, SqrtOscillator, DENSITY, RADIUS};
     // A sphere between two fixed ones, bonds in compression only, at rest
     // 1e-18 m from the middle: the plain square root's stiffness there is
     // 1e9 times the estimate's. It rattles up to a bounded amplitude (measured

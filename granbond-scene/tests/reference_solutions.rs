@@ -11,14 +11,14 @@
 //! something near it. Step sizes are fractions of the core's critical-step
 //! estimate `dt_c`.
 //!
-//! `cargo run --release --example study` measures the same quantities over
+//! `cargo run --release -p granbond-scene --example study` measures the same quantities over
 //! the whole range `1e-3 .. 1 dt_c` (docs/speed-accuracy.md).
 
 use granbond::bond::section::section;
 use granbond::bond::twist_bend::{BendHistory, TwistHistory};
 use granbond::bond::{BondModel, BondParams, BondState};
-use granbond::scene::reference::*;
 use granbond::vector::Vec3;
+use granbond_scene::reference::*;
 use nalgebra::DVector;
 use std::f64::consts::PI;
 

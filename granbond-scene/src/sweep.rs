@@ -7,9 +7,9 @@
 
 use super::reference::{study_bond, Noise, DENSITY, RADIUS};
 use super::runner::{Scene, Sphere};
-use crate::bond::{BondModel, BondParams, BondState};
-use crate::kinematics::PairKinematics;
-use crate::vector::Vec3;
+use granbond::bond::{BondModel, BondParams, BondState};
+use granbond::kinematics::PairKinematics;
+use granbond::vector::Vec3;
 
 /// What a run showed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -2,7 +2,7 @@
 //! reference scene's quantity against the step and the model variant, the
 //! cost of each, the stability sweep, and the kernels' cost per bond-step.
 //!
-//!     cargo run --release --example study -- OUT_DIR [--quick] [--repeat N]
+//!     cargo run --release -p granbond-scene --example study -- OUT_DIR [--quick] [--repeat N]
 //!
 //! Writes CSV files into OUT_DIR (docs/plots.py turns them into PNGs; the
 //! one command is docs/make-figures.sh). Wall times are the minimum of
@@ -11,10 +11,10 @@
 
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState};
 use granbond::kinematics::PairKinematics;
-use granbond::scene::csv::CsvWriter;
-use granbond::scene::reference::*;
-use granbond::scene::sweep::{self, Setup, Verdict};
-use granbond::scene::SceneError;
+use granbond_scene::csv::CsvWriter;
+use granbond_scene::reference::*;
+use granbond_scene::sweep::{self, Setup, Verdict};
+use granbond_scene::SceneError;
 use std::fs::{self, File};
 use std::io::{BufWriter, Write};
 use std::path::Path;

@@ -2,7 +2,7 @@
 //! cubic lattice.
 
 use super::runner::{Scene, Sphere};
-use crate::vector::Vec3;
+use granbond::vector::Vec3;
 
 /// Two spheres on the x axis, centres `distance` apart, sphere 0 at the origin.
 pub fn pair(scene: &mut Scene, radius: f64, density: f64, distance: f64) {
