@@ -1,11 +1,11 @@
-/* Cost of one Voigt contact through the core's unchecked entries, called the
- * way an engine adapter calls them: the frame written field by field just
- * before the call (granbond_voigt_compute_frame_unchecked), or its fields
- * passed from the engine's own arrays (granbond_voigt_compute_fields_unchecked);
- * the output read back one double at a time. 4096 touching contacts with
- * their own history (one copy per entry), best of 300 passes, the two
- * entries alternating: a pass is short enough to be rarely interrupted on a
- * shared machine. Built and run by
+/* Cost of one Voigt contact through the core's unchecked entry
+ * (granbond_voigt_compute_fields_unchecked), called the two ways an engine
+ * adapter can call it: the fields of a frame written field by field just
+ * before the call, or passed from the engine's own arrays; the output read
+ * back one double at a time. 4096 touching contacts with their own history
+ * (one copy per way), best of 300 passes, the two ways alternating: a pass
+ * is short enough to be rarely interrupted on a shared machine. Built and
+ * run by
  * bench/liggghts_voigt.sh --call. */
 #include "granbond.h"
 
@@ -42,7 +42,8 @@ static double pass(const GbVoigtModel *m, int fields)
             f.overlap = overlap[k], f.lever_i = 1e-3, f.lever_j = 1e-3, f.r_eff = 5e-4;
             for (int c = 0; c < 3; c++)
                 f.v_i[c] = vi[k][c], f.v_j[c] = vj[k][c], f.w_i[c] = wi[k][c], f.w_j[c] = wj[k][c];
-            s = granbond_voigt_compute_frame_unchecked(m, &f, 1e-6, history[0][k], &out);
+            s = granbond_voigt_compute_fields_unchecked(m, f.n, f.overlap, f.lever_i, f.lever_j, f.r_eff, f.v_i, f.v_j,
+                                                        f.w_i, f.w_j, 1e-6, history[0][k], &out);
         }
         const volatile double *const force = out.force_i;
         sum += (s == GB_STATUS_OK) ? force[0] + force[1] + force[2] : NAN;
@@ -69,7 +70,7 @@ int main(void)
         }
         overlap[k] = 1e-6 * (1.0 + 0.5 * sin(3.0 * k));
     }
-    const char *names[2] = {"frame written just before, granbond_voigt_compute_frame_unchecked",
+    const char *names[2] = {"frame written just before, granbond_voigt_compute_fields_unchecked",
                             "fields from the engine's arrays, granbond_voigt_compute_fields_unchecked"};
     double best[2] = {1e9, 1e9}, check = 0.0;
     for (int r = 0; r < PASSES; r++)

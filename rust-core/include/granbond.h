@@ -657,33 +657,18 @@ enum GbStatus granbond_bond_compute_batch(const struct GbBondModel *model,
                                           size_t *failed_index);
 
 /**
- * `granbond_bond_compute_batch` for states that lie apart in memory, as in
- * an engine's contact history: `states[k]` points to the
- * `GRANBOND_BOND_STATE_LEN` doubles of bond `k` (no two the same). Results
- * are those of one `granbond_bond_compute` per bond, bit for bit; an engine
- * collects the bonds of a pass and makes one call, so the core can process
- * several bonds per instruction. Stops at the first bad input and writes
- * its index to `failed_index` (if not null); a misaligned `failed_index`
- * and a null or misaligned `states[k]` are reported before any bond is
- * advanced.
- *
- * # Safety
- * Pointers must be null or valid for the sizes above.
- */
-enum GbStatus granbond_bond_compute_scattered(const struct GbBondModel *model,
-                                              size_t count,
-                                              const struct GbPairKinematics *kinematics,
-                                              double dt,
-                                              double **states,
-                                              struct GbBondOutput *out,
-                                              size_t *failed_index);
-
-/**
- * `granbond_bond_compute_scattered` with each bond's kinematics read from
+ * `granbond_bond_compute_batch` for bonds whose states lie apart in memory,
+ * as in an engine's contact history, and whose kinematics are read from
  * the engine's per-atom arrays: bond `k` joins atoms `pairs[2k]` (`i`) and
- * `pairs[2k + 1]` (`j`), so the engine copies nothing per bond. The same
- * results, bit for bit. An index outside `0 .. atoms->count` is reported
- * (with its bond in `failed_index`) before any bond is advanced.
+ * `pairs[2k + 1]` (`j`), so the engine copies nothing per bond, and
+ * `states[k]` points to the `GRANBOND_BOND_STATE_LEN` doubles of bond `k`
+ * (no two the same). Results are those of one `granbond_bond_compute` per
+ * bond, bit for bit; an engine collects the bonds of a pass and makes one
+ * call, so the core can process several bonds per instruction. Stops at
+ * the first bad input and writes its index to `failed_index` (if not
+ * null). A misaligned `failed_index`, a null or misaligned `states[k]`
+ * and an index outside `0 .. atoms->count` are reported (with its bond in
+ * `failed_index`) before any bond is advanced.
  *
  * # Safety
  * Pointers must be null or valid for the sizes above (`atoms->x`, `v`,
@@ -907,46 +892,29 @@ enum GbStatus granbond_voigt_compute_plane(const struct GbVoigtModel *model,
 
 /**
  * `granbond_voigt_compute` / `granbond_voigt_compute_plane` for a contact
- * whose frame the engine has already built (the same frame
- * `granbond_contact_frame_pair` / `granbond_contact_frame_plane` give), for
- * engines that call once per contact and step. The hot path: no pointer or
- * frame checks, and a success leaves the error record alone. The result is
- * checked: a non-finite force or torque (non-finite input) gives
- * `GB_STATUS_NON_FINITE_INPUT` with a message. Same physics, same bits as
- * the checked calls given the same frame.
+ * whose frame the engine has already built (the fields of the frame
+ * `granbond_contact_frame_pair` / `granbond_contact_frame_plane` give),
+ * handed over one by one, for engines that call once per contact and step
+ * and keep the fields in their own arrays: `n` (3 doubles, may have just
+ * been written: it is read one double at a time), the overlap, levers and
+ * `R*` by value, and the velocities `v_i`, `v_j`, `w_i`, `w_j` (3 doubles
+ * each) where the engine keeps them (they are read as the compiler likes:
+ * pass the engine's arrays rather than fresh copies). No frame is built
+ * and none is read back.
  *
- * The frame and the state are read one double at a time, and the result is
- * checked before it is stored (see [`load_frame`]). On a CPU with AVX2
- * (detected when a model is built) the step runs a copy compiled for AVX2:
- * same bits, fewer instructions.
- *
- * # Safety
- * None of the pointers may be null. `model` from
- * `granbond_voigt_model_new`; `frame` a frame with a unit normal and finite
- * numbers; `state` `GRANBOND_CONTACT_STATE_LEN` doubles; `out` valid for
- * writes; `dt` finite and >= 0.
- */
-enum GbStatus granbond_voigt_compute_frame_unchecked(const struct GbVoigtModel *model,
-                                                     const struct GbContactFrame *frame,
-                                                     double dt,
-                                                     double *state,
-                                                     struct GbContactOutput *out);
-
-/**
- * `granbond_voigt_compute_frame_unchecked` with the frame's fields handed
- * over one by one, for an engine that keeps them in its own arrays: `n`
- * (3 doubles, may have just been written: it is read one double at a
- * time), the overlap, levers and `R*` by value, and the velocities `v_i`,
- * `v_j`, `w_i`, `w_j` (3 doubles each) where the engine keeps them (they
- * are read as the compiler likes: pass the engine's arrays rather than
- * fresh copies). Same bits as the frame entry for the same numbers; no
- * frame is built and none is read back.
+ * The hot path: no pointer or frame checks, and a success leaves the error
+ * record alone. The result is checked: a non-finite force or torque
+ * (non-finite input) gives `GB_STATUS_NON_FINITE_INPUT` with a message.
+ * Same physics, same bits as the checked calls given the same frame. The
+ * normal and the state are read one double at a time, and the result is
+ * checked before it is stored. On a CPU with AVX2 (detected when a model
+ * is built) the step runs a copy compiled for AVX2: same bits, fewer
+ * instructions.
  *
  * # Safety
- * As `granbond_voigt_compute_frame_unchecked`: no pointer may be null,
- * `model` from `granbond_voigt_model_new`, `n` a unit vector, every number
- * finite, `state` `GRANBOND_CONTACT_STATE_LEN` doubles, `out` valid for
- * writes, `dt` finite and >= 0.
+ * No pointer may be null. `model` from `granbond_voigt_model_new`, `n` a
+ * unit vector, every number finite, `state` `GRANBOND_CONTACT_STATE_LEN`
+ * doubles, `out` valid for writes, `dt` finite and >= 0.
  */
 enum GbStatus granbond_voigt_compute_fields_unchecked(const struct GbVoigtModel *model,
                                                       const double *n,
@@ -1158,7 +1126,7 @@ enum GbStatus granbond_contact_frame_separation(const double *del,
                                                 const double *v_j,
                                                 const double *w_i,
                                                 const double *w_j,
-                                                struct GbContactFrame *out);
+                                                struct GbContactFrame *frame);
 
 /**
  * The contact frame `granbond_voigt_compute_normal_unchecked` builds
@@ -1175,7 +1143,7 @@ enum GbStatus granbond_contact_frame_normal(const double *n,
                                             const double *v_j,
                                             const double *w_i,
                                             const double *w_j,
-                                            struct GbContactFrame *out);
+                                            struct GbContactFrame *frame);
 
 /**
  * Message of the last failed call on this thread ("" after a success).

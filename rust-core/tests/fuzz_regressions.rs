@@ -7,8 +7,7 @@ use granbond::contact::{ContactFrame, Plane};
 use granbond::contact::{ContactOutput, VoigtModel, VoigtParams, CONTACT_STATE_LEN};
 use granbond::ffi::bond::{
     granbond_bond_compute, granbond_bond_compute_batch, granbond_bond_compute_indexed,
-    granbond_bond_compute_scattered, granbond_bond_critical_timestep, granbond_bond_recommended_timestep,
-    AtomArrayPointers,
+    granbond_bond_critical_timestep, granbond_bond_recommended_timestep, AtomArrayPointers,
 };
 use granbond::ffi::contact::{
     granbond_contact_frame_plane, granbond_voigt_compute, granbond_voigt_compute_batch,
@@ -90,20 +89,6 @@ fn a_misaligned_failed_index_is_refused_not_written_through() {
     expect_failed_index_refused("granbond_bond_compute_batch", status, &words);
 
     let mut states = [state.as_mut_ptr()];
-    let mut words = [0u64; 2];
-    // SAFETY: as above.
-    let status = unsafe {
-        granbond_bond_compute_scattered(
-            &model,
-            1,
-            &bad,
-            1e-7,
-            states.as_mut_ptr(),
-            &mut out,
-            misaligned(&mut words),
-        )
-    };
-    expect_failed_index_refused("granbond_bond_compute_scattered", status, &words);
 
     let (x, v, r) = ([0.0; 3], [0.0; 3], [1e-3]);
     let atoms = AtomArrayPointers {
@@ -303,13 +288,27 @@ fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
         .iter_mut()
         .map(|s| s as *mut BondState as *mut f64)
         .collect();
+    // bond b joins atoms 2b (i) and 2b + 1 (j)
+    let x: Vec<f64> = kin.iter().flat_map(|k| k.x_i.into_iter().chain(k.x_j)).collect();
+    let v: Vec<f64> = kin.iter().flat_map(|k| k.v_i.into_iter().chain(k.v_j)).collect();
+    let w: Vec<f64> = kin.iter().flat_map(|k| k.w_i.into_iter().chain(k.w_j)).collect();
+    let radius: Vec<f64> = kin.iter().flat_map(|k| [k.radius_i, k.radius_j]).collect();
+    let atoms = AtomArrayPointers {
+        x: x.as_ptr(),
+        v: v.as_ptr(),
+        omega: w.as_ptr(),
+        radius: radius.as_ptr(),
+        count: 4,
+    };
+    let pairs = [0i32, 1, 2, 3];
     failed = usize::MAX;
-    // SAFETY: as above, two distinct states.
+    // SAFETY: as above, four atoms, two distinct states.
     let status = unsafe {
-        granbond_bond_compute_scattered(
+        granbond_bond_compute_indexed(
             &model,
             2,
-            kin.as_ptr(),
+            &atoms,
+            pairs.as_ptr(),
             1e-7,
             pointers.as_mut_ptr(),
             out.as_mut_ptr(),

@@ -1,4 +1,4 @@
-//! `granbond_voigt_compute_frame_unchecked`, the engines' per-contact entry,
+//! `granbond_voigt_compute_fields_unchecked`, the engines' per-contact entry,
 //! gives the same bits as the checked calls for the same frame, over many
 //! steps of sticking, sliding and rolling contacts of pairs and walls; a
 //! non-finite result is still reported.
@@ -9,7 +9,7 @@ use common::RADIUS;
 use granbond::contact::{ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN};
 use granbond::ffi::contact::{
     granbond_contact_frame_pair, granbond_contact_frame_plane, granbond_voigt_compute,
-    granbond_voigt_compute_frame_unchecked, granbond_voigt_compute_plane,
+    granbond_voigt_compute_fields_unchecked, granbond_voigt_compute_plane,
 };
 use granbond::ffi::error::granbond_last_error_message;
 use granbond::ffi::Status;
@@ -32,6 +32,34 @@ impl Numbers {
     fn vec(&mut self, scale: f64) -> [f64; 3] {
         [self.next() * scale, self.next() * scale, self.next() * scale]
     }
+}
+
+/// The unchecked entry on the fields of `frame`.
+///
+/// # Safety
+/// `state` must hold `CONTACT_STATE_LEN` doubles.
+unsafe fn fields_unchecked(
+    model: &VoigtModel,
+    frame: &ContactFrame,
+    dt: f64,
+    state: *mut f64,
+    out: &mut ContactOutput,
+) -> Status {
+    granbond_voigt_compute_fields_unchecked(
+        model,
+        frame.n.as_ptr(),
+        frame.overlap,
+        frame.lever_i,
+        frame.lever_j,
+        frame.r_eff,
+        frame.v_i.as_ptr(),
+        frame.v_j.as_ptr(),
+        frame.w_i.as_ptr(),
+        frame.w_j.as_ptr(),
+        dt,
+        state,
+        out,
+    )
 }
 
 fn models() -> Vec<VoigtModel> {
@@ -100,8 +128,7 @@ fn pair_contacts_give_the_bits_of_granbond_voigt_compute() {
                         Status::Ok
                     );
                     assert_eq!(granbond_contact_frame_pair(&k, &mut frame), Status::Ok);
-                    let status =
-                        granbond_voigt_compute_frame_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
+                    let status = fields_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
                     assert_eq!(status, Status::Ok);
                 }
                 assert_same(
@@ -158,8 +185,7 @@ fn wall_contacts_give_the_bits_of_granbond_voigt_compute_plane() {
                         granbond_contact_frame_plane(&sphere, &plane, &mut frame),
                         Status::Ok
                     );
-                    let status =
-                        granbond_voigt_compute_frame_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
+                    let status = fields_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
                     assert_eq!(status, Status::Ok);
                 }
                 assert_same(
@@ -188,19 +214,18 @@ fn a_non_finite_result_is_reported() {
     let mut state = [0.0; CONTACT_STATE_LEN];
     let mut out = ContactOutput::default();
     unsafe {
-        let ok = granbond_voigt_compute_frame_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
+        let ok = fields_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
         assert_eq!(ok, Status::Ok);
         assert!(out.force_i[0] > 0.0);
         for bad in [f64::NAN, f64::INFINITY] {
             frame.v_i[1] = bad;
-            let status =
-                granbond_voigt_compute_frame_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
+            let status = fields_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
             assert_eq!(status, Status::NonFiniteInput, "v_i = {bad}");
             let message = CStr::from_ptr(granbond_last_error_message())
                 .to_string_lossy()
                 .into_owned();
             assert!(
-                message.contains("granbond_voigt_compute_frame_unchecked"),
+                message.contains("granbond_voigt_compute_fields_unchecked"),
                 "{message}"
             );
         }

@@ -1,7 +1,8 @@
 //! ABI version and the layout check adapters run at start-up.
 
+use super::entry;
 use super::error::{Failure, Status};
-use super::guard::{call, reference};
+use super::guard::reference;
 use crate::bond::{BondOutput, BondParams, BOND_STATE_LEN, WALL_BOND_STATE_LEN};
 use crate::contact::{ContactFrame, ContactOutput, Plane, VoigtParams, CONTACT_STATE_LEN};
 use crate::ffi::bond::{AtomArrayPointers, SphereKinematics};
@@ -76,6 +77,7 @@ pub fn library_layout() -> Layout {
 }
 
 /// ABI version of the loaded library.
+#[entry(or = 0)]
 #[no_mangle]
 pub extern "C" fn granbond_abi_version() -> u32 {
     GRANBOND_ABI_VERSION
@@ -86,58 +88,57 @@ pub extern "C" fn granbond_abi_version() -> u32 {
 ///
 /// # Safety
 /// `expected` must be null or point to a `GbLayout`.
+#[entry]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Status {
-    call("granbond_check_layout", || {
-        let l = library_layout();
-        let head = reference(expected as *const LayoutHead, "expected")?;
-        if head.abi_version != l.abi_version || head.layout_size != l.layout_size {
+    let l = library_layout();
+    let head = reference(expected as *const LayoutHead, "expected")?;
+    if head.abi_version != l.abi_version || head.layout_size != l.layout_size {
+        return Err(Failure::new(
+            Status::LayoutMismatch,
+            format!(
+                "abi_version {} / sizeof(GbLayout) {} in the caller but {} / {} in the library: rebuild the adapter against this header",
+                head.abi_version, head.layout_size, l.abi_version, l.layout_size
+            ),
+        ));
+    }
+    let e = reference(expected, "expected")?;
+    let items: [(&str, usize, usize); 15] = [
+        ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
+        ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
+        ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
+        (
+            "sizeof(GbSphereKinematics)",
+            e.sphere_kinematics,
+            l.sphere_kinematics,
+        ),
+        ("sizeof(GbPlane)", e.plane, l.plane),
+        ("sizeof(GbBondOutput)", e.bond_output, l.bond_output),
+        ("sizeof(GbAtomArrays)", e.atom_arrays, l.atom_arrays),
+        ("sizeof(GbContactOutput)", e.contact_output, l.contact_output),
+        ("sizeof(GbContactFrame)", e.contact_frame, l.contact_frame),
+        (
+            "sizeof(GbTangentialOutput)",
+            e.tangential_output,
+            l.tangential_output,
+        ),
+        ("sizeof(GbTypeBodies)", e.type_bodies, l.type_bodies),
+        ("sizeof(GbCheckReport)", e.check_report, l.check_report),
+        ("bond state length", e.bond_state_len, l.bond_state_len),
+        (
+            "wall bond state length",
+            e.wall_bond_state_len,
+            l.wall_bond_state_len,
+        ),
+        ("contact state length", e.contact_state_len, l.contact_state_len),
+    ];
+    for (name, caller, library) in items {
+        if caller != library {
             return Err(Failure::new(
                 Status::LayoutMismatch,
-                format!(
-                    "abi_version {} / sizeof(GbLayout) {} in the caller but {} / {} in the library: rebuild the adapter against this header",
-                    head.abi_version, head.layout_size, l.abi_version, l.layout_size
-                ),
+                format!("{name} is {caller} in the caller but {library} in the library: rebuild the adapter against this header"),
             ));
         }
-        let e = reference(expected, "expected")?;
-        let items: [(&str, usize, usize); 15] = [
-            ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
-            ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
-            ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
-            (
-                "sizeof(GbSphereKinematics)",
-                e.sphere_kinematics,
-                l.sphere_kinematics,
-            ),
-            ("sizeof(GbPlane)", e.plane, l.plane),
-            ("sizeof(GbBondOutput)", e.bond_output, l.bond_output),
-            ("sizeof(GbAtomArrays)", e.atom_arrays, l.atom_arrays),
-            ("sizeof(GbContactOutput)", e.contact_output, l.contact_output),
-            ("sizeof(GbContactFrame)", e.contact_frame, l.contact_frame),
-            (
-                "sizeof(GbTangentialOutput)",
-                e.tangential_output,
-                l.tangential_output,
-            ),
-            ("sizeof(GbTypeBodies)", e.type_bodies, l.type_bodies),
-            ("sizeof(GbCheckReport)", e.check_report, l.check_report),
-            ("bond state length", e.bond_state_len, l.bond_state_len),
-            (
-                "wall bond state length",
-                e.wall_bond_state_len,
-                l.wall_bond_state_len,
-            ),
-            ("contact state length", e.contact_state_len, l.contact_state_len),
-        ];
-        for (name, caller, library) in items {
-            if caller != library {
-                return Err(Failure::new(
-                    Status::LayoutMismatch,
-                    format!("{name} is {caller} in the caller but {library} in the library: rebuild the adapter against this header"),
-                ));
-            }
-        }
-        Ok(())
-    })
+    }
+    Ok(())
 }

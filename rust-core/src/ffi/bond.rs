@@ -1,8 +1,9 @@
 //! `extern "C"` surface of `bond/nonlinear`.
 
+use super::entry;
 use super::error::{Failure, Status};
 use super::guard::{
-    call, check_dt, parameter_c_names, reference, reference_mut, slice, slice_mut, vector3,
+    parameter_c_names, positive, reference, reference_mut, slice, slice_mut, time_step, vector3,
     write_parameter_name, FailedIndex,
 };
 use super::results;
@@ -11,8 +12,8 @@ use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
 };
+use crate::kinematics::PairKinematics;
 pub use crate::kinematics::SphereKinematics;
-use crate::kinematics::{KinematicsError, PairKinematics};
 use crate::pair_source::{AtomArrays, IndexedPairs};
 use std::ffi::{c_char, CString};
 use std::sync::OnceLock;
@@ -22,12 +23,11 @@ use std::sync::OnceLock;
 ///
 /// # Safety
 /// `params` must be null or valid for writes.
+#[entry(params: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_params_default(params: *mut BondParams) -> Status {
-    call("granbond_bond_params_default", || {
-        *reference_mut(params, "params")? = BondParams::default();
-        Ok(())
-    })
+    *params = BondParams::default();
+    Ok(())
 }
 
 /// Validates `params` and builds a model. On `InvalidParameter` the message
@@ -37,24 +37,24 @@ pub unsafe extern "C" fn granbond_bond_params_default(params: *mut BondParams) -
 /// # Safety
 /// `params` must be null or point to a `GbBondParams`; `model` null or valid
 /// for writes. Free the model with `granbond_bond_model_free`.
+#[entry(model: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_model_new(
     params: *const BondParams,
     model: *mut *mut BondModel,
 ) -> Status {
-    call("granbond_bond_model_new", || {
-        let out = reference_mut(model, "model")?;
-        *out = std::ptr::null_mut();
-        let m = BondModel::new(*reference(params, "params")?)?;
-        *out = Box::into_raw(Box::new(m));
-        Ok(())
-    })
+    // cleared before `params` is looked at: no failure leaves a pointer
+    *model = std::ptr::null_mut();
+    let m = BondModel::new(*reference(params, "params")?)?;
+    *model = Box::into_raw(Box::new(m));
+    Ok(())
 }
 
 /// Frees a model from `granbond_bond_model_new` (null is ignored).
 ///
 /// # Safety
 /// `model` must come from `granbond_bond_model_new` and not be used again.
+#[entry(or = ())]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_model_free(model: *mut BondModel) {
     if !model.is_null() {
@@ -64,6 +64,7 @@ pub unsafe extern "C" fn granbond_bond_model_free(model: *mut BondModel) {
 
 /// Number of rows in the bond parameter table (ids of
 /// `granbond_last_error_parameter`).
+#[entry(or = 0)]
 #[no_mangle]
 pub extern "C" fn granbond_bond_parameter_count() -> usize {
     PARAMETERS.len()
@@ -73,17 +74,16 @@ pub extern "C" fn granbond_bond_parameter_count() -> usize {
 ///
 /// # Safety
 /// `keyword` and `liggghts_name` must be null or valid for writes.
+#[entry(keyword: reference_mut, liggghts_name: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_parameter_name(
     id: usize,
     keyword: *mut *const c_char,
     liggghts_name: *mut *const c_char,
 ) -> Status {
-    call("granbond_bond_parameter_name", || {
-        static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
-        let names = NAMES.get_or_init(|| parameter_c_names(PARAMETERS));
-        write_parameter_name(names, id, keyword, liggghts_name)
-    })
+    static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
+    let names = NAMES.get_or_init(|| parameter_c_names(PARAMETERS));
+    write_parameter_name(names, id, keyword, liggghts_name)
 }
 
 /// The bond state as a struct view of a caller's `double[GRANBOND_BOND_STATE_LEN]`.
@@ -92,8 +92,18 @@ unsafe fn bond_state<'a>(state: *mut f64, name: &str) -> Result<&'a mut BondStat
     Ok(BondState::from_slots_mut(slots))
 }
 
-unsafe fn wall_state<'a>(state: *mut f64) -> Result<&'a mut WallBondState, Failure> {
-    let slots = reference_mut(state as *mut [f64; WALL_BOND_STATE_LEN], "state")?;
+/// The states of a batch as struct views of a caller's
+/// `double[count * GRANBOND_BOND_STATE_LEN]`.
+unsafe fn bond_states<'a>(
+    states: *mut f64,
+    count: usize,
+    name: &str,
+) -> Result<&'a mut [BondState], Failure> {
+    slice_mut(states as *mut BondState, count, name)
+}
+
+unsafe fn wall_state<'a>(state: *mut f64, name: &str) -> Result<&'a mut WallBondState, Failure> {
+    let slots = reference_mut(state as *mut [f64; WALL_BOND_STATE_LEN], name)?;
     // SAFETY: WallBondState is repr(C) of exactly WALL_BOND_STATE_LEN f64.
     Ok(&mut *(slots as *mut [f64; WALL_BOND_STATE_LEN] as *mut WallBondState))
 }
@@ -104,6 +114,7 @@ unsafe fn wall_state<'a>(state: *mut f64) -> Result<&'a mut WallBondState, Failu
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above.
+#[entry(model: reference, kinematics: reference, state: bond_state, created: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_try_create(
     model: *const BondModel,
@@ -112,14 +123,8 @@ pub unsafe extern "C" fn granbond_bond_try_create(
     state: *mut f64,
     created: *mut i32,
 ) -> Status {
-    call("granbond_bond_try_create", || {
-        let m = reference(model, "model")?;
-        let k = reference(kinematics, "kinematics")?;
-        let s = bond_state(state, "state")?;
-        let c = reference_mut(created, "created")?;
-        *c = m.try_create(k, step, s)? as i32;
-        Ok(())
-    })
+    *created = model.try_create(kinematics, step, state)? as i32;
+    Ok(())
 }
 
 /// Whether `granbond_bond_try_create` could create a bond at `step` for a
@@ -131,20 +136,15 @@ pub unsafe extern "C" fn granbond_bond_try_create(
 ///
 /// # Safety
 /// Pointers must be null or valid (`model` from `granbond_bond_model_new`).
+// a query, not a call that fails: no error record
+#[entry(or = 0, model: reference, state: reference)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_may_create(
     model: *const BondModel,
     state: *const f64,
     step: i64,
 ) -> i32 {
-    // the pointer checks every entry uses; no error record (a query, not a
-    // call that fails), and no panic can cross the boundary (there is none
-    // to expect: a comparison of a number and the parameters)
-    std::panic::catch_unwind(|| match (reference(model, "model"), reference(state, "state")) {
-        (Ok(m), Ok(&status)) => status_and_step_allow(&m.params, BondStatus::from_slot(status), step) as i32,
-        _ => 0,
-    })
-    .unwrap_or(0)
+    status_and_step_allow(&model.params, BondStatus::from_slot(*state), step) as i32
 }
 
 /// Creates the bond now, skipping the step rule (for bonds an engine forms
@@ -153,6 +153,7 @@ pub unsafe extern "C" fn granbond_bond_may_create(
 ///
 /// # Safety
 /// Pointers must be null or valid; `state` holds `GRANBOND_BOND_STATE_LEN` doubles.
+#[entry(model: reference, kinematics: reference, state: bond_state, created: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_create_now(
     model: *const BondModel,
@@ -160,14 +161,8 @@ pub unsafe extern "C" fn granbond_bond_create_now(
     state: *mut f64,
     created: *mut i32,
 ) -> Status {
-    call("granbond_bond_create_now", || {
-        let m = reference(model, "model")?;
-        let k = reference(kinematics, "kinematics")?;
-        let s = bond_state(state, "state")?;
-        let c = reference_mut(created, "created")?;
-        *c = m.create_now(k, s)? as i32;
-        Ok(())
-    })
+    *created = model.create_now(kinematics, state)? as i32;
+    Ok(())
 }
 
 /// Advances one bond by `dt`, updating `state` in place and writing the
@@ -176,6 +171,7 @@ pub unsafe extern "C" fn granbond_bond_create_now(
 ///
 /// # Safety
 /// Pointers must be null or valid; `state` holds `GRANBOND_BOND_STATE_LEN` doubles.
+#[entry(model: reference, kinematics: reference, state: bond_state, out: reference_mut, dt: time_step)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_compute(
     model: *const BondModel,
@@ -184,15 +180,8 @@ pub unsafe extern "C" fn granbond_bond_compute(
     state: *mut f64,
     out: *mut BondOutput,
 ) -> Status {
-    call("granbond_bond_compute", || {
-        let m = reference(model, "model")?;
-        let k = reference(kinematics, "kinematics")?;
-        let s = bond_state(state, "state")?;
-        let o = reference_mut(out, "out")?;
-        check_dt(dt)?;
-        m.step(k, dt, s, o)?;
-        results::bond(s, o)
-    })
+    model.step(kinematics, dt, state, out)?;
+    results::bond(state, out)
 }
 
 /// `granbond_bond_compute` over `count` bonds: `kinematics[count]`,
@@ -202,6 +191,14 @@ pub unsafe extern "C" fn granbond_bond_compute(
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above.
+#[entry(
+    model: reference,
+    failed_index: FailedIndex::new,
+    kinematics: slice(count),
+    states: bond_states(count),
+    out: slice_mut(count),
+    dt: time_step,
+)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_compute_batch(
     model: *const BondModel,
@@ -212,52 +209,10 @@ pub unsafe extern "C" fn granbond_bond_compute_batch(
     out: *mut BondOutput,
     failed_index: *mut usize,
 ) -> Status {
-    call("granbond_bond_compute_batch", || {
-        let m = reference(model, "model")?;
-        let failed = FailedIndex::new(failed_index)?;
-        let k = slice(kinematics, count, "kinematics")?;
-        let s = slice_mut(states as *mut BondState, count, "states")?;
-        let o = slice_mut(out, count, "out")?;
-        check_dt(dt)?;
-        let fail_at = |index: usize, f: Failure| {
-            failed.report(index);
-            Failure::new(f.status, format!("bond {index}: {}", f.message))
-        };
-        m.step_batch(k, dt, s, o)
-            .map_err(|(index, e)| fail_at(index, Failure::from(e)))?;
-        results::bonds(count, |k| &s[k], o).map_err(|(index, f)| fail_at(index, f))
-    })
-}
-
-/// `granbond_bond_compute_batch` for states that lie apart in memory, as in
-/// an engine's contact history: `states[k]` points to the
-/// `GRANBOND_BOND_STATE_LEN` doubles of bond `k` (no two the same). Results
-/// are those of one `granbond_bond_compute` per bond, bit for bit; an engine
-/// collects the bonds of a pass and makes one call, so the core can process
-/// several bonds per instruction. Stops at the first bad input and writes
-/// its index to `failed_index` (if not null); a misaligned `failed_index`
-/// and a null or misaligned `states[k]` are reported before any bond is
-/// advanced.
-///
-/// # Safety
-/// Pointers must be null or valid for the sizes above.
-#[no_mangle]
-pub unsafe extern "C" fn granbond_bond_compute_scattered(
-    model: *const BondModel,
-    count: usize,
-    kinematics: *const PairKinematics,
-    dt: f64,
-    states: *mut *mut f64,
-    out: *mut BondOutput,
-    failed_index: *mut usize,
-) -> Status {
-    call("granbond_bond_compute_scattered", || {
-        let failed = FailedIndex::new(failed_index)?;
-        let k = slice(kinematics, count, "kinematics")?;
-        scattered_states(model, count, dt, states, out, failed, |m, s, o| {
-            m.step_scattered(k, dt, s, o)
-        })
-    })
+    model
+        .step_batch(kinematics, dt, states, out)
+        .map_err(|(index, e)| failed_index.fail("bond", index, e.into()))?;
+    results::bonds(count, |k| &states[k], out).map_err(|(index, f)| failed_index.fail("bond", index, f))
 }
 
 /// The per-atom arrays of an engine (local and ghost atoms), as
@@ -274,15 +229,23 @@ pub struct AtomArrayPointers {
     pub count: usize,
 }
 
-/// `granbond_bond_compute_scattered` with each bond's kinematics read from
+/// `granbond_bond_compute_batch` for bonds whose states lie apart in memory,
+/// as in an engine's contact history, and whose kinematics are read from
 /// the engine's per-atom arrays: bond `k` joins atoms `pairs[2k]` (`i`) and
-/// `pairs[2k + 1]` (`j`), so the engine copies nothing per bond. The same
-/// results, bit for bit. An index outside `0 .. atoms->count` is reported
-/// (with its bond in `failed_index`) before any bond is advanced.
+/// `pairs[2k + 1]` (`j`), so the engine copies nothing per bond, and
+/// `states[k]` points to the `GRANBOND_BOND_STATE_LEN` doubles of bond `k`
+/// (no two the same). Results are those of one `granbond_bond_compute` per
+/// bond, bit for bit; an engine collects the bonds of a pass and makes one
+/// call, so the core can process several bonds per instruction. Stops at
+/// the first bad input and writes its index to `failed_index` (if not
+/// null). A misaligned `failed_index`, a null or misaligned `states[k]`
+/// and an index outside `0 .. atoms->count` are reported (with its bond in
+/// `failed_index`) before any bond is advanced.
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above (`atoms->x`, `v`,
 /// `omega`: `3 count` doubles; `radius`: `count`; `pairs`: `2 count` ints).
+#[entry(failed_index: FailedIndex::new, atoms: reference)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_compute_indexed(
     model: *const BondModel,
@@ -294,72 +257,45 @@ pub unsafe extern "C" fn granbond_bond_compute_indexed(
     out: *mut BondOutput,
     failed_index: *mut usize,
 ) -> Status {
-    call("granbond_bond_compute_indexed", || {
-        let failed = FailedIndex::new(failed_index)?;
-        let a = reference(atoms, "atoms")?;
-        let n = a.count;
-        // the arrays' sizes in bytes must fit an isize (slices)
-        let n3 = n
-            .checked_mul(3)
-            .filter(|&m| m <= isize::MAX as usize / std::mem::size_of::<f64>())
-            .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("atoms->count {n} is too large")))?;
-        let arrays = AtomArrays {
-            x: slice(a.x, n3, "atoms->x")?,
-            v: slice(a.v, n3, "atoms->v")?,
-            omega: slice(a.omega, n3, "atoms->omega")?,
-            radius: slice(a.radius, n, "atoms->radius")?,
-        };
-        let p = slice(pairs as *const [i32; 2], count, "pairs")?;
-        let kin = IndexedPairs::new(arrays, p).map_err(|e| {
-            failed.report(e.bond);
-            Failure::new(
-                Status::InvalidArgument,
-                format!(
-                    "bond {}: atom index {} outside the {} atoms of the arrays",
-                    e.bond, e.index, e.atoms
-                ),
-            )
-        })?;
-        scattered_states(model, count, dt, states, out, failed, |m, s, o| {
-            m.step_indexed(&kin, dt, s, o)
-        })
-    })
-}
-
-/// The part `granbond_bond_compute_scattered` and `_indexed` share: checks
-/// the model, every state pointer and `dt`, then steps; an error names its
-/// bond and writes its index to `failed_index`.
-unsafe fn scattered_states(
-    model: *const BondModel,
-    count: usize,
-    dt: f64,
-    states: *mut *mut f64,
-    out: *mut BondOutput,
-    failed: FailedIndex,
-    step: impl FnOnce(
-        &BondModel,
-        &mut [&mut BondState],
-        &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)>,
-) -> Result<(), Failure> {
-    let fail_at = |index: usize, f: Failure| {
-        failed.report(index);
-        Failure::new(f.status, format!("bond {index}: {}", f.message))
+    let n = atoms.count;
+    // the arrays' sizes in bytes must fit an isize (slices)
+    let n3 = n
+        .checked_mul(3)
+        .filter(|&m| m <= isize::MAX as usize / std::mem::size_of::<f64>())
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("atoms->count {n} is too large")))?;
+    let arrays = AtomArrays {
+        x: slice(atoms.x, n3, "atoms->x")?,
+        v: slice(atoms.v, n3, "atoms->v")?,
+        omega: slice(atoms.omega, n3, "atoms->omega")?,
+        radius: slice(atoms.radius, n, "atoms->radius")?,
     };
-    let m = reference(model, "model")?;
+    let p = slice(pairs as *const [i32; 2], count, "pairs")?;
+    let kinematics = IndexedPairs::new(arrays, p).map_err(|e| {
+        failed_index.report(e.bond);
+        Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "bond {}: atom index {} outside the {} atoms of the arrays",
+                e.bond, e.index, e.atoms
+            ),
+        )
+    })?;
+    let model = reference(model, "model")?;
     let pointers = slice(states as *const *mut f64, count, "states")?;
     for (index, &p) in pointers.iter().enumerate() {
-        bond_state(p, "states[k]").map_err(|f| fail_at(index, f))?;
+        bond_state(p, "states[k]").map_err(|f| failed_index.fail("bond", index, f))?;
     }
     // Every pointer is non-null and aligned, and `&mut BondState` has the
     // layout of `*mut f64` to a `BondState` (the array of pointers is
     // read, never written). Through `slice_mut`: `states` may be null
     // when `count` is 0.
-    let s = slice_mut(states as *mut &mut BondState, count, "states")?;
-    let o = slice_mut(out, count, "out")?;
-    check_dt(dt)?;
-    step(m, s, o).map_err(|(index, e)| fail_at(index, Failure::from(e)))?;
-    results::bonds(count, |k| &*s[k], o).map_err(|(index, f)| fail_at(index, f))
+    let states = slice_mut(states as *mut &mut BondState, count, "states")?;
+    let out = slice_mut(out, count, "out")?;
+    let dt = time_step(dt, "dt")?;
+    model
+        .step_indexed(&kinematics, dt, states, out)
+        .map_err(|(index, e)| failed_index.fail("bond", index, e.into()))?;
+    results::bonds(count, |k| &*states[k], out).map_err(|(index, f)| failed_index.fail("bond", index, f))
 }
 
 /// Bonds a sphere to a wall it touches at `contact_point` (`double[3]`)
@@ -367,6 +303,13 @@ unsafe fn scattered_states(
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above.
+#[entry(
+    model: reference,
+    sphere: reference,
+    contact_point: vector3,
+    state: wall_state,
+    created: reference_mut,
+)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_wall_bond_try_create(
     model: *const BondModel,
@@ -376,21 +319,22 @@ pub unsafe extern "C" fn granbond_wall_bond_try_create(
     state: *mut f64,
     created: *mut i32,
 ) -> Status {
-    call("granbond_wall_bond_try_create", || {
-        let m = reference(model, "model")?;
-        let sp = reference(sphere, "sphere")?;
-        let c = vector3(contact_point, "contact_point")?;
-        let s = wall_state(state)?;
-        let done = reference_mut(created, "created")?;
-        *done = m.try_create_wall(sp, c, step, s)? as i32;
-        Ok(())
-    })
+    *created = model.try_create_wall(sphere, contact_point, step, state)? as i32;
+    Ok(())
 }
 
 /// Advances a wall bond; the wall moves with `wall_velocity` (`double[3]`).
 ///
 /// # Safety
 /// Pointers must be null or valid; `state` holds `GRANBOND_WALL_BOND_STATE_LEN` doubles.
+#[entry(
+    model: reference,
+    sphere: reference,
+    wall_velocity: vector3,
+    state: wall_state,
+    out: reference_mut,
+    dt: time_step,
+)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_wall_bond_compute(
     model: *const BondModel,
@@ -400,17 +344,9 @@ pub unsafe extern "C" fn granbond_wall_bond_compute(
     state: *mut f64,
     out: *mut BondOutput,
 ) -> Status {
-    call("granbond_wall_bond_compute", || {
-        let m = reference(model, "model")?;
-        let sp = reference(sphere, "sphere")?;
-        let wv = vector3(wall_velocity, "wall_velocity")?;
-        let s = wall_state(state)?;
-        let o = reference_mut(out, "out")?;
-        check_dt(dt)?;
-        m.step_wall(sp, wv, dt, s, o)?;
-        results::bond(&s.bond, o)?;
-        results::vector("wall bond state", &s.partner)
-    })
+    model.step_wall(sphere, wall_velocity, dt, state, out)?;
+    results::bond(&state.bond, out)?;
+    results::vector("wall bond state", &state.partner)
 }
 
 /// Largest centre distance an intact bond of rest length `r0` reaches
@@ -419,23 +355,15 @@ pub unsafe extern "C" fn granbond_wall_bond_compute(
 ///
 /// # Safety
 /// Pointers must be null or valid.
+#[entry(model: reference, r0: positive, out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_max_distance(
     model: *const BondModel,
     r0: f64,
     out: *mut f64,
 ) -> Status {
-    call("granbond_bond_max_distance", || {
-        let m = reference(model, "model")?;
-        if !(r0.is_finite() && r0 > 0.0) {
-            return Err(Failure::new(
-                Status::InvalidArgument,
-                format!("r0 must be finite and > 0; got {r0}"),
-            ));
-        }
-        *reference_mut(out, "out")? = m.max_bond_distance(r0);
-        Ok(())
-    })
+    *out = model.max_bond_distance(r0);
+    Ok(())
 }
 
 /// Neighbour-list reach, as a multiple of `2 min_radius`, that keeps every
@@ -444,24 +372,15 @@ pub unsafe extern "C" fn granbond_bond_max_distance(
 ///
 /// # Safety
 /// Pointers must be null or valid.
+#[entry(model: reference, out: reference_mut, min_radius: positive)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_contact_distance_factor(
     model: *const BondModel,
     min_radius: f64,
     out: *mut f64,
 ) -> Status {
-    call("granbond_bond_contact_distance_factor", || {
-        let m = reference(model, "model")?;
-        let o = reference_mut(out, "out")?;
-        if !(min_radius.is_finite() && min_radius > 0.0) {
-            return Err(Failure::new(
-                Status::InvalidArgument,
-                format!("min_radius must be finite and > 0; got {min_radius}"),
-            ));
-        }
-        *o = m.contact_distance_factor(min_radius);
-        Ok(())
-    })
+    *out = model.contact_distance_factor(min_radius);
+    Ok(())
 }
 
 /// Critical time step of a bond of this type between spheres of the given
@@ -471,6 +390,7 @@ pub unsafe extern "C" fn granbond_bond_contact_distance_factor(
 ///
 /// # Safety
 /// Pointers must be null or valid.
+#[entry(model: reference, out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_critical_timestep(
     model: *const BondModel,
@@ -480,13 +400,12 @@ pub unsafe extern "C" fn granbond_bond_critical_timestep(
     mass_j: f64,
     out: *mut f64,
 ) -> Status {
-    pair_estimate(
-        "granbond_bond_critical_timestep",
+    *out = pair_estimate(
         model,
         [radius_i, radius_j, mass_i, mass_j],
-        out,
         BondModel::critical_timestep,
-    )
+    )?;
+    Ok(())
 }
 
 /// Recommended time step of a bond of this type between spheres of the
@@ -496,6 +415,7 @@ pub unsafe extern "C" fn granbond_bond_critical_timestep(
 ///
 /// # Safety
 /// Pointers must be null or valid.
+#[entry(model: reference, out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_recommended_timestep(
     model: *const BondModel,
@@ -505,48 +425,37 @@ pub unsafe extern "C" fn granbond_bond_recommended_timestep(
     mass_j: f64,
     out: *mut f64,
 ) -> Status {
-    pair_estimate(
-        "granbond_bond_recommended_timestep",
+    *out = pair_estimate(
         model,
         [radius_i, radius_j, mass_i, mass_j],
-        out,
         BondModel::recommended_timestep,
-    )
+    )?;
+    Ok(())
 }
 
 /// Body of every per-pair estimate call (critical and recommended time
-/// steps of bonds and contacts): checks the model, the output pointer and
-/// the radii and masses `[R_i, R_j, m_i, m_j]`, then evaluates `estimate`.
-///
-/// # Safety
-/// `model` and `out` must be null or valid.
-pub(crate) unsafe fn pair_estimate<M>(
-    function: &str,
-    model: *const M,
+/// steps of bonds and contacts): checks the radii and masses
+/// `[R_i, R_j, m_i, m_j]`, then evaluates `estimate`.
+pub(crate) fn pair_estimate<M>(
+    model: &M,
     bodies: [f64; 4],
-    out: *mut f64,
     estimate: fn(&M, f64, f64, f64, f64) -> f64,
-) -> Status {
-    call(function, || {
-        let m = reference(model, "model")?;
-        let o = reference_mut(out, "out")?;
-        let [radius_i, radius_j, mass_i, mass_j] = bodies;
-        check_bodies(radius_i, radius_j, mass_i, mass_j)?;
-        let dt = estimate(m, radius_i, radius_j, mass_i, mass_j);
-        // infinite is an answer (no stiffness: no limit); zero or NaN are
-        // the underflow or overflow of radii and masses far outside any
-        // physical range, not a limit
-        if !(dt > 0.0) {
-            return Err(Failure::new(
-                Status::InvalidArgument,
-                format!(
-                    "radius_i {radius_i}, radius_j {radius_j}, mass_i {mass_i}, mass_j {mass_j}: outside the range the estimate can evaluate (it gives {dt})"
-                ),
-            ));
-        }
-        *o = dt;
-        Ok(())
-    })
+) -> Result<f64, Failure> {
+    let [radius_i, radius_j, mass_i, mass_j] = bodies;
+    check_bodies(radius_i, radius_j, mass_i, mass_j)?;
+    let dt = estimate(model, radius_i, radius_j, mass_i, mass_j);
+    // infinite is an answer (no stiffness: no limit); zero or NaN are
+    // the underflow or overflow of radii and masses far outside any
+    // physical range, not a limit
+    if !(dt > 0.0) {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "radius_i {radius_i}, radius_j {radius_j}, mass_i {mass_i}, mass_j {mass_j}: outside the range the estimate can evaluate (it gives {dt})"
+            ),
+        ));
+    }
+    Ok(dt)
 }
 
 pub(crate) fn check_bodies(radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> Result<(), Failure> {
@@ -556,12 +465,7 @@ pub(crate) fn check_bodies(radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f6
         ("mass_i", mass_i),
         ("mass_j", mass_j),
     ] {
-        if !(x.is_finite() && x > 0.0) {
-            return Err(Failure::new(
-                Status::InvalidArgument,
-                format!("{name} must be finite and > 0; got {x}"),
-            ));
-        }
+        positive(x, name)?;
     }
     Ok(())
 }

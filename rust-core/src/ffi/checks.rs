@@ -3,8 +3,9 @@
 //! creation and break rules against each other. Each returns a report whose
 //! message the adapter prints as an engine warning.
 
+use super::entry;
 use super::error::{Failure, Status};
-use super::guard::{call, check_dt, reference, reference_mut, slice};
+use super::guard::{reference, reference_mut, slice, time_step};
 use crate::bond::creation_check::{findings, message, Naming};
 use crate::bond::{BondModel, BondParams};
 use crate::contact::VoigtModel;
@@ -94,45 +95,41 @@ unsafe fn style_name(style: *const c_char) -> Result<String, Failure> {
 /// Body of both time-step checks.
 #[allow(clippy::too_many_arguments)]
 unsafe fn timestep_check<M>(
-    function: &str,
     what: &str,
     models: *const *const M,
     ntypes: i32,
     bodies: *const TypeBodies,
     dt: f64,
     style: *const c_char,
-    out: *mut CheckReport,
+    report: &mut CheckReport,
     critical: fn(&M, f64, f64, f64, f64) -> f64,
-) -> Status {
-    call(function, || {
-        let report = reference_mut(out, "out")?;
-        report.clear();
-        check_dt(dt)?;
-        let style = style_name(style)?;
-        let (n, table, bodies) = tables(ntypes, models, bodies)?;
-        let verdict = scan(
-            n,
-            bodies,
-            |a, b| table[a * (n + 1) + b],
-            |m: &&M, ri, rj, mi, mj| critical(m, ri, rj, mi, mj),
-            dt,
+) -> Result<(), Failure> {
+    report.clear();
+    let dt = time_step(dt, "dt")?;
+    let style = style_name(style)?;
+    let (n, table, bodies) = tables(ntypes, models, bodies)?;
+    let verdict = scan(
+        n,
+        bodies,
+        |a, b| table[a * (n + 1) + b],
+        |m: &&M, ri, rj, mi, mj| critical(m, ri, rj, mi, mj),
+        dt,
+    )
+    .map_err(|(a, b, c)| {
+        Failure::new(
+            Status::InvalidArgument,
+            format!("atom types {a} and {b}: radii and masses outside the range the estimate can evaluate (it gives {c})"),
         )
-            .map_err(|(a, b, c)| {
-                Failure::new(
-                    Status::InvalidArgument,
-                    format!("atom types {a} and {b}: radii and masses outside the range the estimate can evaluate (it gives {c})"),
-                )
-            })?;
-        if let Some(v) = verdict {
-            report.type_a = v.type_a as i32;
-            report.type_b = v.type_b as i32;
-            report.critical = v.critical;
-            report.recommended = v.recommended;
-            report.write(v.level as i32, &v.message(&style, what, bodies));
-            debug_assert_eq!(report.level != 0, v.level != TimestepLevel::Safe);
-        }
-        Ok(())
-    })
+    })?;
+    if let Some(v) = verdict {
+        report.type_a = v.type_a as i32;
+        report.type_b = v.type_b as i32;
+        report.critical = v.critical;
+        report.recommended = v.recommended;
+        report.write(v.level as i32, &v.message(&style, what, bodies));
+        debug_assert_eq!(report.level != 0, v.level != TimestepLevel::Safe);
+    }
+    Ok(())
 }
 
 /// Checks the time step `dt` against the bonds of every pair of atom types
@@ -146,6 +143,7 @@ unsafe fn timestep_check<M>(
 /// # Safety
 /// Pointers must be null or valid for the sizes above; `style` a NUL
 /// terminated string.
+#[entry(out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_timestep_check(
     models: *const *const BondModel,
@@ -156,7 +154,6 @@ pub unsafe extern "C" fn granbond_bond_timestep_check(
     out: *mut CheckReport,
 ) -> Status {
     timestep_check(
-        "granbond_bond_timestep_check",
         "bond",
         models,
         ntypes,
@@ -172,6 +169,7 @@ pub unsafe extern "C" fn granbond_bond_timestep_check(
 ///
 /// # Safety
 /// As `granbond_bond_timestep_check`.
+#[entry(out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_timestep_check(
     models: *const *const VoigtModel,
@@ -182,7 +180,6 @@ pub unsafe extern "C" fn granbond_voigt_timestep_check(
     out: *mut CheckReport,
 ) -> Status {
     timestep_check(
-        "granbond_voigt_timestep_check",
         "contact",
         models,
         ntypes,
@@ -205,6 +202,7 @@ pub unsafe extern "C" fn granbond_voigt_timestep_check(
 ///
 /// # Safety
 /// As `granbond_bond_timestep_check`.
+#[entry(out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_creation_check(
     models: *const *const BondModel,
@@ -216,32 +214,29 @@ pub unsafe extern "C" fn granbond_bond_creation_check(
     style: *const c_char,
     out: *mut CheckReport,
 ) -> Status {
-    call("granbond_bond_creation_check", || {
-        let report = reference_mut(out, "out")?;
-        report.clear();
-        let naming = match naming {
-            0 => Naming::Lammps,
-            1 => Naming::Liggghts,
-            _ => {
-                return Err(Failure::new(
-                    Status::InvalidArgument,
-                    format!("naming must be 0 (LAMMPS) or 1 (LIGGGHTS); got {naming}"),
-                ))
-            }
-        };
-        let style = style_name(style)?;
-        let (n, models, bodies) = tables(ntypes, models, bodies)?;
-        let table: Vec<Option<BondParams>> = models.iter().map(|m| m.map(|m| m.params)).collect();
-        let wall = wall != 0;
-        let found = findings(n, bodies, |a, b| table[a * (n + 1) + b], first_step, wall);
-        let text: Vec<String> = found
-            .iter()
-            .map(|&(f, a, b)| {
-                let p = table[a * (n + 1) + b].expect("a finding has a model");
-                message(f, a, b, &p, bodies, first_step, wall, naming, &style)
-            })
-            .collect();
-        report.write(found.len() as i32, &text.join("\n"));
-        Ok(())
-    })
+    out.clear();
+    let naming = match naming {
+        0 => Naming::Lammps,
+        1 => Naming::Liggghts,
+        _ => {
+            return Err(Failure::new(
+                Status::InvalidArgument,
+                format!("naming must be 0 (LAMMPS) or 1 (LIGGGHTS); got {naming}"),
+            ))
+        }
+    };
+    let style = style_name(style)?;
+    let (n, models, bodies) = tables(ntypes, models, bodies)?;
+    let table: Vec<Option<BondParams>> = models.iter().map(|m| m.map(|m| m.params)).collect();
+    let wall = wall != 0;
+    let found = findings(n, bodies, |a, b| table[a * (n + 1) + b], first_step, wall);
+    let text: Vec<String> = found
+        .iter()
+        .map(|&(f, a, b)| {
+            let p = table[a * (n + 1) + b].expect("a finding has a model");
+            message(f, a, b, &p, bodies, first_step, wall, naming, &style)
+        })
+        .collect();
+    out.write(found.len() as i32, &text.join("\n"));
+    Ok(())
 }

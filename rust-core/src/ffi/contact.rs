@@ -1,8 +1,11 @@
 //! `extern "C"` surface of the Voigt contact.
 
 use super::bond::pair_estimate;
+use super::entry;
 use super::error::{record, Failure, Status};
-use super::guard::{call, check_dt, reference, reference_mut, slice, slice_mut, FailedIndex};
+use super::guard::{
+    array, array_mut, finite, reference, reference_mut, slice, slice_mut, time_step, FailedIndex,
+};
 use super::guard::{parameter_c_names, write_parameter_name};
 use super::results;
 use crate::contact::model::{sphere_plane, sphere_sphere};
@@ -19,12 +22,11 @@ use std::sync::OnceLock;
 ///
 /// # Safety
 /// `params` must be null or valid for writes.
+#[entry(params: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_params_default(params: *mut VoigtParams) -> Status {
-    call("granbond_voigt_params_default", || {
-        *reference_mut(params, "params")? = VoigtParams::default();
-        Ok(())
-    })
+    *params = VoigtParams::default();
+    Ok(())
 }
 
 /// Validates `params` and builds a model (see `granbond_bond_model_new`).
@@ -32,25 +34,25 @@ pub unsafe extern "C" fn granbond_voigt_params_default(params: *mut VoigtParams)
 /// # Safety
 /// `params` must be null or point to a `GbVoigtParams`; `model` null or
 /// valid for writes. Free with `granbond_voigt_model_free`.
+#[entry(model: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_model_new(
     params: *const VoigtParams,
     model: *mut *mut VoigtModel,
 ) -> Status {
-    call("granbond_voigt_model_new", || {
-        let out = reference_mut(model, "model")?;
-        *out = std::ptr::null_mut();
-        let m = VoigtModel::new(*reference(params, "params")?)?;
-        detect_cpu();
-        *out = Box::into_raw(Box::new(m));
-        Ok(())
-    })
+    // cleared before `params` is looked at: no failure leaves a pointer
+    *model = std::ptr::null_mut();
+    let m = VoigtModel::new(*reference(params, "params")?)?;
+    detect_cpu();
+    *model = Box::into_raw(Box::new(m));
+    Ok(())
 }
 
 /// Frees a model from `granbond_voigt_model_new` (null is ignored).
 ///
 /// # Safety
 /// `model` must come from `granbond_voigt_model_new` and not be used again.
+#[entry(or = ())]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_model_free(model: *mut VoigtModel) {
     if !model.is_null() {
@@ -58,9 +60,27 @@ pub unsafe extern "C" fn granbond_voigt_model_free(model: *mut VoigtModel) {
     }
 }
 
-unsafe fn contact_state<'a>(state: *mut f64) -> Result<&'a mut ContactState, Failure> {
-    let slots = reference_mut(state as *mut [f64; CONTACT_STATE_LEN], "state")?;
-    Ok(ContactState::from_slots_mut(slots))
+unsafe fn contact_state<'a>(state: *mut f64, name: &str) -> Result<&'a mut ContactState, Failure> {
+    Ok(ContactState::from_slots_mut(array_mut(state, name)?))
+}
+
+/// A stored state that is read, not advanced (a copy).
+unsafe fn held_state(state: *const f64, name: &str) -> Result<ContactState, Failure> {
+    let slots: &[f64; CONTACT_STATE_LEN] = array(state, name)?;
+    Ok(ContactState {
+        tangential_spring: [slots[0], slots[1], slots[2]],
+        rolling_angle: [slots[3], slots[4], slots[5]],
+    })
+}
+
+/// The states of a batch as struct views of a caller's
+/// `double[count * GRANBOND_CONTACT_STATE_LEN]`.
+unsafe fn contact_states<'a>(
+    states: *mut f64,
+    count: usize,
+    name: &str,
+) -> Result<&'a mut [ContactState], Failure> {
+    slice_mut(states as *mut ContactState, count, name)
 }
 
 /// Advances one sphere-sphere contact by `dt` (`state`:
@@ -69,6 +89,7 @@ unsafe fn contact_state<'a>(state: *mut f64) -> Result<&'a mut ContactState, Fai
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above.
+#[entry(model: reference, kinematics: reference, state: contact_state, out: reference_mut, dt: time_step)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_compute(
     model: *const VoigtModel,
@@ -77,15 +98,8 @@ pub unsafe extern "C" fn granbond_voigt_compute(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    call("granbond_voigt_compute", || {
-        let m = reference(model, "model")?;
-        let k = reference(kinematics, "kinematics")?;
-        let s = contact_state(state)?;
-        let o = reference_mut(out, "out")?;
-        check_dt(dt)?;
-        m.step(k, dt, s, o)?;
-        results::contact(s, o)
-    })
+    model.step(kinematics, dt, state, out)?;
+    results::contact(state, out)
 }
 
 /// `granbond_voigt_compute` over `count` contacts (`states[count *
@@ -95,6 +109,14 @@ pub unsafe extern "C" fn granbond_voigt_compute(
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above.
+#[entry(
+    model: reference,
+    failed_index: FailedIndex::new,
+    kinematics: slice(count),
+    states: contact_states(count),
+    out: slice_mut(count),
+    dt: time_step,
+)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_compute_batch(
     model: *const VoigtModel,
@@ -105,24 +127,13 @@ pub unsafe extern "C" fn granbond_voigt_compute_batch(
     out: *mut ContactOutput,
     failed_index: *mut usize,
 ) -> Status {
-    call("granbond_voigt_compute_batch", || {
-        let m = reference(model, "model")?;
-        let failed = FailedIndex::new(failed_index)?;
-        let k = slice(kinematics, count, "kinematics")?;
-        let s = slice_mut(states as *mut ContactState, count, "states")?;
-        let o = slice_mut(out, count, "out")?;
-        check_dt(dt)?;
-        let fail_at = |index: usize, f: Failure| {
-            failed.report(index);
-            Failure::new(f.status, format!("contact {index}: {}", f.message))
-        };
-        m.step_batch(k, dt, s, o)
-            .map_err(|(index, e)| fail_at(index, Failure::from(e)))?;
-        for (index, (s, o)) in s.iter().zip(o.iter()).enumerate() {
-            results::contact(s, o).map_err(|f| fail_at(index, f))?;
-        }
-        Ok(())
-    })
+    model
+        .step_batch(kinematics, dt, states, out)
+        .map_err(|(index, e)| failed_index.fail("contact", index, e.into()))?;
+    for (index, (s, o)) in states.iter().zip(out.iter()).enumerate() {
+        results::contact(s, o).map_err(|f| failed_index.fail("contact", index, f))?;
+    }
+    Ok(())
 }
 
 fn check_plane(sp: &SphereKinematics, pl: &Plane) -> Result<(), Failure> {
@@ -153,17 +164,6 @@ fn check_unit(n: &[f64; 3], what: &str) -> Result<(), Failure> {
     Ok(())
 }
 
-fn check_finite(x: f64, name: &str) -> Result<(), Failure> {
-    if x.is_finite() {
-        Ok(())
-    } else {
-        Err(Failure::new(
-            Status::NonFiniteInput,
-            format!("{name} must be finite; got {x}"),
-        ))
-    }
-}
-
 fn check_frame(f: &ContactFrame) -> Result<(), Failure> {
     let numbers = f.n.iter().chain(&f.v_i).chain(&f.v_j).chain(&f.w_i).chain(&f.w_j);
     let scalars = [f.overlap, f.lever_i, f.lever_j, f.r_eff];
@@ -178,6 +178,14 @@ fn check_frame(f: &ContactFrame) -> Result<(), Failure> {
 ///
 /// # Safety
 /// Pointers must be null or valid; `state` holds `GRANBOND_CONTACT_STATE_LEN` doubles.
+#[entry(
+    model: reference,
+    sphere: reference,
+    plane: reference,
+    state: contact_state,
+    out: reference_mut,
+    dt: time_step,
+)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_compute_plane(
     model: *const VoigtModel,
@@ -187,17 +195,9 @@ pub unsafe extern "C" fn granbond_voigt_compute_plane(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    call("granbond_voigt_compute_plane", || {
-        let m = reference(model, "model")?;
-        let sp = reference(sphere, "sphere")?;
-        let pl = reference(plane, "plane")?;
-        let s = contact_state(state)?;
-        let o = reference_mut(out, "out")?;
-        check_dt(dt)?;
-        check_plane(sp, pl)?;
-        m.step_frame(&sphere_plane(sp, pl), dt, s, o);
-        results::contact(s, o)
-    })
+    check_plane(sphere, plane)?;
+    model.step_frame(&sphere_plane(sphere, plane), dt, state, out);
+    results::contact(state, out)
 }
 
 /// The unchecked entries' bodies are compiled twice: for the x86-64
@@ -255,62 +255,30 @@ fn avx2() -> bool {
 }
 
 /// `granbond_voigt_compute` / `granbond_voigt_compute_plane` for a contact
-/// whose frame the engine has already built (the same frame
-/// `granbond_contact_frame_pair` / `granbond_contact_frame_plane` give), for
-/// engines that call once per contact and step. The hot path: no pointer or
-/// frame checks, and a success leaves the error record alone. The result is
-/// checked: a non-finite force or torque (non-finite input) gives
-/// `GB_STATUS_NON_FINITE_INPUT` with a message. Same physics, same bits as
-/// the checked calls given the same frame.
+/// whose frame the engine has already built (the fields of the frame
+/// `granbond_contact_frame_pair` / `granbond_contact_frame_plane` give),
+/// handed over one by one, for engines that call once per contact and step
+/// and keep the fields in their own arrays: `n` (3 doubles, may have just
+/// been written: it is read one double at a time), the overlap, levers and
+/// `R*` by value, and the velocities `v_i`, `v_j`, `w_i`, `w_j` (3 doubles
+/// each) where the engine keeps them (they are read as the compiler likes:
+/// pass the engine's arrays rather than fresh copies). No frame is built
+/// and none is read back.
 ///
-/// The frame and the state are read one double at a time, and the result is
-/// checked before it is stored (see [`load_frame`]). On a CPU with AVX2
-/// (detected when a model is built) the step runs a copy compiled for AVX2:
-/// same bits, fewer instructions.
-///
-/// # Safety
-/// None of the pointers may be null. `model` from
-/// `granbond_voigt_model_new`; `frame` a frame with a unit normal and finite
-/// numbers; `state` `GRANBOND_CONTACT_STATE_LEN` doubles; `out` valid for
-/// writes; `dt` finite and >= 0.
-#[no_mangle]
-pub unsafe extern "C" fn granbond_voigt_compute_frame_unchecked(
-    model: *const VoigtModel,
-    frame: *const ContactFrame,
-    dt: f64,
-    state: *mut f64,
-    out: *mut ContactOutput,
-) -> Status {
-    frame_step(model, frame, dt, state, out)
-}
-
-compiled_twice! {
-    fn frame_step(
-        model: *const VoigtModel,
-        frame: *const ContactFrame,
-        dt: f64,
-        state: *mut f64,
-        out: *mut ContactOutput,
-    ) {
-        let function = "granbond_voigt_compute_frame_unchecked";
-        step_unchecked(function, model, &load_frame(frame), dt, state, out)
-    }
-}
-
-/// `granbond_voigt_compute_frame_unchecked` with the frame's fields handed
-/// over one by one, for an engine that keeps them in its own arrays: `n`
-/// (3 doubles, may have just been written: it is read one double at a
-/// time), the overlap, levers and `R*` by value, and the velocities `v_i`,
-/// `v_j`, `w_i`, `w_j` (3 doubles each) where the engine keeps them (they
-/// are read as the compiler likes: pass the engine's arrays rather than
-/// fresh copies). Same bits as the frame entry for the same numbers; no
-/// frame is built and none is read back.
+/// The hot path: no pointer or frame checks, and a success leaves the error
+/// record alone. The result is checked: a non-finite force or torque
+/// (non-finite input) gives `GB_STATUS_NON_FINITE_INPUT` with a message.
+/// Same physics, same bits as the checked calls given the same frame. The
+/// normal and the state are read one double at a time, and the result is
+/// checked before it is stored. On a CPU with AVX2 (detected when a model
+/// is built) the step runs a copy compiled for AVX2: same bits, fewer
+/// instructions.
 ///
 /// # Safety
-/// As `granbond_voigt_compute_frame_unchecked`: no pointer may be null,
-/// `model` from `granbond_voigt_model_new`, `n` a unit vector, every number
-/// finite, `state` `GRANBOND_CONTACT_STATE_LEN` doubles, `out` valid for
-/// writes, `dt` finite and >= 0.
+/// No pointer may be null. `model` from `granbond_voigt_model_new`, `n` a
+/// unit vector, every number finite, `state` `GRANBOND_CONTACT_STATE_LEN`
+/// doubles, `out` valid for writes, `dt` finite and >= 0.
+#[entry(unchecked)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_compute_fields_unchecked(
     model: *const VoigtModel,
@@ -328,20 +296,7 @@ pub unsafe extern "C" fn granbond_voigt_compute_fields_unchecked(
     out: *mut ContactOutput,
 ) -> Status {
     fields_step(
-        "granbond_voigt_compute_fields_unchecked",
-        model,
-        n,
-        overlap,
-        lever_i,
-        lever_j,
-        r_eff,
-        v_i,
-        v_j,
-        w_i,
-        w_j,
-        dt,
-        state,
-        out,
+        FUNCTION, model, n, overlap, lever_i, lever_j, r_eff, v_i, v_j, w_i, w_j, dt, state, out,
     )
 }
 
@@ -406,7 +361,15 @@ unsafe fn step_unchecked(
     failure.status
 }
 
-/// One double of a record the engine has just written.
+/// One double of a record the engine has just written. The engine writes
+/// its records field by field just before the call, and the stores are
+/// still in flight when the kernel starts. A 16-byte load that spans two
+/// 8-byte stores cannot be served from the store buffer (store-to-load
+/// forwarding fails, the load waits until both stores reach the cache:
+/// about a dozen cycles, a few times per contact), and the compiler pairs
+/// neighbouring doubles into such loads at will. A volatile read keeps the
+/// load exactly one double wide: it is served by the store that wrote it,
+/// whatever width the engine's compiler chose.
 #[inline(always)]
 unsafe fn load(p: *const f64) -> f64 {
     std::ptr::read_volatile(p)
@@ -418,32 +381,8 @@ pub(super) unsafe fn load3(p: *const [f64; 3]) -> [f64; 3] {
     [load(p), load(p.add(1)), load(p.add(2))]
 }
 
-/// The engine writes the frame field by field just before the call, and
-/// the stores are still in flight when the kernel starts. A 16-byte load
-/// that spans two 8-byte stores cannot be served from the store buffer
-/// (store-to-load forwarding fails, the load waits until both stores reach
-/// the cache: about a dozen cycles, a few times per contact), and the
-/// compiler pairs neighbouring doubles into such loads at will. Volatile
-/// reads keep every load exactly one double wide: each is served by the
-/// store that wrote it, whatever width the engine's compiler chose.
-#[inline(always)]
-unsafe fn load_frame(f: *const ContactFrame) -> ContactFrame {
-    use std::ptr::addr_of;
-    ContactFrame {
-        n: load3(addr_of!((*f).n)),
-        overlap: load(addr_of!((*f).overlap)),
-        lever_i: load(addr_of!((*f).lever_i)),
-        lever_j: load(addr_of!((*f).lever_j)),
-        r_eff: load(addr_of!((*f).r_eff)),
-        v_i: load3(addr_of!((*f).v_i)),
-        v_j: load3(addr_of!((*f).v_j)),
-        w_i: load3(addr_of!((*f).w_i)),
-        w_j: load3(addr_of!((*f).w_j)),
-    }
-}
-
-/// The state as [`load_frame`] reads the frame (an engine may hand over a
-/// copy it has just made).
+/// The state one double at a time (an engine may hand over a copy it has
+/// just made).
 #[inline(always)]
 unsafe fn load_state(state: *const f64) -> ContactState {
     let p = state as *const [f64; 3];
@@ -458,40 +397,33 @@ unsafe fn load_state(state: *const f64) -> ContactState {
 ///
 /// # Safety
 /// Pointers must be null or valid.
+#[entry(kinematics: reference, frame: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_contact_frame_pair(
     kinematics: *const PairKinematics,
     frame: *mut ContactFrame,
 ) -> Status {
-    call("granbond_contact_frame_pair", || {
-        let k = reference(kinematics, "kinematics")?;
-        let f = reference_mut(frame, "frame")?;
-        *f = sphere_sphere(k)?;
-        Ok(())
-    })
+    *frame = sphere_sphere(kinematics)?;
+    Ok(())
 }
 
 /// The contact frame of a sphere on a plane wall.
 ///
 /// # Safety
 /// Pointers must be null or valid.
+#[entry(sphere: reference, plane: reference, frame: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_contact_frame_plane(
     sphere: *const SphereKinematics,
     plane: *const Plane,
     frame: *mut ContactFrame,
 ) -> Status {
-    call("granbond_contact_frame_plane", || {
-        let sp = reference(sphere, "sphere")?;
-        let pl = reference(plane, "plane")?;
-        let f = reference_mut(frame, "frame")?;
-        check_plane(sp, pl)?;
-        // finite input whose distance to the plane overflows
-        let built = sphere_plane(sp, pl);
-        check_frame(&built)?;
-        *f = built;
-        Ok(())
-    })
+    check_plane(sphere, plane)?;
+    // finite input whose distance to the plane overflows
+    let built = sphere_plane(sphere, plane);
+    check_frame(&built)?;
+    *frame = built;
+    Ok(())
 }
 
 /// Voigt normal force `k_n delta_n - gamma_n v_n` (clamped at zero when the
@@ -499,20 +431,16 @@ pub unsafe extern "C" fn granbond_contact_frame_plane(
 ///
 /// # Safety
 /// Pointers must be null or valid.
+#[entry(model: reference, frame: reference, normal_force: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_normal_force(
     model: *const VoigtModel,
     frame: *const ContactFrame,
     normal_force: *mut f64,
 ) -> Status {
-    call("granbond_voigt_normal_force", || {
-        let m = reference(model, "model")?;
-        let f = reference(frame, "frame")?;
-        let o = reference_mut(normal_force, "normal_force")?;
-        check_frame(f)?;
-        *o = m.normal_force(f);
-        results::vector("normal force", &[*o])
-    })
+    check_frame(frame)?;
+    *normal_force = model.normal_force(frame);
+    results::vector("normal force", &[*normal_force])
 }
 
 /// Tangential part of one Voigt step.
@@ -546,6 +474,7 @@ fn tangential_numbers(o: &TangentialOutput) -> [f64; 9] {
 ///
 /// # Safety
 /// Pointers must be null or valid; `spring` holds 3 doubles.
+#[entry(model: reference, frame: reference, spring: array_mut, out: reference_mut, dt: time_step)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_tangential(
     model: *const VoigtModel,
@@ -555,18 +484,11 @@ pub unsafe extern "C" fn granbond_voigt_tangential(
     spring: *mut f64,
     out: *mut TangentialOutput,
 ) -> Status {
-    call("granbond_voigt_tangential", || {
-        let m = reference(model, "model")?;
-        let f = reference(frame, "frame")?;
-        let s = reference_mut(spring as *mut [f64; 3], "spring")?;
-        let o = reference_mut(out, "out")?;
-        check_dt(dt)?;
-        check_frame(f)?;
-        check_finite(normal_force, "normal_force")?;
-        *o = m.tangential(f, normal_force, dt, s).into();
-        results::vector("tangential force or torque", &tangential_numbers(o))?;
-        results::vector("tangential spring", s)
-    })
+    check_frame(frame)?;
+    let normal_force = finite(normal_force, "normal_force")?;
+    *out = model.tangential(frame, normal_force, dt, spring).into();
+    results::vector("tangential force or torque", &tangential_numbers(out))?;
+    results::vector("tangential spring", spring)
 }
 
 /// Iwashita-Oda rolling torque on `i` (apply its negative to `j`); `angle`
@@ -575,6 +497,14 @@ pub unsafe extern "C" fn granbond_voigt_tangential(
 ///
 /// # Safety
 /// Pointers must be null or valid; `angle` and `torque_i` hold 3 doubles.
+#[entry(
+    model: reference,
+    frame: reference,
+    angle: array_mut,
+    torque_i: array_mut,
+    slip: reference_mut,
+    dt: time_step,
+)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_rolling(
     model: *const VoigtModel,
@@ -585,28 +515,20 @@ pub unsafe extern "C" fn granbond_voigt_rolling(
     torque_i: *mut f64,
     slip: *mut i32,
 ) -> Status {
-    call("granbond_voigt_rolling", || {
-        let m = reference(model, "model")?;
-        let f = reference(frame, "frame")?;
-        let a = reference_mut(angle as *mut [f64; 3], "angle")?;
-        let t = reference_mut(torque_i as *mut [f64; 3], "torque_i")?;
-        let sl = reference_mut(slip, "slip")?;
-        check_dt(dt)?;
-        check_frame(f)?;
-        check_finite(normal_force, "normal_force")?;
-        if !m.rolling() {
-            // Rolling resistance is off in this model: no torque, no memory.
-            *a = [0.0; 3];
-            *t = [0.0; 3];
-            *sl = 0;
-            return Ok(());
-        }
-        let (torque, capped) = m.rolling_torque(f, normal_force, dt, a);
-        *t = torque.into();
-        *sl = capped as i32;
-        results::vector("rolling torque", t)?;
-        results::vector("rolling angle", a)
-    })
+    check_frame(frame)?;
+    let normal_force = finite(normal_force, "normal_force")?;
+    if !model.rolling() {
+        // Rolling resistance is off in this model: no torque, no memory.
+        *angle = [0.0; 3];
+        *torque_i = [0.0; 3];
+        *slip = 0;
+        return Ok(());
+    }
+    let (torque, capped) = model.rolling_torque(frame, normal_force, dt, angle);
+    *torque_i = torque.into();
+    *slip = capped as i32;
+    results::vector("rolling torque", torque_i)?;
+    results::vector("rolling angle", angle)
 }
 
 /// The loads of a contact from its stored state without advancing it
@@ -619,6 +541,7 @@ pub unsafe extern "C" fn granbond_voigt_rolling(
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above.
+#[entry(model: reference, frame: reference, state: held_state, out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_evaluate_frame(
     model: *const VoigtModel,
@@ -626,19 +549,9 @@ pub unsafe extern "C" fn granbond_voigt_evaluate_frame(
     state: *const f64,
     out: *mut ContactOutput,
 ) -> Status {
-    call("granbond_voigt_evaluate_frame", || {
-        let m = reference(model, "model")?;
-        let f = reference(frame, "frame")?;
-        let slots = reference(state as *const [f64; CONTACT_STATE_LEN], "state")?;
-        let o = reference_mut(out, "out")?;
-        check_frame(f)?;
-        let s = ContactState {
-            tangential_spring: [slots[0], slots[1], slots[2]],
-            rolling_angle: [slots[3], slots[4], slots[5]],
-        };
-        m.evaluate_frame(f, &s, o);
-        results::contact(&s, o)
-    })
+    check_frame(frame)?;
+    model.evaluate_frame(frame, &state, out);
+    results::contact(&state, out)
 }
 
 /// `granbond_voigt_tangential` of the stored `spring` (3 doubles, read
@@ -646,6 +559,7 @@ pub unsafe extern "C" fn granbond_voigt_evaluate_frame(
 ///
 /// # Safety
 /// Pointers must be null or valid; `spring` holds 3 doubles.
+#[entry(model: reference, frame: reference, spring: array, out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_tangential_evaluate(
     model: *const VoigtModel,
@@ -654,16 +568,10 @@ pub unsafe extern "C" fn granbond_voigt_tangential_evaluate(
     spring: *const f64,
     out: *mut TangentialOutput,
 ) -> Status {
-    call("granbond_voigt_tangential_evaluate", || {
-        let m = reference(model, "model")?;
-        let f = reference(frame, "frame")?;
-        let s = reference(spring as *const [f64; 3], "spring")?;
-        let o = reference_mut(out, "out")?;
-        check_frame(f)?;
-        check_finite(normal_force, "normal_force")?;
-        *o = m.tangential_held(f, normal_force, s).into();
-        results::vector("tangential force or torque", &tangential_numbers(o))
-    })
+    check_frame(frame)?;
+    let normal_force = finite(normal_force, "normal_force")?;
+    *out = model.tangential_held(frame, normal_force, spring).into();
+    results::vector("tangential force or torque", &tangential_numbers(out))
 }
 
 /// `granbond_voigt_rolling` of the stored `angle` (3 doubles, read only),
@@ -671,6 +579,7 @@ pub unsafe extern "C" fn granbond_voigt_tangential_evaluate(
 ///
 /// # Safety
 /// Pointers must be null or valid; `angle` and `torque_i` hold 3 doubles.
+#[entry(model: reference, frame: reference, angle: array, torque_i: array_mut, slip: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_rolling_evaluate(
     model: *const VoigtModel,
@@ -680,23 +589,16 @@ pub unsafe extern "C" fn granbond_voigt_rolling_evaluate(
     torque_i: *mut f64,
     slip: *mut i32,
 ) -> Status {
-    call("granbond_voigt_rolling_evaluate", || {
-        let m = reference(model, "model")?;
-        let f = reference(frame, "frame")?;
-        let a = reference(angle as *const [f64; 3], "angle")?;
-        let t = reference_mut(torque_i as *mut [f64; 3], "torque_i")?;
-        let sl = reference_mut(slip, "slip")?;
-        check_frame(f)?;
-        check_finite(normal_force, "normal_force")?;
-        let (torque, capped) = if m.rolling() {
-            m.rolling_torque_held(f, normal_force, a)
-        } else {
-            (crate::vector::Vec3::zeros(), false)
-        };
-        *t = torque.into();
-        *sl = capped as i32;
-        results::vector("rolling torque", t)
-    })
+    check_frame(frame)?;
+    let normal_force = finite(normal_force, "normal_force")?;
+    let (torque, capped) = if model.rolling() {
+        model.rolling_torque_held(frame, normal_force, angle)
+    } else {
+        (crate::vector::Vec3::zeros(), false)
+    };
+    *torque_i = torque.into();
+    *slip = capped as i32;
+    results::vector("rolling torque", torque_i)
 }
 
 /// Critical time step of a contact of this type between spheres of the
@@ -704,6 +606,7 @@ pub unsafe extern "C" fn granbond_voigt_rolling_evaluate(
 ///
 /// # Safety
 /// Pointers must be null or valid.
+#[entry(model: reference, out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_critical_timestep(
     model: *const VoigtModel,
@@ -713,16 +616,16 @@ pub unsafe extern "C" fn granbond_voigt_critical_timestep(
     mass_j: f64,
     out: *mut f64,
 ) -> Status {
-    pair_estimate(
-        "granbond_voigt_critical_timestep",
+    *out = pair_estimate(
         model,
         [radius_i, radius_j, mass_i, mass_j],
-        out,
         VoigtModel::critical_timestep,
-    )
+    )?;
+    Ok(())
 }
 
 /// Number of rows in the Voigt parameter table.
+#[entry(or = 0)]
 #[no_mangle]
 pub extern "C" fn granbond_voigt_parameter_count() -> usize {
     VOIGT_PARAMETERS.len()
@@ -732,17 +635,16 @@ pub extern "C" fn granbond_voigt_parameter_count() -> usize {
 ///
 /// # Safety
 /// `keyword` and `liggghts_name` must be null or valid for writes.
+#[entry(keyword: reference_mut, liggghts_name: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_parameter_name(
     id: usize,
     keyword: *mut *const c_char,
     liggghts_name: *mut *const c_char,
 ) -> Status {
-    call("granbond_voigt_parameter_name", || {
-        static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
-        let names = NAMES.get_or_init(|| parameter_c_names(VOIGT_PARAMETERS));
-        write_parameter_name(names, id, keyword, liggghts_name)
-    })
+    static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
+    let names = NAMES.get_or_init(|| parameter_c_names(VOIGT_PARAMETERS));
+    write_parameter_name(names, id, keyword, liggghts_name)
 }
 
 #[cfg(test)]
@@ -772,8 +674,8 @@ mod tests {
     }
 
     #[test]
-    fn the_unchecked_entries_give_the_bits_of_the_kernel() {
-        // the entries run their AVX2 copies where the CPU has AVX2, the
+    fn the_unchecked_entry_gives_the_bits_of_the_kernel() {
+        // the entry runs its AVX2 copy where the CPU has AVX2, the
         // kernel called here its baseline code
         detect_cpu();
         let mut r = Numbers(0.3);
@@ -789,7 +691,6 @@ mod tests {
             for contact in 0..40 {
                 // even contacts: sphere pairs; odd: a sphere on a wall
                 let wall = contact % 2 == 1;
-                let mut sa = [0.0; CONTACT_STATE_LEN];
                 let (mut sb, mut sc) = (ContactState::default(), ContactState::default());
                 let radius = 1e-3 * (1.0 + 0.3 * r.next());
                 let d = r.vec(1.0);
@@ -812,12 +713,8 @@ mod tests {
                 for step in 0..100 {
                     // in and out of contact, slowly
                     f.overlap = 1e-6 * (r.next() + 0.3 + (step as f64 * 0.1).sin());
-                    let mut a = ContactOutput::default();
                     let (mut b, mut c) = (ContactOutput::default(), ContactOutput::default());
                     model.step_frame(&f, 1e-7, &mut sc, &mut c);
-                    let fast = unsafe {
-                        granbond_voigt_compute_frame_unchecked(&model, &f, 1e-7, sa.as_mut_ptr(), &mut a)
-                    };
                     let fields = unsafe {
                         granbond_voigt_compute_fields_unchecked(
                             &model,
@@ -835,17 +732,16 @@ mod tests {
                             &mut b,
                         )
                     };
-                    assert_eq!((fast, fields), (Status::Ok, Status::Ok));
+                    assert_eq!(fields, Status::Ok);
                     let what = format!("rolling {rolling} contact {contact} step {step}");
-                    assert_eq!(bits(&a, &sa), bits(&c, sc.as_slots()), "frame entry, {what}");
                     assert_eq!(
                         bits(&b, sb.as_slots()),
                         bits(&c, sc.as_slots()),
                         "fields entry, {what}"
                     );
-                    touching += a.touching;
-                    sliding += a.sliding;
-                    rolling_slips += a.rolling_slip;
+                    touching += b.touching;
+                    sliding += b.sliding;
+                    rolling_slips += b.rolling_slip;
                     f.w_i = f.w_i.map(|w| w * 0.97);
                 }
             }

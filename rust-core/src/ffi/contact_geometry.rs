@@ -4,8 +4,9 @@
 //! overlap, levers and `R*` ([`crate::contact::geometry`]).
 
 use super::contact::{fields_step, load3};
+use super::entry;
 use super::error::Status;
-use super::guard::{call, reference_mut, vector3};
+use super::guard::{reference_mut, vector3};
 use crate::contact::geometry::{from_normal, from_separation, Geometry};
 use crate::contact::{ContactFrame, ContactOutput, VoigtModel};
 
@@ -18,6 +19,7 @@ use crate::contact::{ContactFrame, ContactOutput, VoigtModel};
 /// # Safety
 /// As `granbond_voigt_compute_fields_unchecked`; `del` three doubles,
 /// `rsq > 0`.
+#[entry(unchecked)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_compute_separation_unchecked(
     model: *const VoigtModel,
@@ -40,8 +42,7 @@ pub unsafe extern "C" fn granbond_voigt_compute_separation_unchecked(
         radius_j,
         (*model).rolling(),
     );
-    let function = "granbond_voigt_compute_separation_unchecked";
-    step(function, model, &g, v_i, v_j, w_i, w_j, dt, state, out)
+    step(FUNCTION, model, &g, v_i, v_j, w_i, w_j, dt, state, out)
 }
 
 /// `granbond_voigt_compute_fields_unchecked` for a contact whose unit
@@ -52,6 +53,7 @@ pub unsafe extern "C" fn granbond_voigt_compute_separation_unchecked(
 ///
 /// # Safety
 /// As `granbond_voigt_compute_fields_unchecked`.
+#[entry(unchecked)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_compute_normal_unchecked(
     model: *const VoigtModel,
@@ -74,8 +76,7 @@ pub unsafe extern "C" fn granbond_voigt_compute_normal_unchecked(
         radius_j,
         (*model).rolling(),
     );
-    let function = "granbond_voigt_compute_normal_unchecked";
-    step(function, model, &g, v_i, v_j, w_i, w_j, dt, state, out)
+    step(FUNCTION, model, &g, v_i, v_j, w_i, w_j, dt, state, out)
 }
 
 #[inline(always)]
@@ -110,28 +111,18 @@ unsafe fn step(
     )
 }
 
-#[allow(clippy::too_many_arguments)]
-unsafe fn frame(
-    g: Geometry,
-    v_i: *const f64,
-    v_j: *const f64,
-    w_i: *const f64,
-    w_j: *const f64,
-    out: *mut ContactFrame,
-) -> Result<(), super::error::Failure> {
-    let f = ContactFrame {
+fn frame(g: Geometry, v_i: [f64; 3], v_j: [f64; 3], w_i: [f64; 3], w_j: [f64; 3]) -> ContactFrame {
+    ContactFrame {
         n: g.n,
         overlap: g.overlap,
         lever_i: g.lever_i,
         lever_j: g.lever_j,
         r_eff: g.r_eff,
-        v_i: vector3(v_i, "v_i")?,
-        v_j: vector3(v_j, "v_j")?,
-        w_i: vector3(w_i, "w_i")?,
-        w_j: vector3(w_j, "w_j")?,
-    };
-    *reference_mut(out, "frame")? = f;
-    Ok(())
+        v_i,
+        v_j,
+        w_i,
+        w_j,
+    }
 }
 
 /// The contact frame `granbond_voigt_compute_separation_unchecked` builds
@@ -139,6 +130,7 @@ unsafe fn frame(
 ///
 /// # Safety
 /// Pointers must be null or valid (`del`, `v_*`, `w_*` three doubles each).
+#[entry(del: vector3, v_i: vector3, v_j: vector3, w_i: vector3, w_j: vector3, frame: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_contact_frame_separation(
     del: *const f64,
@@ -149,12 +141,16 @@ pub unsafe extern "C" fn granbond_contact_frame_separation(
     v_j: *const f64,
     w_i: *const f64,
     w_j: *const f64,
-    out: *mut ContactFrame,
+    frame: *mut ContactFrame,
 ) -> Status {
-    call("granbond_contact_frame_separation", || {
-        let g = from_separation(vector3(del, "del")?, rsq, radius_i, radius_j, true);
-        frame(g, v_i, v_j, w_i, w_j, out)
-    })
+    *frame = self::frame(
+        from_separation(del, rsq, radius_i, radius_j, true),
+        v_i,
+        v_j,
+        w_i,
+        w_j,
+    );
+    Ok(())
 }
 
 /// The contact frame `granbond_voigt_compute_normal_unchecked` builds
@@ -162,6 +158,7 @@ pub unsafe extern "C" fn granbond_contact_frame_separation(
 ///
 /// # Safety
 /// Pointers must be null or valid (`n`, `v_*`, `w_*` three doubles each).
+#[entry(n: vector3, v_i: vector3, v_j: vector3, w_i: vector3, w_j: vector3, frame: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_contact_frame_normal(
     n: *const f64,
@@ -172,10 +169,14 @@ pub unsafe extern "C" fn granbond_contact_frame_normal(
     v_j: *const f64,
     w_i: *const f64,
     w_j: *const f64,
-    out: *mut ContactFrame,
+    frame: *mut ContactFrame,
 ) -> Status {
-    call("granbond_contact_frame_normal", || {
-        let g = from_normal(vector3(n, "n")?, distance, radius_i, radius_j, true);
-        frame(g, v_i, v_j, w_i, w_j, out)
-    })
+    *frame = self::frame(
+        from_normal(n, distance, radius_i, radius_j, true),
+        v_i,
+        v_j,
+        w_i,
+        w_j,
+    );
+    Ok(())
 }

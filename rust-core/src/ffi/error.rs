@@ -1,6 +1,7 @@
 //! One status type for every fallible call; the message of the last failure
 //! on this thread is fetched by a separate call (as rustls-ffi does).
 
+use super::entry;
 use crate::kinematics::KinematicsError;
 use crate::parameters::ParameterError;
 use std::cell::RefCell;
@@ -123,6 +124,7 @@ pub(crate) fn clear() {
 
 /// Message of the last failed call on this thread ("" after a success).
 /// Valid until the next granbond call on the same thread.
+#[entry(or = c"".as_ptr())]
 #[no_mangle]
 pub extern "C" fn granbond_last_error_message() -> *const c_char {
     LAST.with(|l| l.borrow().message.as_ptr())
@@ -130,6 +132,7 @@ pub extern "C" fn granbond_last_error_message() -> *const c_char {
 
 /// Parameter id (row of the model's parameter table) of the last
 /// `InvalidParameter` failure on this thread, or -1.
+#[entry(or = -1)]
 #[no_mangle]
 pub extern "C" fn granbond_last_error_parameter() -> i32 {
     LAST.with(|l| l.borrow().parameter)

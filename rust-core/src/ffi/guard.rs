@@ -1,5 +1,7 @@
 //! The one wrapper every fallible `extern "C"` function goes through, and
-//! the pointer checks they share.
+//! the argument checks they share. Each check takes the argument, any
+//! further arguments it needs, and the argument's name for the message, as
+//! `#[entry(argument: check(further))]` calls it.
 
 use super::error::{clear, record, Failure, Status};
 use crate::parameters::ParameterInfo;
@@ -99,9 +101,9 @@ impl FailedIndex {
     /// # Safety
     /// A non-null `ptr` must be valid for writes of a `usize` while the
     /// result is used.
-    pub unsafe fn new(ptr: *mut usize) -> Result<Self, Failure> {
+    pub unsafe fn new(ptr: *mut usize, name: &str) -> Result<Self, Failure> {
         if !ptr.is_null() {
-            check(ptr, "failed_index")?;
+            check(ptr, name)?;
         }
         Ok(Self(ptr))
     }
@@ -112,16 +114,47 @@ impl FailedIndex {
             unsafe { *self.0 = index };
         }
     }
+
+    /// Reports `index` and names it (`what` the kind of element, "bond" or
+    /// "contact") in the failure's message.
+    pub fn fail(self, what: &str, index: usize, f: Failure) -> Failure {
+        self.report(index);
+        Failure::new(f.status, format!("{what} {index}: {}", f.message))
+    }
 }
 
 /// A time step must be finite and non-negative.
-pub fn check_dt(dt: f64) -> Result<(), Failure> {
+pub fn time_step(dt: f64, name: &str) -> Result<f64, Failure> {
     if dt.is_finite() && dt >= 0.0 {
-        Ok(())
+        Ok(dt)
     } else {
         Err(Failure::new(
             Status::InvalidArgument,
-            format!("time step dt must be finite and >= 0; got {dt}"),
+            format!("time step {name} must be finite and >= 0; got {dt}"),
+        ))
+    }
+}
+
+/// A length or a mass must be finite and positive.
+pub fn positive(x: f64, name: &str) -> Result<f64, Failure> {
+    if x.is_finite() && x > 0.0 {
+        Ok(x)
+    } else {
+        Err(Failure::new(
+            Status::InvalidArgument,
+            format!("{name} must be finite and > 0; got {x}"),
+        ))
+    }
+}
+
+/// A number taken as it is must be finite.
+pub fn finite(x: f64, name: &str) -> Result<f64, Failure> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(Failure::new(
+            Status::NonFiniteInput,
+            format!("{name} must be finite; got {x}"),
         ))
     }
 }
@@ -131,8 +164,23 @@ pub fn check_dt(dt: f64) -> Result<(), Failure> {
 /// # Safety
 /// A non-null `ptr` must point to three doubles.
 pub unsafe fn vector3(ptr: *const f64, name: &str) -> Result<[f64; 3], Failure> {
-    let s = slice(ptr, 3, name)?;
-    Ok([s[0], s[1], s[2]])
+    Ok(*array(ptr, name)?)
+}
+
+/// `N` doubles at `ptr`, as an array.
+///
+/// # Safety
+/// A non-null `ptr` must point to `N` doubles for the returned lifetime.
+pub unsafe fn array<'a, const N: usize>(ptr: *const f64, name: &str) -> Result<&'a [f64; N], Failure> {
+    reference(ptr as *const [f64; N], name)
+}
+
+/// Mutable counterpart of [`array`].
+///
+/// # Safety
+/// A non-null `ptr` must point to `N` unaliased doubles.
+pub unsafe fn array_mut<'a, const N: usize>(ptr: *mut f64, name: &str) -> Result<&'a mut [f64; N], Failure> {
+    reference_mut(ptr as *mut [f64; N], name)
 }
 
 /// C strings of a parameter table's names, built once per table.
@@ -149,17 +197,12 @@ pub fn parameter_c_names<T>(table: &[ParameterInfo<T>]) -> Vec<(CString, CString
 }
 
 /// Writes row `id` of `names` to the caller's pointers.
-///
-/// # Safety
-/// `keyword` and `liggghts_name` must be null or valid for writes.
-pub unsafe fn write_parameter_name(
+pub fn write_parameter_name(
     names: &'static [(CString, CString)],
     id: usize,
-    keyword: *mut *const c_char,
-    liggghts_name: *mut *const c_char,
+    keyword: &mut *const c_char,
+    liggghts_name: &mut *const c_char,
 ) -> Result<(), Failure> {
-    let keyword = reference_mut(keyword, "keyword")?;
-    let liggghts_name = reference_mut(liggghts_name, "liggghts_name")?;
     let (k, l) = names
         .get(id)
         .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?;

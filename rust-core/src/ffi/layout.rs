@@ -2,8 +2,9 @@
 //! them with their engine (names for restart files and dumps, swap rules
 //! for the engine's history transfer).
 
+use super::entry;
 use super::error::{Failure, Status};
-use super::guard::{call, reference_mut};
+use super::guard::reference_mut;
 use crate::bond::{BOND_SLOTS, WALL_BOND_SLOTS};
 use crate::contact::CONTACT_SLOTS;
 use crate::state_layout::StateSlot;
@@ -37,7 +38,8 @@ fn c_names(kind: StateKind) -> &'static [CString] {
     })
 }
 
-fn kind_from(raw: i32) -> Result<StateKind, Failure> {
+/// A `GbStateKind` value as the caller passes it.
+fn state_kind(raw: i32, _name: &str) -> Result<StateKind, Failure> {
     match raw {
         0 => Ok(StateKind::Bond),
         1 => Ok(StateKind::WallBond),
@@ -51,12 +53,10 @@ fn kind_from(raw: i32) -> Result<StateKind, Failure> {
 
 /// Number of `double` slots in a state array of `kind` (a `GbStateKind`
 /// value; 0 for an unknown kind).
+#[entry(or = 0, kind: state_kind)]
 #[no_mangle]
 pub extern "C" fn granbond_state_len(kind: i32) -> usize {
-    match kind_from(kind) {
-        Ok(k) => slots(k).len(),
-        Err(_) => 0,
-    }
+    slots(kind).len()
 }
 
 /// Name of slot `index` of state `kind` (a `GbStateKind`; static storage) and whether it changes sign when
@@ -64,6 +64,7 @@ pub extern "C" fn granbond_state_len(kind: i32) -> usize {
 ///
 /// # Safety
 /// `name` and `flips_on_swap` must be null or valid for writes.
+#[entry(kind: state_kind, name: reference_mut, flips_on_swap: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_state_slot(
     kind: i32,
@@ -71,22 +72,17 @@ pub unsafe extern "C" fn granbond_state_slot(
     name: *mut *const c_char,
     flips_on_swap: *mut i32,
 ) -> Status {
-    call("granbond_state_slot", || {
-        let k = kind_from(kind)?;
-        let name = reference_mut(name, "name")?;
-        let flips = reference_mut(flips_on_swap, "flips_on_swap")?;
-        let table = slots(k);
-        if index >= table.len() {
-            return Err(Failure::new(
-                Status::InvalidArgument,
-                format!(
-                    "slot index {index} out of range (state has {} slots)",
-                    table.len()
-                ),
-            ));
-        }
-        *name = c_names(k)[index].as_ptr();
-        *flips = table[index].flips_on_swap as i32;
-        Ok(())
-    })
+    let table = slots(kind);
+    if index >= table.len() {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "slot index {index} out of range (state has {} slots)",
+                table.len()
+            ),
+        ));
+    }
+    *name = c_names(kind)[index].as_ptr();
+    *flips_on_swap = table[index].flips_on_swap as i32;
+    Ok(())
 }

@@ -2,8 +2,9 @@
 //! setting a parameter by the name a deck uses. Adapters iterate these, so
 //! a parameter added to a table reaches both engines' decks.
 
+use super::entry;
 use super::error::{Failure, Status};
-use super::guard::{call, reference, reference_mut};
+use super::guard::{reference, reference_mut};
 use crate::bond::{BondParams, PARAMETERS};
 use crate::contact::{VoigtParams, VOIGT_PARAMETERS};
 use crate::parameters::{set_by_name, ParameterInfo, SetError};
@@ -81,8 +82,7 @@ fn voigt_rows() -> &'static [ParameterRow] {
     &ROWS.get_or_init(|| rows(VOIGT_PARAMETERS)).1
 }
 
-unsafe fn write_row(rows: &[ParameterRow], id: usize, out: *mut ParameterRow) -> Result<(), Failure> {
-    let out = reference_mut(out, "info")?;
+fn write_row(rows: &[ParameterRow], id: usize, out: &mut ParameterRow) -> Result<(), Failure> {
     *out = *rows
         .get(id)
         .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?;
@@ -92,12 +92,10 @@ unsafe fn write_row(rows: &[ParameterRow], id: usize, out: *mut ParameterRow) ->
 unsafe fn set<T>(
     model: &str,
     table: &[ParameterInfo<T>],
-    params: *mut T,
-    name: *const c_char,
+    params: &mut T,
+    name: &c_char,
     value: f64,
 ) -> Result<(), Failure> {
-    let params = reference_mut(params, "params")?;
-    reference(name, "name")?;
     let name = CStr::from_ptr(name)
         .to_str()
         .map_err(|_| Failure::new(Status::InvalidArgument, "parameter name is not UTF-8"))?;
@@ -108,14 +106,7 @@ unsafe fn set<T>(
     }
 }
 
-unsafe fn needed<T>(
-    table: &[ParameterInfo<T>],
-    params: *const T,
-    id: usize,
-    out: *mut i32,
-) -> Result<(), Failure> {
-    let params = reference(params, "params")?;
-    let out = reference_mut(out, "needed")?;
+fn needed_by<T>(table: &[ParameterInfo<T>], params: &T, id: usize, out: &mut i32) -> Result<(), Failure> {
     let row = table
         .get(id)
         .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?;
@@ -127,22 +118,20 @@ unsafe fn needed<T>(
 ///
 /// # Safety
 /// `info` must be null or valid for writes.
+#[entry(info: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_parameter_info(id: usize, info: *mut ParameterRow) -> Status {
-    call("granbond_bond_parameter_info", || {
-        write_row(bond_rows(), id, info)
-    })
+    write_row(bond_rows(), id, info)
 }
 
 /// Row `id` of the Voigt parameter table.
 ///
 /// # Safety
 /// `info` must be null or valid for writes.
+#[entry(info: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_parameter_info(id: usize, info: *mut ParameterRow) -> Status {
-    call("granbond_voigt_parameter_info", || {
-        write_row(voigt_rows(), id, info)
-    })
+    write_row(voigt_rows(), id, info)
 }
 
 /// Sets the bond parameter a deck names (LAMMPS keyword or LIGGGHTS name)
@@ -154,30 +143,28 @@ pub unsafe extern "C" fn granbond_voigt_parameter_info(id: usize, info: *mut Par
 /// # Safety
 /// `params` must be null or point to a `GbBondParams`; `name` null or a
 /// NUL-terminated string.
+#[entry(params: reference_mut, name: reference)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_params_set(
     params: *mut BondParams,
     name: *const c_char,
     value: f64,
 ) -> Status {
-    call("granbond_bond_params_set", || {
-        set("bond/nonlinear", PARAMETERS, params, name, value)
-    })
+    set("bond/nonlinear", PARAMETERS, params, name, value)
 }
 
 /// `granbond_bond_params_set` for the Voigt contact.
 ///
 /// # Safety
 /// As `granbond_bond_params_set`, with a `GbVoigtParams`.
+#[entry(params: reference_mut, name: reference)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_params_set(
     params: *mut VoigtParams,
     name: *const c_char,
     value: f64,
 ) -> Status {
-    call("granbond_voigt_params_set", || {
-        set("voigt", VOIGT_PARAMETERS, params, name, value)
-    })
+    set("voigt", VOIGT_PARAMETERS, params, name, value)
 }
 
 /// Whether a bond model with the switches of `params` reads parameter `id`
@@ -187,28 +174,26 @@ pub unsafe extern "C" fn granbond_voigt_params_set(
 /// # Safety
 /// `params` must be null or point to a `GbBondParams`; `needed` null or
 /// valid for writes.
+#[entry(params: reference, needed: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_parameter_needed(
     params: *const BondParams,
     id: usize,
     needed: *mut i32,
 ) -> Status {
-    call("granbond_bond_parameter_needed", || {
-        self::needed(PARAMETERS, params, id, needed)
-    })
+    needed_by(PARAMETERS, params, id, needed)
 }
 
 /// `granbond_bond_parameter_needed` for the Voigt contact.
 ///
 /// # Safety
 /// As `granbond_bond_parameter_needed`, with a `GbVoigtParams`.
+#[entry(params: reference, needed: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_parameter_needed(
     params: *const VoigtParams,
     id: usize,
     needed: *mut i32,
 ) -> Status {
-    call("granbond_voigt_parameter_needed", || {
-        self::needed(VOIGT_PARAMETERS, params, id, needed)
-    })
+    needed_by(VOIGT_PARAMETERS, params, id, needed)
 }

@@ -1189,90 +1189,12 @@ static int scattered_fixture(GbBondModel *m, GbPairKinematics *k, double *memory
     return 0;
 }
 
-static int test_bond_scattered(void)
-{
-    const GbBondParams p = bond_fixture();
-    GbBondModel *m = NULL;
-    GbPairKinematics k[N_SCATTERED];
-    GbBondOutput out[N_SCATTERED], single;
-    double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], before[sizeof memory / sizeof(double)];
-    double *states[N_SCATTERED], one[GRANBOND_BOND_STATE_LEN], *saved;
-    size_t failed = 999;
-    int b;
-
-    if (new_bond_model(&p, &m) || scattered_fixture(m, k, memory, states))
-        return 1;
-    memcpy(before, memory, sizeof memory);
-
-    EXPECT_OK(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, out, &failed),
-              "granbond_bond_compute_scattered");
-    CHECK(failed == 999, "failed_index left alone on success");
-    CHECK(out[5].status == GB_BOND_STATUS_BROKEN && out[7].status == GB_BOND_STATUS_BROKEN &&
-              out[7].break_mode == GB_BREAK_MODE_DISTANCE && out[3].status == GB_BOND_STATUS_INTACT,
-          "scattered: broken, breaking and intact bonds");
-    for (b = 0; b < N_SCATTERED; b++) {
-        memcpy(one, before + (states[b] - memory), sizeof one);
-        EXPECT_OK(granbond_bond_compute(m, &k[b], DT, one, &single), say("granbond_bond_compute, bond %d", b));
-        CHECK(memcmp(&out[b], &single, sizeof single) == 0 && memcmp(one, states[b], sizeof one) == 0,
-              say("scattered bond %d = single call, bit for bit", b));
-    }
-
-    /* A null state pointer: reported with its index before any bond moves. */
-    memcpy(memory, before, sizeof memory);
-    saved = states[4];
-    states[4] = NULL;
-    EXPECT(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, out, &failed), GB_STATUS_NULL_POINTER,
-           "granbond_bond_compute_scattered with states[4] = NULL");
-    CHECK(failed == 4, say("failed_index = 4 (got %u)", (unsigned)failed));
-    EXPECT_MESSAGE("bond 4");
-    CHECK(memcmp(memory, before, sizeof memory) == 0, "no state advanced when a state pointer is null");
-    states[4] = saved;
-
-    /* A bad bond stops there, as in the batch call. */
-    k[6].v_j[2] = INFINITY;
-    EXPECT(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, out, &failed),
-           GB_STATUS_NON_FINITE_INPUT, "granbond_bond_compute_scattered with inf in bond 6");
-    CHECK(failed == 6, say("failed_index = 6 (got %u)", (unsigned)failed));
-    k[6].v_j[2] = 0.0;
-
-    EXPECT_OK(granbond_bond_compute_scattered(m, 0, NULL, DT, NULL, NULL, NULL),
-              "granbond_bond_compute_scattered, count = 0 and NULL arrays");
-    EXPECT(granbond_bond_compute_scattered(m, N_SCATTERED, k, NAN, states, out, NULL), GB_STATUS_INVALID_ARGUMENT,
-           "granbond_bond_compute_scattered with dt = NaN");
-    EXPECT_NULL_ARG(granbond_bond_compute_scattered(NULL, N_SCATTERED, k, DT, states, out, &failed),
-                    "granbond_bond_compute_scattered", "model");
-    EXPECT_NULL_ARG(granbond_bond_compute_scattered(m, N_SCATTERED, NULL, DT, states, out, &failed),
-                    "granbond_bond_compute_scattered", "kinematics");
-    EXPECT_NULL_ARG(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, NULL, out, &failed),
-                    "granbond_bond_compute_scattered", "states");
-    EXPECT_NULL_ARG(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, NULL, &failed),
-                    "granbond_bond_compute_scattered", "out");
-
-    granbond_bond_model_free(m);
-    return 0;
-}
-
 /* The scattered bonds with their spheres in per-atom arrays, as an engine
- * keeps them (bond b joins atoms 2N-1-b and b): the same bits as the
- * scattered call; an index outside the arrays is refused before any bond
- * moves. */
-static int test_bond_indexed(void)
+ * keeps them: bond b joins atoms 2N-1-b (i) and b (j). */
+static void indexed_fixture(const GbPairKinematics *k, double *x, double *v, double *w, double *radius,
+                            int32_t *pairs, GbAtomArrays *atoms)
 {
-    const GbBondParams p = bond_fixture();
-    GbBondModel *m = NULL;
-    GbPairKinematics k[N_SCATTERED];
-    GbBondOutput out[N_SCATTERED], want[N_SCATTERED];
-    double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], before[sizeof memory / sizeof(double)],
-        after[sizeof memory / sizeof(double)];
-    double x[6 * N_SCATTERED], v[6 * N_SCATTERED], w[6 * N_SCATTERED], radius[2 * N_SCATTERED];
-    double *states[N_SCATTERED];
-    int32_t pairs[2 * N_SCATTERED];
-    GbAtomArrays atoms, bad;
-    size_t failed = 999;
     int b, c;
-
-    if (new_bond_model(&p, &m) || scattered_fixture(m, k, memory, states))
-        return 1;
     for (b = 0; b < N_SCATTERED; b++) {
         const int i = 2 * N_SCATTERED - 1 - b, j = b;
         pairs[2 * b] = i;
@@ -1288,22 +1210,103 @@ static int test_bond_indexed(void)
         radius[i] = k[b].radius_i;
         radius[j] = k[b].radius_j;
     }
-    atoms.x = x;
-    atoms.v = v;
-    atoms.omega = w;
-    atoms.radius = radius;
-    atoms.count = 2 * N_SCATTERED;
+    atoms->x = x;
+    atoms->v = v;
+    atoms->omega = w;
+    atoms->radius = radius;
+    atoms->count = 2 * N_SCATTERED;
+}
+
+/* Each bond as one granbond_bond_compute would give it, bit for bit; a bad
+ * state pointer or bond is reported with its index. */
+static int test_bond_indexed_results(void)
+{
+    const GbBondParams p = bond_fixture();
+    GbBondModel *m = NULL;
+    GbPairKinematics k[N_SCATTERED];
+    GbBondOutput out[N_SCATTERED], single;
+    double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], before[sizeof memory / sizeof(double)];
+    double x[6 * N_SCATTERED], v[6 * N_SCATTERED], w[6 * N_SCATTERED], radius[2 * N_SCATTERED];
+    double *states[N_SCATTERED], one[GRANBOND_BOND_STATE_LEN], *saved;
+    int32_t pairs[2 * N_SCATTERED];
+    GbAtomArrays atoms;
+    size_t failed = 999;
+    int b;
+
+    if (new_bond_model(&p, &m) || scattered_fixture(m, k, memory, states))
+        return 1;
+    indexed_fixture(k, x, v, w, radius, pairs, &atoms);
     memcpy(before, memory, sizeof memory);
 
-    EXPECT_OK(granbond_bond_compute_scattered(m, N_SCATTERED, k, DT, states, want, NULL),
-              "granbond_bond_compute_scattered (reference for the indexed call)");
+    EXPECT_OK(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, DT, states, out, &failed),
+              "granbond_bond_compute_indexed");
+    CHECK(failed == 999, "failed_index left alone on success");
+    CHECK(out[5].status == GB_BOND_STATUS_BROKEN && out[7].status == GB_BOND_STATUS_BROKEN &&
+              out[7].break_mode == GB_BREAK_MODE_DISTANCE && out[3].status == GB_BOND_STATUS_INTACT,
+          "indexed: broken, breaking and intact bonds");
+    for (b = 0; b < N_SCATTERED; b++) {
+        memcpy(one, before + (states[b] - memory), sizeof one);
+        EXPECT_OK(granbond_bond_compute(m, &k[b], DT, one, &single), say("granbond_bond_compute, bond %d", b));
+        CHECK(memcmp(&out[b], &single, sizeof single) == 0 && memcmp(one, states[b], sizeof one) == 0,
+              say("indexed bond %d = single call, bit for bit", b));
+    }
+
+    /* A null state pointer: reported with its index before any bond moves. */
+    memcpy(memory, before, sizeof memory);
+    saved = states[4];
+    states[4] = NULL;
+    EXPECT(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, DT, states, out, &failed),
+           GB_STATUS_NULL_POINTER, "granbond_bond_compute_indexed with states[4] = NULL");
+    CHECK(failed == 4, say("failed_index = 4 (got %u)", (unsigned)failed));
+    EXPECT_MESSAGE("bond 4");
+    CHECK(memcmp(memory, before, sizeof memory) == 0, "no state advanced when a state pointer is null");
+    states[4] = saved;
+
+    /* A bad bond stops there, as in the batch call: v_j of bond 6 is atom 6's. */
+    v[3 * 6 + 2] = INFINITY;
+    EXPECT(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, DT, states, out, &failed),
+           GB_STATUS_NON_FINITE_INPUT, "granbond_bond_compute_indexed with inf in bond 6");
+    CHECK(failed == 6, say("failed_index = 6 (got %u)", (unsigned)failed));
+    v[3 * 6 + 2] = 0.0;
+
+    EXPECT(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, NAN, states, out, NULL),
+           GB_STATUS_INVALID_ARGUMENT, "granbond_bond_compute_indexed with dt = NaN");
+
+    granbond_bond_model_free(m);
+    return 0;
+}
+
+/* An index outside the arrays is refused before any bond moves. */
+static int test_bond_indexed(void)
+{
+    const GbBondParams p = bond_fixture();
+    GbBondModel *m = NULL;
+    GbPairKinematics k[N_SCATTERED];
+    GbBondOutput out[N_SCATTERED], want[N_SCATTERED];
+    double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], before[sizeof memory / sizeof(double)],
+        after[sizeof memory / sizeof(double)];
+    double x[6 * N_SCATTERED], v[6 * N_SCATTERED], w[6 * N_SCATTERED], radius[2 * N_SCATTERED];
+    double *states[N_SCATTERED];
+    int32_t pairs[2 * N_SCATTERED];
+    GbAtomArrays atoms, bad;
+    size_t failed = 999;
+    int b;
+
+    if (new_bond_model(&p, &m) || scattered_fixture(m, k, memory, states))
+        return 1;
+    indexed_fixture(k, x, v, w, radius, pairs, &atoms);
+    memcpy(before, memory, sizeof memory);
+
+    for (b = 0; b < N_SCATTERED; b++)
+        EXPECT_OK(granbond_bond_compute(m, &k[b], DT, states[b], &want[b]),
+                  say("granbond_bond_compute, bond %d (reference for the indexed call)", b));
     memcpy(after, memory, sizeof memory);
     memcpy(memory, before, sizeof memory);
     EXPECT_OK(granbond_bond_compute_indexed(m, N_SCATTERED, &atoms, pairs, DT, states, out, &failed),
               "granbond_bond_compute_indexed");
     CHECK(failed == 999, "failed_index left alone on success");
     CHECK(memcmp(out, want, sizeof out) == 0 && memcmp(memory, after, sizeof memory) == 0,
-          "indexed = scattered, outputs and states bit for bit");
+          "indexed = single calls, outputs and states bit for bit");
 
     /* An atom index past the arrays, or negative: its bond, nothing moved. */
     memcpy(memory, before, sizeof memory);
@@ -2260,7 +2263,6 @@ static int same_contact_output(const GbContactOutput *a, const GbContactOutput *
            a->touching == b->touching && a->sliding == b->sliding && a->rolling_slip == b->rolling_slip;
 }
 
-/* Bit for bit, field by field (the struct's tail padding is not compared). */
 static int identical_contact_output(const GbContactOutput *a, const GbContactOutput *b)
 {
     return memcmp(a->force_i, b->force_i, sizeof a->force_i) == 0 &&
@@ -2279,9 +2281,8 @@ static int test_voigt_parts(void)
     GbContactFrame frame, bad;
     GbContactOutput whole, parts;
     GbTangentialOutput t;
-    GbContactOutput fast;
     double state_whole[GRANBOND_CONTACT_STATE_LEN], state_parts[GRANBOND_CONTACT_STATE_LEN];
-    double state_fast[GRANBOND_CONTACT_STATE_LEN], state_fields[GRANBOND_CONTACT_STATE_LEN];
+    double state_fields[GRANBOND_CONTACT_STATE_LEN];
     double state_sep[GRANBOND_CONTACT_STATE_LEN], state_normal[GRANBOND_CONTACT_STATE_LEN];
     GbContactOutput fields, sep, normal;
     GbContactFrame built;
@@ -2297,7 +2298,6 @@ static int test_voigt_parts(void)
      * granbond_voigt_compute, step after step. */
     memset(state_whole, 0, sizeof state_whole);
     memset(state_parts, 0, sizeof state_parts);
-    memset(state_fast, 0, sizeof state_fast);
     memset(state_fields, 0, sizeof state_fields);
     memset(state_sep, 0, sizeof state_sep);
     memset(state_normal, 0, sizeof state_normal);
@@ -2313,16 +2313,12 @@ static int test_voigt_parts(void)
         CHECK(same_contact_output(&whole, &parts), say("step %d: normal + tangential + rolling = whole step", step));
         CHECK(vec_close(state_whole, state_parts, 1e-15) && vec_close(state_whole + 3, state_parts + 3, 1e-15),
               say("step %d: same spring and rolling angle", step));
-        EXPECT_OK(granbond_voigt_compute_frame_unchecked(m, &frame, DT, state_fast, &fast),
-                  say("granbond_voigt_compute_frame_unchecked, step %d", step));
-        CHECK(same_contact_output(&fast, &whole) && memcmp(state_fast, state_whole, sizeof state_fast) == 0,
-              say("step %d: unchecked step on the frame = granbond_voigt_compute", step));
         EXPECT_OK(granbond_voigt_compute_fields_unchecked(m, frame.n, frame.overlap, frame.lever_i, frame.lever_j,
                                                           frame.r_eff, frame.v_i, frame.v_j, frame.w_i, frame.w_j, DT,
                                                           state_fields, &fields),
                   say("granbond_voigt_compute_fields_unchecked, step %d", step));
-        CHECK(identical_contact_output(&fields, &fast) && memcmp(state_fields, state_fast, sizeof state_fast) == 0,
-              say("step %d: unchecked step on the frame's fields = on the frame, bit for bit", step));
+        CHECK(same_contact_output(&fields, &whole) && memcmp(state_fields, state_whole, sizeof state_fields) == 0,
+              say("step %d: unchecked step on the frame's fields = granbond_voigt_compute", step));
         /* From the engine's geometry and the radii: the same frame, the same bits. */
         for (c = 0; c < 3; c++)
             del[c] = k.x_i[c] - k.x_j[c];
@@ -2341,13 +2337,13 @@ static int test_voigt_parts(void)
         EXPECT_OK(granbond_voigt_compute_separation_unchecked(m, del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i,
                                                               k.w_j, DT, state_sep, &sep),
                   say("granbond_voigt_compute_separation_unchecked, step %d", step));
-        CHECK(identical_contact_output(&sep, &fast) && memcmp(state_sep, state_fast, sizeof state_fast) == 0,
-              say("step %d: unchecked step on the separation = on the frame, bit for bit", step));
+        CHECK(identical_contact_output(&sep, &fields) && memcmp(state_sep, state_fields, sizeof state_fields) == 0,
+              say("step %d: unchecked step on the separation = on the frame's fields, bit for bit", step));
         EXPECT_OK(granbond_voigt_compute_normal_unchecked(m, frame.n, distance, k.radius_i, k.radius_j, k.v_i, k.v_j,
                                                           k.w_i, k.w_j, DT, state_normal, &normal),
                   say("granbond_voigt_compute_normal_unchecked, step %d", step));
-        CHECK(identical_contact_output(&normal, &fast) && memcmp(state_normal, state_fast, sizeof state_fast) == 0,
-              say("step %d: unchecked step on the normal and distance = on the frame, bit for bit", step));
+        CHECK(identical_contact_output(&normal, &fields) && memcmp(state_normal, state_fields, sizeof state_fields) == 0,
+              say("step %d: unchecked step on the normal and distance = on the frame's fields, bit for bit", step));
     }
     EXPECT_NULL_ARG(granbond_contact_frame_separation(NULL, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j,
                                                       &built),
@@ -2357,8 +2353,6 @@ static int test_voigt_parts(void)
                     "granbond_contact_frame_normal", "frame");
     bad = frame;
     bad.w_j[2] = NAN;
-    EXPECT(granbond_voigt_compute_frame_unchecked(m, &bad, DT, state_fast, &fast), GB_STATUS_NON_FINITE_INPUT,
-           "granbond_voigt_compute_frame_unchecked, NaN w_j: a non-finite torque is reported");
     EXPECT(granbond_voigt_compute_fields_unchecked(m, bad.n, bad.overlap, bad.lever_i, bad.lever_j, bad.r_eff, bad.v_i,
                                                    bad.v_j, bad.w_i, bad.w_j, DT, state_fields, &fields),
            GB_STATUS_NON_FINITE_INPUT, "granbond_voigt_compute_fields_unchecked, NaN w_j: a non-finite torque is reported");
@@ -2406,8 +2400,10 @@ static int test_voigt_parts(void)
         memcpy(copy, held, sizeof held);
         EXPECT_OK(granbond_voigt_evaluate_frame(m, &frame, held, &ev), "granbond_voigt_evaluate_frame");
         CHECK(memcmp(copy, held, sizeof held) == 0, "granbond_voigt_evaluate_frame leaves the state alone");
-        EXPECT_OK(granbond_voigt_compute_frame_unchecked(m, &frame, 0.0, copy, &st),
-                  "granbond_voigt_compute_frame_unchecked, dt = 0");
+        EXPECT_OK(granbond_voigt_compute_fields_unchecked(m, frame.n, frame.overlap, frame.lever_i, frame.lever_j,
+                                                          frame.r_eff, frame.v_i, frame.v_j, frame.w_i, frame.w_j, 0.0,
+                                                          copy, &st),
+                  "granbond_voigt_compute_fields_unchecked, dt = 0");
         CHECK(close_to(ev.force_i[0], st.force_i[0], 1e-15) && close_to(ev.force_i[1], st.force_i[1], 1e-15) &&
                   close_to(ev.torque_i[2], st.torque_i[2], 1e-15),
               "evaluation = a step of zero length");
@@ -2521,7 +2517,7 @@ static int test_error_state_and_free(void)
 int main(void)
 {
     int failed = test_version_and_layout() || test_state_layout() || test_parameter_tables() || test_bond_params() ||
-                 test_bond_create_and_force() || test_bond_errors() || test_bond_batch() || test_bond_scattered() ||
+                 test_bond_create_and_force() || test_bond_errors() || test_bond_batch() || test_bond_indexed_results() ||
                  test_bond_indexed() ||
                  test_bond_break() ||
                  test_wall_bond() || test_bond_limits() || test_run_checks() || test_voigt_params() || test_voigt_contact() ||

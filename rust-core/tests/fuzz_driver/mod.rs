@@ -47,7 +47,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 56] = [
+pub const ENTRY_POINTS: [&str; 54] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -60,7 +60,6 @@ pub const ENTRY_POINTS: [&str; 56] = [
     "granbond_bond_create_now",
     "granbond_bond_compute",
     "granbond_bond_compute_batch",
-    "granbond_bond_compute_scattered",
     "granbond_bond_compute_indexed",
     "granbond_wall_bond_try_create",
     "granbond_wall_bond_compute",
@@ -77,7 +76,6 @@ pub const ENTRY_POINTS: [&str; 56] = [
     "granbond_voigt_compute",
     "granbond_voigt_compute_batch",
     "granbond_voigt_compute_plane",
-    "granbond_voigt_compute_frame_unchecked",
     "granbond_voigt_compute_fields_unchecked",
     "granbond_contact_frame_pair",
     "granbond_voigt_compute_separation_unchecked",
@@ -762,8 +760,7 @@ impl<'t> Session<'t> {
             6 => self.bond_create(input, true),
             7 => self.bond_compute(input),
             8 => self.bond_batch(input),
-            9 => self.bond_scattered(input),
-            10 => self.bond_indexed(input),
+            9 | 10 => self.bond_indexed(input),
             11 => self.wall_try_create(input),
             12 => self.wall_compute(input),
             13 | 14 => self.bond_reach(input),
@@ -791,7 +788,7 @@ impl<'t> Session<'t> {
             20 => self.voigt_compute(input),
             21 => self.voigt_batch(input),
             22 => self.voigt_plane(input),
-            23 => self.voigt_frame_unchecked(input),
+            23 => self.voigt_evaluate_then_step(input),
             24 => self.voigt_fields_unchecked(input),
             25 => self.frame_pair(input),
             26 => self.frame_plane(input),
@@ -1204,40 +1201,6 @@ impl<'t> Session<'t> {
         p
     }
 
-    fn bond_scattered(&mut self, input: &mut Input) {
-        let m = self.bond_model(input);
-        let count = self.count(input).min(POOL);
-        let mut k = self.pairs(input, count + 1);
-        let dt = self.dt(input);
-        let mut states = self.scattered_pointers(input, count);
-        states.push(null_mut());
-        let mut out = vec![BondOutput::default(); count + 1];
-        let mut failed = Place::new(usize::MAX);
-        let (hk, hp, ho, hf) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
-        let before = self.pool.clone();
-        // SAFETY: `count` distinct states of BOND_STATE_LEN doubles, buffers
-        // of at least `count` elements (null or misaligned ones are checked).
-        let status = unsafe {
-            fb::granbond_bond_compute_scattered(
-                m,
-                count,
-                Self::batch_ptr(&mut k, hk),
-                dt,
-                Self::batch_ptr(&mut states, hp),
-                Self::batch_ptr(&mut out, ho),
-                failed.ptr(hf),
-            )
-        };
-        self.after_scattered(
-            "granbond_bond_compute_scattered",
-            status,
-            &out[..count],
-            &before,
-            hf,
-            &failed,
-        );
-    }
-
     fn after_scattered(
         &mut self,
         function: &'static str,
@@ -1620,19 +1583,15 @@ impl<'t> Session<'t> {
         }
     }
 
-    fn voigt_frame_unchecked(&mut self, input: &mut Input) {
+    /// The checked evaluation of a stored state, then an unchecked step of it.
+    fn voigt_evaluate_then_step(&mut self, input: &mut Input) {
         let Some(m) = self.live_voigt_model(input) else {
             return;
         };
         let f = self.frame(input);
         let dt = self.dt(input);
         let i = self.state(input);
-        let mut out = ContactOutput::default();
         let s = self.pool[i].as_mut_ptr();
-        // SAFETY: every pointer valid (the entry's contract); the numbers
-        // are arbitrary, which it must answer with a status.
-        // The checked evaluation of the stored state first (valid pointers;
-        // no input consumed).
         let before = self.pool[i];
         let mut evaluated = ContactOutput::default();
         // SAFETY: every pointer valid; the state is only read.
@@ -1645,10 +1604,7 @@ impl<'t> Session<'t> {
                 "evaluate wrote the state"
             );
         }
-        let status = unsafe { fc::granbond_voigt_compute_frame_unchecked(m, &f, dt, s, &mut out) };
-        if self.answer_unchecked("granbond_voigt_compute_frame_unchecked", status) {
-            self.check_unchecked_flags(&out);
-        }
+        self.fields_unchecked(m, &f, dt, s);
     }
 
     fn voigt_fields_unchecked(&mut self, input: &mut Input) {
@@ -1658,9 +1614,14 @@ impl<'t> Session<'t> {
         let f = self.frame(input);
         let dt = self.dt(input);
         let i = self.state(input);
-        let mut out = ContactOutput::default();
         let s = self.pool[i].as_mut_ptr();
-        // SAFETY: as in voigt_frame_unchecked.
+        self.fields_unchecked(m, &f, dt, s);
+    }
+
+    fn fields_unchecked(&mut self, m: *const VoigtModel, f: &ContactFrame, dt: f64, s: *mut f64) {
+        let mut out = ContactOutput::default();
+        // SAFETY: every pointer valid (the entry's contract); the numbers
+        // are arbitrary, which it must answer with a status.
         let status = unsafe {
             fc::granbond_voigt_compute_fields_unchecked(
                 m,
@@ -1686,7 +1647,8 @@ impl<'t> Session<'t> {
         let distance = f.lever_i + f.lever_j - f.overlap;
         let del = [f.n[0] * distance, f.n[1] * distance, f.n[2] * distance];
         let rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-        let mut copy = self.pool[i];
+        // SAFETY: `s` is the start of a state of the pool.
+        let mut copy = unsafe { *(s as *const [f64; MAX_STATE + 1]) };
         // SAFETY: as above; `del` three doubles, `copy` a whole state.
         let status = unsafe {
             fcg::granbond_voigt_compute_separation_unchecked(
@@ -1707,8 +1669,8 @@ impl<'t> Session<'t> {
         if rsq > 0.0 && self.answer_unchecked("granbond_voigt_compute_separation_unchecked", status) {
             self.check_unchecked_flags(&out);
         }
-        let mut copy = self.pool[i];
         // SAFETY: as above.
+        let mut copy = unsafe { *(s as *const [f64; MAX_STATE + 1]) };
         let status = unsafe {
             fcg::granbond_voigt_compute_normal_unchecked(
                 m,
