@@ -597,8 +597,9 @@ void PairGranbond::compute(int eflag, int vflag)
                              GbContactOutput &cout) {
         GbContactFrame frame;
         if (granbond_contact_frame_separation(del, rsq, radius[i], radius[j], row(v0, i), row(v0, j), row(w0, i),
-                                              row(w0, j), &frame) != GB_STATUS_OK ||
-            granbond_voigt_evaluate_frame(voigt_[tp], &frame, state, &cout) != GB_STATUS_OK)
+                                              row(w0, j), &frame) != GB_STATUS_OK)
+            failPair(i, j, "granbond_contact_frame_separation");
+        if (granbond_voigt_evaluate_frame(voigt_[tp], &frame, state, &cout) != GB_STATUS_OK)
             failPair(i, j, "granbond_voigt_evaluate_frame");
     };
 

@@ -2,10 +2,7 @@
 
 use super::entry;
 use super::error::{Failure, Status};
-use super::guard::{
-    parameter_c_names, positive, reference, reference_mut, slice, slice_mut, time_step, vector3,
-    write_parameter_name, FailedIndex,
-};
+use super::guard::{positive, reference, reference_mut, slice, slice_mut, time_step, vector3, FailedIndex};
 use super::results;
 use crate::bond::creation::status_and_step_allow;
 use crate::bond::{
@@ -15,8 +12,7 @@ use crate::bond::{
 use crate::kinematics::PairKinematics;
 pub use crate::kinematics::SphereKinematics;
 use crate::pair_source::{AtomArrays, IndexedPairs};
-use std::ffi::{c_char, CString};
-use std::sync::OnceLock;
+use std::ffi::c_char;
 
 /// Fills `params` with the defaults (switches as in the reference, no
 /// stiffness, no breakage).
@@ -81,9 +77,7 @@ pub unsafe extern "C" fn granbond_bond_parameter_name(
     keyword: *mut *const c_char,
     liggghts_name: *mut *const c_char,
 ) -> Status {
-    static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
-    let names = NAMES.get_or_init(|| parameter_c_names(PARAMETERS));
-    write_parameter_name(names, id, keyword, liggghts_name)
+    super::parameters::write_names(super::parameters::bond_rows(), id, keyword, liggghts_name)
 }
 
 /// The bond state as a struct view of a caller's `double[GRANBOND_BOND_STATE_LEN]`.

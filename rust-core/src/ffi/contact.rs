@@ -6,7 +6,6 @@ use super::error::{record, Failure, Status};
 use super::guard::{
     array, array_mut, finite, reference, reference_mut, slice, slice_mut, time_step, FailedIndex,
 };
-use super::guard::{parameter_c_names, write_parameter_name};
 use super::results;
 use crate::contact::model::{sphere_plane, sphere_sphere};
 use crate::contact::{
@@ -14,9 +13,8 @@ use crate::contact::{
     CONTACT_STATE_LEN, VOIGT_PARAMETERS,
 };
 use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
-use std::ffi::{c_char, CString};
+use std::ffi::c_char;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::OnceLock;
 
 /// Fills `params` with Table 1 of the seed.
 ///
@@ -642,9 +640,7 @@ pub unsafe extern "C" fn granbond_voigt_parameter_name(
     keyword: *mut *const c_char,
     liggghts_name: *mut *const c_char,
 ) -> Status {
-    static NAMES: OnceLock<Vec<(CString, CString)>> = OnceLock::new();
-    let names = NAMES.get_or_init(|| parameter_c_names(VOIGT_PARAMETERS));
-    write_parameter_name(names, id, keyword, liggghts_name)
+    super::parameters::write_names(super::parameters::voigt_rows(), id, keyword, liggghts_name)
 }
 
 #[cfg(test)]

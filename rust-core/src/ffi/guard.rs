@@ -4,8 +4,6 @@
 //! `#[entry(argument: check(further))]` calls it.
 
 use super::error::{clear, record, Failure, Status};
-use crate::parameters::ParameterInfo;
-use std::ffi::{c_char, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 /// Runs `body`, turning its error or its panic into a [`Status`] and a
@@ -181,32 +179,4 @@ pub unsafe fn array<'a, const N: usize>(ptr: *const f64, name: &str) -> Result<&
 /// A non-null `ptr` must point to `N` unaliased doubles.
 pub unsafe fn array_mut<'a, const N: usize>(ptr: *mut f64, name: &str) -> Result<&'a mut [f64; N], Failure> {
     reference_mut(ptr as *mut [f64; N], name)
-}
-
-/// C strings of a parameter table's names, built once per table.
-pub fn parameter_c_names<T>(table: &[ParameterInfo<T>]) -> Vec<(CString, CString)> {
-    table
-        .iter()
-        .map(|p| {
-            (
-                CString::new(p.name).expect("no NUL"),
-                CString::new(p.liggghts_name).expect("no NUL"),
-            )
-        })
-        .collect()
-}
-
-/// Writes row `id` of `names` to the caller's pointers.
-pub fn write_parameter_name(
-    names: &'static [(CString, CString)],
-    id: usize,
-    keyword: &mut *const c_char,
-    liggghts_name: &mut *const c_char,
-) -> Result<(), Failure> {
-    let (k, l) = names
-        .get(id)
-        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?;
-    *keyword = k.as_ptr();
-    *liggghts_name = l.as_ptr();
-    Ok(())
 }

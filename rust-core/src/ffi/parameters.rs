@@ -72,20 +72,37 @@ fn rows<T: Default>(table: &[ParameterInfo<T>]) -> (Vec<RowStrings>, Vec<Paramet
 
 type Rows = (Vec<RowStrings>, Vec<ParameterRow>);
 
-fn bond_rows() -> &'static [ParameterRow] {
+pub(super) fn bond_rows() -> &'static [ParameterRow] {
     static ROWS: OnceLock<Rows> = OnceLock::new();
     &ROWS.get_or_init(|| rows(PARAMETERS)).1
 }
 
-fn voigt_rows() -> &'static [ParameterRow] {
+pub(super) fn voigt_rows() -> &'static [ParameterRow] {
     static ROWS: OnceLock<Rows> = OnceLock::new();
     &ROWS.get_or_init(|| rows(VOIGT_PARAMETERS)).1
 }
 
+/// Row `id`, or the error of every entry that takes a row id.
+fn row_at<R>(rows: &[R], id: usize) -> Result<&R, Failure> {
+    rows.get(id)
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))
+}
+
 fn write_row(rows: &[ParameterRow], id: usize, out: &mut ParameterRow) -> Result<(), Failure> {
-    *out = *rows
-        .get(id)
-        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?;
+    *out = *row_at(rows, id)?;
+    Ok(())
+}
+
+/// The names of row `id` (static storage), for `granbond_*_parameter_name`.
+pub(super) fn write_names(
+    rows: &'static [ParameterRow],
+    id: usize,
+    keyword: &mut *const c_char,
+    liggghts_name: &mut *const c_char,
+) -> Result<(), Failure> {
+    let row = row_at(rows, id)?;
+    *keyword = row.keyword;
+    *liggghts_name = row.liggghts_name;
     Ok(())
 }
 
@@ -107,10 +124,7 @@ unsafe fn set<T>(
 }
 
 fn needed_by<T>(table: &[ParameterInfo<T>], params: &T, id: usize, out: &mut i32) -> Result<(), Failure> {
-    let row = table
-        .get(id)
-        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?;
-    *out = row.needed(params) as i32;
+    *out = row_at(table, id)?.needed(params) as i32;
     Ok(())
 }
 

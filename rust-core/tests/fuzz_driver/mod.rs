@@ -104,6 +104,34 @@ pub const ENTRY_POINTS: [&str; 54] = [
     "granbond_state_slot",
 ];
 
+/// The set-by-name and need entries of one parameter table.
+struct TableEntries<T: 'static> {
+    model: &'static str,
+    table: &'static [granbond::parameters::ParameterInfo<T>],
+    set_name: &'static str,
+    set: unsafe extern "C" fn(*mut T, *const c_char, f64) -> Status,
+    needed_name: &'static str,
+    needed: unsafe extern "C" fn(*const T, usize, *mut i32) -> Status,
+}
+
+const BOND_TABLE: TableEntries<BondParams> = TableEntries {
+    model: "bond/nonlinear",
+    table: PARAMETERS,
+    set_name: "granbond_bond_params_set",
+    set: fp::granbond_bond_params_set,
+    needed_name: "granbond_bond_parameter_needed",
+    needed: fp::granbond_bond_parameter_needed,
+};
+
+const VOIGT_TABLE: TableEntries<VoigtParams> = TableEntries {
+    model: "voigt",
+    table: VOIGT_PARAMETERS,
+    set_name: "granbond_voigt_params_set",
+    set: fp::granbond_voigt_params_set,
+    needed_name: "granbond_voigt_parameter_needed",
+    needed: fp::granbond_voigt_parameter_needed,
+};
+
 /// Entries that return no `GbStatus`: their answers are counted as OK when
 /// they are in range (a wrong one fails an assertion).
 const NOT_STATUS: i32 = 0;
@@ -958,37 +986,38 @@ impl<'t> Session<'t> {
         } else {
             name.as_ptr() as *const c_char
         };
-        let mut needed = Place::new(-1i32);
         if bond {
-            let mut p = Place::new(BondParams::default());
-            // SAFETY: null, misaligned or valid pointers; the name is NUL-terminated.
-            let status = unsafe { fp::granbond_bond_params_set(p.ptr(hp), name_ptr, value) };
-            if self.answer("granbond_bond_params_set", status) {
-                let ranges = granbond::parameters::check_ranges("bond/nonlinear", PARAMETERS, &p.get());
-                assert!(
-                    ranges.is_ok(),
-                    "granbond_bond_params_set stored a value out of range: {ranges:?}"
-                );
-            }
-            let status = unsafe { fp::granbond_bond_parameter_needed(p.ptr(hp), id, needed.ptr(hn)) };
-            if self.answer("granbond_bond_parameter_needed", status) {
-                assert!(needed.get() == 0 || needed.get() == 1);
-            }
+            self.set_and_need(&BOND_TABLE, id, name_ptr, value, [hp, hn, hd]);
         } else {
-            let mut p = Place::new(VoigtParams::default());
-            // SAFETY: as above.
-            let status = unsafe { fp::granbond_voigt_params_set(p.ptr(hp), name_ptr, value) };
-            if self.answer("granbond_voigt_params_set", status) {
-                let ranges = granbond::parameters::check_ranges("voigt", VOIGT_PARAMETERS, &p.get());
-                assert!(
-                    ranges.is_ok(),
-                    "granbond_voigt_params_set stored a value out of range: {ranges:?}"
-                );
-            }
-            let status = unsafe { fp::granbond_voigt_parameter_needed(p.ptr(hd), id, needed.ptr(hn)) };
-            if self.answer("granbond_voigt_parameter_needed", status) {
-                assert!(needed.get() == 0 || needed.get() == 1);
-            }
+            self.set_and_need(&VOIGT_TABLE, id, name_ptr, value, [hp, hn, hd]);
+        }
+    }
+
+    /// `*_params_set` on the defaults, then `*_parameter_needed` of row `id`.
+    fn set_and_need<T: Copy + Default + std::fmt::Debug>(
+        &mut self,
+        t: &TableEntries<T>,
+        id: usize,
+        name: *const c_char,
+        value: f64,
+        [hp, hn, hd]: [Pointer; 3],
+    ) {
+        let mut p = Place::new(T::default());
+        let mut needed = Place::new(-1i32);
+        // SAFETY: null, misaligned or valid pointers; the name is null or NUL-terminated.
+        let status = unsafe { (t.set)(p.ptr(hp), name, value) };
+        if self.answer(t.set_name, status) {
+            let ranges = granbond::parameters::check_ranges(t.model, t.table, &p.get());
+            assert!(
+                ranges.is_ok(),
+                "{} stored a value out of range: {ranges:?}",
+                t.set_name
+            );
+        }
+        // SAFETY: as above.
+        let status = unsafe { (t.needed)(p.ptr(hd), id, needed.ptr(hn)) };
+        if self.answer(t.needed_name, status) {
+            assert!(needed.get() == 0 || needed.get() == 1);
         }
     }
 
