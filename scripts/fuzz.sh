@@ -74,7 +74,7 @@ RUSTFLAGS="-Zsanitizer=address" cargo +nightly build --lib \
     --target x86_64-unknown-linux-gnu --target-dir "$run/asan-target" -q
 lib="$run/asan-target/x86_64-unknown-linux-gnu/debug/libgranbond.a"
 cc -std=c99 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
-    -I "$core/include" "$core/tests/c/abi_harness.c" "$lib" -lpthread -ldl -lm -o "$run/abi_harness"
+    -I "$core/include" "$core"/tests/c/*.c "$lib" -lpthread -ldl -lm -o "$run/abi_harness"
 set +e
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 "$run/abi_harness" >"$run/harness.log" 2>&1
 harness_rc=$?

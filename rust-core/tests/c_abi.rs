@@ -1,7 +1,8 @@
-//! The C test bed: `tests/c/abi_harness.c` calls every function of
-//! `include/granbond.h` from C. This test compiles it with the C compiler
-//! cc-rs finds for this target, links it against the crate's static library,
-//! runs it, and also compiles it as C++ to prove the header is C++-clean.
+//! The C test bed: the C files of `tests/c/` (one per topic, sharing
+//! `harness.h`) call every function of `include/granbond.h` from C. This
+//! test compiles them with the C compiler cc-rs finds for this target, links
+//! them against the crate's static library, runs the program, and also
+//! compiles them as C++ to prove the header is C++-clean.
 //!
 //! Which `libgranbond.a`: cargo builds the `staticlib` crate type together
 //! with the `rlib` whenever it builds the library, but the copy in
@@ -23,11 +24,28 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::SystemTime;
 
-const HARNESS: &str = "tests/c/abi_harness.c";
+const HARNESS_DIR: &str = "tests/c";
 const LIBRARY_STEM: &str = "libgranbond";
 
 fn crate_dir() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The harness's C files, in name order (`main.c` holds `main`).
+fn harness_sources() -> Vec<PathBuf> {
+    let dir = crate_dir().join(HARNESS_DIR);
+    let entries = std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("read {}: {e}", dir.display()));
+    let mut sources: Vec<PathBuf> = entries
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension() == Some(OsStr::new("c")))
+        .collect();
+    sources.sort();
+    assert!(
+        sources.iter().any(|p| p.ends_with("main.c")),
+        "no main.c among {sources:?}"
+    );
+    sources
 }
 
 /// Scratch directory under `target/tmp` for the harness executable.
@@ -144,7 +162,7 @@ fn harness_passes(variant: &str, flags: &[&str], env: &[(&str, &str)]) -> String
         .args(flags)
         .arg("-I")
         .arg(crate_dir().join("include"))
-        .arg(crate_dir().join(HARNESS))
+        .args(harness_sources())
         .arg(&library)
         .args(["-lpthread", "-ldl", "-lm"])
         .arg("-o")
@@ -259,7 +277,7 @@ fn header_compiles_as_cpp() {
     .arg("-fsyntax-only")
     .arg("-I")
     .arg(crate_dir().join("include"))
-    .arg(crate_dir().join(HARNESS));
+    .args(harness_sources());
     run(cmd, "compiling the C harness as C++11");
 }
 
@@ -270,13 +288,16 @@ fn harness_calls_every_header_function() {
         functions.len() >= 20,
         "found only {functions:?} in granbond.h: the header parser is out of date"
     );
-    let harness = std::fs::read_to_string(crate_dir().join(HARNESS)).expect("read the C harness");
+    let harness: String = harness_sources()
+        .iter()
+        .map(|p| std::fs::read_to_string(p).unwrap_or_else(|e| panic!("read {}: {e}", p.display())))
+        .collect();
     let missing: Vec<&String> = functions
         .iter()
         .filter(|f| !harness.contains(&format!("{f}(")))
         .collect();
     assert!(
         missing.is_empty(),
-        "{HARNESS} does not call {missing:?}: every function of granbond.h must be exercised from C"
+        "{HARNESS_DIR}/*.c do not call {missing:?}: every function of granbond.h must be exercised from C"
     );
 }

@@ -1,0 +1,519 @@
+/*
+ * The Voigt contact: pairs, batches, planes, time step, contact frames (from
+ * the kinematics or from the engine's geometry and the radii) and the parts
+ * an engine assembles a contact from.
+ */
+
+#include "harness.h"
+
+int test_voigt_contact(void)
+{
+    const GbVoigtParams p = voigt_fixture();
+    GbVoigtModel *m = NULL;
+    GbPairKinematics k, bad;
+    GbContactOutput out;
+    double state[GRANBOND_CONTACT_STATE_LEN], copy[GRANBOND_CONTACT_STATE_LEN];
+    double n[3], expected[3], v_rel[3], r, overlap, v_n, fn;
+    int c;
+
+    if (new_voigt_model(&p, &m))
+        return 1;
+    memset(state, 0, sizeof state);
+
+    /* Overlap, approaching: Fn = k_n overlap - gamma_n v_n along n. */
+    contact_at(&k, 1.0e-5, 0.01);
+    EXPECT_OK(granbond_voigt_compute(m, &k, DT, state, &out), "granbond_voigt_compute, overlapping");
+    r = distance3(k.x_i, k.x_j);
+    for (c = 0; c < 3; c++) {
+        n[c] = (k.x_i[c] - k.x_j[c]) / r;
+        v_rel[c] = k.v_i[c] - k.v_j[c];
+    }
+    overlap = k.radius_i + k.radius_j - r;
+    v_n = dot3(v_rel, n);
+    fn = p.k_n * overlap - p.gamma_n * v_n;
+    for (c = 0; c < 3; c++)
+        expected[c] = fn * n[c];
+    CHECK(v_n < 0.0, "approaching: v_n < 0");
+    CHECK(close_to(out.overlap, overlap, 1e-12), say("out.overlap = %.17g", overlap));
+    CHECK(close_to(out.normal_force, fn, 1e-12), say("out.normal_force = k_n overlap - gamma_n v_n = %.17g N", fn));
+    CHECK(vec_close(out.force_i, expected, 1e-12), "force on i = Fn n to 1e-12");
+    CHECK(dot3(out.force_i, n) > 0.0, "repulsive");
+    CHECK(out.touching == 1 && out.sliding == 0 && out.rolling_slip == 0, "touching, not sliding");
+
+    /* Separating fast: no attraction clamps Fn at 0. */
+    contact_at(&k, 1.0e-6, -100.0);
+    EXPECT_OK(granbond_voigt_compute(m, &k, DT, state, &out), "granbond_voigt_compute, separating fast");
+    CHECK(out.normal_force == 0.0 && out.touching == 1, "no attraction: Fn = 0");
+
+    /* Apart: nothing, and the history is forgotten. */
+    for (c = 0; c < GRANBOND_CONTACT_STATE_LEN; c++)
+        state[c] = 1.0e-9 * (c + 1);
+    contact_at(&k, -1.0e-5, 0.0);
+    EXPECT_OK(granbond_voigt_compute(m, &k, DT, state, &out), "granbond_voigt_compute, apart");
+    CHECK(out.touching == 0 && vec_zero(out.force_i) && vec_zero(out.torque_i) && vec_zero(out.torque_j) &&
+              out.normal_force == 0.0,
+          "apart: not touching, no force, no torque");
+    CHECK(close_to(out.overlap, -1.0e-5, 1e-9), "apart: overlap < 0 reported");
+    for (c = 0; c < GRANBOND_CONTACT_STATE_LEN; c++)
+        CHECK(state[c] == 0.0, say("apart: state slot %d zeroed", c));
+
+    /* Errors. */
+    contact_at(&k, 1.0e-5, 0.01);
+    memcpy(copy, state, sizeof state);
+    bad = k;
+    memcpy(bad.x_i, bad.x_j, sizeof bad.x_i);
+    EXPECT(granbond_voigt_compute(m, &bad, DT, state, &out), GB_STATUS_COINCIDENT_CENTRES,
+           "granbond_voigt_compute, coincident centres");
+    bad = k;
+    bad.w_i[2] = NAN;
+    EXPECT(granbond_voigt_compute(m, &bad, DT, state, &out), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_voigt_compute, NaN w_i");
+    bad = k;
+    bad.radius_j = 0.0;
+    EXPECT(granbond_voigt_compute(m, &bad, DT, state, &out), GB_STATUS_NON_POSITIVE_RADIUS,
+           "granbond_voigt_compute, radius_j = 0");
+    EXPECT(granbond_voigt_compute(m, &k, -DT, state, &out), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_compute, dt < 0");
+    EXPECT(granbond_voigt_compute(m, &k, NAN, state, &out), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_compute, dt = NaN");
+    CHECK(memcmp(copy, state, sizeof state) == 0, "state untouched");
+
+    granbond_voigt_model_free(m);
+    return 0;
+}
+
+#define N_CONTACTS 3
+
+int test_voigt_batch(void)
+{
+    const GbVoigtParams p = voigt_fixture();
+    GbVoigtModel *m = NULL;
+    GbPairKinematics k[N_CONTACTS];
+    GbContactOutput out[N_CONTACTS], single;
+    double states[N_CONTACTS * GRANBOND_CONTACT_STATE_LEN], one[GRANBOND_CONTACT_STATE_LEN];
+    size_t failed = 999;
+    int b;
+
+    if (new_voigt_model(&p, &m))
+        return 1;
+    for (b = 0; b < N_CONTACTS; b++) {
+        contact_at(&k[b], 1.0e-6 * (b + 1), 0.01 * b);
+        k[b].v_i[0] += 1.0e-3; /* some sliding velocity too */
+        k[b].w_i[1] = 0.3;
+    }
+    memset(states, 0, sizeof states);
+
+    k[1].radius_i = 0.0;
+    memset(out, 0, sizeof out);
+    out[2].touching = -7;
+    EXPECT(granbond_voigt_compute_batch(m, N_CONTACTS, k, DT, states, out, &failed), GB_STATUS_NON_POSITIVE_RADIUS,
+           "granbond_voigt_compute_batch with radius 0 in contact 1");
+    CHECK(failed == 1, say("failed_index = 1 (got %u)", (unsigned)failed));
+    EXPECT_MESSAGE("contact 1");
+    CHECK(out[0].touching == 1 && out[2].touching == -7, "contact 0 computed, contact 2 not touched");
+    EXPECT(granbond_voigt_compute_batch(m, N_CONTACTS, k, DT, states, out, NULL), GB_STATUS_NON_POSITIVE_RADIUS,
+           "the same batch with failed_index = NULL");
+    k[1].radius_i = R_C;
+
+    memset(states, 0, sizeof states);
+    failed = 999;
+    EXPECT_OK(granbond_voigt_compute_batch(m, N_CONTACTS, k, DT, states, out, &failed),
+              "granbond_voigt_compute_batch");
+    CHECK(failed == 999, "failed_index left alone on success");
+    for (b = 0; b < N_CONTACTS; b++) {
+        memset(one, 0, sizeof one);
+        EXPECT_OK(granbond_voigt_compute(m, &k[b], DT, one, &single), say("granbond_voigt_compute, contact %d", b));
+        CHECK(vec_close(out[b].force_i, single.force_i, 1e-15) && vec_close(out[b].torque_i, single.torque_i, 1e-15) &&
+                  memcmp(one, states + b * GRANBOND_CONTACT_STATE_LEN, sizeof one) == 0 && out[b].touching == 1,
+              say("batch contact %d = single call", b));
+    }
+
+    EXPECT(granbond_voigt_compute_batch(m, N_CONTACTS, k, INFINITY, states, out, &failed),
+           GB_STATUS_INVALID_ARGUMENT, "granbond_voigt_compute_batch with dt = inf");
+    EXPECT_OK(granbond_voigt_compute_batch(m, 0, NULL, DT, NULL, NULL, NULL),
+              "granbond_voigt_compute_batch, count = 0 and NULL arrays");
+
+    granbond_voigt_model_free(m);
+    return 0;
+}
+
+int test_voigt_plane(void)
+{
+    const GbVoigtParams p = voigt_fixture();
+    GbVoigtModel *m = NULL;
+    GbSphereKinematics sphere, bad;
+    GbPlane plane, tilted;
+    GbContactOutput out;
+    double state[GRANBOND_CONTACT_STATE_LEN];
+    const double overlap = 2.0e-5, speed = 0.02;
+    double fn;
+
+    if (new_voigt_model(&p, &m))
+        return 1;
+    memset(state, 0, sizeof state);
+    memset(&plane, 0, sizeof plane);
+    plane.point[0] = 0.3;
+    plane.point[1] = -0.1;
+    plane.normal[2] = 1.0;
+    memset(&sphere, 0, sizeof sphere);
+    sphere.radius = R_C;
+    sphere.x[0] = 0.3;
+    sphere.x[1] = -0.1;
+    sphere.x[2] = R_C - overlap;
+    sphere.v[2] = -speed;
+
+    EXPECT_OK(granbond_voigt_compute_plane(m, &sphere, &plane, DT, state, &out),
+              "granbond_voigt_compute_plane, sphere pressed into the plane");
+    fn = p.k_n * (R_C - sphere.x[2]) + p.gamma_n * speed;
+    CHECK(close_to(out.overlap, R_C - sphere.x[2], 1e-12), "plane overlap = R - gap");
+    CHECK(close_to(out.normal_force, fn, 1e-12), say("plane Fn = k_n overlap - gamma_n v_n = %.17g N", fn));
+    CHECK(close_to(out.force_i[2], fn, 1e-12) && out.force_i[0] == 0.0 && out.force_i[1] == 0.0,
+          "force along the plane normal, repulsive");
+    CHECK(out.touching == 1, "touching");
+
+    /* The plane's normal must be a unit vector; any unit direction will do. */
+    tilted = plane;
+    tilted.normal[2] = 2.0;
+    EXPECT(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_compute_plane, |normal| = 2");
+    EXPECT_MESSAGE("unit");
+    tilted.normal[2] = 0.0;
+    EXPECT(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_compute_plane, normal = 0");
+    tilted.normal[0] = 0.0;
+    tilted.normal[1] = 0.6;
+    tilted.normal[2] = 0.8;
+    EXPECT_OK(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out),
+              "granbond_voigt_compute_plane, normal (0, 0.6, 0.8)");
+
+    tilted = plane;
+    tilted.point[0] = NAN;
+    EXPECT(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_voigt_compute_plane, NaN plane point");
+    tilted = plane;
+    tilted.velocity[1] = INFINITY;
+    EXPECT(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_voigt_compute_plane, inf plane velocity");
+    bad = sphere;
+    bad.radius = 0.0;
+    EXPECT(granbond_voigt_compute_plane(m, &bad, &plane, DT, state, &out), GB_STATUS_NON_POSITIVE_RADIUS,
+           "granbond_voigt_compute_plane, radius 0");
+    EXPECT(granbond_voigt_compute_plane(m, &sphere, &plane, -DT, state, &out), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_compute_plane, dt < 0");
+
+    granbond_voigt_model_free(m);
+    return 0;
+}
+
+int test_voigt_timestep(void)
+{
+    const GbVoigtParams p = voigt_fixture();
+    GbVoigtModel *m = NULL;
+    const double mass = 2500.0 * 4.0 / 3.0 * PI * R_C * R_C * R_C;
+    double dt = -1.0, bound;
+
+    if (new_voigt_model(&p, &m))
+        return 1;
+    EXPECT_OK(granbond_voigt_critical_timestep(m, R_C, R_C, mass, mass, &dt), "granbond_voigt_critical_timestep");
+    bound = 2.0 * sqrt(0.5 * mass / p.k_n);
+    CHECK(isfinite(dt) && dt > 0.0, say("critical time step %.6g s is positive and finite", dt));
+    CHECK(dt <= bound * (1.0 + 1e-12), say("critical time step <= 2 sqrt(m_eff / k_n) = %.6g s", bound));
+    EXPECT(granbond_voigt_critical_timestep(m, R_C, R_C, 0.0, mass, &dt), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_critical_timestep, mass_i = 0");
+    EXPECT_MESSAGE("mass_i");
+    EXPECT(granbond_voigt_critical_timestep(m, R_C, R_C, mass, NAN, &dt), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_critical_timestep, mass_j = NaN");
+    EXPECT(granbond_voigt_critical_timestep(m, R_C, -R_C, mass, mass, &dt), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_critical_timestep, radius_j < 0");
+    EXPECT_MESSAGE("radius_j");
+    granbond_voigt_model_free(m);
+    return 0;
+}
+
+int test_contact_frames(void)
+{
+    GbPairKinematics k, bad;
+    GbSphereKinematics sphere, bad_sphere;
+    GbPlane plane, tilted;
+    GbContactFrame frame;
+    double n[3], r;
+    int c;
+
+    /* Sphere pair. */
+    contact_at(&k, 1.0e-5, 0.01);
+    k.radius_j = 0.7e-3;
+    k.w_i[0] = 0.2;
+    k.w_j[1] = -0.3;
+    k.v_j[2] = 0.004;
+    memset(&frame, 0xAB, sizeof frame);
+    EXPECT_OK(granbond_contact_frame_pair(&k, &frame), "granbond_contact_frame_pair");
+    r = distance3(k.x_i, k.x_j);
+    for (c = 0; c < 3; c++)
+        n[c] = (k.x_i[c] - k.x_j[c]) / r;
+    CHECK(vec_close(frame.n, n, 1e-15), "frame.n = (x_i - x_j) / |x_i - x_j|");
+    CHECK(close_to(frame.overlap, k.radius_i + k.radius_j - r, 1e-12), "frame.overlap = R_i + R_j - r");
+    CHECK(frame.lever_i == k.radius_i && frame.lever_j == k.radius_j, "frame levers = radii");
+    CHECK(close_to(frame.r_eff, k.radius_i * k.radius_j / (k.radius_i + k.radius_j), 1e-15),
+          "frame.r_eff = R_i R_j / (R_i + R_j)");
+    CHECK(vec_equal(frame.v_i, k.v_i) && vec_equal(frame.v_j, k.v_j) && vec_equal(frame.w_i, k.w_i) &&
+              vec_equal(frame.w_j, k.w_j),
+          "frame velocities = kinematics");
+    bad = k;
+    memcpy(bad.x_j, bad.x_i, sizeof bad.x_j);
+    EXPECT(granbond_contact_frame_pair(&bad, &frame), GB_STATUS_COINCIDENT_CENTRES,
+           "granbond_contact_frame_pair, coincident centres");
+    bad = k;
+    bad.v_j[0] = NAN;
+    EXPECT(granbond_contact_frame_pair(&bad, &frame), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_contact_frame_pair, NaN v_j");
+    bad = k;
+    bad.radius_i = 0.0;
+    EXPECT(granbond_contact_frame_pair(&bad, &frame), GB_STATUS_NON_POSITIVE_RADIUS,
+           "granbond_contact_frame_pair, radius 0");
+
+    /* Sphere on a plane: the wall is the j side, with no lever and no spin. */
+    memset(&plane, 0, sizeof plane);
+    plane.point[2] = 0.5e-3;
+    plane.normal[2] = 1.0;
+    plane.velocity[0] = 0.01;
+    memset(&sphere, 0, sizeof sphere);
+    sphere.radius = R_C;
+    sphere.x[2] = 0.5e-3 + R_C - 3.0e-5;
+    sphere.v[2] = -0.02;
+    sphere.w[1] = 1.5;
+    memset(&frame, 0xAB, sizeof frame);
+    EXPECT_OK(granbond_contact_frame_plane(&sphere, &plane, &frame), "granbond_contact_frame_plane");
+    CHECK(vec_equal(frame.n, plane.normal), "frame.n = plane normal");
+    CHECK(close_to(frame.overlap, 3.0e-5, 1e-9), "frame.overlap = R - gap");
+    CHECK(frame.lever_i == R_C && frame.lever_j == 0.0 && frame.r_eff == R_C, "levers R and 0, r_eff = R");
+    CHECK(vec_equal(frame.v_i, sphere.v) && vec_equal(frame.v_j, plane.velocity) && vec_equal(frame.w_i, sphere.w) &&
+              vec_zero(frame.w_j),
+          "frame velocities: sphere, wall, no wall spin");
+    tilted = plane;
+    tilted.normal[2] = 0.5;
+    EXPECT(granbond_contact_frame_plane(&sphere, &tilted, &frame), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_contact_frame_plane, |normal| = 0.5");
+    EXPECT_MESSAGE("unit");
+    bad_sphere = sphere;
+    bad_sphere.w[2] = INFINITY;
+    EXPECT(granbond_contact_frame_plane(&bad_sphere, &plane, &frame), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_contact_frame_plane, inf spin");
+    bad_sphere = sphere;
+    bad_sphere.radius = 0.0;
+    EXPECT(granbond_contact_frame_plane(&bad_sphere, &plane, &frame), GB_STATUS_NON_POSITIVE_RADIUS,
+           "granbond_contact_frame_plane, radius 0");
+    return 0;
+}
+
+/* normal + tangential + rolling over a frame, assembled as an engine would. */
+static int voigt_by_parts(const GbVoigtModel *m, const GbContactFrame *f, int rolling, double dt, double *state,
+                          GbContactOutput *out)
+{
+    GbTangentialOutput t;
+    double fn = -1.0, t_r[3] = {0.0, 0.0, 0.0};
+    int32_t slip = 0;
+    int c;
+    EXPECT_OK(granbond_voigt_normal_force(m, f, &fn), "granbond_voigt_normal_force");
+    EXPECT_OK(granbond_voigt_tangential(m, f, fn, dt, state, &t), "granbond_voigt_tangential");
+    if (rolling)
+        EXPECT_OK(granbond_voigt_rolling(m, f, fn, dt, state + 3, t_r, &slip), "granbond_voigt_rolling");
+    memset(out, 0, sizeof *out);
+    for (c = 0; c < 3; c++) {
+        out->force_i[c] = f->n[c] * fn + t.force_i[c];
+        out->torque_i[c] = t.torque_i[c] + t_r[c];
+        out->torque_j[c] = t.torque_j[c] - t_r[c];
+    }
+    out->normal_force = fn;
+    out->overlap = f->overlap;
+    out->touching = 1;
+    out->sliding = t.sliding;
+    out->rolling_slip = slip;
+    return 0;
+}
+
+static int same_contact_output(const GbContactOutput *a, const GbContactOutput *b)
+{
+    return vec_close(a->force_i, b->force_i, 1e-15) && vec_close(a->torque_i, b->torque_i, 1e-15) &&
+           vec_close(a->torque_j, b->torque_j, 1e-15) && close_to(a->normal_force, b->normal_force, 1e-15) &&
+           a->touching == b->touching && a->sliding == b->sliding && a->rolling_slip == b->rolling_slip;
+}
+
+static int identical_contact_output(const GbContactOutput *a, const GbContactOutput *b)
+{
+    return memcmp(a->force_i, b->force_i, sizeof a->force_i) == 0 &&
+           memcmp(a->torque_i, b->torque_i, sizeof a->torque_i) == 0 &&
+           memcmp(a->torque_j, b->torque_j, sizeof a->torque_j) == 0 &&
+           memcmp(&a->normal_force, &b->normal_force, sizeof a->normal_force) == 0 &&
+           memcmp(&a->overlap, &b->overlap, sizeof a->overlap) == 0 && a->touching == b->touching &&
+           a->sliding == b->sliding && a->rolling_slip == b->rolling_slip;
+}
+
+int test_voigt_parts(void)
+{
+    const GbVoigtParams p = voigt_fixture();
+    GbVoigtModel *m = NULL;
+    GbPairKinematics k;
+    GbContactFrame frame, bad;
+    GbContactOutput whole, parts;
+    GbTangentialOutput t;
+    double state_whole[GRANBOND_CONTACT_STATE_LEN], state_parts[GRANBOND_CONTACT_STATE_LEN];
+    double state_fields[GRANBOND_CONTACT_STATE_LEN];
+    double state_sep[GRANBOND_CONTACT_STATE_LEN], state_normal[GRANBOND_CONTACT_STATE_LEN];
+    GbContactOutput fields, sep, normal;
+    GbContactFrame built;
+    double del[3], rsq, distance;
+    double fn = 0.0, v_rel[3], torque[3], spring[3] = {0.0, 0.0, 0.0}, angle[3] = {0.0, 0.0, 0.0};
+    int32_t slip = 0;
+    int step, c;
+
+    if (new_voigt_model(&p, &m))
+        return 1;
+
+    /* The parts, and the unchecked whole step on the frame, reproduce
+     * granbond_voigt_compute, step after step. */
+    memset(state_whole, 0, sizeof state_whole);
+    memset(state_parts, 0, sizeof state_parts);
+    memset(state_fields, 0, sizeof state_fields);
+    memset(state_sep, 0, sizeof state_sep);
+    memset(state_normal, 0, sizeof state_normal);
+    for (step = 0; step < 4; step++) {
+        contact_at(&k, 1.0e-5 + 1.0e-6 * step, 0.01);
+        k.v_i[0] += 2.0e-3;
+        k.w_i[1] = 0.4;
+        k.w_j[0] = -0.1 * step;
+        EXPECT_OK(granbond_voigt_compute(m, &k, DT, state_whole, &whole), say("granbond_voigt_compute, step %d", step));
+        EXPECT_OK(granbond_contact_frame_pair(&k, &frame), say("granbond_contact_frame_pair, step %d", step));
+        if (voigt_by_parts(m, &frame, p.rolling, DT, state_parts, &parts))
+            return 1;
+        CHECK(same_contact_output(&whole, &parts), say("step %d: normal + tangential + rolling = whole step", step));
+        CHECK(vec_close(state_whole, state_parts, 1e-15) && vec_close(state_whole + 3, state_parts + 3, 1e-15),
+              say("step %d: same spring and rolling angle", step));
+        EXPECT_OK(granbond_voigt_compute_fields_unchecked(m, frame.n, frame.overlap, frame.lever_i, frame.lever_j,
+                                                          frame.r_eff, frame.v_i, frame.v_j, frame.w_i, frame.w_j, DT,
+                                                          state_fields, &fields),
+                  say("granbond_voigt_compute_fields_unchecked, step %d", step));
+        CHECK(same_contact_output(&fields, &whole) && memcmp(state_fields, state_whole, sizeof state_fields) == 0,
+              say("step %d: unchecked step on the frame's fields = granbond_voigt_compute", step));
+        /* From the engine's geometry and the radii: the same frame, the same bits. */
+        for (c = 0; c < 3; c++)
+            del[c] = k.x_i[c] - k.x_j[c];
+        rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+        distance = sqrt(rsq);
+        EXPECT_OK(granbond_contact_frame_separation(del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j,
+                                                    &built),
+                  say("granbond_contact_frame_separation, step %d", step));
+        CHECK(memcmp(&built, &frame, sizeof built) == 0,
+              say("step %d: the frame from the separation = granbond_contact_frame_pair, bit for bit", step));
+        EXPECT_OK(granbond_contact_frame_normal(frame.n, distance, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j,
+                                                &built),
+                  say("granbond_contact_frame_normal, step %d", step));
+        CHECK(memcmp(&built, &frame, sizeof built) == 0,
+              say("step %d: the frame from the normal and distance = granbond_contact_frame_pair", step));
+        EXPECT_OK(granbond_voigt_compute_separation_unchecked(m, del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i,
+                                                              k.w_j, DT, state_sep, &sep),
+                  say("granbond_voigt_compute_separation_unchecked, step %d", step));
+        CHECK(identical_contact_output(&sep, &fields) && memcmp(state_sep, state_fields, sizeof state_fields) == 0,
+              say("step %d: unchecked step on the separation = on the frame's fields, bit for bit", step));
+        EXPECT_OK(granbond_voigt_compute_normal_unchecked(m, frame.n, distance, k.radius_i, k.radius_j, k.v_i, k.v_j,
+                                                          k.w_i, k.w_j, DT, state_normal, &normal),
+                  say("granbond_voigt_compute_normal_unchecked, step %d", step));
+        CHECK(identical_contact_output(&normal, &fields) && memcmp(state_normal, state_fields, sizeof state_fields) == 0,
+              say("step %d: unchecked step on the normal and distance = on the frame's fields, bit for bit", step));
+    }
+    bad = frame;
+    bad.w_j[2] = NAN;
+    EXPECT(granbond_voigt_compute_fields_unchecked(m, bad.n, bad.overlap, bad.lever_i, bad.lever_j, bad.r_eff, bad.v_i,
+                                                   bad.v_j, bad.w_i, bad.w_j, DT, state_fields, &fields),
+           GB_STATUS_NON_FINITE_INPUT, "granbond_voigt_compute_fields_unchecked, NaN w_j: a non-finite torque is reported");
+    EXPECT_MESSAGE("granbond_voigt_compute_fields_unchecked");
+
+    /* The normal part alone: k_n overlap - gamma_n v_n. */
+    contact_at(&k, 1.0e-5, 0.01);
+    EXPECT_OK(granbond_contact_frame_pair(&k, &frame), "granbond_contact_frame_pair");
+    EXPECT_OK(granbond_voigt_normal_force(m, &frame, &fn), "granbond_voigt_normal_force");
+    for (c = 0; c < 3; c++)
+        v_rel[c] = frame.v_i[c] - frame.v_j[c];
+    CHECK(close_to(fn, p.k_n * frame.overlap - p.gamma_n * dot3(v_rel, frame.n), 1e-12),
+          "granbond_voigt_normal_force = k_n overlap - gamma_n v_n");
+
+    /* Sliding: the tangential force sits on the Coulomb cap mu |Fn|. */
+    k.v_i[0] += 10.0;
+    EXPECT_OK(granbond_contact_frame_pair(&k, &frame), "granbond_contact_frame_pair, fast slip");
+    EXPECT_OK(granbond_voigt_tangential(m, &frame, fn, 1.0e-3, spring, &t), "granbond_voigt_tangential, fast slip");
+    CHECK(t.sliding == 1 && close_to(norm3(t.force_i), p.mu * fabs(fn), 1e-12), "sliding: |Ft| = mu |Fn|");
+    CHECK(fabs(dot3(t.force_i, frame.n)) <= 1e-12 * norm3(t.force_i), "Ft is tangential");
+
+    /* A model without rolling resistance gives no rolling torque and
+     * forgets the rolling angle. */
+    {
+        GbVoigtParams q = p;
+        GbVoigtModel *off = NULL;
+        double a[3] = {1.0e-3, 2.0e-3, 0.0}, tq[3] = {1.0, 1.0, 1.0};
+        int32_t sl = 7;
+        q.rolling = 0;
+        if (new_voigt_model(&q, &off))
+            return 1;
+        EXPECT_OK(granbond_voigt_rolling(off, &frame, fn, DT, a, tq, &sl), "granbond_voigt_rolling, rolling off");
+        CHECK(norm3(tq) == 0.0 && norm3(a) == 0.0 && sl == 0, "rolling off: no torque, angle zeroed");
+        granbond_voigt_model_free(off);
+    }
+
+    /* Evaluating without advancing: the stored state is read, not written,
+     * and a step of the same frame with dt = 0 gives the same loads. */
+    {
+        double held[GRANBOND_CONTACT_STATE_LEN] = {1.0e-7, -2.0e-7, 0.0, 3.0e-4, 1.0e-4, 0.0};
+        double copy[GRANBOND_CONTACT_STATE_LEN], tq[3], tq0[3];
+        GbContactOutput ev, st;
+        GbTangentialOutput te, t0;
+        int32_t sl = 0, sl0 = 0;
+        memcpy(copy, held, sizeof held);
+        EXPECT_OK(granbond_voigt_evaluate_frame(m, &frame, held, &ev), "granbond_voigt_evaluate_frame");
+        CHECK(memcmp(copy, held, sizeof held) == 0, "granbond_voigt_evaluate_frame leaves the state alone");
+        EXPECT_OK(granbond_voigt_compute_fields_unchecked(m, frame.n, frame.overlap, frame.lever_i, frame.lever_j,
+                                                          frame.r_eff, frame.v_i, frame.v_j, frame.w_i, frame.w_j, 0.0,
+                                                          copy, &st),
+                  "granbond_voigt_compute_fields_unchecked, dt = 0");
+        CHECK(close_to(ev.force_i[0], st.force_i[0], 1e-15) && close_to(ev.force_i[1], st.force_i[1], 1e-15) &&
+                  close_to(ev.torque_i[2], st.torque_i[2], 1e-15),
+              "evaluation = a step of zero length");
+        memcpy(copy, held, sizeof held);
+        EXPECT_OK(granbond_voigt_tangential_evaluate(m, &frame, fn, held, &te), "granbond_voigt_tangential_evaluate");
+        EXPECT_OK(granbond_voigt_tangential(m, &frame, fn, 0.0, copy, &t0), "granbond_voigt_tangential, dt = 0");
+        CHECK(close_to(te.force_i[1], t0.force_i[1], 1e-15), "tangential evaluation = a step of zero length");
+        EXPECT_OK(granbond_voigt_rolling_evaluate(m, &frame, fn, held + 3, tq, &sl), "granbond_voigt_rolling_evaluate");
+        EXPECT_OK(granbond_voigt_rolling(m, &frame, fn, 0.0, copy + 3, tq0, &sl0), "granbond_voigt_rolling, dt = 0");
+        CHECK(close_to(tq[0], tq0[0], 1e-15) && sl == sl0, "rolling evaluation = a step of zero length");
+        bad = frame;
+        bad.v_i[0] = NAN;
+        EXPECT(granbond_voigt_evaluate_frame(m, &bad, held, &ev), GB_STATUS_NON_FINITE_INPUT,
+               "granbond_voigt_evaluate_frame, NaN v_i");
+    }
+
+    /* Errors. */
+    bad = frame;
+    bad.overlap = NAN;
+    EXPECT(granbond_voigt_normal_force(m, &bad, &fn), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_voigt_normal_force, NaN overlap");
+    bad = frame;
+    bad.n[0] *= 2.0;
+    EXPECT(granbond_voigt_normal_force(m, &bad, &fn), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_normal_force, non-unit normal");
+    EXPECT_MESSAGE("unit");
+    bad = frame;
+    bad.w_j[1] = -INFINITY;
+    EXPECT(granbond_voigt_tangential(m, &bad, fn, DT, spring, &t), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_voigt_tangential, -inf w_j");
+    EXPECT(granbond_voigt_tangential(m, &frame, fn, -DT, spring, &t), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_tangential, dt < 0");
+    EXPECT(granbond_voigt_tangential(m, &frame, NAN, DT, spring, &t), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_voigt_tangential, NaN normal force");
+    EXPECT(granbond_voigt_rolling(m, &frame, INFINITY, DT, angle, torque, &slip), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_voigt_rolling, infinite normal force");
+    EXPECT(granbond_voigt_rolling(m, &bad, fn, DT, angle, torque, &slip), GB_STATUS_NON_FINITE_INPUT,
+           "granbond_voigt_rolling, -inf w_j");
+    EXPECT(granbond_voigt_rolling(m, &frame, fn, NAN, angle, torque, &slip), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_rolling, dt = NaN");
+
+    granbond_voigt_model_free(m);
+    return 0;
+}
