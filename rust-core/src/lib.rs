@@ -14,6 +14,7 @@ pub mod kinematics;
 pub mod pair_source;
 pub mod parameters;
 pub mod real;
+pub mod simd;
 pub mod stability;
 pub mod state_layout;
 pub mod timestep_check;

@@ -10,8 +10,8 @@
 //! contract.
 //!
 //! A data-dependent choice is a [`Real::Mask`] and [`Real::select`] instead
-//! of a jump: for `f64` the mask is a `bool` (the scalar kernel's code is the
-//! same as before), for lanes one all-ones or all-zeros word per lane.
+//! of a jump: for `f64` the mask is a `bool`, for lanes one all-ones or
+//! all-zeros word per lane.
 //!
 //! The lane types ([`packed`]: 4 lanes with AVX2, 8 with AVX-512) wrap the
 //! packed registers and their intrinsics, so LLVM keeps every quantity of a
@@ -21,6 +21,7 @@ use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
 #[cfg(target_arch = "x86_64")]
 pub(crate) mod packed;
+pub mod paired;
 
 pub trait Real:
     Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self>
@@ -66,7 +67,7 @@ pub trait Real:
     fn all(m: Self::Mask) -> bool;
 
     /// `(a.sqrt(), b.sqrt())`. Lanes are wide already; `f64` pairs the two
-    /// in one instruction (see [`crate::bond::lanes`]).
+    /// in one instruction (see [`paired`]).
     #[inline(always)]
     fn sqrt2(a: Self, b: Self) -> (Self, Self) {
         (a.sqrt(), b.sqrt())
@@ -134,10 +135,10 @@ impl Real for f64 {
     }
     #[inline(always)]
     fn sqrt2(a: Self, b: Self) -> (Self, Self) {
-        crate::bond::lanes::sqrt2(a, b)
+        paired::sqrt2(a, b)
     }
     #[inline(always)]
     fn div2(a: Self, b: Self, c: Self, d: Self) -> (Self, Self) {
-        crate::bond::lanes::div2(a, b, c, d)
+        paired::div2(a, b, c, d)
     }
 }

@@ -5,13 +5,14 @@
 
 mod common;
 
-use granbond::bond::damping::{scaled_units, unit};
+use granbond::bond::damping::{reciprocal_unit, unit_scale};
+use granbond::bond::features::{BEND, TWIST};
 use granbond::bond::hysteresis::Loop;
-use granbond::bond::kernel::{BEND, TWIST};
-use granbond::bond::lanes::{div2, norms, sqrt2};
+use granbond::bond::paired::{norms, reciprocals};
 use granbond::bond::twist_bend::{BendHistory, TorqueLaw, TwistHistory};
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState};
 use granbond::kinematics::PairKinematics;
+use granbond::real::paired::{div2, sqrt2};
 use granbond::vector::{tangential_part, Vec3};
 
 struct Rng(u64);
@@ -136,9 +137,16 @@ fn paired_unit_vectors_are_the_plain_quotients() {
                     Vec3::zeros()
                 }
             };
-            assert!(same(unit(a, eps, smooth), plain(a)));
-            let scale = |v: Vec3| if smooth { v.norm().max(eps) } else { v.norm() };
-            let (ua, ub) = scaled_units(a, scale(a), b, scale(b));
+            // The kernel's path: the divisors, their reciprocals paired
+            // (or one alone), the products.
+            let (sa, sb) = (
+                unit_scale(a.norm(), eps, smooth),
+                unit_scale(b.norm(), eps, smooth),
+            );
+            let (ia, _) = reciprocals(sa, true, sb, false);
+            assert!(same(reciprocal_unit(a, sa, ia), plain(a)));
+            let (ia, ib) = reciprocals(sa, true, sb, true);
+            let (ua, ub) = (reciprocal_unit(a, sa, ia), reciprocal_unit(b, sb, ib));
             assert!(same(ua, plain(a)) && same(ub, plain(b)));
         }
     }

@@ -250,7 +250,7 @@ fn the_switches_decide_which_values_the_model_reads() {
 
 #[test]
 fn smooth_damping_switches_damping_on() {
-    use granbond::bond::kernel::{DAMPING, SMOOTH};
+    use granbond::bond::features::{DAMPING, SMOOTH};
     let p = BondParams {
         damping: 0,
         damping_smooth: 1,

@@ -1,4 +1,4 @@
-//! `BondModel::step_scattered` computes bonds several at a time (in lanes of
+//! `BondModel::step_batch` and `BondModel::step_scattered` compute bonds several at a time (in lanes of
 //! 4 with AVX2); every bond must still get exactly the bits one
 //! `BondModel::step` gives it, whichever lane or chunk it lands in, and on
 //! every instruction set, including bonds that are not intact, break in
@@ -188,8 +188,9 @@ impl Atoms {
     }
 }
 
-/// `step_scattered` and `step_indexed` on every instruction set this CPU
-/// runs against one `step` per bond, bit for bit. Returns how many
+/// `step_batch` (states side by side), `step_scattered` and `step_indexed`
+/// on every instruction set this CPU runs against one `step` per bond, bit
+/// for bit. Returns how many
 /// instruction sets ran.
 fn check_scattered(p: BondParams, bonds: &[(PairKinematics, BondState)]) -> Result<usize, TestCaseError> {
     let model = BondModel::new(p).unwrap();
@@ -205,13 +206,17 @@ fn check_scattered(p: BondParams, bonds: &[(PairKinematics, BondState)]) -> Resu
             continue;
         };
         ran += 1;
-        for source in ["scattered", "indexed"] {
+        for source in ["batch", "scattered", "indexed"] {
             let mut states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
             let mut outs = stale_outputs(bonds.len());
-            let mut refs: Vec<&mut BondState> = states.iter_mut().collect();
-            let got = match source {
-                "scattered" => m.step_scattered(&kin, DT, &mut refs, &mut outs),
-                _ => m.step_indexed(&indexed, DT, &mut refs, &mut outs),
+            let got = if source == "batch" {
+                m.step_batch(&kin, DT, &mut states, &mut outs)
+            } else {
+                let mut refs: Vec<&mut BondState> = states.iter_mut().collect();
+                match source {
+                    "scattered" => m.step_scattered(&kin, DT, &mut refs, &mut outs),
+                    _ => m.step_indexed(&indexed, DT, &mut refs, &mut outs),
+                }
             };
             prop_assert_eq!(got, expected, "{:?} {}: result", simd, source);
             for i in 0..bonds.len() {

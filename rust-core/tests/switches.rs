@@ -5,7 +5,7 @@
 mod common;
 
 use common::*;
-use granbond::bond::kernel::{BEND, COMPRESSION, DAMPING, SHEAR, SMOOTH, TENSION, TWIST};
+use granbond::bond::features::{BEND, COMPRESSION, DAMPING, SHEAR, SMOOTH, TENSION, TWIST};
 use granbond::bond::{BondOutput, BondParams, BondState};
 use granbond::kinematics::PairKinematics;
 

@@ -24,13 +24,8 @@ pub fn sign<R: Real>(v: R, v_eps: f64, smooth: bool) -> R {
     }
 }
 
-/// `v/|v|`, or its smooth form `v / max(|v|, v_eps)`; zero for `v = 0`.
-#[inline(always)]
-pub fn unit<R: Real, V: Vector<R>>(v: V, v_eps: f64, smooth: bool) -> V {
-    scaled_unit(v, unit_scale(v.norm(), v_eps, smooth))
-}
-
-/// The divisor of [`unit`] for a vector of length `len`.
+/// The divisor that makes a vector of length `len` its unit vector `v/|v|`,
+/// or its smooth form `v / max(|v|, v_eps)`.
 #[inline(always)]
 pub fn unit_scale<R: Real>(len: R, v_eps: f64, smooth: bool) -> R {
     if smooth {
@@ -40,29 +35,11 @@ pub fn unit_scale<R: Real>(len: R, v_eps: f64, smooth: bool) -> R {
     }
 }
 
-/// `v / scale`, zero unless `scale > 0` (the last step of [`unit`]),
-/// computed as `v * (1 / scale)`: one division, not three.
-#[inline(always)]
-pub fn scaled_unit<R: Real, V: Vector<R>>(v: V, scale: R) -> V {
-    reciprocal_unit(v, scale, R::splat(1.0) / scale)
-}
-
-/// [`scaled_unit`] given `inv_scale = 1 / scale` (so a kernel can pair that
-/// division with another one).
+/// `v / scale` given `inv_scale = 1 / scale` (one division, not three, and
+/// a kernel can pair it with another one); zero unless `scale > 0`.
 #[inline(always)]
 pub fn reciprocal_unit<R: Real, V: Vector<R>>(v: V, scale: R, inv_scale: R) -> V {
     V::select(scale.gt(R::splat(0.0)), v * inv_scale, V::zeros())
-}
-
-/// [`scaled_unit`] of two vectors, their reciprocals in one two-lane division.
-#[inline(always)]
-pub fn scaled_units<R: Real, V: Vector<R>>(a: V, scale_a: R, b: V, scale_b: R) -> (V, V) {
-    let one = R::splat(1.0);
-    let (inv_a, inv_b) = R::div2(one, scale_a, one, scale_b);
-    (
-        reciprocal_unit(a, scale_a, inv_a),
-        reciprocal_unit(b, scale_b, inv_b),
-    )
 }
 
 /// `F - eta |F| sgn(v_n)` for the scalar normal force.

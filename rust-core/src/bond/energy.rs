@@ -15,7 +15,7 @@
 //! bending        k_tt I |theta_t|^2 / 2
 //! ```
 
-use super::kernel::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
+use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
 use super::model::BondModel;
 use super::section::section;
 use super::state::{BondState, BondStatus};

@@ -1,28 +1,41 @@
 //! `bond/nonlinear`: the six-degree-of-freedom hysteretic bond
-//! (docs/models/bond-nonlinear.md). One module per law; [`kernel`] assembles them.
+//! (docs/models/bond-nonlinear.md).
+//!
+//! One module per law (`normal_law`, `hysteresis`, `shear`, `twist_bend`,
+//! `damping`, `breakage`, `section`, `energy`). Above them, each depending
+//! only on the ones before: the laws of a bond type ([`laws`]) and the parts
+//! switched on ([`features`]); the assembled step (`step`); the paths that
+//! feed it one bond at a time (`scalar`) or in lanes (`wide`); the compiled
+//! steps and the choice among them (`dispatch`); the model ([`model`]).
 
 pub mod breakage;
-mod chunk;
 pub mod creation;
 pub mod creation_check;
 pub mod damping;
+mod dispatch;
 pub mod energy;
+pub mod features;
 pub mod hysteresis;
-pub mod kernel;
-pub mod lanes;
+pub mod laws;
 pub mod model;
 pub mod normal_law;
+pub mod paired;
 pub mod params;
+mod scalar;
 pub mod section;
 pub mod shear;
 pub mod state;
+mod step;
 pub mod timestep;
 pub mod twist_bend;
 pub mod wall;
+#[cfg(target_arch = "x86_64")]
+mod wide;
 
+pub use crate::simd::Simd;
 pub use breakage::BreakMode;
 pub use energy::BondEnergy;
-pub use kernel::Simd;
+pub use laws::BondLaws;
 pub use model::BondModel;
 pub use params::{BondParams, ParameterError, PARAMETERS};
 pub use state::{BondOutput, BondState, BondStatus, BOND_SLOTS, BOND_STATE_LEN};

@@ -1,103 +1,53 @@
-//! A validated bond type: the laws built from [`BondParams`] and the kernel
-//! chosen for its switches.
+//! A bond type as engines use it: its laws ([`BondLaws`]) and the compiled
+//! steps chosen for their switches on this CPU.
 
-use super::breakage::StressLimits;
-use super::hysteresis::Loop;
-use super::kernel::{self, BatchKernel, Kernel, ScatteredKernels, Simd};
-use super::normal_law::NormalLaw;
+use super::dispatch::{kernels, Kernels};
+use super::laws::BondLaws;
 use super::params::{BondParams, ParameterError};
-use super::twist_bend::TorqueLaw;
+use super::state::{BondOutput, BondState};
+use crate::kinematics::{KinematicsError, PairKinematics};
+use crate::pair_source::IndexedPairs;
+use crate::simd::Simd;
+use std::ops::Deref;
 
 #[derive(Clone, Debug)]
 pub struct BondModel {
-    pub params: BondParams,
-    pub normal: NormalLaw,
-    pub twist: TorqueLaw,
-    pub bend: TorqueLaw,
-    pub stress_break: bool,
-    pub limits: StressLimits,
-    /// Bits of [`kernel`] (`TENSION`, `SHEAR`, ...) actually compiled in.
-    pub features: u32,
-    pub(crate) single: Kernel,
-    pub(crate) batch: BatchKernel,
-    /// For `step_scattered` and `step_indexed`, on the instruction set
-    /// chosen once, at construction.
-    pub(crate) kernels: ScatteredKernels,
+    laws: BondLaws,
+    /// For every step entry, on the instruction set chosen once, at
+    /// construction.
+    kernels: Kernels,
+}
+
+/// A model is read as its laws (`model.params`, `model.features`, ...).
+impl Deref for BondModel {
+    type Target = BondLaws;
+
+    fn deref(&self) -> &BondLaws {
+        &self.laws
+    }
 }
 
 impl BondModel {
     pub fn new(params: BondParams) -> Result<Self, ParameterError> {
-        params.validate()?;
-        let on = BondParams::switch;
-        let p = &params;
-        let mut features = 0;
-        for (flag, bit) in [
-            (p.tension, kernel::TENSION),
-            (p.compression, kernel::COMPRESSION),
-            (p.shear, kernel::SHEAR),
-            (p.twist, kernel::TWIST),
-            (p.bend, kernel::BEND),
-        ] {
-            if on(flag) {
-                features |= bit;
-            }
-        }
-        // Damping with every ratio zero changes nothing: leave it out.
-        let any_eta = p.eta_fn > 0.0 || p.eta_ft > 0.0 || p.eta_tn > 0.0 || p.eta_tt > 0.0;
-        if p.damping_on() && any_eta {
-            features |= kernel::DAMPING;
-            if on(p.damping_smooth) {
-                features |= kernel::SMOOTH;
-            }
-        }
-        Ok(Self {
-            params,
-            normal: NormalLaw::new(
-                Loop::new(p.k_fn1, p.ku_fn1, p.kc_fn1),
-                Loop::new(p.k_fn2, p.ku_fn2, p.kc_fn2),
-                p.compression_linear_below,
-                on(p.history_reset),
-            ),
-            twist: TorqueLaw {
-                hysteresis: Loop::new(p.k_tn, p.ku_tn, p.kc_tn),
-                history_reset: on(p.history_reset),
-            },
-            bend: TorqueLaw {
-                hysteresis: Loop::new(p.k_tt, p.ku_tt, p.kc_tt),
-                history_reset: on(p.history_reset),
-            },
-            stress_break: on(p.stress_break),
-            limits: StressLimits {
-                max_sigma: p.max_sigma,
-                max_tau: p.max_tau,
-                tension_factor: if on(p.use_ratio) {
-                    p.tension_compression_ratio
-                } else {
-                    1.0
-                },
-            },
-            features,
-            single: kernel::single_kernel(features),
-            batch: kernel::batch_kernel(features),
-            kernels: kernel::scattered_kernels(features, Simd::detect()),
-        })
+        let laws = BondLaws::new(params)?;
+        let kernels = kernels(laws.features, Simd::chosen());
+        Ok(Self { laws, kernels })
     }
 
-    /// The instruction set [`Self::step_scattered`] and
-    /// [`Self::step_indexed`] run on.
+    /// The instruction set [`Self::step_batch`], [`Self::step_scattered`]
+    /// and [`Self::step_indexed`] run on.
     pub fn simd(&self) -> Simd {
         self.kernels.simd
     }
 
-    /// The model with [`Self::step_scattered`] and [`Self::step_indexed`] on
-    /// `simd` (the same results,
-    /// only the speed differs), or `None` when this CPU does not run it or
-    /// it is not compiled in. For tests and benchmarks.
+    /// The model with its batch entries on `simd` (the same results, only
+    /// the speed differs), or `None` when this CPU does not run it or it is
+    /// not compiled in. For tests and benchmarks.
     pub fn with_simd(mut self, simd: Simd) -> Option<Self> {
         if !simd.available() {
             return None;
         }
-        let kernels = kernel::scattered_kernels(self.features, simd);
+        let kernels = kernels(self.laws.features, simd);
         if kernels.simd != simd {
             return None;
         }
@@ -105,37 +55,52 @@ impl BondModel {
         Some(self)
     }
 
-    /// The largest centre distance an intact bond of rest length `r0` can
-    /// reach: engines must keep pairs this far apart in their neighbour
-    /// lists. Distance mode: `max_distance`. Stress mode: the stretch at which
-    /// the tensile stress of the virgin tension line alone reaches its limit
-    /// (`gamma sigma_max / k_fn2`); infinite when that never happens.
-    pub fn max_bond_distance(&self, r0: f64) -> f64 {
-        if self.stress_break {
-            let k = self.params.k_fn2;
-            if k > 0.0 && (self.features & kernel::TENSION) != 0 {
-                r0 + self.limits.max_sigma * self.limits.tension_factor / k
-            } else {
-                f64::INFINITY
-            }
-        } else {
-            self.params.max_distance
-        }
+    /// Advances one bond (see [`super::scalar::bond_step`]).
+    #[inline]
+    pub fn step(
+        &self,
+        kin: &PairKinematics,
+        dt: f64,
+        state: &mut BondState,
+        out: &mut BondOutput,
+    ) -> Result<(), KinematicsError> {
+        (self.kernels.single)(&self.laws, kin, dt, state, out)
     }
 
-    /// Neighbour-list reach an engine needs so no intact bond drops out of
-    /// its lists, as a multiple of the contact distance `2 min_radius` of the
-    /// smallest spheres, with a 10% margin: the largest bonded centre distance
-    /// is `max_distance` (distance mode) or the creation distance plus the
-    /// largest tensile stretch (stress mode). Infinite when a bond can stretch
-    /// without limit (distance mode with `max_distance = inf`, or stress mode
-    /// with tension switched off or an infinite strength).
-    pub fn contact_distance_factor(&self, min_radius: f64) -> f64 {
-        let reach = if self.stress_break {
-            self.max_bond_distance(self.params.create_distance)
-        } else {
-            self.params.max_distance
-        };
-        (1.1 * reach / (2.0 * min_radius)).max(1.0)
+    /// Advances every bond of equal-length slices; stops at the first bad
+    /// input and reports its index.
+    pub fn step_batch(
+        &self,
+        kin: &[PairKinematics],
+        dt: f64,
+        states: &mut [BondState],
+        outs: &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        (self.kernels.batch)(&self.laws, kin, dt, states, outs)
+    }
+
+    /// [`Self::step_batch`] for states that lie apart in memory (in an
+    /// engine's contact history): one call per pass of the pair loop, and
+    /// the same results, bit for bit, as one [`Self::step`] per bond.
+    pub fn step_scattered(
+        &self,
+        kin: &[PairKinematics],
+        dt: f64,
+        states: &mut [&mut BondState],
+        outs: &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        (self.kernels.scattered)(&self.laws, kin, dt, states, outs)
+    }
+
+    /// [`Self::step_scattered`] reading each bond's kinematics from the
+    /// engine's per-atom arrays: the same results, bit for bit.
+    pub fn step_indexed(
+        &self,
+        kin: &IndexedPairs<'_>,
+        dt: f64,
+        states: &mut [&mut BondState],
+        outs: &mut [BondOutput],
+    ) -> Result<(), (usize, KinematicsError)> {
+        (self.kernels.indexed)(&self.laws, kin, dt, states, outs)
     }
 }

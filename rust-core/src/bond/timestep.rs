@@ -2,7 +2,7 @@
 //! modes, each with the stiffest slope of its hysteresis loop. Percentage
 //! damping is not viscous and does not enter the limit.
 
-use super::kernel::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
+use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
 use super::model::BondModel;
 use super::section::section;
 use crate::stability::{oscillator_limit, sphere_inertia};

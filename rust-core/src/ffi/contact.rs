@@ -13,8 +13,8 @@ use crate::contact::{
     CONTACT_STATE_LEN, VOIGT_PARAMETERS,
 };
 use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
+use crate::simd::Simd;
 use std::ffi::c_char;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Fills `params` with Table 1 of the seed.
 ///
@@ -41,7 +41,6 @@ pub unsafe extern "C" fn granbond_voigt_model_new(
     // cleared before `params` is looked at: no failure leaves a pointer
     *model = std::ptr::null_mut();
     let m = VoigtModel::new(*reference(params, "params")?)?;
-    detect_cpu();
     *model = Box::into_raw(Box::new(m));
     Ok(())
 }
@@ -237,19 +236,10 @@ macro_rules! compiled_twice {
     };
 }
 
-/// Whether this CPU runs the AVX2 copies: found when a model is built
-/// (`granbond_voigt_model_new`), so the entries only load a flag (until
-/// then, the baseline copies run).
-static WIDE: AtomicBool = AtomicBool::new(false);
-
-fn detect_cpu() {
-    #[cfg(target_arch = "x86_64")]
-    WIDE.store(std::arch::is_x86_feature_detected!("avx2"), Ordering::Relaxed);
-}
-
+/// Whether the AVX2 copies run: [`Simd::chosen`], the bonds' choice too.
 #[inline(always)]
 fn avx2() -> bool {
-    WIDE.load(Ordering::Relaxed)
+    Simd::chosen() != Simd::Scalar
 }
 
 /// `granbond_voigt_compute` / `granbond_voigt_compute_plane` for a contact
@@ -673,7 +663,6 @@ mod tests {
     fn the_unchecked_entry_gives_the_bits_of_the_kernel() {
         // the entry runs its AVX2 copy where the CPU has AVX2, the
         // kernel called here its baseline code
-        detect_cpu();
         let mut r = Numbers(0.3);
         let (mut touching, mut sliding, mut rolling_slips) = (0, 0, 0);
         for rolling in [0, 1] {

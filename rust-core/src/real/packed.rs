@@ -1,5 +1,5 @@
 //! [`Real`] in packed registers: [`F64x4`] (AVX, 4 bonds) and [`F64x8`]
-//! (AVX-512F, 8 bonds), for the wide kernels of `bond::chunk`.
+//! (AVX-512F, 8 bonds), for the wide kernels of `bond::wide`.
 //!
 //! Each operation is the IEEE operation on every lane (add, sub, mul, div
 //! and sqrt are correctly rounded, packed or not; compares are the ordered
@@ -9,8 +9,8 @@
 //! computes.
 //!
 //! These values exist only inside the kernels compiled with
-//! `#[target_feature(enable = "avx2")]` / `"avx512f"`, which `BondModel`
-//! selects only on CPUs that have them: the methods are `#[inline(always)]`
+//! `#[target_feature(enable = "avx2")]` / `"avx512f"`, which `crate::simd`
+//! chooses only on CPUs that have them: the methods are `#[inline(always)]`
 //! and take on those features where they are inlined. That is what makes the
 //! `unsafe` intrinsic calls below sound.
 

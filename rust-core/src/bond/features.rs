@@ -1,0 +1,40 @@
+//! The parts of the bond a model computes, as bits. The step is compiled
+//! once per combination, so a switched-off part costs nothing.
+
+use super::params::BondParams;
+
+pub const TENSION: u32 = 1;
+pub const COMPRESSION: u32 = 2;
+pub const SHEAR: u32 = 4;
+pub const TWIST: u32 = 8;
+pub const BEND: u32 = 16;
+pub const DAMPING: u32 = 32;
+pub const SMOOTH: u32 = 64;
+pub const FEATURE_COMBINATIONS: usize = 128;
+
+/// The bits `params` switch on. Damping with every ratio zero changes
+/// nothing, so it is left out.
+pub fn features(params: &BondParams) -> u32 {
+    let on = BondParams::switch;
+    let p = params;
+    let mut bits = 0;
+    for (flag, bit) in [
+        (p.tension, TENSION),
+        (p.compression, COMPRESSION),
+        (p.shear, SHEAR),
+        (p.twist, TWIST),
+        (p.bend, BEND),
+    ] {
+        if on(flag) {
+            bits |= bit;
+        }
+    }
+    let any_eta = p.eta_fn > 0.0 || p.eta_ft > 0.0 || p.eta_tn > 0.0 || p.eta_tt > 0.0;
+    if p.damping_on() && any_eta {
+        bits |= DAMPING;
+        if on(p.damping_smooth) {
+            bits |= SMOOTH;
+        }
+    }
+    bits
+}

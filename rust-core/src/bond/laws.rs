@@ -1,0 +1,91 @@
+//! A validated bond type: the laws built from [`BondParams`], which the step
+//! reads.
+
+use super::breakage::StressLimits;
+use super::features::{features, TENSION};
+use super::hysteresis::Loop;
+use super::normal_law::NormalLaw;
+use super::params::{BondParams, ParameterError};
+use super::twist_bend::TorqueLaw;
+
+#[derive(Clone, Debug)]
+pub struct BondLaws {
+    pub params: BondParams,
+    pub normal: NormalLaw,
+    pub twist: TorqueLaw,
+    pub bend: TorqueLaw,
+    pub stress_break: bool,
+    pub limits: StressLimits,
+    /// Bits of [`super::features`] (`TENSION`, `SHEAR`, ...) compiled in.
+    pub features: u32,
+}
+
+impl BondLaws {
+    pub fn new(params: BondParams) -> Result<Self, ParameterError> {
+        params.validate()?;
+        let on = BondParams::switch;
+        let p = &params;
+        Ok(Self {
+            normal: NormalLaw::new(
+                Loop::new(p.k_fn1, p.ku_fn1, p.kc_fn1),
+                Loop::new(p.k_fn2, p.ku_fn2, p.kc_fn2),
+                p.compression_linear_below,
+                on(p.history_reset),
+            ),
+            twist: TorqueLaw {
+                hysteresis: Loop::new(p.k_tn, p.ku_tn, p.kc_tn),
+                history_reset: on(p.history_reset),
+            },
+            bend: TorqueLaw {
+                hysteresis: Loop::new(p.k_tt, p.ku_tt, p.kc_tt),
+                history_reset: on(p.history_reset),
+            },
+            stress_break: on(p.stress_break),
+            limits: StressLimits {
+                max_sigma: p.max_sigma,
+                max_tau: p.max_tau,
+                tension_factor: if on(p.use_ratio) {
+                    p.tension_compression_ratio
+                } else {
+                    1.0
+                },
+            },
+            features: features(p),
+            params,
+        })
+    }
+
+    /// The largest centre distance an intact bond of rest length `r0` can
+    /// reach: engines must keep pairs this far apart in their neighbour
+    /// lists. Distance mode: `max_distance`. Stress mode: the stretch at which
+    /// the tensile stress of the virgin tension line alone reaches its limit
+    /// (`gamma sigma_max / k_fn2`); infinite when that never happens.
+    pub fn max_bond_distance(&self, r0: f64) -> f64 {
+        if self.stress_break {
+            let k = self.params.k_fn2;
+            if k > 0.0 && (self.features & TENSION) != 0 {
+                r0 + self.limits.max_sigma * self.limits.tension_factor / k
+            } else {
+                f64::INFINITY
+            }
+        } else {
+            self.params.max_distance
+        }
+    }
+
+    /// Neighbour-list reach an engine needs so no intact bond drops out of
+    /// its lists, as a multiple of the contact distance `2 min_radius` of the
+    /// smallest spheres, with a 10% margin: the largest bonded centre distance
+    /// is `max_distance` (distance mode) or the creation distance plus the
+    /// largest tensile stretch (stress mode). Infinite when a bond can stretch
+    /// without limit (distance mode with `max_distance = inf`, or stress mode
+    /// with tension switched off or an infinite strength).
+    pub fn contact_distance_factor(&self, min_radius: f64) -> f64 {
+        let reach = if self.stress_break {
+            self.max_bond_distance(self.params.create_distance)
+        } else {
+            self.params.max_distance
+        };
+        (1.1 * reach / (2.0 * min_radius)).max(1.0)
+    }
+}

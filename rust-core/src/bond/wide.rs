@@ -1,0 +1,176 @@
+//! Several bonds per instruction: the assembled step ([`super::step`]) on
+//! packed registers of 4 or 8 bonds ([`Pack`]).
+//!
+//! A chunk of bonds is transposed from the engine's structs into lanes (one
+//! register per quantity), advanced, and transposed back. Every lane
+//! gets the bits one [`super::scalar::bond_step`] gives its bond: the laws
+//! are the same code, each lane operation is the `f64` operation (see
+//! [`crate::real`]), and nothing mixes lanes, so it does not matter which
+//! lane or chunk a bond lands in.
+//!
+//! What `bond_step` decides per bond with a jump is a mask here, except
+//! what is rare and has side effects of its own: a chunk with a bond that
+//! is not intact or whose kinematics are unusable is left to the scalar
+//! kernel, which zeroes the first kind and reports the first bad one with
+//! its index.
+
+use super::laws::BondLaws;
+use super::scalar::one_by_one;
+use super::state::{BondOutput, BondState, BondStatus};
+use super::step::{advance, History, Motion};
+use super::twist_bend::{BendHistory, TwistHistory};
+use crate::kinematics::{axis, separated, usable, KinematicsError};
+use crate::pair_source::PairSource;
+use crate::real::packed::Pack;
+use crate::vector::{Vector, V3};
+use std::borrow::{Borrow, BorrowMut};
+
+/// [`one_by_one`] in chunks of `P::WIDTH` lanes; the bonds after the last full
+/// chunk one by one.
+#[inline(always)]
+pub(crate) fn in_chunks<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
+    laws: &BondLaws,
+    kin: &K,
+    dt: f64,
+    states: &mut [S],
+    outs: &mut [BondOutput],
+) -> Result<(), (usize, KinematicsError)> {
+    let count = kin.len().min(states.len()).min(outs.len());
+    let mut start = 0;
+    while start + P::WIDTH <= count {
+        let end = start + P::WIDTH;
+        if !step_chunk::<F, P, K, S>(
+            laws,
+            kin,
+            start,
+            dt,
+            &mut states[start..end],
+            &mut outs[start..end],
+        ) {
+            one_by_one::<F, K, S>(laws, kin, start..end, dt, states, outs)?;
+        }
+        start = end;
+    }
+    one_by_one::<F, K, S>(laws, kin, start..count, dt, states, outs)
+}
+
+/// Advances the `P::WIDTH` bonds of a chunk, from bond `first` of `kin` on,
+/// in lanes, or returns false without touching anything when one of them is
+/// not intact or has unusable kinematics.
+#[inline(always)]
+fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
+    laws: &BondLaws,
+    kin: &K,
+    first: usize,
+    dt: f64,
+    states: &mut [S],
+    outs: &mut [BondOutput],
+) -> bool {
+    let n = P::WIDTH;
+    let (states, outs) = (&mut states[..n], &mut outs[..n]);
+    let kin = |lane: usize| kin.pair(first + lane);
+    if states.iter().any(|s| s.borrow().status() != BondStatus::Intact) {
+        return false;
+    }
+    let (x_i, x_j) = (lanes3(kin, |k| k.x_i), lanes3(kin, |k| k.x_j));
+    let motion = Motion {
+        v_i: lanes3(kin, |k| k.v_i),
+        v_j: lanes3(kin, |k| k.v_j),
+        w_i: lanes3(kin, |k| k.w_i),
+        w_j: lanes3(kin, |k| k.w_j),
+        radius_i: P::gather(|lane| kin(lane).radius_i),
+        radius_j: P::gather(|lane| kin(lane).radius_j),
+    };
+    let m = &motion;
+    let vectors = [x_i, x_j, m.v_i, m.v_j, m.w_i, m.w_j].map(|v| [v.x, v.y, v.z]);
+    let (finite, positive) = usable(vectors, m.radius_i, m.radius_j);
+    let d = x_i - x_j;
+    let r2 = d.norm_squared();
+    if !P::all(finite & positive & separated(r2)) {
+        return false;
+    }
+
+    let mut h = History {
+        r0: gather(states, |s: &BondState| s.r0),
+        delta_max: gather(states, |s: &BondState| s.delta_max),
+        delta_min: gather(states, |s: &BondState| s.delta_min),
+        shear_force: gather3(states, |s: &BondState| s.shear_force),
+        twist_angle: gather3(states, |s: &BondState| s.twist_angle),
+        bend_angle: gather3(states, |s: &BondState| s.bend_angle),
+        twist: TwistHistory {
+            max: gather(states, |s: &BondState| s.twist_max),
+            min: gather(states, |s: &BondState| s.twist_min),
+        },
+        bend: BendHistory {
+            leading: gather3(states, |s: &BondState| s.bend_history),
+            opposite: gather(states, |s: &BondState| s.bend_opposite),
+        },
+    };
+    let loads = advance::<F, P, V3<P>>(laws, &motion, axis(d, r2), P::splat(dt), &mut h);
+
+    // Back into the structs one quantity at a time: each register is
+    // stored once and its lanes copied out.
+    let broken = loads.mode.gt(P::splat(0.0));
+    let status = |s: BondStatus| P::splat(s as i32 as f64);
+    let status = P::select(broken, status(BondStatus::Broken), status(BondStatus::Intact));
+    scatter(states, status, |s: &mut BondState, x| s.status = x);
+    scatter(states, h.delta_max, |s: &mut BondState, x| s.delta_max = x);
+    scatter(states, h.delta_min, |s: &mut BondState, x| s.delta_min = x);
+    scatter3(states, h.shear_force, |s: &mut BondState| &mut s.shear_force);
+    scatter3(states, h.twist_angle, |s: &mut BondState| &mut s.twist_angle);
+    scatter3(states, h.bend_angle, |s: &mut BondState| &mut s.bend_angle);
+    scatter(states, h.twist.max, |s: &mut BondState, x| s.twist_max = x);
+    scatter(states, h.twist.min, |s: &mut BondState, x| s.twist_min = x);
+    scatter3(states, h.bend.leading, |s: &mut BondState| &mut s.bend_history);
+    scatter(states, h.bend.opposite, |s: &mut BondState, x| {
+        s.bend_opposite = x
+    });
+    scatter3(outs, loads.force_i, |o: &mut BondOutput| &mut o.force_i);
+    scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
+    scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
+    scatter(outs, loads.normal_force, |o: &mut BondOutput, x| {
+        o.normal_force = x
+    });
+    scatter(outs, loads.sigma, |o: &mut BondOutput, x| o.sigma = x);
+    scatter(outs, loads.tau, |o: &mut BondOutput, x| o.tau = x);
+    scatter(outs, loads.delta, |o: &mut BondOutput, x| o.delta = x);
+    scatter(outs, status, |o: &mut BondOutput, x| o.status = x as i32);
+    scatter(outs, loads.mode, |o: &mut BondOutput, x| o.break_mode = x as i32);
+    true
+}
+
+/// One quantity of `P::WIDTH` items, lane `i` from `items[i]`.
+#[inline(always)]
+fn gather<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> f64) -> P {
+    P::gather(|i| f(items[i].borrow()))
+}
+
+/// [`gather`] of a vector quantity.
+#[inline(always)]
+fn gather3<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> [f64; 3]) -> V3<P> {
+    lanes3(|i| items[i].borrow(), |t| f(t))
+}
+
+/// A vector quantity of `P::WIDTH` items, lane `i` from `item(i)`.
+#[inline(always)]
+fn lanes3<T, P: Pack>(item: impl Fn(usize) -> T, f: impl Fn(&T) -> [f64; 3]) -> V3<P> {
+    V3::new(
+        P::gather(|i| f(&item(i))[0]),
+        P::gather(|i| f(&item(i))[1]),
+        P::gather(|i| f(&item(i))[2]),
+    )
+}
+
+/// Lane `i` of `v` into `items[i]`.
+#[inline(always)]
+fn scatter<T, S: BorrowMut<T>, P: Pack>(items: &mut [S], v: P, mut f: impl FnMut(&mut T, f64)) {
+    v.for_each_lane(|i, x| f(items[i].borrow_mut(), x));
+}
+
+/// [`scatter`] of a vector quantity.
+#[inline(always)]
+fn scatter3<T, S: BorrowMut<T>, P: Pack>(items: &mut [S], v: V3<P>, f: impl Fn(&mut T) -> &mut [f64; 3]) {
+    v.x.for_each_lane(|i, x| f(items[i].borrow_mut())[0] = x);
+    v.y.for_each_lane(|i, y| f(items[i].borrow_mut())[1] = y);
+    v.z.for_each_lane(|i, z| f(items[i].borrow_mut())[2] = z);
+}

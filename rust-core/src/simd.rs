@@ -1,0 +1,67 @@
+//! The instruction set the wide code runs on: one choice per process, for
+//! the bond kernels and the contact entries alike.
+
+use std::sync::atomic::{AtomicU8, Ordering};
+
+/// The instruction sets the bond kernels can run on: one bond at a time, or
+/// chunks of 4 (AVX2) / 8 (AVX-512) bonds in lanes; the contact entries
+/// have a baseline and an AVX2 copy. All give the same bits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u8)]
+pub enum Simd {
+    Scalar = 0,
+    Avx2 = 1,
+    Avx512 = 2,
+}
+
+impl Simd {
+    /// What the models use: AVX2 where the CPU has it. AVX-512 is not
+    /// chosen by itself: twice the lanes, but twice the transposing per
+    /// chunk too, and on the Xeon this was measured on it was slower than
+    /// AVX2 (`benches/kernels.rs`, `scattered_*`).
+    pub fn detect() -> Self {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if is_x86_feature_detected!("avx2") {
+                return Simd::Avx2;
+            }
+        }
+        Simd::Scalar
+    }
+
+    /// [`Self::detect`], found once and then only loaded (the contact
+    /// entries ask at every call).
+    #[inline]
+    pub fn chosen() -> Self {
+        match CHOSEN.load(Ordering::Relaxed) {
+            UNKNOWN => Self::detect_and_keep(),
+            1 => Simd::Avx2,
+            2 => Simd::Avx512,
+            _ => Simd::Scalar,
+        }
+    }
+
+    #[cold]
+    fn detect_and_keep() -> Self {
+        let simd = Self::detect();
+        CHOSEN.store(simd as u8, Ordering::Relaxed);
+        simd
+    }
+
+    /// Whether this CPU runs `self`.
+    pub fn available(self) -> bool {
+        match self {
+            Simd::Scalar => true,
+            #[cfg(target_arch = "x86_64")]
+            Simd::Avx2 => is_x86_feature_detected!("avx2"),
+            #[cfg(target_arch = "x86_64")]
+            Simd::Avx512 => is_x86_feature_detected!("avx512f"),
+            #[cfg(not(target_arch = "x86_64"))]
+            _ => false,
+        }
+    }
+}
+
+/// [`Simd::chosen`]'s answer as its number; none yet while it is `UNKNOWN`.
+const UNKNOWN: u8 = u8::MAX;
+static CHOSEN: AtomicU8 = AtomicU8::new(UNKNOWN);
