@@ -3,7 +3,7 @@
 //!
 //! The laws are written once, generic over [`Vector`]: [`Vec3`] (one bond)
 //! or [`V3`] of packed lanes (`real::packed`: several bonds side by side,
-//! `bond::chunk`). `V3` computes `dot`, `cross` and `norm` with the same
+//! `bond::wide`). `V3` computes `dot`, `cross` and `norm` with the same
 //! operations in the same order as nalgebra does for `Vec3`, so both give
 //! the same bits.
 
