@@ -12,6 +12,7 @@ pub mod kernel;
 pub mod lanes;
 pub mod model;
 pub mod normal_law;
+pub mod output_slots;
 pub mod params;
 pub mod section;
 pub mod shear;
