@@ -33,20 +33,11 @@ void readAtom(const LAMMPS_NS::Atom *atom, int i, double *x, double *v, double *
     copy3(w, atom->omega[i]);
 }
 
-// Adapter-side history after the core's state: the loads of the latest
-// force pass, so `compute pair/gran/local ... history` (and `wall/gran/local`)
-// can dump them and the per-contact output pass reports the applied forces.
-// Stored so that the engine's sign flip gives the values seen from the other
-// atom: force_i flips; of the torques, T_i + T_j stays and T_i - T_j flips.
-const struct {
-    const char *name;
-    const char *flips;
-} kOutputSlots[] = {
-    {"bond_force_x", "1"},       {"bond_force_y", "1"},       {"bond_force_z", "1"},
-    {"bond_torque_sum_x", "0"},  {"bond_torque_sum_y", "0"},  {"bond_torque_sum_z", "0"},
-    {"bond_torque_diff_x", "1"}, {"bond_torque_diff_y", "1"}, {"bond_torque_diff_z", "1"},
-    {"bond_sigma", "0"},         {"bond_tau", "0"},
-};
+// The wall point of a wall contact: `delta` runs from it to the centre `x`.
+void wallPoint(const double *x, const double *delta, double *point)
+{
+    for (int c = 0; c < 3; c++) point[c] = x[c] - delta[c];
+}
 
 void setContactFlag(SurfacesCloseData &d, bool keep)
 {
@@ -80,10 +71,11 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
 {
     checkCoreLayout(error);
     offset_ = registerStateSlots(hsetup, isWall_ ? GB_STATE_KIND_WALL_BOND : GB_STATE_KIND_BOND, error);
-    for (size_t k = 0; k < sizeof(kOutputSlots) / sizeof(kOutputSlots[0]); k++) {
-        const int o = hsetup->add_history_value(kOutputSlots[k].name, kOutputSlots[k].flips);
-        if (k == 0) outputOffset_ = o;
-    }
+    // after the core's state, the loads of the latest force pass (the core
+    // packs them, granbond_bond_output_store), so `compute pair/gran/local
+    // ... history` (and `wall/gran/local`) can dump them and the
+    // per-contact output pass reports the applied forces
+    outputOffset_ = registerStateSlots(hsetup, GB_STATE_KIND_BOND_OUTPUT, error);
     // the name the reference publishes, so per-contact tools can find the slots
     cmb->add_history_offset("bondnonlinear_contactflag", offset_);
     cmb->add_history_offset("bondnonlinear_output", outputOffset_);
@@ -264,7 +256,8 @@ void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
             const bool counts = pairCountsHere(p.i, p.j, nlocal, tag);
             tally_.intact += counts;
             tally_.created += counts && p.created;
-            storeOutput(p.history + outputOffset_, out);
+            if (granbond_bond_output_store(&out, p.history + outputOffset_) != GB_STATUS_OK)
+                failed(p.i, p.j, "granbond_bond_output_store");
             const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
             addToAtoms(p.i, p.j, out.force_i, out.torque_i, fj, out.torque_j);
             continue;
@@ -304,31 +297,6 @@ bool BondNonlinearCohesion::countsHere(int i, int j) const
     return isWall_ || pairCountsHere(i, j, atom->nlocal, atom->tag);
 }
 
-void BondNonlinearCohesion::storeOutput(double *slots, const GbBondOutput &out) const
-{
-    const GbBondOutput o = out;   // read before the stores (aliasing)
-    copy3(slots, o.force_i);
-    for (int c = 0; c < 3; c++) {
-        slots[3 + c] = o.torque_i[c] + o.torque_j[c];
-        slots[6 + c] = o.torque_i[c] - o.torque_j[c];
-    }
-    slots[9] = o.sigma;
-    slots[10] = o.tau;
-}
-
-void BondNonlinearCohesion::loadOutput(const double *slots, GbBondOutput &out) const
-{
-    copy3(out.force_i, slots);
-    for (int c = 0; c < 3; c++) {
-        out.torque_i[c] = 0.5 * (slots[3 + c] + slots[6 + c]);
-        out.torque_j[c] = 0.5 * (slots[3 + c] - slots[6 + c]);
-    }
-    out.sigma = slots[9];
-    out.tau = slots[10];
-    out.status = GB_BOND_STATUS_INTACT;
-    out.break_mode = GB_BREAK_MODE_NONE;
-}
-
 void BondNonlinearCohesion::account(int i, int j, const double *wallDelta, const double *state, bool created,
                                     const GbBondOutput &out)
 {
@@ -339,24 +307,18 @@ void BondNonlinearCohesion::account(int i, int j, const double *wallDelta, const
     tally_.broken++;
     BondBook &book = *book_;
     if (!book.logging()) return;
-    // bond centre: pairs, the point dividing the centres by the radii;
-    // walls, the wall point the particle was bonded to
-    double bondCentre[3];
-    const double *xi = atom->x[i];
-    if (isWall_) {
-        for (int c = 0; c < 3; c++) bondCentre[c] = xi[c] - wallDelta[c];
-    } else {
-        const double *xj = atom->x[j];
-        const double w = atom->radius[j] / (atom->radius[i] + atom->radius[j]);
-        for (int c = 0; c < 3; c++) bondCentre[c] = xj[c] + w * (xi[c] - xj[c]);
-    }
     BreakEvent e;
+    // the bond centre (the core's): a wall plays sphere j, of radius 0 at the wall point
+    double wall[3];
+    if (isWall_) wallPoint(atom->x[i], wallDelta, wall);
+    if (granbond_bond_centre(atom->x[i], isWall_ ? wall : atom->x[j], atom->radius[i],
+                             isWall_ ? 0.0 : atom->radius[j], e.x) != GB_STATUS_OK)
+        failed(i, j, "granbond_bond_centre");
     e.step = static_cast<double>(update->ntimestep);
     const double ti = static_cast<double>(atom->tag[i]);
     const double tj = isWall_ ? 0.0 : static_cast<double>(atom->tag[j]);
     e.tag_i = isWall_ ? ti : std::min(ti, tj);
     e.tag_j = isWall_ ? 0.0 : std::max(ti, tj);
-    copy3(e.x, bondCentre);
     e.mode = out.break_mode;
     e.sigma = out.sigma;
     e.tau = out.tau;
@@ -395,7 +357,8 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
     // same forces as an uninterrupted one.
     if (!d.computeflag || !d.shearupdate) {
         if (history[0] != GB_BOND_STATUS_INTACT) return false;
-        loadOutput(outputSlots, out);
+        if (granbond_bond_output_load(outputSlots, &out) != GB_STATUS_OK)
+            failed(d.i, d.j, "granbond_bond_output_load");
         if (d.computeflag) {
             book_->beginPassIfNew(tally_, update);
             if (countsHere(d.i, d.j)) tally_.intact++;
@@ -422,7 +385,8 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
     }
     const bool intact = isWall_ ? advanceWall(d, model, state, true, out, created)
                                 : advancePair(d, model, state, true, out, created);
-    if (intact) storeOutput(outputSlots, out);
+    if (intact && granbond_bond_output_store(&out, outputSlots) != GB_STATUS_OK)
+        failed(d.i, d.j, "granbond_bond_output_store");
     account(d.i, d.j, d.delta, state, created, out);
     return intact;
 }
@@ -470,8 +434,8 @@ bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel 
     if (d.v_j) copy3(wallVelocity, d.v_j);
 
     if (advanceState && state[0] != GB_BOND_STATUS_INTACT) {   // as advancePair
-        // delta runs from the wall's contact point to the sphere centre
-        const double contactPoint[3] = {s.x[0] - d.delta[0], s.x[1] - d.delta[1], s.x[2] - d.delta[2]};
+        double contactPoint[3];
+        wallPoint(s.x, d.delta, contactPoint);
         int32_t made = 0;
         if (granbond_wall_bond_try_create(model, &s, contactPoint, update->ntimestep, state, &made) !=
             GB_STATUS_OK)

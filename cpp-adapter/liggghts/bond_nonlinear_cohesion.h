@@ -90,8 +90,6 @@ private:
     void account(int i, int j, const double *wallDelta, const double *state, bool created,
                  const GbBondOutput &out);
     bool countsHere(int i, int j) const;
-    void storeOutput(double *slots, const GbBondOutput &out) const;
-    void loadOutput(const double *slots, GbBondOutput &out) const;
     // The core's checks of the time step (warned at a run's start, and when
     // the atom count changes if the limit moved) and, at a run's start, of
     // the creation rules (each finding once).
@@ -105,7 +103,7 @@ private:
     const bool isWall_;
     const size_t stateLen_;
     int offset_;        // core state slots
-    int outputOffset_;  // last output: force_i[3], T_i+T_j [3], T_i-T_j [3], sigma, tau
+    int outputOffset_;  // last output (GB_STATE_KIND_BOND_OUTPUT slots)
     BondTally tally_;
     BondBook *book_;    // this instance's book (looked up once: std::map)
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)

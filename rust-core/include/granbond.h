@@ -8,6 +8,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/**
+ * Number of `double` slots of a bond output as engines keep it
+ * (`granbond_bond_output_store`, `GB_STATE_KIND_BOND_OUTPUT`).
+ */
+#define GRANBOND_BOND_OUTPUT_LEN 11
+
 #define GRANBOND_BOND_STATE_LEN 19
 
 #define GRANBOND_WALL_BOND_STATE_LEN (GRANBOND_BOND_STATE_LEN + 3)
@@ -17,7 +23,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 6
+#define GRANBOND_ABI_VERSION 7
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -139,6 +145,11 @@ typedef enum GbStateKind {
   GB_STATE_KIND_BOND = 0,
   GB_STATE_KIND_WALL_BOND = 1,
   GB_STATE_KIND_CONTACT = 2,
+  /**
+   * A bond step's output as an engine keeps it in the pair's history
+   * (`granbond_bond_output_store`).
+   */
+  GB_STATE_KIND_BOND_OUTPUT = 3,
 } GbStateKind;
 
 /**
@@ -709,6 +720,55 @@ enum GbStatus granbond_wall_bond_compute(const struct GbBondModel *model,
                                          double dt,
                                          double *state,
                                          struct GbBondOutput *out);
+
+/**
+ * Packs a bond step's output into the `GRANBOND_BOND_OUTPUT_LEN` doubles
+ * at `slots`, for an engine that keeps it in the pair's history:
+ * `force_i`, `torque_i + torque_j`, `torque_i - torque_j`, `sigma`, `tau`,
+ * as `granbond_state_slot(GB_STATE_KIND_BOND_OUTPUT, ..)` names them. With
+ * the engine's swap rule applied (the slots with `flips_on_swap` negated)
+ * they are the output seen from the other sphere. An output with a
+ * non-finite (or overflowing) load or stress is refused
+ * (`GB_STATUS_NON_FINITE_INPUT`), `slots` left alone.
+ *
+ * # Safety
+ * `out` must be null or point to a `GbBondOutput`; `slots` null or valid
+ * for `GRANBOND_BOND_OUTPUT_LEN` doubles.
+ */
+enum GbStatus granbond_bond_output_store(const struct GbBondOutput *out, double *slots);
+
+/**
+ * Unpacks the output `granbond_bond_output_store` packed into `slots`
+ * (`GRANBOND_BOND_OUTPUT_LEN` doubles): `force_i`, `torque_i =
+ * (sum + diff) / 2`, `torque_j = (sum - diff) / 2`, `sigma`, `tau`; the
+ * status intact and no break mode; `normal_force` and `delta`, which the
+ * slots do not keep, 0. Slots giving a non-finite load or stress are
+ * refused (`GB_STATUS_NON_FINITE_INPUT`), `out` left alone.
+ *
+ * # Safety
+ * `slots` must be null or point to `GRANBOND_BOND_OUTPUT_LEN` doubles;
+ * `out` null or valid for writes.
+ */
+enum GbStatus granbond_bond_output_load(const double *slots, struct GbBondOutput *out);
+
+/**
+ * Centre of a bond, for engines' logs of bonds: the point of the centre
+ * line from `x_j` to `x_i` (`double[3]` each) that divides it in the
+ * ratio `radius_i : radius_j`, `x_j + radius_j / (radius_i + radius_j)
+ * (x_i - x_j)`, written to `centre` (`double[3]`). A wall bond passes the
+ * wall point as `x_j` and `radius_j = 0`: the centre is that point.
+ * Refused: non-finite positions (`GB_STATUS_NON_FINITE_INPUT`),
+ * `radius_i <= 0`, `radius_j < 0` or not finite
+ * (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument.
+ *
+ * # Safety
+ * Pointers must be null or valid for three doubles.
+ */
+enum GbStatus granbond_bond_centre(const double *x_i,
+                                   const double *x_j,
+                                   double radius_i,
+                                   double radius_j,
+                                   double *centre);
 
 /**
  * Largest centre distance an intact bond of rest length `r0` reaches

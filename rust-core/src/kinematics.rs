@@ -138,3 +138,13 @@ pub fn slip_velocity<R: Real, V: Vector<R>>(v_rel: V, w_i: V, w_j: V, n: V, leve
     let vt = v_rel - n * v_rel.dot(&n);
     vt - (w_i * lever_i + w_j * lever_j).cross(&n)
 }
+
+/// Centre of the bond between spheres of radii `radius_i` and `radius_j`
+/// centred at `x_i` and `x_j`: the point of the centre line that divides it
+/// in the ratio `radius_i : radius_j` (where the surfaces meet when the
+/// spheres touch). A wall plays sphere `j` with `x_j` its point and
+/// `radius_j = 0`: the centre is that point.
+pub fn bond_centre(x_i: [f64; 3], x_j: [f64; 3], radius_i: f64, radius_j: f64) -> [f64; 3] {
+    let w = radius_j / (radius_i + radius_j);
+    std::array::from_fn(|c| x_j[c] + w * (x_i[c] - x_j[c]))
+}

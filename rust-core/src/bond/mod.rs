@@ -20,6 +20,7 @@ pub mod laws;
 pub mod model;
 pub mod normal_law;
 pub mod paired;
+pub mod output_slots;
 pub mod params;
 mod scalar;
 pub mod section;

@@ -2,15 +2,19 @@
 
 use super::entry;
 use super::error::{Failure, Status};
-use super::guard::{positive, reference, reference_mut, slice, slice_mut, time_step, vector3, FailedIndex};
+use super::guard::{
+    array, array_mut, finite_vector3, non_negative, positive, reference, reference_mut, slice, slice_mut,
+    time_step, vector3, FailedIndex,
+};
 use super::results;
 use crate::bond::creation::status_and_step_allow;
+use crate::bond::output_slots::{load_output, store_output};
 use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
 };
-use crate::kinematics::PairKinematics;
 pub use crate::kinematics::SphereKinematics;
+use crate::kinematics::{bond_centre, PairKinematics};
 use crate::pair_source::{AtomArrays, IndexedPairs};
 use std::ffi::c_char;
 
@@ -341,6 +345,93 @@ pub unsafe extern "C" fn granbond_wall_bond_compute(
     model.step_wall(sphere, wall_velocity, dt, state, out)?;
     results::bond(&state.bond, out)?;
     results::vector("wall bond state", &state.partner)
+}
+
+/// Packs a bond step's output into the `GRANBOND_BOND_OUTPUT_LEN` doubles
+/// at `slots`, for an engine that keeps it in the pair's history:
+/// `force_i`, `torque_i + torque_j`, `torque_i - torque_j`, `sigma`, `tau`,
+/// as `granbond_state_slot(GB_STATE_KIND_BOND_OUTPUT, ..)` names them. With
+/// the engine's swap rule applied (the slots with `flips_on_swap` negated)
+/// they are the output seen from the other sphere. An output with a
+/// non-finite (or overflowing) load or stress is refused
+/// (`GB_STATUS_NON_FINITE_INPUT`), `slots` left alone.
+///
+/// # Safety
+/// `out` must be null or point to a `GbBondOutput`; `slots` null or valid
+/// for `GRANBOND_BOND_OUTPUT_LEN` doubles.
+#[entry(out: reference, slots: array_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_output_store(out: *const BondOutput, slots: *mut f64) -> Status {
+    let stored = store_output(out);
+    kept_finite("a load or stress of `out`", &stored)?;
+    *slots = stored;
+    Ok(())
+}
+
+/// Unpacks the output `granbond_bond_output_store` packed into `slots`
+/// (`GRANBOND_BOND_OUTPUT_LEN` doubles): `force_i`, `torque_i =
+/// (sum + diff) / 2`, `torque_j = (sum - diff) / 2`, `sigma`, `tau`; the
+/// status intact and no break mode; `normal_force` and `delta`, which the
+/// slots do not keep, 0. Slots giving a non-finite load or stress are
+/// refused (`GB_STATUS_NON_FINITE_INPUT`), `out` left alone.
+///
+/// # Safety
+/// `slots` must be null or point to `GRANBOND_BOND_OUTPUT_LEN` doubles;
+/// `out` null or valid for writes.
+#[entry(slots: array, out: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_output_load(slots: *const f64, out: *mut BondOutput) -> Status {
+    let loaded = load_output(slots);
+    let what = "a load or stress of `slots`";
+    kept_finite(what, slots)?;
+    kept_finite(what, [loaded.torque_i, loaded.torque_j].as_flattened())?;
+    *out = loaded;
+    Ok(())
+}
+
+/// Centre of a bond, for engines' logs of bonds: the point of the centre
+/// line from `x_j` to `x_i` (`double[3]` each) that divides it in the
+/// ratio `radius_i : radius_j`, `x_j + radius_j / (radius_i + radius_j)
+/// (x_i - x_j)`, written to `centre` (`double[3]`). A wall bond passes the
+/// wall point as `x_j` and `radius_j = 0`: the centre is that point.
+/// Refused: non-finite positions (`GB_STATUS_NON_FINITE_INPUT`),
+/// `radius_i <= 0`, `radius_j < 0` or not finite
+/// (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument.
+///
+/// # Safety
+/// Pointers must be null or valid for three doubles.
+#[entry(
+    x_i: finite_vector3,
+    x_j: finite_vector3,
+    radius_i: positive,
+    radius_j: non_negative,
+    centre: array_mut,
+)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_centre(
+    x_i: *const f64,
+    x_j: *const f64,
+    radius_i: f64,
+    radius_j: f64,
+    centre: *mut f64,
+) -> Status {
+    positive(radius_i + radius_j, "radius_i + radius_j")?;
+    let c = bond_centre(x_i, x_j, radius_i, radius_j);
+    kept_finite("the centre of `x_i` and `x_j` (too far apart)", &c)?;
+    *centre = c;
+    Ok(())
+}
+
+/// The numbers an output or position entry gives: finite, else refused
+/// naming `what` (a NaN or infinity passed in, or a sum beyond 1e308).
+fn kept_finite(what: &str, values: &[f64]) -> Result<(), Failure> {
+    if values.iter().sum::<f64>().is_finite() {
+        return Ok(());
+    }
+    Err(Failure::new(
+        Status::NonFiniteInput,
+        format!("{what} is not finite or overflows: {values:?}"),
+    ))
 }
 
 /// Largest centre distance an intact bond of rest length `r0` reaches

@@ -133,16 +133,27 @@ pub fn time_step(dt: f64, name: &str) -> Result<f64, Failure> {
     }
 }
 
-/// A length or a mass must be finite and positive.
-pub fn positive(x: f64, name: &str) -> Result<f64, Failure> {
-    if x.is_finite() && x > 0.0 {
+/// `x` if it is finite and `within` holds, else an invalid argument
+/// naming `name` and the `bound`.
+fn finite_within(x: f64, within: bool, name: &str, bound: &str) -> Result<f64, Failure> {
+    if x.is_finite() && within {
         Ok(x)
     } else {
         Err(Failure::new(
             Status::InvalidArgument,
-            format!("{name} must be finite and > 0; got {x}"),
+            format!("{name} must be finite and {bound}; got {x}"),
         ))
     }
+}
+
+/// A length or a mass must be finite and positive.
+pub fn positive(x: f64, name: &str) -> Result<f64, Failure> {
+    finite_within(x, x > 0.0, name, "> 0")
+}
+
+/// A length that may be 0 (a wall's radius) must be finite and non-negative.
+pub fn non_negative(x: f64, name: &str) -> Result<f64, Failure> {
+    finite_within(x, x >= 0.0, name, ">= 0")
 }
 
 /// A number taken as it is must be finite.
@@ -163,6 +174,22 @@ pub fn finite(x: f64, name: &str) -> Result<f64, Failure> {
 /// A non-null `ptr` must point to three doubles.
 pub unsafe fn vector3(ptr: *const f64, name: &str) -> Result<[f64; 3], Failure> {
     Ok(*array(ptr, name)?)
+}
+
+/// Three finite doubles at `ptr` (a position).
+///
+/// # Safety
+/// A non-null `ptr` must point to three doubles.
+pub unsafe fn finite_vector3(ptr: *const f64, name: &str) -> Result<[f64; 3], Failure> {
+    let v = vector3(ptr, name)?;
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(v)
+    } else {
+        Err(Failure::new(
+            Status::NonFiniteInput,
+            format!("{name} must be finite; got [{}, {}, {}]", v[0], v[1], v[2]),
+        ))
+    }
 }
 
 /// `N` doubles at `ptr`, as an array.

@@ -5,6 +5,7 @@
 use super::entry;
 use super::error::{Failure, Status};
 use super::guard::reference_mut;
+use crate::bond::output_slots::BOND_OUTPUT_SLOTS;
 use crate::bond::{BOND_SLOTS, WALL_BOND_SLOTS};
 use crate::contact::CONTACT_SLOTS;
 use crate::state_layout::StateSlot;
@@ -18,6 +19,9 @@ pub enum StateKind {
     Bond = 0,
     WallBond = 1,
     Contact = 2,
+    /// A bond step's output as an engine keeps it in the pair's history
+    /// (`granbond_bond_output_store`).
+    BondOutput = 3,
 }
 
 fn slots(kind: StateKind) -> &'static [StateSlot] {
@@ -25,11 +29,12 @@ fn slots(kind: StateKind) -> &'static [StateSlot] {
         StateKind::Bond => &BOND_SLOTS,
         StateKind::WallBond => &WALL_BOND_SLOTS,
         StateKind::Contact => &CONTACT_SLOTS,
+        StateKind::BondOutput => &BOND_OUTPUT_SLOTS,
     }
 }
 
 fn c_names(kind: StateKind) -> &'static [CString] {
-    static TABLES: [OnceLock<Vec<CString>>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    static TABLES: [OnceLock<Vec<CString>>; 4] = [const { OnceLock::new() }; 4];
     TABLES[kind as usize].get_or_init(|| {
         slots(kind)
             .iter()
@@ -44,6 +49,7 @@ fn state_kind(raw: i32, _name: &str) -> Result<StateKind, Failure> {
         0 => Ok(StateKind::Bond),
         1 => Ok(StateKind::WallBond),
         2 => Ok(StateKind::Contact),
+        3 => Ok(StateKind::BondOutput),
         _ => Err(Failure::new(
             Status::InvalidArgument,
             format!("unknown state kind {raw}"),

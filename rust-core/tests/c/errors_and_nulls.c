@@ -76,6 +76,7 @@ struct world {
     double contact_states[N_ITEMS * GRANBOND_CONTACT_STATE_LEN];
     double point[3];
     GbBondOutput bond_out[N_ITEMS];
+    double output_slots[GRANBOND_BOND_OUTPUT_LEN];
     GbContactOutput contact_out[N_ITEMS];
     GbTangentialOutput tangential;
     GbCheckReport report;
@@ -182,6 +183,22 @@ static GbStatus null_wall_bond_compute(struct world *c, int k)
 {
     return granbond_wall_bond_compute(ARG(k, 0, c->bond), ARG(k, 1, &c->sphere), ARG(k, 2, c->vector), DT,
                                       ARG(k, 3, c->wall_state), ARG(k, 4, &c->bond_out[0]));
+}
+
+static GbStatus null_bond_output_store(struct world *c, int k)
+{
+    return granbond_bond_output_store(ARG(k, 0, &c->bond_out[0]), ARG(k, 1, c->output_slots));
+}
+
+static GbStatus null_bond_output_load(struct world *c, int k)
+{
+    return granbond_bond_output_load(ARG(k, 0, c->output_slots), ARG(k, 1, &c->bond_out[0]));
+}
+
+static GbStatus null_bond_centre(struct world *c, int k)
+{
+    return granbond_bond_centre(ARG(k, 0, c->pair[0].x_i), ARG(k, 1, c->pair[0].x_j), c->pair[0].radius_i,
+                                c->pair[0].radius_j, ARG(k, 2, c->vector));
 }
 
 static GbStatus null_bond_max_distance(struct world *c, int k)
@@ -378,6 +395,9 @@ static const struct null_entry NULL_ENTRIES[] = {
      null_wall_bond_try_create,
      {"model", "sphere", "contact_point", "state", "created"}},
     {"granbond_wall_bond_compute", null_wall_bond_compute, {"model", "sphere", "wall_velocity", "state", "out"}},
+    {"granbond_bond_output_store", null_bond_output_store, {"out", "slots"}},
+    {"granbond_bond_output_load", null_bond_output_load, {"slots", "out"}},
+    {"granbond_bond_centre", null_bond_centre, {"x_i", "x_j", "centre"}},
     {"granbond_bond_max_distance", null_bond_max_distance, {"model", "out"}},
     {"granbond_bond_contact_distance_factor", null_bond_contact_distance_factor, {"model", "out"}},
     {"granbond_bond_critical_timestep", null_bond_critical_timestep, {"model", "out"}},

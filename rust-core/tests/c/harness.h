@@ -151,6 +151,9 @@ int test_bond_indexed_results(void);
 int test_bond_indexed(void);
 int test_bond_break(void);
 int test_bond_limits(void);
+/* bond_output.c */
+int test_bond_output_slots(void);
+int test_bond_centre(void);
 /* wall_bond.c */
 int test_wall_bond(void);
 /* run_checks.c */

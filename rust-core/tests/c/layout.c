@@ -75,17 +75,18 @@ static int expect_slot(int32_t kind, size_t index, const char *name, int32_t fli
 
 int test_state_layout(void)
 {
-    static const int32_t kinds[3] = {GB_STATE_KIND_BOND, GB_STATE_KIND_WALL_BOND, GB_STATE_KIND_CONTACT};
-    static const size_t lengths[3] = {GRANBOND_BOND_STATE_LEN, GRANBOND_WALL_BOND_STATE_LEN,
-                                      GRANBOND_CONTACT_STATE_LEN};
+    static const int32_t kinds[4] = {GB_STATE_KIND_BOND, GB_STATE_KIND_WALL_BOND, GB_STATE_KIND_CONTACT,
+                                     GB_STATE_KIND_BOND_OUTPUT};
+    static const size_t lengths[4] = {GRANBOND_BOND_STATE_LEN, GRANBOND_WALL_BOND_STATE_LEN,
+                                      GRANBOND_CONTACT_STATE_LEN, GRANBOND_BOND_OUTPUT_LEN};
     const char *name = NULL;
     int32_t flips = 0;
     int k;
 
-    for (k = 0; k < 3; k++)
+    for (k = 0; k < 4; k++)
         CHECK(granbond_state_len(kinds[k]) == lengths[k],
               say("granbond_state_len(%d) = %u", (int)kinds[k], (unsigned)lengths[k]));
-    CHECK(granbond_state_len(3) == 0, "granbond_state_len(3) = 0 (unknown kind)");
+    CHECK(granbond_state_len(4) == 0, "granbond_state_len(4) = 0 (unknown kind)");
     CHECK(granbond_state_len(-1) == 0, "granbond_state_len(-1) = 0 (unknown kind)");
 
     if (expect_slot(GB_STATE_KIND_BOND, 0, "status", 0) || expect_slot(GB_STATE_KIND_BOND, 1, "r0", 0) ||
@@ -101,11 +102,19 @@ int test_state_layout(void)
         expect_slot(GB_STATE_KIND_WALL_BOND, 19, "partner_x", 0) ||
         expect_slot(GB_STATE_KIND_WALL_BOND, 21, "partner_z", 0) ||
         expect_slot(GB_STATE_KIND_CONTACT, 0, "tangential_spring_x", 1) ||
-        expect_slot(GB_STATE_KIND_CONTACT, 5, "rolling_angle_z", 1))
+        expect_slot(GB_STATE_KIND_CONTACT, 5, "rolling_angle_z", 1) ||
+        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 0, "bond_force_x", 1) ||
+        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 2, "bond_force_z", 1) ||
+        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 3, "bond_torque_sum_x", 0) ||
+        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 5, "bond_torque_sum_z", 0) ||
+        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 6, "bond_torque_diff_x", 1) ||
+        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 8, "bond_torque_diff_z", 1) ||
+        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 9, "bond_sigma", 0) ||
+        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 10, "bond_tau", 0))
         return 1;
 
     /* Every slot: a non-empty name, unique within its kind. */
-    for (k = 0; k < 3; k++) {
+    for (k = 0; k < 4; k++) {
         size_t i, j, len = lengths[k];
         int all_named = 1, unique = 1;
         for (i = 0; i < len; i++) {
@@ -148,7 +157,9 @@ int test_state_layout(void)
            GB_STATUS_INVALID_ARGUMENT, "granbond_state_slot(wall bond, GRANBOND_WALL_BOND_STATE_LEN)");
     EXPECT(granbond_state_slot(GB_STATE_KIND_CONTACT, (size_t)-1, &name, &flips), GB_STATUS_INVALID_ARGUMENT,
            "granbond_state_slot(contact, SIZE_MAX)");
-    EXPECT(granbond_state_slot(3, 0, &name, &flips), GB_STATUS_INVALID_ARGUMENT, "granbond_state_slot(kind 3, 0)");
+    EXPECT(granbond_state_slot(GB_STATE_KIND_BOND_OUTPUT, GRANBOND_BOND_OUTPUT_LEN, &name, &flips),
+           GB_STATUS_INVALID_ARGUMENT, "granbond_state_slot(bond output, GRANBOND_BOND_OUTPUT_LEN)");
+    EXPECT(granbond_state_slot(4, 0, &name, &flips), GB_STATUS_INVALID_ARGUMENT, "granbond_state_slot(kind 4, 0)");
     EXPECT_MESSAGE("unknown state kind");
     EXPECT(granbond_state_slot(-1, 0, &name, &flips), GB_STATUS_INVALID_ARGUMENT,
            "granbond_state_slot(kind -1, 0)");

@@ -24,6 +24,7 @@
 //! planes, layouts, counts, indices, ids and kinds.
 #![allow(dead_code)]
 
+use granbond::bond::output_slots::{store_output, BOND_OUTPUT_LEN};
 use granbond::bond::{BondModel, BondOutput, BondParams, BOND_STATE_LEN, PARAMETERS, WALL_BOND_STATE_LEN};
 use granbond::contact::{
     ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN, VOIGT_PARAMETERS,
@@ -47,7 +48,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 54] = [
+pub const ENTRY_POINTS: [&str; 57] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -63,6 +64,9 @@ pub const ENTRY_POINTS: [&str; 54] = [
     "granbond_bond_compute_indexed",
     "granbond_wall_bond_try_create",
     "granbond_wall_bond_compute",
+    "granbond_bond_output_store",
+    "granbond_bond_output_load",
+    "granbond_bond_centre",
     "granbond_bond_max_distance",
     "granbond_bond_contact_distance_factor",
     "granbond_bond_critical_timestep",
@@ -1093,6 +1097,72 @@ impl<'t> Session<'t> {
             }
             self.check_state_finite(function, i, BOND_STATE_LEN, &before);
         }
+        // what an engine keeps and logs of the step
+        self.bond_output_slots(input, out.get());
+        self.bond_centre(input, &k.get());
+    }
+
+    /// Stores `o` in history slots and loads it back.
+    fn bond_output_slots(&mut self, input: &mut Input, mut o: BondOutput) {
+        if input.below(4) == 0 {
+            input.mutate(&mut o);
+        }
+        let mut out = Place::new(o);
+        let mut slots = Place::new([0.0f64; BOND_OUTPUT_LEN]);
+        let (ho, hs) = (input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid for their sizes.
+        let status = unsafe { fb::granbond_bond_output_store(out.ptr(ho), slots.ptr(hs) as *mut f64) };
+        if self.answer("granbond_bond_output_store", status) {
+            let stored = slots.get();
+            let want = store_output(&o);
+            assert!(
+                stored.iter().zip(&want).all(|(a, b)| a.to_bits() == b.to_bits()),
+                "granbond_bond_output_store: {stored:?} for {o:?}"
+            );
+            self.note_finite("granbond_bond_output_store", all_finite(&stored));
+        }
+        if input.below(4) == 0 {
+            let mut s = slots.get();
+            input.mutate(&mut s);
+            slots = Place::new(s);
+        }
+        let mut back = Place::new(BondOutput::default());
+        let (hs, hb) = (input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid for their sizes.
+        let status = unsafe { fb::granbond_bond_output_load(slots.ptr(hs) as *const f64, back.ptr(hb)) };
+        if self.answer("granbond_bond_output_load", status) {
+            let b = back.get();
+            assert!(
+                b.status == 1 && b.break_mode == 0,
+                "granbond_bond_output_load: {b:?}"
+            );
+            self.check_bond_output("granbond_bond_output_load", &b);
+        }
+    }
+
+    /// The centre of the pair `k`, or of its sphere `i` and a wall point.
+    fn bond_centre(&mut self, input: &mut Input, k: &PairKinematics) {
+        let radius_j = if input.below(4) == 0 { 0.0 } else { k.radius_j };
+        let (mut x_i, mut x_j) = (Place::new(k.x_i), Place::new(k.x_j));
+        let mut centre = Place::new([f64::NAN; 3]);
+        let (h1, h2, h3) = (input.pointer(), input.pointer(), input.pointer());
+        // SAFETY: null, misaligned or valid for three doubles.
+        let status = unsafe {
+            fb::granbond_bond_centre(
+                x_i.ptr(h1) as *const f64,
+                x_j.ptr(h2) as *const f64,
+                k.radius_i,
+                radius_j,
+                centre.ptr(h3) as *mut f64,
+            )
+        };
+        if self.answer("granbond_bond_centre", status) {
+            let c = centre.get();
+            self.note_finite("granbond_bond_centre", all_finite(&c));
+            if radius_j == 0.0 {
+                assert_eq!(c, k.x_j, "granbond_bond_centre: a wall's centre is its point");
+            }
+        }
     }
 
     /// Several steps of one pair moving with its velocities: reaches the
@@ -1985,6 +2055,7 @@ impl<'t> Session<'t> {
             0 => BOND_STATE_LEN,
             1 => WALL_BOND_STATE_LEN,
             2 => CONTACT_STATE_LEN,
+            3 => BOND_OUTPUT_LEN,
             _ => 0,
         };
         assert_eq!(len, want, "granbond_state_len({kind})");
