@@ -2,7 +2,8 @@
 //! (docs/models/bond-nonlinear.md).
 //!
 //! One module per law (`normal_law`, `hysteresis`, `shear`, `twist_bend`,
-//! `damping`, `breakage`, `section`, `energy`). Above them, each depending
+//! `damping`, `breakage`, `section`, `energy`); the state and the output
+//! engines keep (`state`, `wall`, `output_slots`). Above them, each depending
 //! only on the ones before: the laws of a bond type ([`laws`]) and the parts
 //! switched on ([`features`]); the assembled step (`step`); the paths that
 //! feed it one bond at a time (`scalar`) or in lanes (`wide`); the compiled
@@ -19,8 +20,8 @@ pub mod hysteresis;
 pub mod laws;
 pub mod model;
 pub mod normal_law;
-pub mod paired;
 pub mod output_slots;
+pub mod paired;
 pub mod params;
 mod scalar;
 pub mod section;
