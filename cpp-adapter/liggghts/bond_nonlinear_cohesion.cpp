@@ -246,6 +246,13 @@ void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
         failed(b.bonds[bad].i, b.bonds[bad].j, "granbond_bond_compute_indexed");
         return;
     }
+    // the loads of the intact bonds, kept after their states (the output
+    // slots are registered right after the state slots)
+    if (granbond_bond_output_store_intact(n, b.outputs.data(), b.states.data(),
+                                          static_cast<size_t>(outputOffset_ - offset_), &bad) != GB_STATUS_OK) {
+        failed(b.bonds[bad].i, b.bonds[bad].j, "granbond_bond_output_store_intact");
+        return;
+    }
     const int nlocal = atom->nlocal;
     const int *tag = atom->tag;
     for (size_t k = 0; k < n; k++) {
@@ -256,8 +263,6 @@ void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
             const bool counts = pairCountsHere(p.i, p.j, nlocal, tag);
             tally_.intact += counts;
             tally_.created += counts && p.created;
-            if (granbond_bond_output_store(&out, p.history + outputOffset_) != GB_STATUS_OK)
-                failed(p.i, p.j, "granbond_bond_output_store");
             const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
             addToAtoms(p.i, p.j, out.force_i, out.torque_i, fj, out.torque_j);
             continue;

@@ -738,6 +738,28 @@ enum GbStatus granbond_wall_bond_compute(const struct GbBondModel *model,
 enum GbStatus granbond_bond_output_store(const struct GbBondOutput *out, double *slots);
 
 /**
+ * `granbond_bond_output_store` for the bonds of one
+ * `granbond_bond_compute_indexed` call, in one call: for every `k < count`
+ * whose `out[k]` is intact, `out[k]` packed into the
+ * `GRANBOND_BOND_OUTPUT_LEN` doubles at `states[k] + offset`, for an engine
+ * that keeps the output `offset` doubles after the bond's state in the
+ * pair's history. Bonds not intact are left alone. Stops at the first bond
+ * whose slots are null or misaligned or whose output is not finite (or
+ * overflows) and writes its index to `failed_index` (if not null); the
+ * bonds before it are stored.
+ *
+ * # Safety
+ * `out` must be null or point to `count` outputs, `states` null or to
+ * `count` pointers; for an intact bond, `states[k]` must be null or such
+ * that `states[k] + offset` is valid for `GRANBOND_BOND_OUTPUT_LEN` doubles.
+ */
+enum GbStatus granbond_bond_output_store_intact(size_t count,
+                                                const struct GbBondOutput *out,
+                                                double *const *states,
+                                                size_t offset,
+                                                size_t *failed_index);
+
+/**
  * Unpacks the output `granbond_bond_output_store` packed into `slots`
  * (`GRANBOND_BOND_OUTPUT_LEN` doubles): `force_i`, `torque_i =
  * (sum + diff) / 2`, `torque_j = (sum - diff) / 2`, `sigma`, `tau`; the

@@ -177,3 +177,63 @@ fn equal_spheres_are_bonded_at_the_midpoint() {
     let c = bond_centre([2.0, -4.0, 6.0], [0.0, 0.0, 1.0], 0.5, 0.5);
     assert_eq!(c, [1.0, -2.0, 3.5]);
 }
+
+/// The batch store an engine calls after a block of bonds: each intact
+/// bond's slots, `offset` doubles after its state, hold what the single
+/// store writes; a broken bond's record is left alone; a null state of an
+/// intact bond is refused with its index.
+#[test]
+fn the_batch_store_keeps_each_intact_bond_and_leaves_the_others() {
+    use granbond::ffi::bond::{granbond_bond_output_store, granbond_bond_output_store_intact};
+    use granbond::ffi::Status;
+    const OFFSET: usize = 5;
+    const RECORD: usize = OFFSET + BOND_OUTPUT_LEN;
+    let mut outs: Vec<BondOutput> = (0..6)
+        .map(|k| {
+            let x = k as f64 + 0.25;
+            output([x, -x, 2.0 * x], [0.1 * x, 3.0, -x], [x, x, 0.3], 1e5 * x, 2e4)
+        })
+        .collect();
+    outs[2].status = BondStatus::Broken as i32;
+    outs[2].break_mode = BreakMode::Tension as i32;
+    let sentinel = -7.5;
+    let mut records = vec![[sentinel; RECORD]; outs.len()];
+    let states: Vec<*mut f64> = records.iter_mut().map(|r| r.as_mut_ptr()).collect();
+    let mut failed = usize::MAX;
+    // SAFETY: every state has RECORD doubles, the slots fit after OFFSET.
+    let status = unsafe {
+        granbond_bond_output_store_intact(outs.len(), outs.as_ptr(), states.as_ptr(), OFFSET, &mut failed)
+    };
+    assert_eq!(status, Status::Ok);
+    for (k, (o, record)) in outs.iter().zip(&records).enumerate() {
+        assert_eq!(
+            bits(&record[..OFFSET]),
+            bits(&[sentinel; OFFSET]),
+            "bond {k}: the state was written"
+        );
+        let mut single = [0.0; BOND_OUTPUT_LEN];
+        // SAFETY: valid output and slots.
+        assert_eq!(
+            unsafe { granbond_bond_output_store(o, single.as_mut_ptr()) },
+            Status::Ok
+        );
+        let want = if k == 2 {
+            [sentinel; BOND_OUTPUT_LEN]
+        } else {
+            single
+        };
+        assert_eq!(bits(&record[OFFSET..]), bits(&want), "bond {k}");
+    }
+    // a null state: refused with its index, the bonds before it stored
+    let mut records = vec![[sentinel; RECORD]; outs.len()];
+    let mut states: Vec<*mut f64> = records.iter_mut().map(|r| r.as_mut_ptr()).collect();
+    states[4] = std::ptr::null_mut();
+    // SAFETY: as above but for the null state, which must be refused.
+    let status = unsafe {
+        granbond_bond_output_store_intact(outs.len(), outs.as_ptr(), states.as_ptr(), OFFSET, &mut failed)
+    };
+    assert_eq!(status, Status::NullPointer);
+    assert_eq!(failed, 4);
+    assert_ne!(bits(&records[3][OFFSET..]), bits(&[sentinel; BOND_OUTPUT_LEN]));
+    assert_eq!(bits(&records[5][OFFSET..]), bits(&[sentinel; BOND_OUTPUT_LEN]));
+}

@@ -8,7 +8,7 @@ use super::guard::{
 };
 use super::results;
 use crate::bond::creation::status_and_step_allow;
-use crate::bond::output_slots::{load_output, store_output};
+use crate::bond::output_slots::{load_output, store_output, BOND_OUTPUT_LEN};
 use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
@@ -366,6 +366,66 @@ pub unsafe extern "C" fn granbond_bond_output_store(out: *const BondOutput, slot
     kept_finite("a load or stress of `out`", &stored)?;
     *slots = stored;
     Ok(())
+}
+
+/// `granbond_bond_output_store` for the bonds of one
+/// `granbond_bond_compute_indexed` call, in one call: for every `k < count`
+/// whose `out[k]` is intact, `out[k]` packed into the
+/// `GRANBOND_BOND_OUTPUT_LEN` doubles at `states[k] + offset`, for an engine
+/// that keeps the output `offset` doubles after the bond's state in the
+/// pair's history. Bonds not intact are left alone. Stops at the first bond
+/// whose slots are null or misaligned or whose output is not finite (or
+/// overflows) and writes its index to `failed_index` (if not null); the
+/// bonds before it are stored.
+///
+/// # Safety
+/// `out` must be null or point to `count` outputs, `states` null or to
+/// `count` pointers; for an intact bond, `states[k]` must be null or such
+/// that `states[k] + offset` is valid for `GRANBOND_BOND_OUTPUT_LEN` doubles.
+#[entry(failed_index: FailedIndex::new, out: slice(count))]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_output_store_intact(
+    count: usize,
+    out: *const BondOutput,
+    states: *const *mut f64,
+    offset: usize,
+    failed_index: *mut usize,
+) -> Status {
+    let pointers = slice(states, count, "states")?;
+    let intact = BondStatus::Intact as i32;
+    for (k, (o, &state)) in out.iter().zip(pointers).enumerate() {
+        if o.status != intact {
+            continue;
+        }
+        // a null state stays null rather than becoming `offset` doubles
+        // past address 0; `offset` keeps the alignment
+        if state.is_null() || !state.cast::<[f64; BOND_OUTPUT_LEN]>().is_aligned() {
+            return Err(store_failed(
+                failed_index,
+                k,
+                array_mut::<1>(state, "states[k]").err(),
+            ));
+        }
+        let stored = store_output(o);
+        if !stored.iter().sum::<f64>().is_finite() {
+            return Err(store_failed(
+                failed_index,
+                k,
+                kept_finite("a load or stress of `out[k]`", &stored).err(),
+            ));
+        }
+        *(state.wrapping_add(offset) as *mut [f64; BOND_OUTPUT_LEN]) = stored;
+    }
+    Ok(())
+}
+
+/// The failure of bond `k` of `granbond_bond_output_store_intact`, out of
+/// its loop.
+#[cold]
+#[inline(never)]
+fn store_failed(failed_index: FailedIndex, k: usize, f: Option<Failure>) -> Failure {
+    let f = f.unwrap_or_else(|| Failure::new(Status::InvalidArgument, "states[k]".to_string()));
+    failed_index.fail("bond", k, f)
 }
 
 /// Unpacks the output `granbond_bond_output_store` packed into `slots`

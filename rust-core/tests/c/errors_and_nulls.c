@@ -190,6 +190,22 @@ static GbStatus null_bond_output_store(struct world *c, int k)
     return granbond_bond_output_store(ARG(k, 0, &c->bond_out[0]), ARG(k, 1, c->output_slots));
 }
 
+/* every output intact, so the slots of bond 0 are the first written */
+static GbStatus null_bond_output_store_intact(struct world *c, int k)
+{
+    GbBondOutput outs[N_ITEMS];
+    double *states[N_ITEMS];
+    int b;
+    for (b = 0; b < N_ITEMS; b++) {
+        outs[b] = c->bond_out[b];
+        outs[b].status = GB_BOND_STATUS_INTACT;
+        states[b] = c->bond_state_pointers[b];
+    }
+    if (k == 2)
+        states[0] = NULL;
+    return granbond_bond_output_store_intact(N_ITEMS, ARG(k, 0, outs), ARG(k, 1, states), 0, &c->index);
+}
+
 static GbStatus null_bond_output_load(struct world *c, int k)
 {
     return granbond_bond_output_load(ARG(k, 0, c->output_slots), ARG(k, 1, &c->bond_out[0]));
@@ -396,6 +412,7 @@ static const struct null_entry NULL_ENTRIES[] = {
      {"model", "sphere", "contact_point", "state", "created"}},
     {"granbond_wall_bond_compute", null_wall_bond_compute, {"model", "sphere", "wall_velocity", "state", "out"}},
     {"granbond_bond_output_store", null_bond_output_store, {"out", "slots"}},
+    {"granbond_bond_output_store_intact", null_bond_output_store_intact, {"out", "states", "states[k]"}},
     {"granbond_bond_output_load", null_bond_output_load, {"slots", "out"}},
     {"granbond_bond_centre", null_bond_centre, {"x_i", "x_j", "centre"}},
     {"granbond_bond_max_distance", null_bond_max_distance, {"model", "out"}},

@@ -25,7 +25,9 @@
 #![allow(dead_code)]
 
 use granbond::bond::output_slots::{store_output, BOND_OUTPUT_LEN};
-use granbond::bond::{BondModel, BondOutput, BondParams, BOND_STATE_LEN, PARAMETERS, WALL_BOND_STATE_LEN};
+use granbond::bond::{
+    BondModel, BondOutput, BondParams, BondStatus, BOND_STATE_LEN, PARAMETERS, WALL_BOND_STATE_LEN,
+};
 use granbond::contact::{
     ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN, VOIGT_PARAMETERS,
 };
@@ -48,7 +50,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 57] = [
+pub const ENTRY_POINTS: [&str; 58] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -65,6 +67,7 @@ pub const ENTRY_POINTS: [&str; 57] = [
     "granbond_wall_bond_try_create",
     "granbond_wall_bond_compute",
     "granbond_bond_output_store",
+    "granbond_bond_output_store_intact",
     "granbond_bond_output_load",
     "granbond_bond_centre",
     "granbond_bond_max_distance",
@@ -1102,6 +1105,40 @@ impl<'t> Session<'t> {
         self.bond_centre(input, &k.get());
     }
 
+    /// The batch store of one bond whose output is kept `offset` doubles
+    /// after its state: `o` there if it is intact, nothing written if not.
+    fn bond_output_slots_intact(&mut self, input: &mut Input, o: &BondOutput) {
+        let offset = input.below(3);
+        let mut record = Place::new([0.0f64; 2 + BOND_OUTPUT_LEN]);
+        let states = [record.ptr(input.pointer()) as *mut f64];
+        let mut out = Place::new(*o);
+        let (ho, hs) = (input.pointer(), input.pointer());
+        let states_ptr = if hs == Pointer::Null {
+            null_mut()
+        } else {
+            states.as_ptr() as *mut *mut f64
+        };
+        let mut failed = usize::MAX;
+        // SAFETY: null, misaligned or valid for their sizes; a valid state
+        // has room for the slots at `offset`.
+        let status =
+            unsafe { fb::granbond_bond_output_store_intact(1, out.ptr(ho), states_ptr, offset, &mut failed) };
+        let function = "granbond_bond_output_store_intact";
+        if self.answer(function, status) {
+            let kept = &record.get()[offset..offset + BOND_OUTPUT_LEN];
+            let want = if o.status == BondStatus::Intact as i32 {
+                store_output(o)
+            } else {
+                [0.0; BOND_OUTPUT_LEN]
+            };
+            assert!(
+                kept.iter().zip(&want).all(|(a, b)| a.to_bits() == b.to_bits()),
+                "{function}: {kept:?} for {o:?} at offset {offset}"
+            );
+            self.note_finite(function, all_finite(kept));
+        }
+    }
+
     /// Stores `o` in history slots and loads it back.
     fn bond_output_slots(&mut self, input: &mut Input, mut o: BondOutput) {
         if input.below(4) == 0 {
@@ -1121,6 +1158,7 @@ impl<'t> Session<'t> {
             );
             self.note_finite("granbond_bond_output_store", all_finite(&stored));
         }
+        self.bond_output_slots_intact(input, &o);
         if input.below(4) == 0 {
             let mut s = slots.get();
             input.mutate(&mut s);
