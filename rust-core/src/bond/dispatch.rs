@@ -110,31 +110,25 @@ mod wide {
     use crate::real::packed::{F64x4, F64x8};
     use std::borrow::BorrowMut;
 
-    /// The step compiled for AVX2, 4 bonds per instruction (the
-    /// `#[inline(always)]` laws and lane operations take on this function's
-    /// target features).
-    #[target_feature(enable = "avx2")]
-    fn avx2<const F: u32, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
-        laws: &BondLaws,
-        kin: &K,
-        dt: f64,
-        states: &mut [S],
-        outs: &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)> {
-        in_chunks::<F, F64x4, K, S>(laws, kin, dt, states, outs)
+    /// The step compiled for an instruction set, `$pack` bonds per
+    /// instruction (the `#[inline(always)]` laws and lane operations take on
+    /// this function's target features).
+    macro_rules! compiled {
+        ($name:ident, $feature:literal, $pack:ty) => {
+            #[target_feature(enable = $feature)]
+            fn $name<const F: u32, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
+                laws: &BondLaws,
+                kin: &K,
+                dt: f64,
+                states: &mut [S],
+                outs: &mut [BondOutput],
+            ) -> Result<(), (usize, KinematicsError)> {
+                in_chunks::<F, $pack, K, S>(laws, kin, dt, states, outs)
+            }
+        };
     }
-
-    /// The same for AVX-512, 8 bonds per instruction.
-    #[target_feature(enable = "avx512f")]
-    fn avx512<const F: u32, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
-        laws: &BondLaws,
-        kin: &K,
-        dt: f64,
-        states: &mut [S],
-        outs: &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)> {
-        in_chunks::<F, F64x8, K, S>(laws, kin, dt, states, outs)
-    }
+    compiled!(avx2, "avx2", F64x4);
+    compiled!(avx512, "avx512f", F64x8);
 
     /// The wide entries of the tables: one per instruction set, state
     /// layout and source of kinematics, the same safe shell around each.
