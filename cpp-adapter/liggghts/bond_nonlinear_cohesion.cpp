@@ -246,8 +246,8 @@ void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
         failed(b.bonds[bad].i, b.bonds[bad].j, "granbond_bond_compute_indexed");
         return;
     }
-    // the loads of the intact bonds, kept after their states (the output
-    // slots are registered right after the state slots)
+    // the loads of the intact bonds, kept in the same history record as
+    // their states, outputOffset_ - offset_ doubles further on
     if (granbond_bond_output_store_intact(n, b.outputs.data(), b.states.data(),
                                           static_cast<size_t>(outputOffset_ - offset_), &bad) != GB_STATUS_OK) {
         failed(b.bonds[bad].i, b.bonds[bad].j, "granbond_bond_output_store_intact");
