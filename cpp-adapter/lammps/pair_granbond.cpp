@@ -159,6 +159,7 @@ void PairGranbond::allocate()
     pairs_.assign(m, TypePair());
     voigt_.assign(m, nullptr);
     bond_.assign(m, nullptr);
+    createsNow_.assign(m, 0);
 }
 
 void PairGranbond::settings(int narg, char **arg)
@@ -574,6 +575,11 @@ void PairGranbond::compute(int eflag, int vflag)
     double **firsthistory = fixHistory_->firstvalue;
     const int size = sizeHistory_;
 
+    // per type pair: whether its bonds may form in this pass (the core
+    // says, once per pass); where not, an unbonded pair is a plain contact
+    for (size_t tp = 0; tp < bond_.size(); tp++)
+        createsNow_[tp] = advance && bond_[tp] && granbond_bond_creates_at(bond_[tp], step);
+
     double scratch[GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN + kLoadSlots];
     GbPairKinematics k;
 
@@ -663,7 +669,7 @@ void PairGranbond::compute(int eflag, int vflag)
             // the creation rules, where they may create (the core says,
             // from the status and the step: an intact bond, or any pair
             // after the creation step, needs no kinematics)
-            if (advance && bondState[0] != GB_BOND_STATUS_INTACT &&
+            if (createsNow_[tp] && bondState[0] != GB_BOND_STATUS_INTACT &&
                 granbond_bond_may_create(bondModel, bondState, step)) {
                 pairKinematics(i, j);
                 int32_t created = 0;
@@ -749,7 +755,9 @@ void PairGranbond::compute(int eflag, int vflag)
             const GbBondModel *bondModel = bond_[tp];
             double *history = &allhistory[size * jj];
 
-            if (!touching && !bondModel) {   // plain contact, apart
+            // plain contact, apart: no bond model, or no bond now and none
+            // can form in this pass
+            if (!touching && (!bondModel || (!createsNow_[tp] && history[contactLen_] != GB_BOND_STATUS_INTACT))) {
                 if (touch[jj]) {   // else nothing is left to forget
                     touch[jj] = 0;
                     for (int s = 0; s < size; s++) history[s] = 0.0;

@@ -91,6 +91,7 @@ private:
     std::vector<TypePair> pairs_;
     std::vector<GbVoigtModel *> voigt_;
     std::vector<GbBondModel *> bond_;
+    std::vector<char> createsNow_;          // per type pair, this pass (compute)
     std::vector<GbTypeBodies> bodies_;      // per type, over all ranks, at the latest run start
     std::vector<double> transferSign_;      // per history slot: +1 copy, -1 negate
     size_t contactLen_, bondLen_;

@@ -67,6 +67,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     warnedLost_(false),
     pair_(cmb->is_wall() ? 0 : dynamic_cast<LAMMPS_NS::PairGran *>(hsetup)),
     deferring_(false),
+    createsNow_(false),
     lastBatch_(0)
 {
     checkCoreLayout(error);
@@ -140,6 +141,13 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
                  !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
                  !pair_->store_sum_normal_force() && !pair_->storeSumDelta();
     if (deferring_) book_->beginPassIfNew(tally_, update);
+    // whether any bond may form in this pass (the core says, per bond type)
+    createsNow_ = false;
+    const int n = parameters_.ntypes();
+    for (int t = 0; deferring_ && t < (n + 1) * (n + 1); t++) {
+        const GbBondModel *model = parameters_.table()[t];
+        if (model && granbond_bond_creates_at(model, update->ntimestep)) createsNow_ = true;
+    }
 }
 
 void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceData &)
@@ -478,6 +486,19 @@ inline bool BondNonlinearCohesion::deferIntact(SurfacesCloseData &d, const Force
     return true;
 }
 
+// A pair without an intact bond in a queued pass in which no bond can
+// form: the contact model acts alone, as the general path would decide
+// after the core's creation rules.
+inline bool BondNonlinearCohesion::unbondable(SurfacesCloseData &d)
+{
+    if (!deferring_ || createsNow_ || clumpIds_ || !d.contact_history ||
+        d.contact_history[offset_] == GB_BOND_STATUS_INTACT)
+        return false;
+    if (!parameters_.model(d.itype, d.jtype)) return false;   // the general path reports it
+    setContactFlag(d, false);
+    return true;
+}
+
 void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
                                                  ForceData &j_forces)
 {
@@ -486,6 +507,7 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
         j_forces.reset();
         return;
     }
+    if (unbondable(sidata)) return;
     GbBondOutput out;
     bool deferred;
     const bool intact = advance(sidata, out, deferred, &i_forces, &j_forces);
@@ -500,7 +522,7 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
 
 void BondNonlinearCohesion::surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
 {
-    if (deferIntact(scdata, 0, 0)) return;
+    if (deferIntact(scdata, 0, 0) || unbondable(scdata)) return;
     GbBondOutput out;
     bool deferred;
     const bool intact = advance(scdata, out, deferred, 0, 0);

@@ -75,6 +75,7 @@ private:
     void createPair(const SurfacesCloseData &d, const GbBondModel *model, const GbPairKinematics &k,
                     double *state, bool &created);
     bool deferIntact(SurfacesCloseData &d, const ForceData *i_contact, const ForceData *j_contact);
+    bool unbondable(SurfacesCloseData &d);
     void defer(SurfacesCloseData &d, const GbBondModel *model, bool created, const ForceData *i_forces,
                const ForceData *j_forces);
     void advanceBatch(PendingBatch &b);
@@ -121,6 +122,7 @@ private:
 
     LAMMPS_NS::PairGran *pair_;   // null for walls
     bool deferring_;              // this pass queues intact bonds
+    bool createsNow_;             // a bond may form in this pass (queued passes only)
     std::vector<PendingBatch> batches_;
     size_t lastBatch_;
 };

@@ -23,7 +23,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 7
+#define GRANBOND_ABI_VERSION 8
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -622,6 +622,18 @@ enum GbStatus granbond_bond_try_create(const struct GbBondModel *model,
 int32_t granbond_bond_may_create(const struct GbBondModel *model,
                                  const double *state,
                                  int64_t step);
+
+/**
+ * Whether any pair could be bonded at `step` (`granbond_bond_try_create`
+ * creates bonds only at `create_step`, unless `create_always`): 1 or 0.
+ * Where this says 0, `granbond_bond_may_create` says 0 for every state at
+ * `step`, so an engine asks once per pass and skips the creation rules for
+ * every pair. 0 for a null or misaligned `model`.
+ *
+ * # Safety
+ * `model` must be null or from `granbond_bond_model_new`.
+ */
+int32_t granbond_bond_creates_at(const struct GbBondModel *model, int64_t step);
 
 /**
  * Creates the bond now, skipping the step rule (for bonds an engine forms

@@ -10,6 +10,7 @@
 mod common;
 
 use common::strategies::{bond_params, bonded_pair};
+use granbond::bond::finite::bond_finite;
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus, Simd};
 use granbond::kinematics::{KinematicsError, PairKinematics};
 use granbond::pair_source::{AtomArrays, IndexedPairs};
@@ -98,17 +99,22 @@ fn any_params() -> impl Strategy<Value = BondParams> {
 }
 
 /// One bond after another with `BondModel::step`, stopping at the first
-/// error: what `step_scattered` must reproduce.
+/// error and naming the first bond whose results are not finite: what
+/// `step_scattered` must reproduce.
 fn one_by_one(
     m: &BondModel,
     kin: &[PairKinematics],
     states: &mut [BondState],
     outs: &mut [BondOutput],
-) -> Result<(), (usize, KinematicsError)> {
+) -> Result<Option<usize>, (usize, KinematicsError)> {
+    let mut first = None;
     for (i, k) in kin.iter().enumerate() {
         m.step(k, DT, &mut states[i], &mut outs[i]).map_err(|e| (i, e))?;
+        if first.is_none() && !bond_finite(&states[i], &outs[i]) {
+            first = Some(i);
+        }
     }
-    Ok(())
+    Ok(first)
 }
 
 fn output_bits(o: &BondOutput) -> Vec<u64> {
@@ -283,6 +289,56 @@ fn every_kernel_gives_every_bond_the_bits_of_a_single_step() {
             };
             check_scattered(p, &bonds).unwrap();
         }
+    }
+}
+
+/// Results that are not finite are found in every lane: with the history
+/// extremes of bonds `k` and `k + 5` near the largest double (finite, but
+/// their sum overflows), each batch names bond `k`, as one step per bond
+/// and the rule of `bond_finite` do, and advances every bond.
+#[test]
+fn every_kernel_names_the_first_bond_whose_results_are_not_finite() {
+    let mut runner = TestRunner::deterministic();
+    let p = BondParams {
+        twist: 1,
+        bend: 1,
+        ..any_params().new_tree(&mut runner).unwrap().current()
+    };
+    // intact bonds with usable kinematics and finite results, so that every
+    // chunk runs in lanes
+    let model = BondModel::new(p).unwrap();
+    let good: Vec<(PairKinematics, BondState)> = prop::collection::vec(bond(), 400)
+        .new_tree(&mut runner)
+        .unwrap()
+        .current()
+        .into_iter()
+        .filter(|(k, s)| {
+            let (mut s, mut o) = (*s, BondOutput::default());
+            s.status() == BondStatus::Intact
+                && model.step(k, DT, &mut s, &mut o).is_ok()
+                && o.status == BondStatus::Intact as i32
+                && bond_finite(&s, &o)
+        })
+        .take(17)
+        .collect();
+    assert_eq!(good.len(), 17);
+    for k in 0..12 {
+        let mut bonds = good.clone();
+        for b in [k, k + 5] {
+            let state = &mut bonds[b].1;
+            state.status = BondStatus::Intact as i32 as f64;
+            state.twist_max = 1.7e308;
+            state.bend_opposite = 1.7e308;
+        }
+        let kin: Vec<PairKinematics> = bonds.iter().map(|b| b.0).collect();
+        let mut states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
+        let mut outs = stale_outputs(bonds.len());
+        assert_eq!(
+            one_by_one(&model, &kin, &mut states, &mut outs),
+            Ok(Some(k)),
+            "the reference: bond {k} first"
+        );
+        check_scattered(p, &bonds).unwrap();
     }
 }
 

@@ -4,6 +4,7 @@
 //! ([`super::wide`]) for a fixed set of bits.
 
 use super::features::FEATURE_COMBINATIONS;
+use super::finite::BatchResult;
 use super::laws::BondLaws;
 use super::scalar::{all_one_by_one, bond_step};
 use super::state::{BondOutput, BondState};
@@ -14,27 +15,12 @@ use seq_macro::seq;
 
 pub type Kernel =
     fn(&BondLaws, &PairKinematics, f64, &mut BondState, &mut BondOutput) -> Result<(), KinematicsError>;
-pub type BatchKernel = fn(
-    &BondLaws,
-    &[PairKinematics],
-    f64,
-    &mut [BondState],
-    &mut [BondOutput],
-) -> Result<(), (usize, KinematicsError)>;
-pub type ScatteredKernel = fn(
-    &BondLaws,
-    &[PairKinematics],
-    f64,
-    &mut [&mut BondState],
-    &mut [BondOutput],
-) -> Result<(), (usize, KinematicsError)>;
-pub type IndexedKernel = fn(
-    &BondLaws,
-    &IndexedPairs<'_>,
-    f64,
-    &mut [&mut BondState],
-    &mut [BondOutput],
-) -> Result<(), (usize, KinematicsError)>;
+pub type BatchKernel =
+    fn(&BondLaws, &[PairKinematics], f64, &mut [BondState], &mut [BondOutput]) -> BatchResult;
+pub type ScatteredKernel =
+    fn(&BondLaws, &[PairKinematics], f64, &mut [&mut BondState], &mut [BondOutput]) -> BatchResult;
+pub type IndexedKernel =
+    fn(&BondLaws, &IndexedPairs<'_>, f64, &mut [&mut BondState], &mut [BondOutput]) -> BatchResult;
 
 /// The steps of one model: one bond, bonds whose states lie side by side
 /// (`batch`), apart (`scattered`), or apart with kinematics read from the
@@ -93,7 +79,7 @@ macro_rules! scalar {
             dt: f64,
             states: &mut [$state],
             outs: &mut [BondOutput],
-        ) -> Result<(), (usize, KinematicsError)> {
+        ) -> BatchResult {
             all_one_by_one::<F, _, _>(laws, kin, dt, states, outs)
         }
     };
@@ -122,7 +108,7 @@ mod wide {
                 dt: f64,
                 states: &mut [S],
                 outs: &mut [BondOutput],
-            ) -> Result<(), (usize, KinematicsError)> {
+            ) -> BatchResult {
                 in_chunks::<F, $pack, K, S>(laws, kin, dt, states, outs)
             }
         };
@@ -140,7 +126,7 @@ mod wide {
                 dt: f64,
                 states: &mut [$state],
                 outs: &mut [BondOutput],
-            ) -> Result<(), (usize, KinematicsError)> {
+            ) -> BatchResult {
                 // SAFETY: only handed out by `kernels` for the instruction
                 // set it names, which `BondModel` checks the CPU runs.
                 unsafe { $kernel::<F, _, _>(laws, kin, dt, states, outs) }

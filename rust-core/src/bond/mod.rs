@@ -3,7 +3,8 @@
 //!
 //! One module per law (`normal_law`, `hysteresis`, `shear`, `twist_bend`,
 //! `damping`, `breakage`, `section`, `energy`); the state and the output
-//! engines keep (`state`, `wall`, `output_slots`). Above them, each depending
+//! engines keep (`state`, `wall`, `output_slots`) and when its results count
+//! as finite (`finite`). Above them, each depending
 //! only on the ones before: the laws of a bond type ([`laws`]) and the parts
 //! switched on ([`features`]); the assembled step (`step`); the paths that
 //! feed it one bond at a time (`scalar`) or in lanes (`wide`); the compiled
@@ -16,6 +17,7 @@ pub mod damping;
 mod dispatch;
 pub mod energy;
 pub mod features;
+pub mod finite;
 pub mod hysteresis;
 pub mod laws;
 pub mod model;

@@ -2,6 +2,7 @@
 //! steps chosen for their switches on this CPU.
 
 use super::dispatch::{kernels, Kernels};
+use super::finite::BatchResult;
 use super::laws::BondLaws;
 use super::params::{BondParams, ParameterError};
 use super::state::{BondOutput, BondState};
@@ -67,15 +68,16 @@ impl BondModel {
         (self.kernels.single)(&self.laws, kin, dt, state, out)
     }
 
-    /// Advances every bond of equal-length slices; stops at the first bad
-    /// input and reports its index.
+    /// Advances every bond of equal-length slices; stops at the first bond
+    /// whose kinematics are unusable and reports its index, and otherwise
+    /// names the first bond whose results are not finite ([`BatchResult`]).
     pub fn step_batch(
         &self,
         kin: &[PairKinematics],
         dt: f64,
         states: &mut [BondState],
         outs: &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)> {
+    ) -> BatchResult {
         (self.kernels.batch)(&self.laws, kin, dt, states, outs)
     }
 
@@ -88,7 +90,7 @@ impl BondModel {
         dt: f64,
         states: &mut [&mut BondState],
         outs: &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)> {
+    ) -> BatchResult {
         (self.kernels.scattered)(&self.laws, kin, dt, states, outs)
     }
 
@@ -100,7 +102,7 @@ impl BondModel {
         dt: f64,
         states: &mut [&mut BondState],
         outs: &mut [BondOutput],
-    ) -> Result<(), (usize, KinematicsError)> {
+    ) -> BatchResult {
         (self.kernels.indexed)(&self.laws, kin, dt, states, outs)
     }
 }

@@ -2,6 +2,7 @@
 //! step ([`super::step`]) and its loads back out.
 
 use super::breakage::BreakMode;
+use super::finite::{bond_finite, BatchResult};
 use super::laws::BondLaws;
 use super::state::{BondOutput, BondState, BondStatus};
 use super::step::{advance, History, Motion};
@@ -93,8 +94,8 @@ pub fn bond_step<const F: u32>(
     Ok(())
 }
 
-/// Steps bonds `range` one by one, states in place or behind pointers; an
-/// error carries the index of its bond.
+/// Steps bonds `range` one by one, states in place or behind pointers,
+/// checking each bond's results as it goes ([`BatchResult`]).
 #[inline(always)]
 pub(crate) fn one_by_one<const F: u32, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
     laws: &BondLaws,
@@ -103,11 +104,16 @@ pub(crate) fn one_by_one<const F: u32, K: PairSource + ?Sized, S: BorrowMut<Bond
     dt: f64,
     states: &mut [S],
     outs: &mut [BondOutput],
-) -> Result<(), (usize, KinematicsError)> {
+) -> BatchResult {
+    let mut first = None;
     for b in range {
-        bond_step::<F>(laws, &kin.pair(b), dt, states[b].borrow_mut(), &mut outs[b]).map_err(|e| (b, e))?;
+        let state = states[b].borrow_mut();
+        bond_step::<F>(laws, &kin.pair(b), dt, state, &mut outs[b]).map_err(|e| (b, e))?;
+        if first.is_none() && !bond_finite(state, &outs[b]) {
+            first = Some(b);
+        }
     }
-    Ok(())
+    Ok(first)
 }
 
 /// All bonds of `kin` (as many as the shortest of the three holds) one by
@@ -119,7 +125,7 @@ pub(crate) fn all_one_by_one<const F: u32, K: PairSource + ?Sized, S: BorrowMut<
     dt: f64,
     states: &mut [S],
     outs: &mut [BondOutput],
-) -> Result<(), (usize, KinematicsError)> {
+) -> BatchResult {
     let count = kin.len().min(states.len()).min(outs.len());
     one_by_one::<F, K, S>(laws, kin, 0..count, dt, states, outs)
 }

@@ -8,18 +8,22 @@
 //! [`crate::real`]), and nothing mixes lanes, so it does not matter which
 //! lane or chunk a bond lands in.
 //!
+//! Each register of results is checked ([`super::finite`]) while it is
+//! still in registers.
+//!
 //! What `bond_step` decides per bond with a jump is a mask here, except
 //! what is rare and has side effects of its own: a chunk with a bond that
 //! is not intact or whose kinematics are unusable is left to the scalar
 //! kernel, which zeroes the first kind and reports the first bad one with
 //! its index.
 
+use super::finite::{bond_finite, results_finite, BatchResult};
 use super::laws::BondLaws;
 use super::scalar::one_by_one;
 use super::state::{BondOutput, BondState, BondStatus};
 use super::step::{advance, History, Motion};
 use super::twist_bend::{BendHistory, TwistHistory};
-use crate::kinematics::{axis, separated, usable, KinematicsError};
+use crate::kinematics::{axis, separated, usable};
 use crate::pair_source::PairSource;
 use crate::real::packed::Pack;
 use crate::vector::{Vector, V3};
@@ -34,12 +38,13 @@ pub(crate) fn in_chunks<const F: u32, P: Pack, K: PairSource + ?Sized, S: Borrow
     dt: f64,
     states: &mut [S],
     outs: &mut [BondOutput],
-) -> Result<(), (usize, KinematicsError)> {
+) -> BatchResult {
     let count = kin.len().min(states.len()).min(outs.len());
+    let mut first = None;
     let mut start = 0;
     while start + P::WIDTH <= count {
         let end = start + P::WIDTH;
-        if !step_chunk::<F, P, K, S>(
+        let found = match step_chunk::<F, P, K, S>(
             laws,
             kin,
             start,
@@ -47,16 +52,24 @@ pub(crate) fn in_chunks<const F: u32, P: Pack, K: PairSource + ?Sized, S: Borrow
             &mut states[start..end],
             &mut outs[start..end],
         ) {
-            one_by_one::<F, K, S>(laws, kin, start..end, dt, states, outs)?;
-        }
+            // rare: which lane, from what was stored
+            Some(finite) if !P::all(finite) => {
+                (start..end).find(|&b| !bond_finite(states[b].borrow(), &outs[b]))
+            }
+            Some(_) => None,
+            None => one_by_one::<F, K, S>(laws, kin, start..end, dt, states, outs)?,
+        };
+        first = first.or(found);
         start = end;
     }
-    one_by_one::<F, K, S>(laws, kin, start..count, dt, states, outs)
+    let found = one_by_one::<F, K, S>(laws, kin, start..count, dt, states, outs)?;
+    Ok(first.or(found))
 }
 
 /// Advances the `P::WIDTH` bonds of a chunk, from bond `first` of `kin` on,
-/// in lanes, or returns false without touching anything when one of them is
-/// not intact or has unusable kinematics.
+/// in lanes, and returns which lanes' results are finite; or returns `None`
+/// without touching anything when one of them is not intact or has
+/// unusable kinematics.
 #[inline(always)]
 fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
     laws: &BondLaws,
@@ -65,12 +78,12 @@ fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondSt
     dt: f64,
     states: &mut [S],
     outs: &mut [BondOutput],
-) -> bool {
+) -> Option<P::Mask> {
     let n = P::WIDTH;
     let (states, outs) = (&mut states[..n], &mut outs[..n]);
     let kin = |lane: usize| kin.pair(first + lane);
     if states.iter().any(|s| s.borrow().status() != BondStatus::Intact) {
-        return false;
+        return None;
     }
     let (x_i, x_j) = (lanes3(kin, |k| k.x_i), lanes3(kin, |k| k.x_j));
     let motion = Motion {
@@ -87,7 +100,7 @@ fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondSt
     let d = x_i - x_j;
     let r2 = d.norm_squared();
     if !P::all(finite & positive & separated(r2)) {
-        return false;
+        return None;
     }
 
     let mut h = History {
@@ -136,7 +149,35 @@ fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondSt
     scatter(outs, loads.delta, |o: &mut BondOutput, x| o.delta = x);
     scatter(outs, status, |o: &mut BondOutput, x| o.status = x as i32);
     scatter(outs, loads.mode, |o: &mut BondOutput, x| o.break_mode = x as i32);
-    true
+
+    // in the order of the slots and fields (finite.rs)
+    let (f, ti, tj) = (loads.force_i, loads.torque_i, loads.torque_j);
+    let (sf, ta, ba, bh) = (h.shear_force, h.twist_angle, h.bend_angle, h.bend.leading);
+    Some(results_finite(
+        [f.x, f.y, f.z, ti.x, ti.y, ti.z, tj.x, tj.y, tj.z],
+        [loads.normal_force, loads.sigma, loads.tau, loads.delta],
+        [
+            status,
+            h.r0,
+            h.delta_max,
+            h.delta_min,
+            sf.x,
+            sf.y,
+            sf.z,
+            ta.x,
+            ta.y,
+            ta.z,
+            ba.x,
+            ba.y,
+            ba.z,
+            h.twist.max,
+            h.twist.min,
+            bh.x,
+            bh.y,
+            bh.z,
+            h.bend.opposite,
+        ],
+    ))
 }
 
 /// One quantity of `P::WIDTH` items, lane `i` from `items[i]`.

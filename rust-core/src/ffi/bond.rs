@@ -145,6 +145,21 @@ pub unsafe extern "C" fn granbond_bond_may_create(
     status_and_step_allow(&model.params, BondStatus::from_slot(*state), step) as i32
 }
 
+/// Whether any pair could be bonded at `step` (`granbond_bond_try_create`
+/// creates bonds only at `create_step`, unless `create_always`): 1 or 0.
+/// Where this says 0, `granbond_bond_may_create` says 0 for every state at
+/// `step`, so an engine asks once per pass and skips the creation rules for
+/// every pair. 0 for a null or misaligned `model`.
+///
+/// # Safety
+/// `model` must be null or from `granbond_bond_model_new`.
+// a query, not a call that fails: no error record
+#[entry(or = 0, model: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_creates_at(model: *const BondModel, step: i64) -> i32 {
+    model.creates_at(step) as i32
+}
+
 /// Creates the bond now, skipping the step rule (for bonds an engine forms
 /// by its own rule, such as the spheres of a `bonded yes` clump): only if
 /// the pair is not bonded and closer than `create_distance`.
@@ -207,10 +222,8 @@ pub unsafe extern "C" fn granbond_bond_compute_batch(
     out: *mut BondOutput,
     failed_index: *mut usize,
 ) -> Status {
-    model
-        .step_batch(kinematics, dt, states, out)
-        .map_err(|(index, e)| failed_index.fail("bond", index, e.into()))?;
-    results::bonds(count, |k| &states[k], out).map_err(|(index, f)| failed_index.fail("bond", index, f))
+    let stepped = model.step_batch(kinematics, dt, states, out);
+    results::bonds(stepped, failed_index)
 }
 
 /// The per-atom arrays of an engine (local and ghost atoms), as
@@ -290,10 +303,8 @@ pub unsafe extern "C" fn granbond_bond_compute_indexed(
     let states = slice_mut(states as *mut &mut BondState, count, "states")?;
     let out = slice_mut(out, count, "out")?;
     let dt = time_step(dt, "dt")?;
-    model
-        .step_indexed(&kinematics, dt, states, out)
-        .map_err(|(index, e)| failed_index.fail("bond", index, e.into()))?;
-    results::bonds(count, |k| &*states[k], out).map_err(|(index, f)| failed_index.fail("bond", index, f))
+    let stepped = model.step_indexed(&kinematics, dt, states, out);
+    results::bonds(stepped, failed_index)
 }
 
 /// Bonds a sphere to a wall it touches at `contact_point` (`double[3]`)

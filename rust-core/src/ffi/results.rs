@@ -6,6 +6,8 @@
 //! what went non-finite.
 
 use super::error::{Failure, Status};
+use super::guard::FailedIndex;
+use crate::bond::finite::{bond_finite, BatchResult};
 use crate::bond::{BondOutput, BondState};
 use crate::contact::{ContactOutput, ContactState};
 
@@ -28,36 +30,27 @@ pub fn refused(what: &str) -> Failure {
     )
 }
 
-/// Whether a bond step's loads, stresses and state are finite.
-#[inline]
-pub fn bond_finite(state: &BondState, o: &BondOutput) -> bool {
-    let (f, ti, tj) = (o.force_i, o.torque_i, o.torque_j);
-    let loads = f[0] + f[1] + f[2] + ti[0] + ti[1] + ti[2] + tj[0] + tj[1] + tj[2];
-    let scalars = o.normal_force + o.sigma + o.tau + o.delta;
-    (loads + scalars).is_finite() && finite(state.as_slots())
-}
-
 /// A bond step's loads, stresses and state.
 pub fn bond(state: &BondState, out: &BondOutput) -> Result<(), Failure> {
     if bond_finite(state, out) {
         Ok(())
     } else {
-        Err(refused("force, torque, stress or bond state"))
+        Err(refused(BOND_RESULTS))
     }
 }
 
-/// Checks bonds `0 .. count` (`state(k)`, `out[k]`); the first that is not
-/// finite is refused with its index.
-pub fn bonds<'a>(
-    count: usize,
-    state: impl Fn(usize) -> &'a BondState,
-    out: &[BondOutput],
-) -> Result<(), (usize, Failure)> {
-    match (0..count).position(|k| !bond_finite(state(k), &out[k])) {
-        None => Ok(()),
-        Some(k) => Err((k, refused("force, torque, stress or bond state"))),
+/// A batch step's answer as the entry's status: its first bond with
+/// unusable kinematics, else its first bond whose results are not finite,
+/// with the bond's index in `failed_index`.
+pub fn bonds(stepped: BatchResult, failed_index: FailedIndex) -> Result<(), Failure> {
+    match stepped {
+        Ok(None) => Ok(()),
+        Ok(Some(index)) => Err(failed_index.fail("bond", index, refused(BOND_RESULTS))),
+        Err((index, e)) => Err(failed_index.fail("bond", index, e.into())),
     }
 }
+
+const BOND_RESULTS: &str = "force, torque, stress or bond state";
 
 /// A contact step's loads and state.
 pub fn contact(state: &ContactState, out: &ContactOutput) -> Result<(), Failure> {

@@ -46,6 +46,23 @@ int test_bond_create_and_force(void)
         CHECK(granbond_bond_may_create(ma, state, CREATE_STEP + 7) == 1, "may_create: broken, create_always on");
         granbond_bond_model_free(ma);
     }
+    /* granbond_bond_creates_at: at create_step only (create_always off),
+     * every step with create_always; 0 for a bad model. */
+    CHECK(granbond_bond_creates_at(m, CREATE_STEP) == 1, "creates_at: at create_step");
+    CHECK(granbond_bond_creates_at(m, CREATE_STEP - 1) == 0 && granbond_bond_creates_at(m, CREATE_STEP + 1) == 0,
+          "creates_at: not at another step");
+    {
+        GbBondParams always = p;
+        GbBondModel *ma = NULL;
+        always.create_always = 1;
+        if (new_bond_model(&always, &ma))
+            return 1;
+        CHECK(granbond_bond_creates_at(ma, CREATE_STEP + 7) == 1, "creates_at: any step with create_always");
+        granbond_bond_model_free(ma);
+    }
+    CHECK(granbond_bond_creates_at(NULL, CREATE_STEP) == 0 &&
+              granbond_bond_creates_at((const GbBondModel *)((const char *)m + 1), CREATE_STEP) == 0,
+          "creates_at: 0 for a null or misaligned model");
     CHECK(granbond_bond_may_create(NULL, state, CREATE_STEP) == 0 && granbond_bond_may_create(m, NULL, CREATE_STEP) == 0 &&
               granbond_bond_may_create(m, (const double *)((const char *)state + 1), CREATE_STEP) == 0,
           "may_create: 0 for a null model, a null or misaligned state");

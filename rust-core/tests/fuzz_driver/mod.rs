@@ -50,7 +50,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 58] = [
+pub const ENTRY_POINTS: [&str; 59] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -60,6 +60,7 @@ pub const ENTRY_POINTS: [&str; 58] = [
     "granbond_bond_parameter_name",
     "granbond_bond_try_create",
     "granbond_bond_may_create",
+    "granbond_bond_creates_at",
     "granbond_bond_create_now",
     "granbond_bond_compute",
     "granbond_bond_compute_batch",
@@ -1080,6 +1081,21 @@ impl<'t> Session<'t> {
             );
         }
         self.answer_value("granbond_bond_may_create");
+
+        // SAFETY: null or from granbond_bond_model_new.
+        let any = unsafe { fb::granbond_bond_creates_at(m, step) };
+        assert!(any == 0 || any == 1, "granbond_bond_creates_at answered {any}");
+        if m.is_null() {
+            assert_eq!(any, 0, "granbond_bond_creates_at: 1 for a null model");
+        }
+        // engines skip every pair's rules where it says 0
+        if any == 0 {
+            assert_eq!(
+                answer, 0,
+                "granbond_bond_creates_at said 0 at step {step}, granbond_bond_may_create 1"
+            );
+        }
+        self.answer_value("granbond_bond_creates_at");
     }
 
     fn bond_compute(&mut self, input: &mut Input) {

@@ -1,0 +1,50 @@
+//! When a bond step's results count as finite. The checked C entries refuse
+//! results that are not (`ffi::results`); the batch steps apply the rule as
+//! they go, one bond or one register of bonds at a time, so no second pass
+//! reads the results again.
+
+use super::state::{BondOutput, BondState, BOND_STATE_LEN};
+use crate::kinematics::KinematicsError;
+use crate::real::Real;
+
+/// What a batch step answers: `Ok(first)`, where `first` is the first bond
+/// whose results are not finite ([`results_finite`]), if any (every bond
+/// advanced); `Err((bond, e))` for the first bond whose kinematics are
+/// unusable (the bonds after it not advanced).
+pub type BatchResult = Result<Option<usize>, (usize, KinematicsError)>;
+
+/// Whether a bond step's loads (`force_i`, `torque_i`, `torque_j`), its
+/// scalars (`normal_force`, `sigma`, `tau`, `delta`) and its state slots are
+/// finite, per lane. One add per value, as the check runs on the engines'
+/// hot paths: a value of infinity or NaN makes its group's sum non-finite;
+/// so do finite values so large that their sum overflows (beyond 1e308),
+/// which are as far outside any physical range. The sums run left to right
+/// in every lane, so a lane decides as the scalar check does.
+#[inline(always)]
+pub fn results_finite<R: Real>(loads: [R; 9], scalars: [R; 4], state: [R; BOND_STATE_LEN]) -> R::Mask {
+    let outputs = sum(&loads) + sum(&scalars);
+    is_finite(outputs) & is_finite(sum(&state))
+}
+
+/// [`results_finite`] of one bond.
+#[inline(always)]
+pub fn bond_finite(state: &BondState, o: &BondOutput) -> bool {
+    let (f, ti, tj) = (o.force_i, o.torque_i, o.torque_j);
+    let loads = [f[0], f[1], f[2], ti[0], ti[1], ti[2], tj[0], tj[1], tj[2]];
+    results_finite(
+        loads,
+        [o.normal_force, o.sigma, o.tau, o.delta],
+        *state.as_slots(),
+    )
+}
+
+#[inline(always)]
+fn sum<R: Real>(values: &[R]) -> R {
+    values[1..].iter().fold(values[0], |acc, &x| acc + x)
+}
+
+/// `x - x` is `+0` for a finite `x` and NaN otherwise.
+#[inline(always)]
+fn is_finite<R: Real>(x: R) -> R::Mask {
+    (x - x).ge(R::splat(0.0))
+}
