@@ -733,6 +733,20 @@ void PairGranbond::compute(int eflag, int vflag)
     };
 
     for (int ii = 0; ii < inum; ii++) {
+        // The histories of the next atom's marked pairs (bonds and touching
+        // contacts), requested while this atom's pairs are computed: fix
+        // neigh/history keeps them apart, between the records of unmarked
+        // neighbours, and each would otherwise cost a wait for memory.
+        // (In the loop, not in a function of its own: GCC deletes calls to
+        // a function that only prefetches.)
+        if (ii + 1 < inum) {
+            const int next = ilist[ii + 1];
+            const int *marked = firsttouch[next];
+            const double *records = firsthistory[next];
+            for (int jj = 0; jj < numneigh[next]; jj++)
+                if (marked[jj])
+                    for (int s = 0; s < size; s += 8) __builtin_prefetch(records + size * jj + s, 1);
+        }
         const int i = ilist[ii];
         const int itype = type[i];
         const double radi = radius[i];
@@ -756,8 +770,12 @@ void PairGranbond::compute(int eflag, int vflag)
             double *history = &allhistory[size * jj];
 
             // plain contact, apart: no bond model, or no bond now and none
-            // can form in this pass
-            if (!touching && (!bondModel || (!createsNow_[tp] && history[contactLen_] != GB_BOND_STATUS_INTACT))) {
+            // can form in this pass. A pair not marked touching has an
+            // all-zero history (every path that clears the mark zeroes it),
+            // so its bond status is not read: the unbonded neighbours'
+            // histories stay out of the cache.
+            if (!touching && (!bondModel || (!createsNow_[tp] && (!touch[jj] || history[contactLen_] !=
+                                                                                      GB_BOND_STATUS_INTACT)))) {
                 if (touch[jj]) {   // else nothing is left to forget
                     touch[jj] = 0;
                     for (int s = 0; s < size; s++) history[s] = 0.0;
