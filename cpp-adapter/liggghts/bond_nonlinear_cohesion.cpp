@@ -2,6 +2,7 @@
 #include "core_bridge.h"
 
 #include "fix_property_atom.h"
+#include "neigh_list.h"
 #include "pair_gran.h"
 
 #include <algorithm>
@@ -68,6 +69,8 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     pair_(cmb->is_wall() ? 0 : dynamic_cast<LAMMPS_NS::PairGran *>(hsetup)),
     deferring_(false),
     createsNow_(false),
+    cursor_(0),
+    lastAtom_(-1),
     lastBatch_(0)
 {
     checkCoreLayout(error);
@@ -141,6 +144,8 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
                  !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
                  !pair_->store_sum_normal_force() && !pair_->storeSumDelta();
     if (deferring_) book_->beginPassIfNew(tally_, update);
+    cursor_ = 0;
+    lastAtom_ = -1;
     // whether any bond may form in this pass (the core says, per bond type)
     createsNow_ = false;
     const int n = parameters_.ntypes();
@@ -474,10 +479,34 @@ void BondNonlinearCohesion::apply(const GbBondOutput &out, ForceData &i_forces, 
     }
 }
 
+// The engine's pair loop first reads a pair's history in the contact
+// models, and each pair's history lies apart from the next one's (fix
+// neigh/history's pages hold every neighbour's), so each read waits for
+// memory. While the pairs of atom i are computed, the histories of the
+// flagged pairs (bonds, contacts) of the atom after it in the neighbour
+// list are requested. Called at the first callback of each atom of a
+// queued pass; the pair loop walks the neighbour list in order.
+void BondNonlinearCohesion::prefetchNextAtom(int i)
+{
+    lastAtom_ = i;
+    const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
+    if (!list || !history || !history->firstneigh || !history->firstdouble) return;
+    while (cursor_ < list->inum && list->ilist[cursor_] != i) cursor_++;
+    if (cursor_ + 1 >= list->inum) return;
+    const int next = list->ilist[cursor_ + 1];
+    const int *flags = history->firstneigh[next];
+    const double *records = history->firstdouble[next];
+    const int dnum = pair_->dnum();
+    for (int jj = 0; jj < list->numneigh[next]; jj++)
+        if (flags[jj])
+            for (int s = 0; s < dnum; s += 8) __builtin_prefetch(records + dnum * jj + s, 1);
+}
+
 // The common case of a force pass, without the general path's calls.
 inline bool BondNonlinearCohesion::deferIntact(SurfacesCloseData &d, const ForceData *i_contact,
                                                const ForceData *j_contact)
 {
+    if (deferring_ && d.i != lastAtom_) prefetchNextAtom(d.i);
     if (!deferring_ || !d.contact_history || d.contact_history[offset_] != GB_BOND_STATUS_INTACT) return false;
     const GbBondModel *model = parameters_.model(d.itype, d.jtype);
     if (!model) return false;   // the general path reports it

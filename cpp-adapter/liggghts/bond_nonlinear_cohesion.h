@@ -76,6 +76,7 @@ private:
                     double *state, bool &created);
     bool deferIntact(SurfacesCloseData &d, const ForceData *i_contact, const ForceData *j_contact);
     bool unbondable(SurfacesCloseData &d);
+    void prefetchNextAtom(int i);
     void defer(SurfacesCloseData &d, const GbBondModel *model, bool created, const ForceData *i_forces,
                const ForceData *j_forces);
     void advanceBatch(PendingBatch &b);
@@ -123,6 +124,8 @@ private:
     LAMMPS_NS::PairGran *pair_;   // null for walls
     bool deferring_;              // this pass queues intact bonds
     bool createsNow_;             // a bond may form in this pass (queued passes only)
+    int cursor_;                  // position of the latest atom in the neighbour list (prefetchNextAtom)
+    int lastAtom_;
     std::vector<PendingBatch> batches_;
     size_t lastBatch_;
 };
