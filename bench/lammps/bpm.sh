@@ -34,10 +34,11 @@
 # list; pair_style zero): its "Bond" row is the bond cost. granbond's bonds
 # are pair contact history (fix neigh/history): its "Pair" row holds the
 # bonds and the neighbour walk over the 52,680 unbonded diagonal neighbour
-# pairs within the cutoff (no contact, as they do not touch) and the
-# creation check on them; a bonded pair exerts no contact force (the bond
-# replaces it), but its Voigt contact is still evaluated every step, to act
-# if the bond breaks in that step. BPM makes its
+# pairs within the cutoff (no contact, as they do not touch; no creation
+# check after step 1); a bonded pair exerts no contact force (the bond
+# replaces it), but its Voigt contact is still stepped every step (its
+# history moves on under the bond, and it acts if the bond breaks). BPM
+# makes its
 # bonds at setup (r0 at the first run); granbond in step 1 (create_step 1).
 #
 # Prints, per style and case: best and median Bond time (BPM: the "Bond" row

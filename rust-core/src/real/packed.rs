@@ -145,12 +145,18 @@ impl Pack for F64x4 {
         // SAFETY: see the module documentation.
         F64x4(unsafe { _mm256_set_pd(f(3), f(2), f(1), f(0)) })
     }
+    /// Lanes read out of the register, not through a copy on the stack: a
+    /// lane stored to memory becomes one store instruction.
     #[inline(always)]
     fn for_each_lane(self, mut f: impl FnMut(usize, f64)) {
-        // SAFETY: __m256d is 4 f64.
-        let lanes = unsafe { std::mem::transmute::<__m256d, [f64; 4]>(self.0) };
-        for (i, x) in lanes.into_iter().enumerate() {
-            f(i, x);
+        // SAFETY: see the module documentation.
+        unsafe {
+            let low = _mm256_castpd256_pd128(self.0);
+            let high = _mm256_extractf128_pd::<1>(self.0);
+            f(0, _mm_cvtsd_f64(low));
+            f(1, _mm_cvtsd_f64(_mm_unpackhi_pd(low, low)));
+            f(2, _mm_cvtsd_f64(high));
+            f(3, _mm_cvtsd_f64(_mm_unpackhi_pd(high, high)));
         }
     }
 }
