@@ -421,6 +421,7 @@ fn bench_scattered(c: &mut Criterion<Clock>, n: usize) {
                 match &model {
                     Some(m) => m
                         .step_scattered(black_box(kin), black_box(DT), &mut states, &mut outs)
+                        .map(drop)
                         .expect("finite kinematics"),
                     None => {
                         for ((k, s), o) in black_box(kin).iter().zip(states.iter_mut()).zip(outs.iter_mut()) {
