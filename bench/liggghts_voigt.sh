@@ -26,6 +26,9 @@ here="$(cd "$(dirname "$0")" && pwd)"
 deck="$here/liggghts_voigt_heap.in"
 VOIGT=("model voigt tangential voigt rolling_friction voigt" "noAttraction on")
 STOCK=("model hooke/stiffness tangential history rolling_friction epsd2" "absolute_damping on")
+# the launcher as a path that still holds after `cd` into a work directory
+# (a bare command name is left to PATH)
+absolute() { if [[ "$1" == */* ]]; then echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; else echo "$1"; fi; }
 
 if [[ "${1:-}" == "--call" ]]; then
     root="$(cd "$here/.." && pwd)"
@@ -41,6 +44,7 @@ fi
 
 if [[ "${1:-}" == "--interleaved" ]]; then
     engine="${2:?usage: $0 --interleaved <liggghts launcher with the granbond models> [steps] [rounds]}"
+    engine="$(absolute "$engine")"
     steps="${3:-300}"
     rounds="${4:-10}"
     work="$(mktemp -d)"
@@ -65,6 +69,7 @@ fi
 
 if [[ "${1:-}" == "--callgrind" ]]; then
     engine="${2:?usage: $0 --callgrind <liggghts launcher with the granbond models>}"
+    engine="$(absolute "$engine")"
     work="$(mktemp -d)"
     trap 'rm -rf "$work"' EXIT
     instructions() {  # models settings -> instructions executed
@@ -82,6 +87,7 @@ if [[ "${1:-}" == "--callgrind" ]]; then
 fi
 
 engine="${1:?usage: $0 <liggghts launcher with the granbond models> [steps] [repeat]}"
+engine="$(absolute "$engine")"
 steps="${2:-3000}"
 repeat="${3:-3}"
 work="$(mktemp -d)"
