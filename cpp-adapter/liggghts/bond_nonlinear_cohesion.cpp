@@ -480,9 +480,9 @@ void BondNonlinearCohesion::apply(const GbBondOutput &out, ForceData &i_forces, 
 }
 
 // The engine's pair loop first reads a pair's history in the contact
-// models, and each pair's history lies apart from the next one's (fix
-// neigh/history's pages hold every neighbour's), so each read waits for
-// memory. While the pairs of atom i are computed, the histories of the
+// models, and each pair's history lies apart from the next one's (the
+// history list's pages hold a record for every neighbour), so each read
+// waits for memory. While the pairs of atom i are computed, the histories of the
 // flagged pairs (bonds, contacts) of the atom after it in the neighbour
 // list are requested. Called at the first callback of each atom of a
 // queued pass; the pair loop walks the neighbour list in order.
