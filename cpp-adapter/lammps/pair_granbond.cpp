@@ -1,4 +1,5 @@
 #include "pair_granbond.h"
+#include "history_prefetch.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -733,19 +734,11 @@ void PairGranbond::compute(int eflag, int vflag)
     };
 
     for (int ii = 0; ii < inum; ii++) {
-        // The histories of the next atom's marked pairs (bonds and touching
-        // contacts), requested while this atom's pairs are computed: fix
-        // neigh/history keeps them apart, between the records of unmarked
-        // neighbours, and each would otherwise cost a wait for memory.
-        // (In the loop, not in a function of its own: GCC deletes calls to
-        // a function that only prefetches.)
+        // the next atom's records, requested while this atom's pairs are
+        // computed (history_prefetch.h)
         if (ii + 1 < inum) {
             const int next = ilist[ii + 1];
-            const int *marked = firsttouch[next];
-            const double *records = firsthistory[next];
-            for (int jj = 0; jj < numneigh[next]; jj++)
-                if (marked[jj])
-                    for (int s = 0; s < size; s += 8) __builtin_prefetch(records + size * jj + s, 1);
+            prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size);
         }
         const int i = ilist[ii];
         const int itype = type[i];

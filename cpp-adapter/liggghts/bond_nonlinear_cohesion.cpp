@@ -1,5 +1,6 @@
 #include "bond_nonlinear_cohesion.h"
 #include "core_bridge.h"
+#include "history_prefetch.h"
 
 #include "fix_property_atom.h"
 #include "neigh_list.h"
@@ -479,13 +480,11 @@ void BondNonlinearCohesion::apply(const GbBondOutput &out, ForceData &i_forces, 
     }
 }
 
-// The engine's pair loop first reads a pair's history in the contact
-// models, and each pair's history lies apart from the next one's (the
-// history list's pages hold a record for every neighbour), so each read
-// waits for memory. While the pairs of atom i are computed, the histories of the
-// flagged pairs (bonds, contacts) of the atom after it in the neighbour
-// list are requested. Called at the first callback of each atom of a
-// queued pass; the pair loop walks the neighbour list in order.
+// The records of the next atom in the neighbour list
+// (history_prefetch.h), requested while the pairs of atom i are computed:
+// the engine's contact models read each pair's record first. Called at the
+// first callback of each atom of a queued pass; the pair loop walks the
+// neighbour list in order.
 void BondNonlinearCohesion::prefetchNextAtom(int i)
 {
     lastAtom_ = i;
@@ -494,12 +493,8 @@ void BondNonlinearCohesion::prefetchNextAtom(int i)
     while (cursor_ < list->inum && list->ilist[cursor_] != i) cursor_++;
     if (cursor_ + 1 >= list->inum) return;
     const int next = list->ilist[cursor_ + 1];
-    const int *flags = history->firstneigh[next];
-    const double *records = history->firstdouble[next];
-    const int dnum = pair_->dnum();
-    for (int jj = 0; jj < list->numneigh[next]; jj++)
-        if (flags[jj])
-            for (int s = 0; s < dnum; s += 8) __builtin_prefetch(records + dnum * jj + s, 1);
+    prefetchFlaggedRecords(history->firstneigh[next], history->firstdouble[next], list->numneigh[next],
+                           pair_->dnum());
 }
 
 // The common case of a force pass, without the general path's calls.

@@ -110,7 +110,10 @@ fn main() {
     let start = Instant::now();
     for kin in frames.iter().cycle().take(sweeps) {
         match &model {
-            Some(m) => m.step_scattered(kin, 1e-6, &mut states, &mut outs).map(drop).unwrap(),
+            Some(m) => m
+                .step_scattered(kin, 1e-6, &mut states, &mut outs)
+                .map(drop)
+                .unwrap(),
             None => {
                 for ((k, s), o) in kin.iter().zip(states.iter_mut()).zip(outs.iter_mut()) {
                     base.step(k, 1e-6, s, o).unwrap();
