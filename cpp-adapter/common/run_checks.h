@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 #include <string>
@@ -84,24 +85,17 @@ private:
 
 // Engines keep a pair's history under the partner's atom ID, so renumbered
 // IDs (`delete_atoms ... compress yes`, its default) hand a bond's state to
-// a pair that never bonded. `stored` is a per-atom value that migrates and
-// restarts with its atom: the ID it had when last remembered (0: not seen
-// yet). Returns how many atoms changed their ID, over all ranks
-// (collective).
-template <class Tag, class Stored>
-long long countRenumbered(int nlocal, const Tag *tag, const Stored *stored, MPI_Comm world)
+// a pair that never bonded. `seen` is the per-atom value of
+// FixGranbondAtoms: the ID an atom had when last seen (0: not seen yet).
+// Returns how many atoms changed their ID, over all ranks (collective).
+template <class Tag>
+long long countRenumbered(int nlocal, const Tag *tag, const double *seen, MPI_Comm world)
 {
     long long mine = 0, all = 0;
     for (int i = 0; i < nlocal; i++)
-        if (stored[i] != 0 && stored[i] != static_cast<Stored>(tag[i])) mine++;
+        if (seen[i] != 0.0 && seen[i] != static_cast<double>(tag[i])) mine++;
     MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
     return all;
-}
-
-template <class Tag, class Stored>
-void rememberIds(int nlocal, const Tag *tag, Stored *stored)
-{
-    for (int i = 0; i < nlocal; i++) stored[i] = static_cast<Stored>(tag[i]);
 }
 
 // The error that ends a run after renumbering while bonds exist.
@@ -150,8 +144,28 @@ inline std::string vanishedMessage(const char *style, long long vanished, long l
            ", without breaking; " + more;
 }
 
-// The name of the per-atom value countRenumbered keeps.
-inline const char *renumberingProperty() { return "granbond_atom_id"; }
+// The engines keep a pair's history under the partner's atom ID, so two
+// images of one atom in a neighbour list share one record. That happens in
+// a periodic direction shorter than twice the list's reach (the pair
+// reach plus the skin): a sphere meets its own image, or one partner
+// twice. Returns the error naming the first such direction, or "".
+inline std::string thinPeriodicBox(const char *style, const int periodic[3], const double length[3],
+                                   double listReach, double skin)
+{
+    for (int d = 0; d < 3; d++) {
+        if (!periodic[d] || length[d] >= 2.0 * listReach) continue;
+        char text[640];
+        std::snprintf(text, sizeof text,
+                      "%s: the periodic box is %g long in %c, less than twice the neighbour reach %g (the pair "
+                      "reach %g plus the skin %g): a sphere can meet its own periodic image, or one partner "
+                      "twice, and the engine keeps a pair's contact and bond history under the partner's atom "
+                      "ID, so those pairs would share one record. Make the box at least %g long in %c (replicate "
+                      "it), or use a fixed boundary there",
+                      style, length[d], "xyz"[d], listReach, listReach - skin, skin, 2.0 * listReach, "xyz"[d]);
+        return text;
+    }
+    return std::string();
+}
 
 }
 

@@ -1,8 +1,10 @@
 #include "pair_granbond.h"
+#include "fix_granbond_atoms.h"
 #include "history_prefetch.h"
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_neigh_history.h"
@@ -36,6 +38,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -95,6 +98,7 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     sizeHistory_(0),
     anyBond_(false),
     fixHistory_(nullptr),
+    atoms_(nullptr),
     lastBatch_(0),
     checkedNatoms_(-1),
     firstStep_(-1),
@@ -405,23 +409,52 @@ void PairGranbond::init_style()
     runChecks(bodies_, true);
 }
 
+namespace {
+
+LAMMPS_NS::Fix *createAtomsFix(LAMMPS *lmp, int narg, char **arg) { return new FixGranbondAtoms(lmp, narg, arg); }
+
+}
+
 // Ends the run if atoms were renumbered since the previous run while bonds
-// may exist (countRenumbered).
+// may exist (countRenumbered). Creates the per-atom record of which atoms
+// were seen (fix_granbond_atoms.h) on the first bonded run, or takes the
+// one a restart file brought back.
 void PairGranbond::checkRenumbering()
 {
-    const char *const name = renumberingProperty();
-    int flag = 0, cols = 0;
-    int index = atom->find_custom(name, flag, cols);
-    if (index < 0) {
-        modify->add_fix(std::string("GRANBOND_ATOM_ID all property/atom i_") + name);
-        index = atom->find_custom(name, flag, cols);
+    int ifix = modify->find_fix(atomsFixId());
+    if (ifix < 0) {
+        (*modify->fix_map)[atomsFixStyle()] = &createAtomsFix;
+        modify->add_fix(std::string(atomsFixId()) + " all " + atomsFixStyle());
+        ifix = modify->find_fix(atomsFixId());
     }
-    if (index < 0 || flag != 0 || cols != 0)
-        error->all(FLERR, std::string("pair granbond: per-atom integer ") + name + " not available");
-    int *const stored = atom->ivector[index];
-    const long long renumbered = countRenumbered(atom->nlocal, atom->tag, stored, world);
+    if (ifix < 0) error->all(FLERR, "pair granbond: fix granbond/atoms could not be created");
+    atoms_ = static_cast<FixGranbondAtoms *>(modify->fix[ifix]);
+    const long long renumbered = countRenumbered(atom->nlocal, atom->tag, atoms_->seen, world);
     if (renumbered > 0) error->all(FLERR, renumberedMessage("pair granbond (bond/nonlinear)", renumbered));
-    rememberIds(atom->nlocal, atom->tag, stored);
+}
+
+// At the first pass after a neighbour-list build (and a run's setup pass),
+// before any bond forms: the records of pairs with an atom never seen are
+// another atom's, that held the ID before (FixGranbondAtoms); they are
+// forgotten. Their bonds were counted as vanished when that atom went.
+void PairGranbond::forgetRecordsOfNewborn()
+{
+    const double *seen = atoms_->seen;
+    if (atoms_->judgesRecords() && anyNewborn(seen, atom->nlocal + atom->nghost)) {
+        for (int ii = 0; ii < list->inum; ii++) {
+            const int i = list->ilist[ii];
+            const int *jlist = list->firstneigh[i];
+            int *touch = fixHistory_->firstflag[i];
+            double *allhistory = fixHistory_->firstvalue[i];
+            for (int jj = 0; jj < list->numneigh[i]; jj++) {
+                if (!touch[jj] || !recordOfNewborn(seen, i, jlist[jj] & NEIGHMASK)) continue;
+                touch[jj] = 0;
+                std::fill_n(allhistory + static_cast<size_t>(sizeHistory_) * jj, sizeHistory_, 0.0);
+            }
+        }
+    }
+    markSeen(atom->nlocal, atom->tag, atoms_->seen);
+    atoms_->primed();
 }
 
 // The core's checks: the time step against the stiffest contact and bond
@@ -561,7 +594,13 @@ void PairGranbond::compute(int eflag, int vflag)
         runChecks(gatherTypeBodies(atom->ntypes, nlocal, type, radius, atom->rmass, world), false);
         lossCheck_ = anyBond_;
     }
-    if (update->setupflag) lossCheck_ = anyBond_;   // atoms may have been deleted between runs
+    if (update->setupflag) {
+        lossCheck_ = anyBond_;   // atoms may have been deleted between runs
+        const std::string thin = thinPeriodicBox("pair granbond", domain->periodicity, domain->prd,
+                                                 neighbor->cutneighmax, neighbor->skin);
+        if (!thin.empty()) error->all(FLERR, thin);
+    }
+    if (anyBond_ && (update->setupflag || neighbor->ago == 0)) forgetRecordsOfNewborn();
 
     // setup (run/minimize start) evaluates forces without advancing history
     const bool advance = !update->setupflag;

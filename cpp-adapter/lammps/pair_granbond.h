@@ -23,6 +23,7 @@ class FixNeighHistory;
 }
 
 namespace granbond {
+class FixGranbondAtoms;
 namespace lammps {
 
 class PairGranbond : public LAMMPS_NS::Pair {
@@ -66,6 +67,7 @@ private:
     size_t at(int i, int j) const;
     void runChecks(const std::vector<GbTypeBodies> &bodies, bool runStart);
     void checkRenumbering();
+    void forgetRecordsOfNewborn();
     bool countsHere(int i, int j) const;
     void countVanished();
 
@@ -98,6 +100,7 @@ private:
     int sizeHistory_;
     bool anyBond_;
     LAMMPS_NS::FixNeighHistory *fixHistory_;
+    FixGranbondAtoms *atoms_;               // which atoms bonds have seen (bonded runs)
     std::string message_;                   // outlives error->one's use
     std::vector<BondBatch> bondBatches_;    // per bond model; reused from pass to pass
     size_t lastBatch_;

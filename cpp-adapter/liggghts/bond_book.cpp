@@ -1,5 +1,7 @@
 #include "bond_book.h"
+#include "atoms_fix.h"
 #include "core_bridge.h"
+#include "fix_granbond_atoms.h"
 #include "combination_check.h"
 
 #include "compute.h"
@@ -228,6 +230,7 @@ void registerBondStyles(LAMMPS_NS::LAMMPS *lmp)
     std::map<std::string, FixCreator> *fixes = lmp->modify->*member(FixMapTag());
     if (computes) (*computes)["bond/counter"] = &createCounter;
     if (fixes) (*fixes)["bond/breaklog"] = &createBreakLog;
+    if (fixes) (*fixes)[atomsFixStyle()] = &createAtomsFix;
     // each LAMMPS constructor re-registers the engine's "gran" selector
     installCombinationCheck();
 }

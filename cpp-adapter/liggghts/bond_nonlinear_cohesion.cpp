@@ -1,9 +1,12 @@
 #include "bond_nonlinear_cohesion.h"
 #include "core_bridge.h"
+#include "fix_granbond_atoms.h"
 #include "history_prefetch.h"
 
+#include "domain.h"
 #include "fix_property_atom.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "pair_gran.h"
 
 #include <algorithm>
@@ -61,8 +64,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     offset_(-1),
     outputOffset_(-1),
     clumpIds_(0),
-    atomIds_(0),
-    idsDue_(false),
+    atoms_(0),
     checkedNatoms_(-1),
     firstStep_(-1),
     lossCheck_(false),
@@ -107,27 +109,55 @@ void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
 
 // Ends the run if atoms were renumbered since the previous run after bonds
 // formed (countRenumbered). Wall bonds live with their particle and are
-// not affected. The IDs are remembered in the run's first pass after its
-// setup pass: values written before that (at init) do not survive into
-// the run.
+// not affected. Creates the per-atom record of which atoms were seen
+// (fix_granbond_atoms.h, registered with the bond styles), or takes the
+// one a restart file brought back.
 void BondNonlinearCohesion::checkRenumbering()
 {
-    const char *const name = renumberingProperty();
-    if (!atomIds_) {
-        atomIds_ = static_cast<LAMMPS_NS::FixPropertyAtom *>(
-            modify->find_fix_property(name, "property/atom", "scalar", 0, 0, "cohesion bond/nonlinear", false));
-        if (!atomIds_) {
-            // restart yes, no ghost communication; 0 for atoms not seen yet
-            const char *args[] = {"GRANBOND_ATOM_ID", "all", "property/atom", name, "scalar", "yes", "no", "no", "0"};
-            atomIds_ = modify->add_fix_property_atom(9, const_cast<char **>(args), "cohesion bond/nonlinear");
-        }
+    int ifix = modify->find_fix(atomsFixId());
+    if (ifix < 0) {
+        char id[32], group[] = "all", style[32];
+        std::snprintf(id, sizeof id, "%s", atomsFixId());
+        std::snprintf(style, sizeof style, "%s", atomsFixStyle());
+        char *args[] = {id, group, style};
+        modify->add_fix(3, args);
+        ifix = modify->find_fix(atomsFixId());
     }
-    const long long renumbered = countRenumbered(atom->nlocal, atom->tag, atomIds_->vector_atom, world);
-    idsDue_ = true;
+    if (ifix < 0) endRun(error, FLERR, "cohesion bond/nonlinear: fix granbond/atoms could not be created");
+    atoms_ = static_cast<FixGranbondAtoms *>(modify->fix[ifix]);
+    const long long renumbered = countRenumbered(atom->nlocal, atom->tag, atoms_->seen, world);
     if (renumbered == 0) return;   // the same on every rank
     long long mine = tally_.created, created = 0;
     MPI_Allreduce(&mine, &created, 1, MPI_LONG_LONG, MPI_SUM, world);
     if (created > 0) endRun(error, FLERR, renumberedMessage("cohesion bond/nonlinear", renumbered));
+}
+
+// At the first pass after a neighbour-list build (and a run's setup pass),
+// before any bond forms: the records of pairs with an atom never seen are
+// another atom's, that held the ID before (FixGranbondAtoms); they are
+// forgotten, contact history included. Their bonds were counted as lost
+// when that atom went.
+void BondNonlinearCohesion::forgetRecordsOfNewborn()
+{
+    const double *seen = atoms_->seen;
+    const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
+    if (atoms_->judgesRecords() && anyNewborn(seen, atom->nlocal + atom->nghost) && list && history &&
+        history->firstneigh && history->firstdouble) {
+        const int dnum = pair_->dnum();
+        for (int ii = 0; ii < list->inum; ii++) {
+            const int i = list->ilist[ii];
+            const int *jlist = list->firstneigh[i];
+            int *flags = history->firstneigh[i];
+            double *records = history->firstdouble[i];
+            for (int jj = 0; jj < list->numneigh[i]; jj++) {
+                if (!flags[jj] || !recordOfNewborn(seen, i, jlist[jj] & NEIGHMASK)) continue;
+                flags[jj] = 0;
+                std::fill_n(records + static_cast<size_t>(dnum) * jj, dnum, 0.0);
+            }
+        }
+    }
+    markSeen(atom->nlocal, atom->tag, atoms_->seen);
+    atoms_->primed();
 }
 
 void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
@@ -136,6 +166,12 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
         runChecks(false);
         lossCheck_ = !isWall_;
     }
+    if (update->setupflag) {
+        const std::string thin = thinPeriodicBox("cohesion bond/nonlinear", domain->periodicity, domain->prd,
+                                                 neighbor->cutneighmax, neighbor->skin);
+        if (!thin.empty()) endRun(error, FLERR, thin);
+    }
+    if (atoms_ && (update->setupflag || neighbor->ago == 0)) forgetRecordsOfNewborn();
     // Queue the bonds of force passes, unless something in the engine
     // reads each pair's forces as the loop applies them (CFD coupling,
     // stored contact forces, summed normal forces) or the loop's radii are
@@ -164,10 +200,6 @@ void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceD
         deferring_ = false;
     }
     if (lossCheck_) countVanished();
-    if (idsDue_ && update->ntimestep > update->firststep) {
-        rememberIds(atom->nlocal, atom->tag, atomIds_->vector_atom);
-        idsDue_ = false;
-    }
 }
 
 // After the atom count changed, or a run started (atoms deleted between

@@ -20,6 +20,7 @@ class PairGran;
 }
 
 namespace granbond {
+class FixGranbondAtoms;
 namespace liggghts {
 
 using LIGGGHTS::ContactModels::ForceData;
@@ -100,6 +101,7 @@ private:
     // definition); collective, at the end of a pass.
     void countVanished();
     void checkRenumbering();
+    void forgetRecordsOfNewborn();
 
     BondNonlinearParameters parameters_;
     const bool isWall_;
@@ -110,9 +112,8 @@ private:
     BondBook *book_;    // this instance's book (looked up once: std::map)
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)
     LAMMPS_NS::FixPropertyAtom *clumpIds_;
-    // the atom IDs of the previous run (run_checks.h, countRenumbered)
-    LAMMPS_NS::FixPropertyAtom *atomIds_;
-    bool idsDue_;   // remember the IDs at the end of a pass (checkRenumbering)
+    // which atoms bonds have seen, under which IDs (fix_granbond_atoms.h)
+    FixGranbondAtoms *atoms_;
     bigint checkedNatoms_;
     bigint firstStep_;          // where this model's first run started
     TimestepWarning timestepWarning_;

@@ -145,8 +145,9 @@ void BondNonlinearParameters::buildModels(PropertyRegistry &registry)
             GbBondParams p = switches_;
             for (size_t k = 0; k < rows_; k++) {
                 if (perTypePair_[k]) set(p, row(k), perTypePair_[k][a][b], where);
-                // the reference truncates a step number to an int
-                if (connectedScalar_[k]) set(p, row(k), std::trunc(scalars_[k]), where);
+                // a step number passes as given: the core refuses a
+                // fractional one (INL truncated it, so 0.999 meant step 0)
+                if (connectedScalar_[k]) set(p, row(k), scalars_[k], where);
             }
             GbBondModel *m = 0;
             if (granbond_bond_model_new(&p, &m) != GB_STATUS_OK)

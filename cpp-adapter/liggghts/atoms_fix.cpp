@@ -1,0 +1,46 @@
+#include "atoms_fix.h"
+#include "liggghts_engine.h"
+
+#include "fix_contact_history.h"
+#include "fix_granbond_atoms.h"
+#include "force.h"
+#include "pair_gran.h"
+
+namespace granbond {
+namespace liggghts {
+
+namespace {
+
+// LIGGGHTS moves a pair's history from the neighbour list into the atoms'
+// partner arrays (keyed by atom ID) at the setup of the next run, from the
+// list of the previous one. Atoms created or deleted in between have moved
+// the ghosts' places, so the history of a pair with a ghost would be filed
+// under the ID of the atom now in the ghost's place: a bond lost, or handed
+// to another pair. This fix files the history at the end of each run,
+// while the list still matches the atoms, as LAMMPS's fix neigh/history
+// does (the setup then has nothing newer to file).
+class AtomsFix : public FixGranbondAtoms {
+public:
+    AtomsFix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) : FixGranbondAtoms(lmp, narg, arg) {}
+
+    int setmask() { return LAMMPS_NS::FixConst::POST_RUN; }
+
+    // LIGGGHTS's setup gives every atom a just-created fix's start value
+    // after the setup pass, which has already marked the atoms seen; the
+    // values are right without it (0 from the constructor, or restart data).
+    void init() { just_created = 0; }
+
+    void post_run()
+    {
+        LAMMPS_NS::PairGran *pair = static_cast<LAMMPS_NS::PairGran *>(force->pair_match("gran", 0));
+        LAMMPS_NS::FixContactHistory *history = pair ? pair->get_fix_history() : 0;
+        if (history && pair->list && pair->listgranhistory) history->pre_exchange();
+    }
+};
+
+}
+
+LAMMPS_NS::Fix *createAtomsFix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) { return new AtomsFix(lmp, narg, arg); }
+
+}
+}
