@@ -5,6 +5,7 @@
 #include "fix_granbond_atoms.h"
 #include "force.h"
 #include "pair_gran.h"
+#include "update.h"
 
 namespace granbond {
 namespace liggghts {
@@ -30,7 +31,20 @@ public:
     // values are right without it (0 from the constructor, or restart data).
     void init() { just_created = 0; }
 
-    void post_run()
+    void post_run() { fileContactHistory(); }
+
+    // Restart files written during a run (`restart N`) take the history
+    // from the partner arrays, which LIGGGHTS fills only at neighbour-list
+    // builds: filed now, while the list matches the atoms. Between runs
+    // post_run has filed it, and atoms may have changed since.
+    void write_restart(FILE *fp)
+    {
+        if (update->whichflag != 0) fileContactHistory();
+        FixGranbondAtoms::write_restart(fp);
+    }
+
+private:
+    void fileContactHistory()
     {
         LAMMPS_NS::PairGran *pair = static_cast<LAMMPS_NS::PairGran *>(force->pair_match("gran", 0));
         LAMMPS_NS::FixContactHistory *history = pair ? pair->get_fix_history() : 0;

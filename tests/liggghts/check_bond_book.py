@@ -8,8 +8,9 @@ usage: check_bond_book.py --mode MODE --engine EXE [--mpiexec MPIEXEC] --workdir
              columns; with --mpiexec the 2-rank files equal the 1-rank ones
   stress     the same deck in stress mode: pair bonds break in tension
   clumps     decks/clump_bonds.in: spheres of one clump bond, others never
-  restart    decks/restart_chain.in: write_restart/read_restart mid-run ends
-             in the uninterrupted state (1 rank, and 2 with --mpiexec)
+  restart    decks/restart_chain.in: write_restart/read_restart mid-run, and
+             a restart file written during a run (`restart N`) read back,
+             end in the uninterrupted state (1 rank, and 2 with --mpiexec)
   timestep   the warning above the recommended / critical step, none below
   combination  an unregistered combination lists the registered ones
 """
@@ -215,11 +216,17 @@ def final_state(path):
     return [r for r in rows if len(r) == 10][-6:]
 
 
-def check_restart_once(command, workdir):
-    full_dir, split_dir = os.path.join(workdir, "full"), os.path.join(workdir, "split")
+def check_restart_once(command, workdir, periodic=False):
+    """write_restart after a run, or (periodic) the file `restart N` wrote
+    during one, read back and run on."""
+    full_dir, split_dir = os.path.join(workdir, "full"), os.path.join(workdir, "periodic" if periodic else "split")
     run_ok(command, "restart_chain.in", full_dir, {"phase": 0})
-    run_ok(command, "restart_chain.in", split_dir, {"phase": 1})
-    run_ok(command, "restart_chain.in", split_dir, {"phase": 2})
+    if periodic:
+        run_ok(command, "restart_chain.in", split_dir, {"phase": 3})
+        run_ok(command, "restart_chain.in", split_dir, {"phase": 2, "rfile": "mid.1500.restart"})
+    else:
+        run_ok(command, "restart_chain.in", split_dir, {"phase": 1})
+        run_ok(command, "restart_chain.in", split_dir, {"phase": 2})
     a = final_state(os.path.join(full_dir, "final.dump"))
     b = final_state(os.path.join(split_dir, "final.dump"))
     if len(a) != 6 or len(b) != 6:
@@ -240,8 +247,11 @@ def check_restart_once(command, workdir):
 
 def check_restart(a, workdir):
     print("1 rank: " + check_restart_once([a.engine], workdir))
+    print("1 rank, restart N: " + check_restart_once([a.engine], workdir, periodic=True))
     if a.mpiexec:
-        print("2 ranks: " + check_restart_once(mpi_prefix(a.mpiexec) + [a.engine], os.path.join(workdir, "np2")))
+        np2 = os.path.join(workdir, "np2")
+        print("2 ranks: " + check_restart_once(mpi_prefix(a.mpiexec) + [a.engine], np2))
+        print("2 ranks, restart N: " + check_restart_once(mpi_prefix(a.mpiexec) + [a.engine], np2, periodic=True))
 
 
 def check_timestep(a, workdir):
