@@ -92,20 +92,29 @@ public:
         return n;
     }
 
-    // Global restart: only a marker that the per-atom values are there.
+    // Global restart: a marker that the per-atom values are there, and what
+    // an engine's subclass keeps (globalState).
     void write_restart(FILE *fp)
     {
+        double values[2 + kMaxGlobal];
+        const int extra = globalState(values + 2);   // collective
         if (comm->me != 0) return;
-        const double marker = kMarker;
-        const int size = sizeof(double);
+        values[0] = kMarker;
+        values[1] = extra;
+        const int size = static_cast<int>((2 + extra) * sizeof(double));
         fwrite(&size, sizeof(int), 1, fp);
-        fwrite(&marker, sizeof(double), 1, fp);
+        fwrite(values, sizeof(double), 2 + extra, fp);
     }
     void restart(char *buf)
     {
-        double marker;
-        std::memcpy(&marker, buf, sizeof marker);
-        restored_ = marker == kMarker;
+        double head[2];
+        std::memcpy(head, buf, sizeof head);
+        restored_ = head[0] == kMarker;
+        const int extra = restored_ ? static_cast<int>(head[1]) : 0;
+        if (extra < 1 || extra > kMaxGlobal) return;
+        double values[kMaxGlobal];
+        std::memcpy(values, buf + sizeof head, extra * sizeof(double));
+        restoreGlobalState(values, extra);
     }
 
     int pack_restart(int i, double *buf)
@@ -129,6 +138,14 @@ public:
     double memory_usage() { return static_cast<double>(nmax_) * sizeof(double); }
 
     double *seen;
+
+protected:
+    static const int kMaxGlobal = 16;
+    // Global values a subclass keeps in restart files: writes at most
+    // kMaxGlobal to `values` (the same on every rank) and returns how many.
+    // Called on every rank.
+    virtual int globalState(double *) { return 0; }
+    virtual void restoreGlobalState(const double *, int) {}
 
 private:
     static constexpr double kMarker = 1.5e6 + 0.25;   // "granbond atoms" rows and restart data

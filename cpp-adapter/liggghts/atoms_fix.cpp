@@ -1,4 +1,5 @@
 #include "atoms_fix.h"
+#include "bond_book.h"
 #include "liggghts_engine.h"
 
 #include "fix_contact_history.h"
@@ -41,6 +42,21 @@ public:
     {
         if (update->whichflag != 0) fileContactHistory();
         FixGranbondAtoms::write_restart(fp);
+    }
+
+protected:
+    // The bond counters' events over all ranks (bond_book.h), so that
+    // `compute bond/counter cumulative yes` goes on across restarts.
+    int globalState(double *values)
+    {
+        double local[BondBook::kTotals];
+        BondBook::of(lmp).localTotals(local, update->ntimestep);
+        MPI_Allreduce(local, values, BondBook::kTotals, MPI_DOUBLE, MPI_SUM, world);
+        return BondBook::kTotals;
+    }
+    void restoreGlobalState(const double *values, int n)
+    {
+        if (n == BondBook::kTotals) BondBook::of(lmp).restoreTotals(values, comm->me == 0);
     }
 
 private:

@@ -27,7 +27,7 @@ void BondBook::remove(BondTally *t)
     tallies_.erase(std::remove(tallies_.begin(), tallies_.end(), t), tallies_.end());
 }
 
-void BondBook::localTotals(double out[kTotals], bigint step) const
+void BondBook::localTotals(double out[kTotals], bigint step, bool restored) const
 {
     for (int k = 0; k < kTotals; k++) out[k] = 0.0;
     for (const BondTally *t : tallies_) {
@@ -37,6 +37,13 @@ void BondBook::localTotals(double out[kTotals], bigint step) const
         if (t->passStep == step) o[2] += static_cast<double>(t->intact);
         out[t->wall ? 7 : 6] += static_cast<double>(t->lost);
     }
+    if (restored)
+        for (int k = 0; k < kTotals; k++) out[k] += restored_[k];
+}
+
+void BondBook::restoreTotals(const double totals[kTotals], bool root)
+{
+    for (int k = 0; k < kTotals; k++) restored_[k] = root && k != 2 && k != 5 ? totals[k] : 0.0;
 }
 
 namespace {
@@ -51,7 +58,7 @@ using LAMMPS_NS::LAMMPS;
 // lost, which vanished with their atoms (lost or deleted) without breaking.
 // As in LIGGGHTS-INL, created/broken (and lost) count the events since this
 // compute's previous output (`cumulative yes`: since the start of the run
-// series); intact is the number of intact bonds at the step of the output.
+// series, across restart files); intact is the number of intact bonds at the step of the output.
 // Summed over all ranks.
 class ComputeBondCounter : public LAMMPS_NS::Compute {
 public:
@@ -86,7 +93,8 @@ public:
         invoked_vector = update->ntimestep;
         const int n = BondBook::kTotals;
         double local[n], total[n];
-        BondBook::of(lmp).localTotals(local, update->ntimestep);
+        // events since the previous output: not those before a restart
+        BondBook::of(lmp).localTotals(local, update->ntimestep, cumulative_);
         MPI_Allreduce(local, total, n, MPI_DOUBLE, MPI_SUM, world);
         for (int k = 0; k < n; k++) values_[k] = total[k];
         if (!cumulative_) {

@@ -60,7 +60,12 @@ public:
     // Sums over this rank's models: [pair created, broken, intact, wall created, broken, intact,
     // pair lost, wall lost]. Intact counts only of models whose latest pass is the current step.
     static const int kTotals = 8;
-    void localTotals(double out[kTotals], bigint step) const;
+    // `restored`: with the counts of the runs before the restart file.
+    void localTotals(double out[kTotals], bigint step, bool restored = true) const;
+    // The event counts (created, broken, lost; not intact) over all ranks
+    // that a restart file brings back: rank 0 adds them to its totals, so
+    // cumulative counts go on across restarts.
+    void restoreTotals(const double totals[kTotals], bool root);
 
     bool logging() const { return logUsers_ > 0; }
     void addLogUser() { logUsers_++; }
@@ -72,6 +77,7 @@ private:
     std::vector<BondTally *> tallies_;
     std::vector<BreakEvent> events_;
     int logUsers_ = 0;
+    double restored_[kTotals] = {0, 0, 0, 0, 0, 0, 0, 0};
 };
 
 // Adds `compute bond/counter` and `fix bond/breaklog` to this instance's

@@ -241,8 +241,11 @@ def check_restart_once(command, workdir, periodic=False):
     ca = read_table(os.path.join(full_dir, "counter.txt"))[-1]
     cb = read_table(os.path.join(split_dir, "counter.txt"))[-1]
     if ca != cb or ca[1] < 1:
-        raise Failure(f"bonds intact at the end: uninterrupted {ca}, restarted {cb}")
-    return f"same final state (worst relative difference {worst:.1e}), intact bonds {ca[1:]}"
+        raise Failure(f"bonds intact, created, broken or lost at the end (cumulative counts): uninterrupted {ca}, "
+                      f"restarted {cb}")
+    if cb[3] != cb[1] + cb[2] + cb[4]:
+        raise Failure(f"restarted: created {cb[3]} != intact {cb[1] + cb[2]} + broken or lost {cb[4]}")
+    return f"same final state (worst relative difference {worst:.1e}), intact bonds {ca[1:3]}, created {ca[3]}"
 
 
 def check_restart(a, workdir):
