@@ -1,7 +1,7 @@
 //! `granbond_voigt_compute_fields_unchecked`, the engines' per-contact entry,
 //! gives the same bits as the checked calls for the same frame, over many
 //! steps of sticking, sliding and rolling contacts of pairs and walls; a
-//! non-finite result is still reported.
+//! non-finite result is still reported, and coincident centres are named.
 
 mod common;
 
@@ -10,6 +10,9 @@ use granbond::contact::{ContactFrame, ContactOutput, Plane, VoigtModel, VoigtPar
 use granbond::ffi::contact::{
     granbond_contact_frame_pair, granbond_contact_frame_plane, granbond_voigt_compute,
     granbond_voigt_compute_fields_unchecked, granbond_voigt_compute_plane,
+};
+use granbond::ffi::contact_geometry::{
+    granbond_contact_frame_separation, granbond_voigt_compute_separation_unchecked,
 };
 use granbond::ffi::error::granbond_last_error_message;
 use granbond::ffi::Status;
@@ -229,5 +232,50 @@ fn a_non_finite_result_is_reported() {
                 "{message}"
             );
         }
+    }
+}
+
+#[test]
+fn coincident_centres_are_named_as_such() {
+    let model = &models()[3];
+    let (del, zero) = ([0.0; 3], [0.0; 3]);
+    let mut state = [0.0; CONTACT_STATE_LEN];
+    let mut out = ContactOutput::default();
+    let mut frame = ContactFrame::default();
+    let last = || unsafe {
+        CStr::from_ptr(granbond_last_error_message())
+            .to_string_lossy()
+            .into_owned()
+    };
+    unsafe {
+        let status = granbond_voigt_compute_separation_unchecked(
+            model,
+            del.as_ptr(),
+            0.0,
+            RADIUS,
+            RADIUS,
+            zero.as_ptr(),
+            zero.as_ptr(),
+            zero.as_ptr(),
+            zero.as_ptr(),
+            DT,
+            state.as_mut_ptr(),
+            &mut out,
+        );
+        assert_eq!(status, Status::CoincidentCentres);
+        assert!(last().contains("coincident centres"), "{}", last());
+        let status = granbond_contact_frame_separation(
+            del.as_ptr(),
+            0.0,
+            RADIUS,
+            RADIUS,
+            zero.as_ptr(),
+            zero.as_ptr(),
+            zero.as_ptr(),
+            zero.as_ptr(),
+            &mut frame,
+        );
+        assert_eq!(status, Status::CoincidentCentres);
+        assert!(last().contains("coincident centres"), "{}", last());
     }
 }

@@ -23,7 +23,7 @@ Modes (one ctest each):
               registered again after `clear`.
   bad-input   bad keywords and values end the run with an ERROR line naming
               the keyword (or the core's parameter), exit code non-zero,
-              never a signal.
+              never a signal; two spheres at one point are named so.
   granular-head-on, granular-oblique
       voigt against pair_style granular (hooke + damping velocity +
       limit_damping + tangential linear_history + rolling sds) on the same
@@ -300,6 +300,8 @@ def check_bad_input(a, workdir):
         model = write_model(d, ["pair_style granbond", f"pair_coeff * * {args}"])
         rc, text = run_lammps([a.engine], "pair_move.in", d, {"model": model, "nrun": 10, "out": "pull.txt"})
         judge_refusal(label, rc, text, name, failures)
+    rc, text = run_lammps([a.engine], "coincident.in", os.path.join(workdir, "coincident"), {})
+    judge_refusal("two spheres at one point", rc, text, "coincident centres", failures)
     if failures:
         raise Failure("\n".join(failures))
 

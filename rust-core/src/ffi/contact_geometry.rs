@@ -5,10 +5,11 @@
 
 use super::contact::{fields_step, load3};
 use super::entry;
-use super::error::Status;
+use super::error::{record, Failure, Status};
 use super::guard::{reference_mut, vector3};
 use crate::contact::geometry::{from_normal, from_separation, Geometry};
 use crate::contact::{ContactFrame, ContactOutput, VoigtModel};
+use crate::kinematics::{separated, KinematicsError};
 
 /// `granbond_voigt_compute_fields_unchecked` for a touching pair given by
 /// its separation `del = x_i - x_j` (3 doubles) and `rsq = |del|^2`: the
@@ -42,7 +43,20 @@ pub unsafe extern "C" fn granbond_voigt_compute_separation_unchecked(
         radius_j,
         (*model).rolling(),
     );
-    step(FUNCTION, model, &g, v_i, v_j, w_i, w_j, dt, state, out)
+    let status = step(FUNCTION, model, &g, v_i, v_j, w_i, w_j, dt, state, out);
+    if status != Status::Ok && !separated(rsq) {
+        // the cause, named (only on the failure path: the step has no branch for it)
+        return coincident(FUNCTION);
+    }
+    status
+}
+
+/// Records that the centres coincide: the pair has no axis.
+#[cold]
+fn coincident(function: &str) -> Status {
+    let failure = Failure::from(KinematicsError::CoincidentCentres);
+    record(function, &failure);
+    failure.status
 }
 
 /// `granbond_voigt_compute_fields_unchecked` for a contact whose unit
@@ -143,6 +157,9 @@ pub unsafe extern "C" fn granbond_contact_frame_separation(
     w_j: *const f64,
     frame: *mut ContactFrame,
 ) -> Status {
+    if !separated(rsq) {
+        return Err(KinematicsError::CoincidentCentres.into());
+    }
     *frame = self::frame(
         from_separation(del, rsq, radius_i, radius_j, true),
         v_i,
