@@ -141,7 +141,8 @@ inline std::string vanishedMessage(const char *style, long long vanished, long l
 {
     return std::string(style) + ": " + std::to_string(vanished) +
            " bonds vanished with their atoms (lost or deleted) by step " + std::to_string(step) +
-           ", without breaking; " + more;
+           ", without breaking (or their atoms were moved apart beyond the neighbour list's reach between "
+           "runs); " + more;
 }
 
 // The engines keep a pair's history under the partner's atom ID, so two

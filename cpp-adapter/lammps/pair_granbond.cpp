@@ -120,6 +120,11 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
                                       "than the core it links: ") +
                               granbond_last_error_message());
 
+    // one history fix per LAMMPS instance: a second granbond (pair_style
+    // hybrid granbond granbond) would take over the first one's
+    if (modify->find_fix(kFixDummy) >= 0 || modify->find_fix(kFix) >= 0)
+        error->all(FLERR, "pair granbond can be used once: one pair_style granbond sets every type pair "
+                          "(pair_coeff I J ...), so pair_style hybrid takes granbond as one sub-style");
     // placeholder, replaced by fix neigh/history in init_style(), so the
     // fix keeps the place of the pair_style command in the fix list
     modify->add_fix(std::string(kFixDummy) + " all DUMMY");

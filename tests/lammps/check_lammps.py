@@ -23,7 +23,8 @@ Modes (one ctest each):
               registered again after `clear`.
   bad-input   bad keywords and values end the run with an ERROR line naming
               the keyword (or the core's parameter), exit code non-zero,
-              never a signal; two spheres at one point are named so.
+              never a signal; two spheres at one point are named so, and granbond
+              twice under pair_style hybrid is refused.
   granular-head-on, granular-oblique
       voigt against pair_style granular (hooke + damping velocity +
       limit_damping + tangential linear_history + rolling sds) on the same
@@ -302,6 +303,10 @@ def check_bad_input(a, workdir):
         judge_refusal(label, rc, text, name, failures)
     rc, text = run_lammps([a.engine], "coincident.in", os.path.join(workdir, "coincident"), {})
     judge_refusal("two spheres at one point", rc, text, "coincident centres", failures)
+    d = os.path.join(workdir, "hybrid")
+    model = write_model(d, ["pair_style hybrid granbond granbond", f"pair_coeff * * granbond 1 {VOIGT}"])
+    rc, text = run_lammps([a.engine], "pair_move.in", d, {"model": model, "nrun": 10, "out": "pull.txt"})
+    judge_refusal("granbond twice under hybrid", rc, text, "pair granbond can be used once", failures)
     if failures:
         raise Failure("\n".join(failures))
 
