@@ -15,7 +15,9 @@ One claim per mode:
               atoms were only deleted. The bonds counted: LIGGGHTS's
               bond/counter keeps created = broken + intact + lost, with the
               same intact bonds as without the new spheres; LAMMPS warns
-              the same vanished bonds with and without them.
+              the same vanished bonds with and without them. A bonded atom
+              moved far from its partners between runs (`set atom`): its
+              bonds vanish, warned with that cause named (LIGGGHTS: lost).
   thin-slab   a periodic box one or two lattice sites thick (a sphere meets
               its own image, or one partner twice) ends the run with an
               error naming the box length and the reach; three sites run.
@@ -114,6 +116,8 @@ def check_come_go(a, workdir):
             raise Failure("the block has no intact bonds: the scene does not test them")
         failed += compare(f"{n} rank(s), a sphere created far away", none, far, a,
                           sorted(set(far[0]) - set(none[0])))
+        if n == 1:
+            failed += check_moved(a, d("moved"))
         for vac, where in VACANCIES.items():
             deleted = come_go_run(a, n, "delete", vac, d(f"delete-{vac}"))
             refill = come_go_run(a, n, "refill", vac, d(f"refill-{vac}"))
@@ -124,6 +128,17 @@ def check_come_go(a, workdir):
                               f"{'...' if len(new) > 3 else ''})", deleted, refill, a, new)
     if failed:
         raise Failure("; ".join(failed))
+
+
+def check_moved(a, workdir):
+    """A corner atom moved far from its 3 partners between runs: its bonds
+    vanish, warned (and, LIGGGHTS, counted as lost) with the cause named."""
+    _, vanished, counts = come_go_run(a, 1, "moved", 1, workdir)
+    ok = len(vanished) == 1 and "3 bonds vanished" in vanished[0] and "moved apart" in vanished[0]
+    if a.kind == "liggghts":
+        ok = ok and counts[-1][3] == 3 and all(r[0] == r[1] + r[2] + r[3] for r in counts)
+    print(f"a bonded atom moved far between runs: {vanished}" + (f", counter {counts[-1]}" if counts else ""))
+    return [] if ok else [f"moved atom: warnings {vanished}, counter {counts and counts[-1]}"]
 
 
 def check_thin_slab(a, workdir):
