@@ -18,6 +18,7 @@
 #include "fix.h"
 #include "memory.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -162,16 +163,36 @@ inline bool anyNewborn(const double *seen, int nall)
     return false;
 }
 
-// A pair's record names an atom never seen: it is the record of the atom
-// that held the ID before (an atom is seen in every pass from its first on,
-// and no bond forms before that pass).
-inline bool recordOfNewborn(const double *seen, int i, int j) { return seen[i] == 0.0 || seen[j] == 0.0; }
-
-// Marks the owned atoms as seen under their current IDs.
+// At the first pass after a neighbour-list build (and a run's setup pass),
+// before any bond forms: a pair's record that names an atom never seen is
+// the record of the atom that held the ID before (an atom is seen in every
+// such pass from its first on, and no bond forms before it). It is
+// forgotten, contact history included, and its flag cleared; its bond was
+// counted as vanished when that atom went. Then the owned atoms are marked
+// seen under their current IDs. The list is the engine's half list with
+// one record of `recordSize` doubles and one flag per neighbour.
 template <class Tag>
-void markSeen(int nlocal, const Tag *tag, double *seen)
+void forgetRecordsOfNewborn(FixGranbondAtoms &atoms, int nlocal, int nghost, const Tag *tag, int inum,
+                            const int *ilist, const int *numneigh, int *const *firstneigh, int *const *firstflag,
+                            double *const *firstrecord, int recordSize)
 {
+    double *seen = atoms.seen;
+    if (atoms.judgesRecords() && anyNewborn(seen, nlocal + nghost)) {
+        for (int ii = 0; ii < inum; ii++) {
+            const int i = ilist[ii];
+            const int *jlist = firstneigh[i];
+            int *flags = firstflag[i];
+            double *records = firstrecord[i];
+            for (int jj = 0; jj < numneigh[i]; jj++) {
+                const int j = jlist[jj] & NEIGHMASK;
+                if (!flags[jj] || (seen[i] != 0.0 && seen[j] != 0.0)) continue;
+                flags[jj] = 0;
+                std::fill_n(records + static_cast<size_t>(recordSize) * jj, recordSize, 0.0);
+            }
+        }
+    }
     for (int i = 0; i < nlocal; i++) seen[i] = static_cast<double>(tag[i]);
+    atoms.primed();
 }
 
 }

@@ -38,7 +38,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -438,30 +437,6 @@ void PairGranbond::checkRenumbering()
     if (renumbered > 0) error->all(FLERR, renumberedMessage("pair granbond (bond/nonlinear)", renumbered));
 }
 
-// At the first pass after a neighbour-list build (and a run's setup pass),
-// before any bond forms: the records of pairs with an atom never seen are
-// another atom's, that held the ID before (FixGranbondAtoms); they are
-// forgotten. Their bonds were counted as vanished when that atom went.
-void PairGranbond::forgetRecordsOfNewborn()
-{
-    const double *seen = atoms_->seen;
-    if (atoms_->judgesRecords() && anyNewborn(seen, atom->nlocal + atom->nghost)) {
-        for (int ii = 0; ii < list->inum; ii++) {
-            const int i = list->ilist[ii];
-            const int *jlist = list->firstneigh[i];
-            int *touch = fixHistory_->firstflag[i];
-            double *allhistory = fixHistory_->firstvalue[i];
-            for (int jj = 0; jj < list->numneigh[i]; jj++) {
-                if (!touch[jj] || !recordOfNewborn(seen, i, jlist[jj] & NEIGHMASK)) continue;
-                touch[jj] = 0;
-                std::fill_n(allhistory + static_cast<size_t>(sizeHistory_) * jj, sizeHistory_, 0.0);
-            }
-        }
-    }
-    markSeen(atom->nlocal, atom->tag, atoms_->seen);
-    atoms_->primed();
-}
-
 // The core's checks: the time step against the stiffest contact and bond
 // (warned at a run's start, and when the atom count changes if the limit
 // moved) and, at a run's start, the bonds' creation rules (each finding
@@ -605,7 +580,9 @@ void PairGranbond::compute(int eflag, int vflag)
                                                  neighbor->cutneighmax, neighbor->skin);
         if (!thin.empty()) error->all(FLERR, thin);
     }
-    if (anyBond_ && (update->setupflag || neighbor->ago == 0)) forgetRecordsOfNewborn();
+    if (anyBond_ && (update->setupflag || neighbor->ago == 0))
+        forgetRecordsOfNewborn(*atoms_, nlocal, atom->nghost, atom->tag, list->inum, list->ilist, list->numneigh,
+                               list->firstneigh, fixHistory_->firstflag, fixHistory_->firstvalue, sizeHistory_);
 
     // setup (run/minimize start) evaluates forces without advancing history
     const bool advance = !update->setupflag;

@@ -67,7 +67,6 @@ private:
     size_t at(int i, int j) const;
     void runChecks(const std::vector<GbTypeBodies> &bodies, bool runStart);
     void checkRenumbering();
-    void forgetRecordsOfNewborn();
     bool countsHere(int i, int j) const;
     void countVanished();
 

@@ -132,32 +132,15 @@ void BondNonlinearCohesion::checkRenumbering()
     if (created > 0) endRun(error, FLERR, renumberedMessage("cohesion bond/nonlinear", renumbered));
 }
 
-// At the first pass after a neighbour-list build (and a run's setup pass),
-// before any bond forms: the records of pairs with an atom never seen are
-// another atom's, that held the ID before (FixGranbondAtoms); they are
-// forgotten, contact history included. Their bonds were counted as lost
-// when that atom went.
+// forgetRecordsOfNewborn (fix_granbond_atoms.h) on the pair list and
+// LIGGGHTS's history list (its flags and records).
 void BondNonlinearCohesion::forgetRecordsOfNewborn()
 {
-    const double *seen = atoms_->seen;
     const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
-    if (atoms_->judgesRecords() && anyNewborn(seen, atom->nlocal + atom->nghost) && list && history &&
-        history->firstneigh && history->firstdouble) {
-        const int dnum = pair_->dnum();
-        for (int ii = 0; ii < list->inum; ii++) {
-            const int i = list->ilist[ii];
-            const int *jlist = list->firstneigh[i];
-            int *flags = history->firstneigh[i];
-            double *records = history->firstdouble[i];
-            for (int jj = 0; jj < list->numneigh[i]; jj++) {
-                if (!flags[jj] || !recordOfNewborn(seen, i, jlist[jj] & NEIGHMASK)) continue;
-                flags[jj] = 0;
-                std::fill_n(records + static_cast<size_t>(dnum) * jj, dnum, 0.0);
-            }
-        }
-    }
-    markSeen(atom->nlocal, atom->tag, atoms_->seen);
-    atoms_->primed();
+    if (!list || !history || !history->firstneigh || !history->firstdouble) return;
+    granbond::forgetRecordsOfNewborn(*atoms_, atom->nlocal, atom->nghost, atom->tag, list->inum, list->ilist,
+                                     list->numneigh, list->firstneigh, history->firstneigh, history->firstdouble,
+                                     pair_->dnum());
 }
 
 void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
