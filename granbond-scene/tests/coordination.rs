@@ -5,11 +5,14 @@
 //! - `BondModel::rattle_timestep`: a bonded block at rest whose bonds break
 //!   in compression keeps every bond at the recommended step (which the
 //!   rattle sets), and loses bonds well above it.
+//! - The assemblies of the stability map (`sweep::ASSEMBLIES`): no run
+//!   breaks a bond or blows up below the step the engines warn at.
 
 use granbond::bond::{BondModel, BondParams};
 use granbond::vector::Vec3;
 use granbond_scene::reference::{study_bond, Noise, DENSITY, RADIUS};
 use granbond_scene::runner::{Scene, Sphere};
+use granbond_scene::sweep::{Verdict, ASSEMBLIES};
 
 /// The lattices: centres and the creation distance that bonds the wanted
 /// neighbours (spheres of radius `RADIUS`, nearest neighbours touching).
@@ -167,63 +170,43 @@ fn the_coordinated_step_falls_as_one_over_the_root_of_the_bond_count() {
     assert!(modes.bonds_covered(model.recommended_timestep(RADIUS, RADIUS, m, m)) >= 12);
 }
 
-/// The free-fall deck of the rattle (a bonded block touching nothing, so
-/// nothing loads its bonds): stress breakage, plain square root.
-fn rattle_bond(linear_below: f64) -> BondParams {
-    BondParams {
-        lambda: 0.8,
-        k_fn1: 2e10,
-        ku_fn1: 4e10,
-        kc_fn1: 2e9,
-        k_fn2: 5e10,
-        ku_fn2: 1e11,
-        kc_fn2: 5e9,
-        k_ft: 2e10,
-        k_tn: 2e10,
-        ku_tn: 4e10,
-        kc_tn: 2e9,
-        k_tt: 2e10,
-        ku_tt: 4e10,
-        kc_tt: 2e9,
-        damping: 0,
-        stress_break: 1,
-        max_sigma: 1e6,
-        max_tau: 1e6,
-        compression_linear_below: linear_below,
-        ..BondParams::default()
-    }
-}
-
-/// Bonds broken in compression over `steps` (stops at the first).
-fn compression_breaks(params: BondParams, dt: f64, steps: usize) -> usize {
-    // at rest up to round-off-sized velocities: what grows is the rattle
-    let mut scene = bonded(Lattice::Cubic, 4, params, dt, 1e-12, 3);
-    for _ in 0..steps {
-        let broken = scene.advance().expect("finite").broken_by_compression;
-        if broken > 0 {
-            return broken;
-        }
-    }
-    0
+#[test]
+fn a_block_at_rest_keeps_its_bonds_at_the_recommended_step() {
+    let m = mass();
+    let plain = ASSEMBLIES[0];
+    assert!(!plain.falling && !plain.regularised);
+    let model = BondModel::new(plain.bond()).unwrap();
+    let recommended = model.recommended_timestep(RADIUS, RADIUS, m, m);
+    let rattle = model.rattle_timestep(RADIUS, RADIUS, m, m);
+    assert_eq!(recommended, rattle, "the rattle sets the step of this block");
+    let f = recommended / plain.critical();
+    assert_eq!(plain.run(4, 0.95 * f, 2000).broken, 0);
+    // well above it the rattle breaks bonds that nothing loads
+    assert!(plain.run(4, 4.0 * f, 2000).broken > 0);
+    // the regularised law has no rattle: the step is the critical one's
+    // fraction, and the block stays intact at it
+    let regular = ASSEMBLIES[2];
+    assert!(!regular.falling && regular.regularised);
+    let model = BondModel::new(regular.bond()).unwrap();
+    assert!(model.rattle_timestep(RADIUS, RADIUS, m, m).is_infinite());
+    let step = model.recommended_timestep(RADIUS, RADIUS, m, m);
+    assert!(step > 2.0 * recommended);
+    assert_eq!(regular.run(4, step / regular.critical(), 2000).broken, 0);
 }
 
 #[test]
-fn a_block_at_rest_keeps_its_bonds_at_the_recommended_step() {
-    let plain = rattle_bond(0.0);
-    let model = BondModel::new(plain).unwrap();
-    let m = mass();
-    let recommended = model.recommended_timestep(RADIUS, RADIUS, m, m);
-    let rattle = model.rattle_timestep(RADIUS, RADIUS, m, m);
-    assert_eq!(recommended, rattle, "the rattle sets the step of this deck");
-    assert_eq!(compression_breaks(plain, 0.95 * recommended, 2000), 0);
-    // well above it the rattle breaks bonds that nothing loads
-    assert!(compression_breaks(plain, 4.0 * recommended, 2000) > 0);
-    // the regularised law has no rattle: the step is the critical one's
-    // fraction, and the block stays intact at it
-    let eps = 1e-3 * 0.8 * RADIUS;
-    let regular = BondModel::new(rattle_bond(eps)).unwrap();
-    assert!(regular.rattle_timestep(RADIUS, RADIUS, m, m).is_infinite());
-    let step = regular.recommended_timestep(RADIUS, RADIUS, m, m);
-    assert!(step > 2.0 * recommended);
-    assert_eq!(compression_breaks(rattle_bond(eps), step, 2000), 0);
+fn no_assembly_goes_silently_wrong() {
+    // the map of docs/speed-accuracy.md on a coarse grid: a bond broken or
+    // a run blown up is always above the step the engines warn at
+    for a in ASSEMBLIES {
+        for f in [0.05, 0.2, 0.5, 1.0] {
+            let case = a.run(3, f, 1000);
+            assert_ne!(
+                case.verdict,
+                Verdict::SilentlyWrong,
+                "{} at {f} dt_c: {case:?}",
+                a.name
+            );
+        }
+    }
 }
