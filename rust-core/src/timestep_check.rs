@@ -250,13 +250,17 @@ impl TimestepVerdict {
         );
         match self.limits.modes {
             Some(modes) => {
+                let covered = match modes.bonds_covered(self.dt) {
+                    0 => "for no sphere".to_string(),
+                    u32::MAX => "for any z".to_string(),
+                    z => format!("for z <= {z}"),
+                };
                 text += &format!(
-                ", the limit of one {what} between two free spheres; a sphere with z {what}s is stable below \
-                 {z6} {s} for z = 6, {z12} {s} for z = 12, this time step for z <= {covered})",
-                z6 = short(modes.coordinated(6)),
-                z12 = short(modes.coordinated(12)),
-                covered = modes.bonds_covered(self.dt),
-            )
+                    ", the limit of one {what} between two free spheres; a sphere with z {what}s is stable below \
+                     {z6} {s} for z = 6, {z12} {s} for z = 12, this time step {covered})",
+                    z6 = short(modes.coordinated(6)),
+                    z12 = short(modes.coordinated(12)),
+                )
             }
             None => text += ")",
         }

@@ -152,6 +152,9 @@ fn the_warning_names_the_rattle_its_parameters_and_both_remedies() {
     ] {
         assert!(msg.contains(part), "no '{part}' in: {msg}");
     }
+    assert!(msg.contains("this time step for z <= "), "{msg}");
+    let far = text(&check(1e-5, 1, c"si"));
+    assert!(far.contains("this time step for no sphere"), "{far}");
     let lammps = text(&check(1.3e-7, 0, c"si"));
     assert!(
         lammps.contains("(max_sigma / k_fn1)^2") && lammps.contains("compression_linear_below"),

@@ -155,12 +155,11 @@ impl ModeLimits {
     }
 
     /// The most bonds on one sphere for which a packing is stable at `dt`
-    /// (at least 1 when it is not).
+    /// (0: not even one bond).
     pub fn bonds_covered(&self, dt: f64) -> u32 {
-        let one = self.coordinated(1);
-        let z = (one / dt).powi(2).floor();
+        let z = (self.coordinated(1) / dt).powi(2).floor();
         if z.is_finite() {
-            z.clamp(1.0, f64::from(u32::MAX)) as u32
+            z.clamp(0.0, f64::from(u32::MAX)) as u32
         } else {
             u32::MAX
         }
