@@ -133,6 +133,34 @@ def stability_map(csv_dir, fig_dir, n):
     return [path]
 
 
+ASSEMBLIES = ["at rest, plain square root", "free fall, plain square root",
+              "at rest, delta_eps = 1e-3 rb", "free fall, delta_eps = 1e-3 rb"]
+
+
+def assemblies(csv_dir, fig_dir):
+    rows = read(os.path.join(csv_dir, "assemblies.csv"))
+    colours = {0: "tab:green", 1: "tab:orange", 2: "tab:red"}
+    fig, ax = plt.subplots(figsize=(10, 3.4))
+    for r in rows:
+        ax.scatter(r["dt_fraction"], int(r["assembly"]), s=120, marker="s", color=colours[int(r["verdict"])],
+                   edgecolors="k" if r["flagged"] else "none", linewidths=1.2)
+    ax.set_yticks(range(len(ASSEMBLIES)))
+    ax.set_yticklabels(ASSEMBLIES, fontsize=8)
+    ax.invert_yaxis()
+    ax.set_xlabel("dt / critical-step estimate (one bond, two spheres)")
+    for v, name in [(0, "no bond broken"), (1, "bonds broken, warned at the run's start"),
+                    (2, "bonds broken without a warning (silently wrong)")]:
+        ax.scatter([], [], marker="s", color=colours[v], label=name)
+    ax.scatter([], [], marker="s", color="w", edgecolors="k", label="dt > recommended step (warned)")
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.25), ncol=2)
+    ax.set_title("Bonded blocks (stress breakage) at rest and in free fall: nothing loads the bonds", fontsize=10)
+    fig.tight_layout()
+    path = os.path.join(fig_dir, "assemblies_map.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return [path]
+
+
 def coordination(csv_dir, fig_dir):
     rows = read(os.path.join(csv_dir, "coordination.csv"))
     fig, ax = plt.subplots(figsize=(6.5, 4))
@@ -182,6 +210,7 @@ def main():
     written = accuracy(csv_dir, fig_dir, n)
     written += kernel_cost(csv_dir, fig_dir)
     written += stability_map(csv_dir, fig_dir, n)
+    written += assemblies(csv_dir, fig_dir)
     written += coordination(csv_dir, fig_dir)
     written += rattle(csv_dir, fig_dir)
     for p in written:

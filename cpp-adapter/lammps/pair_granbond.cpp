@@ -112,6 +112,10 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     // history is kept beyond contact (bonds) and transferred by us
     beyond_contact = 1;
     nondefault_history_transfer = 1;
+    // `compute ID all pair granbond`: bonds created and broken since the
+    // first run (summed over ranks by the compute)
+    nextra = 2;
+    pvector = new double[nextra]();
 
     const GbLayout expected = granbond_header_layout();
     if (granbond_check_layout(&expected) != GB_STATUS_OK)
@@ -131,6 +135,7 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
 
 PairGranbond::~PairGranbond()
 {
+    delete[] pvector;
     if (!fixHistory_)
         modify->delete_fix(kFixDummy);
     else
@@ -447,16 +452,19 @@ void PairGranbond::runChecks(const std::vector<GbTypeBodies> &bodies, bool runSt
     const int n = atom->ntypes;
     GbCheckReport report;
     const char *const contact = "pair granbond (voigt)", *const bond = "pair granbond (bond/nonlinear)";
-    if (granbond_voigt_timestep_check(voigt_.data(), n, bodies.data(), update->dt, contact, &report) != GB_STATUS_OK)
+    const char *const units = update->unit_style;
+    if (granbond_voigt_timestep_check(voigt_.data(), n, bodies.data(), update->dt, units, contact, &report) !=
+        GB_STATUS_OK)
         error->all(FLERR, std::string(contact) + ": " + granbond_last_error_message());
     if (contactWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
     if (!anyBond_) return;
-    if (granbond_bond_timestep_check(bond_.data(), n, bodies.data(), update->dt, bond, &report) != GB_STATUS_OK)
+    if (granbond_bond_timestep_check(bond_.data(), n, bodies.data(), update->dt, 0, units, bond, &report) !=
+        GB_STATUS_OK)
         error->all(FLERR, std::string(bond) + ": " + granbond_last_error_message());
     if (bondWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
     if (!runStart) return;
-    if (granbond_bond_creation_check(bond_.data(), n, bodies.data(), firstStep_, 0, 0, bond, &report) !=
-        GB_STATUS_OK)
+    if (granbond_bond_creation_check(bond_.data(), n, bodies.data(), firstStep_, bondsExist() ? 1 : 0, 0, 0, units,
+                                     bond, &report) != GB_STATUS_OK)
         error->all(FLERR, std::string(bond) + ": " + granbond_last_error_message());
     for (const std::string &line : said_.fresh(report))
         if (comm->me == 0) error->warning(FLERR, line);
@@ -810,11 +818,38 @@ void PairGranbond::compute(int eflag, int vflag)
     for (BondBatch &b : bondBatches_)
         if (b.count) advanceBonds(b);
     if (lossCheck_) countVanished();
+    pvector[0] = static_cast<double>(created_);
+    pvector[1] = static_cast<double>(broken_);
 }
 
 inline bool PairGranbond::countsHere(int i, int j) const
 {
     return pairCountsHere(i, j, atom->nlocal, atom->tag);
+}
+
+namespace {
+// fix neigh/history keeps each atom's partners (restored by read_restart
+// before the first pass) protected; a derived class may name them, and the
+// member pointers read them from the engine's fix.
+struct HistoryPartners : FixNeighHistory {
+    static int *FixNeighHistory::*count() { return &HistoryPartners::npartner; }
+    static double **FixNeighHistory::*values() { return &HistoryPartners::valuepartner; }
+};
+}
+
+// Whether an intact bond exists on any rank, read from the partners' history
+// the engine keeps per atom; collective.
+bool PairGranbond::bondsExist() const
+{
+    int mine = 0, any = 0;
+    const int *npartner = fixHistory_ ? fixHistory_->*HistoryPartners::count() : nullptr;
+    double **values = fixHistory_ ? fixHistory_->*HistoryPartners::values() : nullptr;
+    if (npartner && values)
+        for (int i = 0; i < atom->nlocal && !mine; i++)
+            for (int k = 0; k < npartner[i] && !mine; k++)
+                mine = values[i][sizeHistory_ * k + contactLen_] == GB_BOND_STATUS_INTACT;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    return any != 0;
 }
 
 // The bonds intact after this pass, balanced against the created and

@@ -69,6 +69,7 @@ private:
     void checkRenumbering();
     bool countsHere(int i, int j) const;
     void countVanished();
+    bool bondsExist() const;
 
     // An intact bond of a force pass, queued (bond_queue.h): every
     // kBondBlock bonds of one bond model, and at the end of the pass, one

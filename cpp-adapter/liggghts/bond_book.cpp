@@ -19,17 +19,58 @@ namespace liggghts {
 BondBook &BondBook::of(LAMMPS_NS::LAMMPS *lmp)
 {
     static std::map<LAMMPS_NS::LAMMPS *, BondBook> books;
-    return books[lmp];
+    BondBook &book = books[lmp];
+    book.lmp_ = lmp;
+    return book;
+}
+
+void BondBook::add(BondTally *t)
+{
+    // the first model of a new simulation (after `clear`): the removed
+    // models belonged to the previous one
+    if (tallies_.empty() && lmp_ && lmp_->update && lmp_->update->ntimestep == 0) {
+        retiredPair_ = retiredWall_ = BondTally();
+        dropped_ = 0;
+    }
+    tallies_.push_back(t);
 }
 
 void BondBook::remove(BondTally *t)
 {
+    const size_t before = tallies_.size();
     tallies_.erase(std::remove(tallies_.begin(), tallies_.end(), t), tallies_.end());
+    if (tallies_.size() == before) return;
+    BondTally &r = t->wall ? retiredWall_ : retiredPair_;
+    r.created += t->created;
+    r.broken += t->broken;
+    r.lost += t->lost + t->intact;
+    dropped_ += t->intact;
+}
+
+long long BondBook::takeDropped(MPI_Comm world)
+{
+    long long all = 0;
+    MPI_Allreduce(&dropped_, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+    dropped_ = 0;
+    return all;
+}
+
+std::string droppedMessage(long long dropped)
+{
+    return "cohesion bond/nonlinear: " + std::to_string(dropped) +
+           " intact bonds were dropped with the model that held them (unfix of a fix wall/gran, or a "
+           "replaced pair style), without breaking; compute bond/counter counts them as lost (columns 7-8)";
 }
 
 void BondBook::localTotals(double out[kTotals], bigint step, bool restored) const
 {
     for (int k = 0; k < kTotals; k++) out[k] = 0.0;
+    for (int wall = 0; wall < 2; wall++) {
+        const BondTally &t = wall ? retiredWall_ : retiredPair_;
+        out[3 * wall] += static_cast<double>(t.created);
+        out[3 * wall + 1] += static_cast<double>(t.broken);
+        out[6 + wall] += static_cast<double>(t.lost);
+    }
     for (const BondTally *t : tallies_) {
         double *o = out + (t->wall ? 3 : 0);
         o[0] += static_cast<double>(t->created);
@@ -93,8 +134,11 @@ public:
         invoked_vector = update->ntimestep;
         const int n = BondBook::kTotals;
         double local[n], total[n];
+        BondBook &book = BondBook::of(lmp);
+        const long long dropped = book.takeDropped(world);
+        if (dropped > 0 && comm->me == 0) error->warning(FLERR, droppedMessage(dropped).c_str());
         // events since the previous output: not those before a restart
-        BondBook::of(lmp).localTotals(local, update->ntimestep, cumulative_);
+        book.localTotals(local, update->ntimestep, cumulative_);
         MPI_Allreduce(local, total, n, MPI_DOUBLE, MPI_SUM, world);
         for (int k = 0; k < n; k++) values_[k] = total[k];
         if (!cumulative_) {

@@ -13,6 +13,7 @@
 
 #include "liggghts_engine.h"
 
+#include <string>
 #include <vector>
 
 namespace granbond {
@@ -43,8 +44,14 @@ class BondBook {
 public:
     static BondBook &of(LAMMPS_NS::LAMMPS *lmp);
 
-    void add(BondTally *t) { tallies_.push_back(t); }
+    void add(BondTally *t);
+    // Forgets a model whose fix or pair style was deleted (`unfix` of a
+    // wall). Its events stay counted; its intact bonds, gone with it, count
+    // as lost.
     void remove(BondTally *t);
+    // The bonds remove() counted as lost since the previous call, over all
+    // ranks (collective).
+    long long takeDropped(MPI_Comm world);
 
     // Starts counting intact bonds of `t` for the current pass if it is a new one.
     // Inline: called for every bond in every force pass.
@@ -75,10 +82,16 @@ public:
 
 private:
     std::vector<BondTally *> tallies_;
+    BondTally retiredPair_, retiredWall_;   // the counts of removed models
+    long long dropped_ = 0;
+    LAMMPS_NS::LAMMPS *lmp_ = nullptr;
     std::vector<BreakEvent> events_;
     int logUsers_ = 0;
     double restored_[kTotals] = {0, 0, 0, 0, 0, 0, 0, 0};
 };
+
+// The warning for bonds dropped with their model (takeDropped).
+std::string droppedMessage(long long dropped);
 
 // Adds `compute bond/counter` and `fix bond/breaklog` to this instance's
 // style tables (idempotent). Called when a bond model is constructed, and by

@@ -311,13 +311,15 @@ void BondNonlinearCohesion::runChecks(bool runStart)
         gatherTypeBodies(ntypes, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
     const char *style = isWall_ ? "cohesion bond/nonlinear (wall)" : "cohesion bond/nonlinear";
     GbCheckReport report;
-    if (granbond_bond_timestep_check(parameters_.table(), ntypes, bodies.data(), update->dt, style, &report) !=
-        GB_STATUS_OK)
+    if (granbond_bond_timestep_check(parameters_.table(), ntypes, bodies.data(), update->dt, 1, update->unit_style,
+                                     style, &report) != GB_STATUS_OK)
         endRun(error, FLERR, std::string(style) + ": " + granbond_last_error_message());
     if (timestepWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
     if (!runStart) return;
-    if (granbond_bond_creation_check(parameters_.table(), ntypes, bodies.data(), firstStep_, isWall_ ? 1 : 0, 1,
-                                     style, &report) != GB_STATUS_OK)
+    const long long dropped = book_->takeDropped(world);
+    if (dropped > 0 && comm->me == 0) error->warning(FLERR, droppedMessage(dropped).c_str());
+    if (granbond_bond_creation_check(parameters_.table(), ntypes, bodies.data(), firstStep_, 0, isWall_ ? 1 : 0, 1,
+                                     update->unit_style, style, &report) != GB_STATUS_OK)
         endRun(error, FLERR, std::string(style) + ": " + granbond_last_error_message());
     const std::vector<std::string> lines = said_.fresh(report);
     for (size_t k = 0; k < lines.size(); k++)

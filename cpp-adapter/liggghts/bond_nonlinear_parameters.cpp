@@ -118,7 +118,13 @@ void BondNonlinearParameters::connectToProperties(PropertyRegistry &registry)
         if (granbond_bond_parameter_needed(&switches_, k, &needed) != GB_STATUS_OK)
             endRun(error, FLERR, std::string(kCaller) + ": " + granbond_last_error_message());
         if (!needed) continue;
-        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_PER_TYPE_PAIR) {
+        // a setting LIGGGHTS-INL does not have: read only where the deck
+        // defines it, so INL's decks keep the default and INL's law
+        const bool optional = info.liggghts_source == GB_LIGGGHTS_SOURCE_OPTIONAL_PER_TYPE_PAIR;
+        if (optional && !modify->find_fix_property(info.liggghts_name, "property/global", "peratomtypepair", 0, 0,
+                                                   kCaller, false))
+            continue;
+        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_PER_TYPE_PAIR || optional) {
             registry.registerProperty(info.liggghts_name, kPerTypePairCreators[k]);
             registry.connect(info.liggghts_name, perTypePair_[k], kCaller);
         } else if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SCALAR) {

@@ -293,7 +293,8 @@ void VoigtNormal::checkTimestep()
     const std::vector<GbTypeBodies> bodies =
         gatherTypeBodies(ntypes, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
     GbCheckReport report;
-    if (granbond_voigt_timestep_check(table.data(), ntypes, bodies.data(), update->dt, "model voigt", &report) !=
+    if (granbond_voigt_timestep_check(table.data(), ntypes, bodies.data(), update->dt, update->unit_style,
+                                      "model voigt", &report) !=
         GB_STATUS_OK)
         endRun(error, FLERR, std::string("model voigt: ") + granbond_last_error_message());
     if (timestepWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);

@@ -370,6 +370,47 @@ fn stability(dir: &Path, quick: bool) {
         }
     }
 
+    // Bonded blocks as users run them, at rest and in free fall, plain and
+    // regularised, over the step: where bonds break, and whether the
+    // engines warn first.
+    let mut map = csv(
+        dir,
+        "assemblies.csv",
+        &["assembly", "dt_fraction", "verdict", "flagged", "broken"],
+    );
+    let fractions: Vec<f64> = if quick {
+        vec![0.05, 0.2, 0.5, 1.0]
+    } else {
+        (1..=20).map(|k| 0.05 * k as f64).collect()
+    };
+    let mut silent = 0;
+    for (id, a) in sweep::ASSEMBLIES.iter().enumerate() {
+        for &f in &fractions {
+            let case = a.run(if quick { 3 } else { 5 }, f, if quick { 1000 } else { 3000 });
+            silent += (case.verdict == Verdict::SilentlyWrong) as usize;
+            writeln!(
+                notes,
+                "{:<32} {:.2} dt_c {:?}: {} bonds broken{}{}",
+                a.name,
+                f,
+                case.verdict,
+                case.broken,
+                if case.finite { "" } else { ", blew up" },
+                if case.flagged { ", warned" } else { "" }
+            )
+            .unwrap();
+            map.row(&[
+                id as f64,
+                f,
+                case.verdict as usize as f64,
+                case.flagged as u8 as f64,
+                case.broken as f64,
+            ])
+            .unwrap();
+        }
+    }
+    eprintln!("assemblies: {silent} silently wrong");
+
     // The plain square root without tension at rest near zero: the rattle
     // amplitude against the step, and the reported floor.
     let mut rattle = csv(dir, "rattle.csv", &["dt_fraction", "peak", "floor", "peak_eps"]);

@@ -348,3 +348,147 @@ pub fn degenerate_inputs(base: &Setup) -> Vec<Case> {
         })
         .collect()
 }
+
+/// A bonded assembly as users run one: a simple-cubic block of `edge^3`
+/// touching spheres of radius [`RADIUS`] bonded in the first step, with
+/// stress breakage on a square root that is plain or regularised, at rest
+/// (velocities of round-off size) or falling freely (gravity and a uniform
+/// velocity). Nothing loads its bonds, so a bond that breaks was broken by
+/// the integration.
+#[derive(Clone, Copy, Debug)]
+pub struct Assembly {
+    pub name: &'static str,
+    pub falling: bool,
+    pub regularised: bool,
+}
+
+/// The four assemblies of the map.
+pub const ASSEMBLIES: [Assembly; 4] = [
+    Assembly {
+        name: "at rest, plain square root",
+        falling: false,
+        regularised: false,
+    },
+    Assembly {
+        name: "free fall, plain square root",
+        falling: true,
+        regularised: false,
+    },
+    Assembly {
+        name: "at rest, delta_eps = 1e-3 rb",
+        falling: false,
+        regularised: true,
+    },
+    Assembly {
+        name: "free fall, delta_eps = 1e-3 rb",
+        falling: true,
+        regularised: true,
+    },
+];
+
+impl Assembly {
+    /// The bond of the free-fall report (`k_fn1 = 2e10`, `max_sigma =
+    /// 1e6`: compression breakage from `(max_sigma / k_fn1)^2 = 2.5e-9`
+    /// m), undamped.
+    pub fn bond(&self) -> BondParams {
+        let lambda = 0.8;
+        BondParams {
+            lambda,
+            k_fn1: 2e10,
+            ku_fn1: 4e10,
+            kc_fn1: 2e9,
+            k_fn2: 5e10,
+            ku_fn2: 1e11,
+            kc_fn2: 5e9,
+            k_ft: 2e10,
+            k_tn: 2e10,
+            ku_tn: 4e10,
+            kc_tn: 2e9,
+            k_tt: 2e10,
+            ku_tt: 4e10,
+            kc_tt: 2e9,
+            damping: 0,
+            stress_break: 1,
+            max_sigma: 1e6,
+            max_tau: 1e6,
+            compression_linear_below: if self.regularised {
+                1e-3 * lambda * RADIUS
+            } else {
+                0.0
+            },
+            create_distance: 2.04 * RADIUS,
+            create_step: 0,
+            ..BondParams::default()
+        }
+    }
+
+    /// The one-bond critical step of its bond between two of its spheres.
+    pub fn critical(&self) -> f64 {
+        let m = DENSITY * 4.0 / 3.0 * std::f64::consts::PI * RADIUS.powi(3);
+        BondModel::new(self.bond())
+            .expect("valid bond")
+            .critical_timestep(RADIUS, RADIUS, m, m)
+    }
+
+    /// Runs `steps` at `dt_fraction` of [`Assembly::critical`]. Wrong: a
+    /// bond broke or the run stopped on non-finite kinematics; detected
+    /// when the step is above the core's recommended step (the engines
+    /// warn at the run's start).
+    pub fn run(&self, edge: usize, dt_fraction: f64, steps: u64) -> AssemblyCase {
+        let params = self.bond();
+        let model = BondModel::new(params).expect("valid bond");
+        let m = DENSITY * 4.0 / 3.0 * std::f64::consts::PI * RADIUS.powi(3);
+        let dt = dt_fraction * model.critical_timestep(RADIUS, RADIUS, m, m);
+        let flagged = dt > (1.0 + 1e-9) * model.recommended_timestep(RADIUS, RADIUS, m, m);
+        let mut scene = Scene::new(dt);
+        let mut noise = Noise::new(11);
+        let speed = if self.falling { 2.0 } else { 0.0 };
+        for a in 0..edge {
+            for b in 0..edge {
+                for c in 0..edge {
+                    let x = Vec3::new(a as f64, b as f64, c as f64) * (2.0 * RADIUS);
+                    let mut s = Sphere::new(x, RADIUS, DENSITY);
+                    s.body.v = Vec3::new(0.0, 0.0, -speed) + noise.vector() * 1e-12;
+                    scene.spheres.push(s);
+                }
+            }
+        }
+        if self.falling {
+            scene.gravity = Vec3::new(0.0, 0.0, -9.81);
+        }
+        scene.bond_model = Some(model);
+        let mut broken = 0;
+        let mut finite = true;
+        for _ in 0..steps {
+            match scene.advance() {
+                Ok(report) => broken += report.bonds_broken,
+                Err(_) => {
+                    finite = false;
+                    break;
+                }
+            }
+        }
+        let wrong = broken > 0 || !finite;
+        let verdict = match (wrong, flagged) {
+            (false, _) => Verdict::Stable,
+            (true, true) => Verdict::Detected,
+            (true, false) => Verdict::SilentlyWrong,
+        };
+        AssemblyCase {
+            verdict,
+            flagged,
+            broken,
+            finite,
+        }
+    }
+}
+
+/// One run of an [`Assembly`].
+#[derive(Clone, Copy, Debug)]
+pub struct AssemblyCase {
+    pub verdict: Verdict,
+    /// Above the core's recommended step (warned).
+    pub flagged: bool,
+    pub broken: usize,
+    pub finite: bool,
+}

@@ -16,6 +16,27 @@
 
 #define GRANBOND_BOND_STATE_LEN 19
 
+/**
+ * How far below the compression break threshold the recommended step keeps
+ * the noise floor of the square root's rattle
+ * ([`BondModel::compression_noise_floor`], `16 d_c`, which bounds the
+ * rattle of one bond between two spheres).
+ *
+ * Derivation. A sphere rattling against its bonded neighbours is held by
+ * the sum of their axial stiffnesses: for mass-weighted displacements,
+ * `sum_b K_b (n_b . (x_i - x_j))^2 <= 2 sum_i x_i' (sum_(b at i) K_b n_b n_b') x_i`,
+ * so the packing's axial eigenvalue is at most `c` times the pair's, `c`
+ * the largest eigenvalue of `sum_(b at i) n_b n_b'` over the spheres (the
+ * bond fabric; at most the bond count, and a third of it where the bonds
+ * point in every direction: 2 for the simple-cubic packing's 6 bonds, 4
+ * for the 12 of the densest monodisperse packing). The local stiffness
+ * `k A / (2 sqrt d)` reaches the stability limit at `c^2 d_c` instead of
+ * `d_c`, so the floor of the packing is `c^2` times the pair's. The margin
+ * is that factor for `c = 4`: packings up to the densest monodisperse one
+ * keep their rattle below the threshold at the recommended step.
+ */
+#define RATTLE_MARGIN 16.0
+
 #define GRANBOND_WALL_BOND_STATE_LEN (GRANBOND_BOND_STATE_LEN + 3)
 
 #define GRANBOND_CONTACT_STATE_LEN 6
@@ -23,7 +44,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 8
+#define GRANBOND_ABI_VERSION 9
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -118,6 +139,12 @@ typedef enum GbLiggghtsSource {
    * Not settable from LIGGGHTS decks: the default applies.
    */
   GB_LIGGGHTS_SOURCE_FIXED = 3,
+  /**
+   * `fix property/global NAME peratomtypepair N ...` when the deck
+   * defines it; the default applies when it does not (a setting the
+   * reference implementation does not have, so its decks keep its law).
+   */
+  GB_LIGGGHTS_SOURCE_OPTIONAL_PER_TYPE_PAIR = 4,
 } GbLiggghtsSource;
 
 /**
@@ -863,23 +890,28 @@ enum GbStatus granbond_bond_recommended_timestep(const struct GbBondModel *model
  * present: `models[a * (ntypes + 1) + b]` the bond model of types `a`, `b`
  * (null: none), `bodies[t]` the smallest and largest radius and the
  * lightest mass of type `t` over all ranks (index 0 unused; a type without
- * atoms has infinite `radius_min`). `style` names the deck command in the
- * message. The pair with the shortest critical step limits; `out` says how
- * `dt` compares with it and holds the warning to print.
+ * atoms has infinite `radius_min`). `naming`: 0 LAMMPS keywords, 1
+ * LIGGGHTS names in the message; `units`: the engine's `units` style (the
+ * names of units in the message); `style` names the deck command. The pair
+ * with the shortest recommended step limits; `out` says how `dt` compares
+ * with it and holds the warning to print.
  *
  * # Safety
- * Pointers must be null or valid for the sizes above; `style` a NUL
- * terminated string.
+ * Pointers must be null or valid for the sizes above; `units` and `style`
+ * NUL terminated strings.
  */
 enum GbStatus granbond_bond_timestep_check(const struct GbBondModel *const *models,
                                            int32_t ntypes,
                                            const struct GbTypeBodies *bodies,
                                            double dt,
+                                           int32_t naming,
+                                           const char *units,
                                            const char *style,
                                            struct GbCheckReport *out);
 
 /**
- * `granbond_bond_timestep_check` for the Voigt contact.
+ * `granbond_bond_timestep_check` for the Voigt contact (no parameter is
+ * cited, so no naming).
  *
  * # Safety
  * As `granbond_bond_timestep_check`.
@@ -888,6 +920,7 @@ enum GbStatus granbond_voigt_timestep_check(const struct GbVoigtModel *const *mo
                                             int32_t ntypes,
                                             const struct GbTypeBodies *bodies,
                                             double dt,
+                                            const char *units,
                                             const char *style,
                                             struct GbCheckReport *out);
 
@@ -896,10 +929,13 @@ enum GbStatus granbond_voigt_timestep_check(const struct GbVoigtModel *const *mo
  * `granbond_bond_timestep_check`) against each other and the spheres
  * present: a creation distance beyond the break distance, a creation
  * distance below contact, a creation step that has passed (`first_step`:
- * the step the model's first run started from). `wall` non-zero: wall bonds
- * (the sphere's radius alone is the contact distance; the wall's type needs
- * no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the message.
- * `out->level` is the number of findings.
+ * the step the model's first run started from, while no bond exists:
+ * `bonds_exist` non-zero when intact bonds of these models exist over all
+ * ranks, as in a run continued from a restart file). `wall` non-zero: wall
+ * bonds (the sphere's radius alone is the contact distance; the wall's type
+ * needs no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the
+ * message; `units`: the engine's `units` style. `out->level` is the number
+ * of findings.
  *
  * # Safety
  * As `granbond_bond_timestep_check`.
@@ -908,8 +944,10 @@ enum GbStatus granbond_bond_creation_check(const struct GbBondModel *const *mode
                                            int32_t ntypes,
                                            const struct GbTypeBodies *bodies,
                                            int64_t first_step,
+                                           int32_t bonds_exist,
                                            int32_t wall,
                                            int32_t naming,
+                                           const char *units,
                                            const char *style,
                                            struct GbCheckReport *out);
 

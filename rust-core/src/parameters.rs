@@ -67,6 +67,10 @@ pub enum LiggghtsSource {
     Switch = 2,
     /// Not settable from LIGGGHTS decks: the default applies.
     Fixed = 3,
+    /// `fix property/global NAME peratomtypepair N ...` when the deck
+    /// defines it; the default applies when it does not (a setting the
+    /// reference implementation does not have, so its decks keep its law).
+    OptionalPerTypePair = 4,
 }
 
 /// When a model reads a parameter, judged from the switches of a parameter

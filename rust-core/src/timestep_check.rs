@@ -3,6 +3,7 @@
 //! contact with the shortest critical step between the smallest and
 //! lightest spheres of the two types.
 
+use crate::bond::timestep::{ModeLimits, RATTLE_MARGIN};
 use crate::stability::RECOMMENDED_FRACTION;
 
 /// The extremes of one atom type over the whole simulation (all ranks).
@@ -32,6 +33,58 @@ impl TypeBodies {
     }
 }
 
+/// Names of the deck's units in messages. The estimates are ratios of
+/// masses, stiffnesses and lengths, so they hold in any consistent unit
+/// system; only the names change.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct UnitNames {
+    pub length: &'static str,
+    pub mass: &'static str,
+    pub time: &'static str,
+    pub stress: &'static str,
+}
+
+impl UnitNames {
+    pub const SI: UnitNames = UnitNames {
+        length: "m",
+        mass: "kg",
+        time: "s",
+        stress: "Pa",
+    };
+
+    /// The names of an engine's `units` style; the styles granular decks
+    /// use are named, any other is said as "(units STYLE)".
+    pub fn of_style(style: &str) -> UnitNames {
+        match style {
+            "si" => Self::SI,
+            "cgs" => UnitNames {
+                length: "cm",
+                mass: "g",
+                time: "s",
+                stress: "dyne/cm^2",
+            },
+            "micro" => UnitNames {
+                length: "um",
+                mass: "pg",
+                time: "us",
+                stress: "pg/(um us^2)",
+            },
+            "nano" => UnitNames {
+                length: "nm",
+                mass: "ag",
+                time: "ns",
+                stress: "ag/(nm ns^2)",
+            },
+            _ => UnitNames {
+                length: "(length, deck units)",
+                mass: "(mass, deck units)",
+                time: "(time, deck units)",
+                stress: "(stress, deck units)",
+            },
+        }
+    }
+}
+
 /// How the time step compares with the estimate.
 #[repr(i32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -44,6 +97,49 @@ pub enum TimestepLevel {
     AboveCritical = 2,
 }
 
+/// The square root's rattle against the compression break threshold, for
+/// the message ([`crate::bond::BondModel::rattle_timestep`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rattle {
+    /// `(max_sigma / k_fn1)^2`.
+    pub threshold: f64,
+    /// `compression_noise_floor` at the deck's step.
+    pub floor: f64,
+    /// The longest step that keeps the floor `RATTLE_MARGIN` below the
+    /// threshold.
+    pub step: f64,
+    pub max_sigma: f64,
+    pub k_fn1: f64,
+    /// Bond radius (the regularisation suggested is a fraction of it).
+    pub rb: f64,
+}
+
+/// The estimates of one type pair at the deck's step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepLimits {
+    /// One bond or contact between two spheres.
+    pub critical: f64,
+    /// The step to use; the warning threshold.
+    pub recommended: f64,
+    /// The bond's modes (for the limits of coordinated spheres); `None` for
+    /// contacts.
+    pub modes: Option<ModeLimits>,
+    /// Where bonds can break in compression from the rattle.
+    pub rattle: Option<Rattle>,
+}
+
+impl StepLimits {
+    /// A limit with nothing but its critical step.
+    pub fn plain(critical: f64) -> StepLimits {
+        StepLimits {
+            critical,
+            recommended: RECOMMENDED_FRACTION * critical,
+            modes: None,
+            rattle: None,
+        }
+    }
+}
+
 /// The type pair that limits the step, and how `dt` compares with it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TimestepVerdict {
@@ -53,18 +149,21 @@ pub struct TimestepVerdict {
     pub critical: f64,
     pub recommended: f64,
     pub dt: f64,
+    pub limits: StepLimits,
 }
 
-/// The limiting pair over types `1..=ntypes` (`bodies[t]`, index 0 unused)
-/// with a model (`model(a, b)`, `a <= b`), and the verdict on `dt`. `None`
-/// when no pair of present types has a model, or every estimate is
-/// infinite (no stiffness). An estimate that is not a positive number (radii
-/// or masses outside what it can evaluate) is `Err` with the pair.
+/// The limiting pair (shortest recommended step) over types `1..=ntypes`
+/// (`bodies[t]`, index 0 unused) with a model (`model(a, b)`, `a <= b`), and
+/// the verdict on `dt`. `limits(model, r_a, r_b, m_a, m_b)` gives the
+/// pair's estimates. `None` when no pair of present types has a model, or
+/// every estimate is infinite (no stiffness). A critical step that is not a
+/// positive number (radii or masses outside what it can evaluate) is `Err`
+/// with the pair.
 pub fn scan<M>(
     ntypes: usize,
     bodies: &[TypeBodies],
     model: impl Fn(usize, usize) -> Option<M>,
-    critical: impl Fn(&M, f64, f64, f64, f64) -> f64,
+    limits: impl Fn(&M, f64, f64, f64, f64) -> StepLimits,
     dt: f64,
 ) -> Result<Option<TimestepVerdict>, (usize, usize, f64)> {
     let mut worst: Option<TimestepVerdict> = None;
@@ -75,18 +174,20 @@ pub fn scan<M>(
                 continue;
             }
             let Some(m) = model(a, b) else { continue };
-            let c = critical(&m, ba.radius_min, bb.radius_min, ba.mass_min, bb.mass_min);
+            let l = limits(&m, ba.radius_min, bb.radius_min, ba.mass_min, bb.mass_min);
+            let c = l.critical;
             if !(c > 0.0) {
                 return Err((a, b, c));
             }
-            if c.is_finite() && worst.map_or(true, |w| c < w.critical) {
+            if l.recommended.is_finite() && worst.map_or(true, |w| l.recommended < w.recommended) {
                 worst = Some(TimestepVerdict {
                     level: TimestepLevel::Safe,
                     type_a: a,
                     type_b: b,
                     critical: c,
-                    recommended: RECOMMENDED_FRACTION * c,
+                    recommended: l.recommended,
                     dt,
+                    limits: l,
                 });
             }
         }
@@ -103,29 +204,108 @@ pub fn scan<M>(
     }))
 }
 
+/// How a message names the parameters it cites.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CitedNames {
+    pub max_sigma: &'static str,
+    pub k_fn1: &'static str,
+    pub compression_linear_below: &'static str,
+}
+
 impl TimestepVerdict {
     /// The warning an engine prints (empty when safe). `style` names the
-    /// deck command, `what` the interaction ("bond", "contact").
-    pub fn message(&self, style: &str, what: &str, bodies: &[TypeBodies]) -> String {
+    /// deck command, `what` the interaction ("bond", "contact"), `names`
+    /// the parameters as the deck spells them, `units` the deck's units.
+    pub fn message(
+        &self,
+        style: &str,
+        what: &str,
+        bodies: &[TypeBodies],
+        names: &CitedNames,
+        units: &UnitNames,
+    ) -> String {
         let (a, b) = (self.type_a, self.type_b);
         let (verb, limit_name, limit) = match self.level {
             TimestepLevel::Safe => return String::new(),
             TimestepLevel::AboveRecommended => ("exceeds", "recommended", self.recommended),
             TimestepLevel::AboveCritical => ("EXCEEDS", "critical", self.critical),
         };
-        format!(
-            "{style}: time step {dt:e} s {verb} the {limit_name} step {limit:e} s of the stiffest {what} \
-             (atom types {a} and {b}, smallest radius {ra:e} / {rb:e} m, lightest mass {ma:e} / {mb:e} kg; \
-             critical step {c:e} s). Use timestep <= {r:e} s (the core's recommended step, {f} of the critical)",
-            dt = self.dt,
-            ra = bodies[a].radius_min,
-            rb = bodies[b].radius_min,
-            ma = bodies[a].mass_min,
-            mb = bodies[b].mass_min,
-            c = self.critical,
-            r = self.recommended,
-            f = RECOMMENDED_FRACTION,
-        )
+        let UnitNames {
+            length: l,
+            mass: kg,
+            time: s,
+            stress: pa,
+        } = *units;
+        let mut text = format!(
+            "{style}: time step {dt} {s} {verb} the {limit_name} step {limit} {s} of the stiffest {what} \
+             (atom types {a} and {b}, smallest radius {ra} / {rb} {l}, lightest mass {ma} / {mb} {kg}; \
+             critical step {c} {s}",
+            dt = short(self.dt),
+            limit = short(limit),
+            ra = short(bodies[a].radius_min),
+            rb = short(bodies[b].radius_min),
+            ma = short(bodies[a].mass_min),
+            mb = short(bodies[b].mass_min),
+            c = short(self.critical),
+        );
+        match self.limits.modes {
+            Some(modes) => {
+                let covered = match modes.bonds_covered(self.dt) {
+                    0 => "for no sphere".to_string(),
+                    u32::MAX => "for any z".to_string(),
+                    z => format!("for z <= {z}"),
+                };
+                text += &format!(
+                    ", the limit of one {what} between two free spheres; a sphere with z {what}s is stable below \
+                     {z6} {s} for z = 6, {z12} {s} for z = 12, this time step {covered})",
+                    z6 = short(modes.coordinated(6)),
+                    z12 = short(modes.coordinated(12)),
+                )
+            }
+            None => text += ")",
+        }
+        if let Some(r) = self.limits.rattle.filter(|r| self.dt > r.step) {
+            text += &format!(
+                ". Bonds near zero compression can break in compression from round-off: at this step the \
+                 square root's rattle reaches {floor} {l} (the noise floor), not {margin} times below the \
+                 compression break threshold ({ms} / {k})^2 = {th} {l} ({ms} = {sig} {pa}, {k} = {kf}). \
+                 Remedies: timestep <= {step} {s}, or the linear regularisation {clb} (for example 1e-3 of \
+                 the bond radius, {eps} {l}), which removes the rattle",
+                floor = short(r.floor),
+                margin = RATTLE_MARGIN,
+                ms = names.max_sigma,
+                k = names.k_fn1,
+                th = short(r.threshold),
+                sig = short(r.max_sigma),
+                kf = short(r.k_fn1),
+                step = short(r.step),
+                clb = names.compression_linear_below,
+                eps = short(1e-3 * r.rb),
+            );
+        }
+        let rule = if self.limits.recommended < RECOMMENDED_FRACTION * self.critical {
+            "set by the rattle".to_string()
+        } else {
+            format!("{RECOMMENDED_FRACTION} of the critical")
+        };
+        text += &format!(
+            ". Use timestep <= {r} {s} (the core's recommended step, {rule})",
+            r = short(self.recommended)
+        );
+        text
+    }
+}
+
+/// A number in messages: four significant digits, trailing zeros dropped
+/// (`4.034e-8`, `1e-3`).
+pub fn short(x: f64) -> String {
+    let text = format!("{x:.3e}");
+    match text.split_once('e') {
+        Some((mantissa, exponent)) if mantissa.contains('.') => {
+            let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+            format!("{mantissa}e{exponent}")
+        }
+        _ => text,
     }
 }
 
@@ -142,9 +322,15 @@ mod tests {
     }
 
     // critical step of a fake model k: 2 sqrt(m_eff / k)
-    fn spring(k: &f64, _: f64, _: f64, mi: f64, mj: f64) -> f64 {
-        2.0 * (mi * mj / (mi + mj) / k).sqrt()
+    fn spring(k: &f64, _: f64, _: f64, mi: f64, mj: f64) -> StepLimits {
+        StepLimits::plain(2.0 * (mi * mj / (mi + mj) / k).sqrt())
     }
+
+    const NAMES: CitedNames = CitedNames {
+        max_sigma: "max_sigma",
+        k_fn1: "k_fn1",
+        compression_linear_below: "compression_linear_below",
+    };
 
     #[test]
     fn the_lightest_stiffest_pair_limits_and_absent_types_are_skipped() {
@@ -157,15 +343,15 @@ mod tests {
         let stiffness = |a: usize, b: usize| Some(if a == b { 1e4 } else { 1e6 });
         let v = scan(3, &bodies, stiffness, spring, 1e-9).unwrap().unwrap();
         assert_eq!((v.type_a, v.type_b), (1, 2));
-        assert_eq!(v.critical, spring(&1e6, 0.0, 0.0, 1e-5, 4e-5));
+        assert_eq!(v.critical, spring(&1e6, 0.0, 0.0, 1e-5, 4e-5).critical);
         assert_eq!(v.level, TimestepLevel::Safe);
-        assert!(v.message("s", "bond", &bodies).is_empty());
+        assert!(v.message("s", "bond", &bodies, &NAMES, &UnitNames::SI).is_empty());
     }
 
     #[test]
     fn levels_follow_the_two_limits() {
         let bodies = [TypeBodies::none(), sphere(1e-3, 1e-5)];
-        let c = spring(&1e4, 0.0, 0.0, 1e-5, 1e-5);
+        let c = spring(&1e4, 0.0, 0.0, 1e-5, 1e-5).critical;
         let level = |dt: f64| {
             scan(1, &bodies, |_, _| Some(1e4), spring, dt)
                 .unwrap()
@@ -178,7 +364,7 @@ mod tests {
         let v = scan(1, &bodies, |_, _| Some(1e4), spring, 1.01 * c)
             .unwrap()
             .unwrap();
-        let msg = v.message("pair granbond", "contact", &bodies);
+        let msg = v.message("pair granbond", "contact", &bodies, &NAMES, &UnitNames::SI);
         assert!(
             msg.starts_with("pair granbond: time step") && msg.contains("EXCEEDS the critical step"),
             "{msg}"
@@ -192,7 +378,7 @@ mod tests {
         let bodies = [TypeBodies::none(), sphere(1e-3, 1e-5)];
         assert_eq!(scan(1, &bodies, |_, _| None::<f64>, spring, 1.0), Ok(None));
         assert_eq!(scan(1, &bodies, |_, _| Some(0.0), spring, 1.0), Ok(None)); // no stiffness: infinite
-        let nan = |_: &f64, _: f64, _: f64, _: f64, _: f64| f64::NAN;
+        let nan = |_: &f64, _: f64, _: f64, _: f64, _: f64| StepLimits::plain(f64::NAN);
         assert!(scan(1, &bodies, |_, _| Some(1.0), nan, 1.0).is_err());
     }
 }

@@ -4,7 +4,7 @@
 //! finding is a warning that names the parameters as the deck spells them.
 
 use super::params::{BondParams, PARAMETERS};
-use crate::timestep_check::TypeBodies;
+use crate::timestep_check::{TypeBodies, UnitNames};
 
 /// Which spelling of the parameter names the messages use.
 #[repr(i32)]
@@ -28,8 +28,10 @@ pub enum Finding {
     /// only pairs overlapping by the difference bond.
     CreateBelowContact,
     /// `create_step` is not after the step the model's first run started
-    /// from, and bonds are not created every step: this model never forms a
-    /// bond (the first force step of a run is the one after its start).
+    /// from, bonds are not created every step, and no bond exists: this
+    /// model never forms a bond (the first force step of a run is the one
+    /// after its start). A run that continues bonds (from a restart file)
+    /// is not a finding: its bonds were formed before.
     CreateStepPassed,
 }
 
@@ -38,12 +40,13 @@ pub enum Finding {
 /// parameters `params(a, b)` give a [`Finding`]; each finding once, on the
 /// first pair that shows it. Types without atoms are skipped (the wall's
 /// type is not). `first_step`: the step the first run of the model started
-/// from.
+/// from; `bonds_exist`: intact bonds of the model exist (over all ranks).
 pub fn findings(
     ntypes: usize,
     bodies: &[TypeBodies],
     params: impl Fn(usize, usize) -> Option<BondParams>,
     first_step: i64,
+    bonds_exist: bool,
     wall: bool,
 ) -> Vec<(Finding, usize, usize)> {
     let mut found: Vec<(Finding, usize, usize)> = Vec::new();
@@ -75,7 +78,7 @@ pub fn findings(
             if p.create_distance < contact {
                 note(Finding::CreateBelowContact, a, b);
             }
-            if !BondParams::switch(p.create_always) && p.create_step <= first_step {
+            if !BondParams::switch(p.create_always) && p.create_step <= first_step && !bonds_exist {
                 note(Finding::CreateStepPassed, a, b);
             }
         }
@@ -89,7 +92,8 @@ fn contact_distance(bodies: &[TypeBodies], a: usize, b: usize, wall: bool) -> f6
     bodies[a].radius_min + if wall { 0.0 } else { bodies[b].radius_min }
 }
 
-fn name(field: &str, naming: Naming) -> &'static str {
+/// A parameter's name as the engine's decks spell it.
+pub fn parameter_name(field: &str, naming: Naming) -> &'static str {
     let row = PARAMETERS
         .iter()
         .find(|r| r.name == field)
@@ -111,12 +115,14 @@ pub fn message(
     first_step: i64,
     wall: bool,
     naming: Naming,
+    units: &UnitNames,
     style: &str,
 ) -> String {
-    let create = name("create_distance", naming);
-    let reach = name("max_distance", naming);
-    let always = name("create_always", naming);
-    let create_step = name("create_step", naming);
+    let l = units.length;
+    let create = parameter_name("create_distance", naming);
+    let reach = parameter_name("max_distance", naming);
+    let always = parameter_name("create_always", naming);
+    let create_step = parameter_name("create_step", naming);
     let contact = contact_distance(bodies, a, b, wall);
     let pair = if wall {
         format!("atom type {a} on the wall")
@@ -131,18 +137,18 @@ pub fn message(
                 "in the step it forms".to_string()
             };
             let touching = if touching_breaks {
-                format!("; {reach} is below the contact distance {contact:e} m of the smallest spheres, so a bond between touching spheres breaks too")
+                format!("; {reach} is below the contact distance {contact:e} {l} of the smallest spheres, so a bond between touching spheres breaks too")
             } else {
                 String::new()
             };
             format!(
-                "{style} ({pair}): {create} {c:e} m > {reach} {r:e} m: a pair whose centres are between the two is bonded and broken {how_often}{touching}. Set {create} <= {reach}",
+                "{style} ({pair}): {create} {c:e} {l} > {reach} {r:e} {l}: a pair whose centres are between the two is bonded and broken {how_often}{touching}. Set {create} <= {reach}",
                 c = p.create_distance,
                 r = p.max_distance,
             )
         }
         Finding::CreateBelowContact => format!(
-            "{style} ({pair}): {create} {c:e} m is below the contact distance {contact:e} m of the smallest spheres: only pairs overlapping by more than {d:e} m bond",
+            "{style} ({pair}): {create} {c:e} {l} is below the contact distance {contact:e} {l} of the smallest spheres: only pairs overlapping by more than {d:e} {l} bond",
             c = p.create_distance,
             d = contact - p.create_distance,
         ),
@@ -179,7 +185,7 @@ mod tests {
     }
 
     fn kinds(p: BondParams, step: i64) -> Vec<Finding> {
-        findings(1, &spheres(1e-3), |_, _| Some(p), step, false)
+        findings(1, &spheres(1e-3), |_, _| Some(p), step, false, false)
             .into_iter()
             .map(|f| f.0)
             .collect()
@@ -236,9 +242,9 @@ mod tests {
     fn a_wall_counts_only_the_sphere() {
         let bodies = spheres(1e-3);
         let p = bond(1.05e-3, 1.1e-3, 1, false);
-        assert!(findings(1, &bodies, |_, _| Some(p), 0, true).is_empty());
+        assert!(findings(1, &bodies, |_, _| Some(p), 0, false, true).is_empty());
         assert_eq!(
-            findings(1, &bodies, |_, _| Some(p), 0, false)[0].0,
+            findings(1, &bodies, |_, _| Some(p), 0, false, false)[0].0,
             Finding::CreateBelowContact
         );
     }
@@ -259,6 +265,7 @@ mod tests {
             0,
             false,
             Naming::Liggghts,
+            &UnitNames::SI,
             "cohesion bond/nonlinear",
         );
         assert!(
@@ -266,7 +273,18 @@ mod tests {
             "{lig}"
         );
         assert!(lig.contains("every step (createBondAlways on)"), "{lig}");
-        let lmp = message(f, 1, 1, &p, &bodies, 0, false, Naming::Lammps, "pair granbond");
+        let lmp = message(
+            f,
+            1,
+            1,
+            &p,
+            &bodies,
+            0,
+            false,
+            Naming::Lammps,
+            &UnitNames::SI,
+            "pair granbond",
+        );
         assert!(
             lmp.contains("create_distance") && lmp.contains("max_distance"),
             "{lmp}"
@@ -280,8 +298,34 @@ mod tests {
             7,
             false,
             Naming::Liggghts,
+            &UnitNames::of_style("micro"),
             "x",
         );
         assert!(s.contains("tsCreateBondnonlinear 1 is not after step 7,"), "{s}");
+        let below = message(
+            Finding::CreateBelowContact,
+            1,
+            1,
+            &bond(1.5e3, 2.08e3, 1, false),
+            &spheres(1e3),
+            0,
+            false,
+            Naming::Lammps,
+            &UnitNames::of_style("micro"),
+            "x",
+        );
+        assert!(
+            below.contains("contact distance 2e3 um") && !below.contains(" m "),
+            "{below}"
+        );
+    }
+
+    #[test]
+    fn a_continuation_with_bonds_is_not_a_passed_creation_step() {
+        let p = bond(2.05e-3, 2.08e-3, 1, false);
+        let with_bonds = findings(1, &spheres(1e-3), |_, _| Some(p), 15000, true, false);
+        assert!(with_bonds.is_empty(), "{with_bonds:?}");
+        let without = findings(1, &spheres(1e-3), |_, _| Some(p), 15000, false, false);
+        assert_eq!(without[0].0, Finding::CreateStepPassed);
     }
 }

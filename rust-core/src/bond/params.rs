@@ -168,7 +168,7 @@ crate::parameter_table!(PARAMETERS: BondParams {
     create_distance, "createDistanceBondnonlinear", PerTypePair, "m", NonNegative, ALWAYS;
     smooth_velocity, "dampingBondSmooth velocity", Fixed, "m/s", Positive, SMOOTH_DAMPING;
     smooth_angular_velocity, "dampingBondSmooth angular velocity", Fixed, "rad/s", Positive, SMOOTH_DAMPING;
-    compression_linear_below, "compressionLinearBelow", Fixed, "m", NonNegative, ALWAYS;
+    compression_linear_below, "compressionLinearBelowBondnonlinear", OptionalPerTypePair, "m", NonNegative, ALWAYS;
     create_step, "tsCreateBondnonlinear", Scalar, "step", Step, AT_STEP;
     stress_break, "stressBreak", Switch, "switch", Switch, ALWAYS;
     use_ratio, "ratioTensionCompressionBond", Switch, "switch", Switch, ALWAYS;

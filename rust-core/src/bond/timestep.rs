@@ -4,8 +4,10 @@
 
 use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
 use super::model::BondModel;
+use super::params::BondParams;
 use super::section::section;
 use crate::stability::{oscillator_limit, sphere_inertia};
+use crate::timestep_check::{Rattle, StepLimits};
 
 /// Compression the estimate assumes when the square root is not regularised
 /// (its stiffness is unbounded at zero compression), as a fraction of `rb`.
@@ -13,27 +15,57 @@ pub const REFERENCE_COMPRESSION: f64 = 1e-3;
 
 pub use crate::stability::RECOMMENDED_FRACTION;
 
+/// How far below the compression break threshold the recommended step keeps
+/// the noise floor of the square root's rattle
+/// ([`BondModel::compression_noise_floor`], `16 d_c`, which bounds the
+/// rattle of one bond between two spheres).
+///
+/// Derivation. A sphere rattling against its bonded neighbours is held by
+/// the sum of their axial stiffnesses: for mass-weighted displacements,
+/// `sum_b K_b (n_b . (x_i - x_j))^2 <= 2 sum_i x_i' (sum_(b at i) K_b n_b n_b') x_i`,
+/// so the packing's axial eigenvalue is at most `c` times the pair's, `c`
+/// the largest eigenvalue of `sum_(b at i) n_b n_b'` over the spheres (the
+/// bond fabric; at most the bond count, and a third of it where the bonds
+/// point in every direction: 2 for the simple-cubic packing's 6 bonds, 4
+/// for the 12 of the densest monodisperse packing). The local stiffness
+/// `k A / (2 sqrt d)` reaches the stability limit at `c^2 d_c` instead of
+/// `d_c`, so the floor of the packing is `c^2` times the pair's. The margin
+/// is that factor for `c = 4`: packings up to the densest monodisperse one
+/// keep their rattle below the threshold at the recommended step.
+pub const RATTLE_MARGIN: f64 = 16.0;
+
 impl BondModel {
     /// Critical step of this bond type between spheres of the given radii and
-    /// masses. Modes: axial (reduced mass), shear (reduced mass plus the
-    /// rotation each sphere takes about its own centre), twisting and bending
-    /// (reduced moment of inertia). The square-root branch is evaluated at
-    /// `compression_linear_below`, or at [`REFERENCE_COMPRESSION`]`* rb`
-    /// when that is off.
+    /// masses: the shortest of its modes' limits ([`BondModel::mode_limits`]).
+    /// It is the limit of one bond between two spheres; a sphere with several
+    /// bonds has a shorter one ([`BondModel::coordinated_timestep`]).
     pub fn critical_timestep(&self, radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> f64 {
+        let m = self.mode_limits(radius_i, radius_j, mass_i, mass_j);
+        m.axial.min(m.shear).min(m.twist).min(m.bend)
+    }
+
+    /// The step limit `2/omega` of each mode of one bond between two spheres
+    /// (infinite for a mode switched off). Modes: axial (reduced mass),
+    /// shear (reduced mass plus the rotation each sphere takes about its
+    /// own centre), twisting and bending (reduced moment of inertia), each
+    /// with the stiffest slope of its hysteresis loop. The square-root
+    /// branch is evaluated at `compression_linear_below`, or at
+    /// [`REFERENCE_COMPRESSION`]`* rb` when that is off.
+    pub fn mode_limits(&self, radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> ModeLimits {
         let p = &self.params;
         let f = self.features;
         let sec = section(p.lambda, radius_i, radius_j);
         let m_eff = mass_i * mass_j / (mass_i + mass_j);
         let (inertia_i, inertia_j) = (sphere_inertia(mass_i, radius_i), sphere_inertia(mass_j, radius_j));
         let i_eff = inertia_i * inertia_j / (inertia_i + inertia_j);
-        let mut dt = f64::INFINITY;
+        let mut limits = ModeLimits {
+            axial: f64::INFINITY,
+            shear: f64::INFINITY,
+            twist: f64::INFINITY,
+            bend: f64::INFINITY,
+        };
         if f & TENSION != 0 {
-            dt = dt.min(oscillator_limit(
-                m_eff,
-                self.normal.tension.max_slope() * sec.area,
-                0.0,
-            ));
+            limits.axial = oscillator_limit(m_eff, self.normal.tension.max_slope() * sec.area, 0.0);
         }
         if f & COMPRESSION != 0 {
             let d_ref = if p.compression_linear_below > 0.0 {
@@ -48,7 +80,7 @@ impl BondModel {
             } else {
                 0.5
             } / d_ref.sqrt();
-            dt = dt.min(oscillator_limit(
+            limits.axial = limits.axial.min(oscillator_limit(
                 m_eff,
                 self.normal.compression.max_slope() * slope * sec.area,
                 0.0,
@@ -57,31 +89,147 @@ impl BondModel {
         if f & SHEAR != 0 {
             let (ri, rj) = (radius_i, radius_j); // lever arms at r = R_i + R_j
             let mobility = 1.0 / mass_i + 1.0 / mass_j + ri * ri / inertia_i + rj * rj / inertia_j;
-            dt = dt.min(oscillator_limit(1.0 / mobility, p.k_ft * sec.area, 0.0));
+            limits.shear = oscillator_limit(1.0 / mobility, p.k_ft * sec.area, 0.0);
         }
         if f & TWIST != 0 {
-            dt = dt.min(oscillator_limit(
-                i_eff,
-                self.twist.hysteresis.max_slope() * sec.polar,
-                0.0,
-            ));
+            limits.twist = oscillator_limit(i_eff, self.twist.hysteresis.max_slope() * sec.polar, 0.0);
         }
         if f & BEND != 0 {
-            dt = dt.min(oscillator_limit(
-                i_eff,
-                self.bend.hysteresis.max_slope() * sec.inertia,
-                0.0,
-            ));
+            limits.bend = oscillator_limit(i_eff, self.bend.hysteresis.max_slope() * sec.inertia, 0.0);
         }
-        dt
+        limits
+    }
+
+    /// The step below which a packing whose spheres carry at most
+    /// `bonds_per_sphere` bonds of this type (between spheres of these radii
+    /// and masses) is stable.
+    ///
+    /// Derivation. In mass-weighted coordinates `x` (`x = M^(1/2) u`) the
+    /// stiffness of the packing is a sum over bonds of `P_b`, each acting on
+    /// the degrees of freedom of its two spheres only, and explicit
+    /// integration is stable while `dt < 2 / sqrt(lambda_max)` of the sum.
+    /// For each bond `x' P_b x <= lambda_b (|x_i|^2 + |x_j|^2)`, `lambda_b`
+    /// the largest eigenvalue of one bond between two spheres, so the sum is
+    /// at most `sum_i |x_i|^2 sum_(b at i) lambda_b <= z lambda_b |x|^2`
+    /// with `z` the most bonds on one sphere: the limit is
+    /// `2 / sqrt(z lambda_b)`. The modes of one bond act on separate degrees
+    /// of freedom (axial: translation along the axis; twisting: rotation
+    /// about it) except shear and bending, which share the rotations
+    /// across the axis, so `lambda_b <= max(w_axial^2, w_twist^2,
+    /// w_shear^2 + w_bend^2)`. The estimate is a bound: lattices measure
+    /// above it (the simple-cubic packing at 0.65-0.70 of the one-bond
+    /// critical step, docs/speed-accuracy.md), never below.
+    pub fn coordinated_timestep(
+        &self,
+        radius_i: f64,
+        radius_j: f64,
+        mass_i: f64,
+        mass_j: f64,
+        bonds_per_sphere: u32,
+    ) -> f64 {
+        self.mode_limits(radius_i, radius_j, mass_i, mass_j)
+            .coordinated(bonds_per_sphere)
+    }
+}
+
+/// The step limit `2/omega` of each mode of one bond between two spheres.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ModeLimits {
+    pub axial: f64,
+    pub shear: f64,
+    pub twist: f64,
+    pub bend: f64,
+}
+
+impl ModeLimits {
+    /// The limit of a sphere with `bonds_per_sphere` such bonds
+    /// ([`BondModel::coordinated_timestep`] has the derivation); one bond
+    /// between two free spheres for `bonds_per_sphere = 1`.
+    pub fn coordinated(&self, bonds_per_sphere: u32) -> f64 {
+        // omega^2 = 4 / limit^2, summed where modes share degrees of freedom
+        let w2 = |limit: f64| 4.0 / (limit * limit);
+        let lambda = w2(self.axial)
+            .max(w2(self.twist))
+            .max(w2(self.shear) + w2(self.bend));
+        2.0 / (f64::from(bonds_per_sphere.max(1)) * lambda).sqrt()
+    }
+
+    /// The most bonds on one sphere for which a packing is stable at `dt`
+    /// (0: not even one bond).
+    pub fn bonds_covered(&self, dt: f64) -> u32 {
+        let z = (self.coordinated(1) / dt).powi(2).floor();
+        if z.is_finite() {
+            z.clamp(0.0, f64::from(u32::MAX)) as u32
+        } else {
+            u32::MAX
+        }
     }
 }
 
 impl BondModel {
-    /// [`RECOMMENDED_FRACTION`] of [`BondModel::critical_timestep`]: the step
-    /// to use, and the one above which the engines warn.
+    /// The step to use, and the one above which the engines warn:
+    /// [`RECOMMENDED_FRACTION`] of [`BondModel::critical_timestep`], or
+    /// [`BondModel::rattle_timestep`] where that is shorter.
     pub fn recommended_timestep(&self, radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> f64 {
-        RECOMMENDED_FRACTION * self.critical_timestep(radius_i, radius_j, mass_i, mass_j)
+        let critical = self.critical_timestep(radius_i, radius_j, mass_i, mass_j);
+        (RECOMMENDED_FRACTION * critical).min(self.rattle_timestep(radius_i, radius_j, mass_i, mass_j))
+    }
+
+    /// The estimates the engines' time-step check reports for this bond
+    /// type between spheres of these radii and masses, at step `dt`.
+    pub fn step_limits(&self, radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64, dt: f64) -> StepLimits {
+        let modes = self.mode_limits(radius_i, radius_j, mass_i, mass_j);
+        let rattle_step = self.rattle_timestep(radius_i, radius_j, mass_i, mass_j);
+        let rattle = rattle_step.is_finite().then(|| Rattle {
+            threshold: self.compression_break_threshold(),
+            floor: self.compression_noise_floor(dt, radius_i, radius_j, mass_i, mass_j),
+            step: rattle_step,
+            max_sigma: self.params.max_sigma,
+            k_fn1: self.params.k_fn1,
+            rb: section(self.params.lambda, radius_i, radius_j).rb,
+        });
+        StepLimits {
+            critical: self.critical_timestep(radius_i, radius_j, mass_i, mass_j),
+            recommended: self.recommended_timestep(radius_i, radius_j, mass_i, mass_j),
+            modes: Some(modes),
+            rattle,
+        }
+    }
+
+    /// Compression at which the loading branch of the square root reaches
+    /// the break stress, `(max_sigma / k_fn1)^2`: where stress breakage in
+    /// compression starts. Infinite when bonds do not break in compression
+    /// (distance mode, `max_sigma` infinite, compression off or no
+    /// compression stiffness).
+    pub fn compression_break_threshold(&self) -> f64 {
+        let p = &self.params;
+        let breaks = BondParams::switch(p.stress_break)
+            && self.features & COMPRESSION != 0
+            && p.k_fn1 > 0.0
+            && p.max_sigma.is_finite();
+        if !breaks {
+            return f64::INFINITY;
+        }
+        let root = p.max_sigma / p.k_fn1;
+        root * root
+    }
+
+    /// The longest step at which the square root's rattle stays
+    /// [`RATTLE_MARGIN`] below [`BondModel::compression_break_threshold`]:
+    /// `compression_noise_floor(dt) = threshold / RATTLE_MARGIN`. Infinite
+    /// where there is no rattle (regularised law) or no breakage in
+    /// compression.
+    pub fn rattle_timestep(&self, radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> f64 {
+        let threshold = self.compression_break_threshold();
+        if !threshold.is_finite() || self.params.compression_linear_below > 0.0 {
+            return f64::INFINITY;
+        }
+        let sec = section(self.params.lambda, radius_i, radius_j);
+        let m_eff = mass_i * mass_j / (mass_i + mass_j);
+        let stiffness = self.normal.compression.max_slope() * sec.area;
+        // 16 (k A dt^2 / (8 m_eff))^2 = floor, solved for dt
+        let floor = threshold / RATTLE_MARGIN;
+        (8.0 * m_eff / stiffness * (floor / 16.0).sqrt()).sqrt()
     }
 
     /// Compression below which the plain square root (no

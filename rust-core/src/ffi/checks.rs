@@ -6,10 +6,10 @@
 use super::entry;
 use super::error::{Failure, Status};
 use super::guard::{reference, reference_mut, slice, time_step};
-use crate::bond::creation_check::{findings, message, Naming};
+use crate::bond::creation_check::{findings, message, parameter_name, Naming};
 use crate::bond::{BondModel, BondParams};
 use crate::contact::VoigtModel;
-use crate::timestep_check::{scan, TimestepLevel, TypeBodies};
+use crate::timestep_check::{scan, CitedNames, StepLimits, TimestepLevel, TypeBodies, UnitNames};
 use std::ffi::{c_char, CStr};
 
 /// Capacity of [`CheckReport::message`], terminating NUL included.
@@ -92,6 +92,33 @@ unsafe fn style_name(style: *const c_char) -> Result<String, Failure> {
     Ok(CStr::from_ptr(style).to_string_lossy().into_owned())
 }
 
+/// The names of the engine's `units` style (`units`: its name, e.g. "si").
+unsafe fn unit_names(units: *const c_char) -> Result<UnitNames, Failure> {
+    if units.is_null() {
+        return Err(Failure::new(Status::NullPointer, "argument `units` is null"));
+    }
+    Ok(UnitNames::of_style(&CStr::from_ptr(units).to_string_lossy()))
+}
+
+fn naming_of(naming: i32) -> Result<Naming, Failure> {
+    match naming {
+        0 => Ok(Naming::Lammps),
+        1 => Ok(Naming::Liggghts),
+        _ => Err(Failure::new(
+            Status::InvalidArgument,
+            format!("naming must be 0 (LAMMPS) or 1 (LIGGGHTS); got {naming}"),
+        )),
+    }
+}
+
+fn cited_names(naming: Naming) -> CitedNames {
+    CitedNames {
+        max_sigma: parameter_name("max_sigma", naming),
+        k_fn1: parameter_name("k_fn1", naming),
+        compression_linear_below: parameter_name("compression_linear_below", naming),
+    }
+}
+
 /// Body of both time-step checks.
 #[allow(clippy::too_many_arguments)]
 unsafe fn timestep_check<M>(
@@ -100,25 +127,28 @@ unsafe fn timestep_check<M>(
     ntypes: i32,
     bodies: *const TypeBodies,
     dt: f64,
+    names: CitedNames,
+    units: *const c_char,
     style: *const c_char,
     report: &mut CheckReport,
-    critical: fn(&M, f64, f64, f64, f64) -> f64,
+    limits: fn(&M, f64, f64, f64, f64, f64) -> StepLimits,
 ) -> Result<(), Failure> {
     report.clear();
     let dt = time_step(dt, "dt")?;
     let style = style_name(style)?;
+    let units = unit_names(units)?;
     let (n, table, bodies) = tables(ntypes, models, bodies)?;
     let verdict = scan(
         n,
         bodies,
         |a, b| table[a * (n + 1) + b],
-        |m: &&M, ri, rj, mi, mj| critical(m, ri, rj, mi, mj),
+        |m: &&M, ri, rj, mi, mj| limits(m, ri, rj, mi, mj, dt),
         dt,
     )
     .map_err(|(a, b, c)| {
         Failure::new(
             Status::InvalidArgument,
-            format!("atom types {a} and {b}: radii and masses outside the range the estimate can evaluate (it gives {c})"),
+            format!("atom types {a} and {b}: the critical time step cannot be estimated (it gives {c}): a stiffness or damping parameter of this type pair, or the spheres' radii and masses, lies outside the range the estimate can evaluate"),
         )
     })?;
     if let Some(v) = verdict {
@@ -126,7 +156,7 @@ unsafe fn timestep_check<M>(
         report.type_b = v.type_b as i32;
         report.critical = v.critical;
         report.recommended = v.recommended;
-        report.write(v.level as i32, &v.message(&style, what, bodies));
+        report.write(v.level as i32, &v.message(&style, what, bodies, &names, &units));
         debug_assert_eq!(report.level != 0, v.level != TimestepLevel::Safe);
     }
     Ok(())
@@ -136,13 +166,15 @@ unsafe fn timestep_check<M>(
 /// present: `models[a * (ntypes + 1) + b]` the bond model of types `a`, `b`
 /// (null: none), `bodies[t]` the smallest and largest radius and the
 /// lightest mass of type `t` over all ranks (index 0 unused; a type without
-/// atoms has infinite `radius_min`). `style` names the deck command in the
-/// message. The pair with the shortest critical step limits; `out` says how
-/// `dt` compares with it and holds the warning to print.
+/// atoms has infinite `radius_min`). `naming`: 0 LAMMPS keywords, 1
+/// LIGGGHTS names in the message; `units`: the engine's `units` style (the
+/// names of units in the message); `style` names the deck command. The pair
+/// with the shortest recommended step limits; `out` says how `dt` compares
+/// with it and holds the warning to print.
 ///
 /// # Safety
-/// Pointers must be null or valid for the sizes above; `style` a NUL
-/// terminated string.
+/// Pointers must be null or valid for the sizes above; `units` and `style`
+/// NUL terminated strings.
 #[entry(out: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_timestep_check(
@@ -150,22 +182,28 @@ pub unsafe extern "C" fn granbond_bond_timestep_check(
     ntypes: i32,
     bodies: *const TypeBodies,
     dt: f64,
+    naming: i32,
+    units: *const c_char,
     style: *const c_char,
     out: *mut CheckReport,
 ) -> Status {
+    let names = cited_names(naming_of(naming)?);
     timestep_check(
         "bond",
         models,
         ntypes,
         bodies,
         dt,
+        names,
+        units,
         style,
         out,
-        BondModel::critical_timestep,
+        BondModel::step_limits,
     )
 }
 
-/// `granbond_bond_timestep_check` for the Voigt contact.
+/// `granbond_bond_timestep_check` for the Voigt contact (no parameter is
+/// cited, so no naming).
 ///
 /// # Safety
 /// As `granbond_bond_timestep_check`.
@@ -176,6 +214,7 @@ pub unsafe extern "C" fn granbond_voigt_timestep_check(
     ntypes: i32,
     bodies: *const TypeBodies,
     dt: f64,
+    units: *const c_char,
     style: *const c_char,
     out: *mut CheckReport,
 ) -> Status {
@@ -185,9 +224,11 @@ pub unsafe extern "C" fn granbond_voigt_timestep_check(
         ntypes,
         bodies,
         dt,
+        cited_names(Naming::Lammps),
+        units,
         style,
         out,
-        VoigtModel::critical_timestep,
+        |m: &VoigtModel, ri, rj, mi, mj, _dt| StepLimits::plain(m.critical_timestep(ri, rj, mi, mj)),
     )
 }
 
@@ -195,10 +236,13 @@ pub unsafe extern "C" fn granbond_voigt_timestep_check(
 /// `granbond_bond_timestep_check`) against each other and the spheres
 /// present: a creation distance beyond the break distance, a creation
 /// distance below contact, a creation step that has passed (`first_step`:
-/// the step the model's first run started from). `wall` non-zero: wall bonds
-/// (the sphere's radius alone is the contact distance; the wall's type needs
-/// no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the message.
-/// `out->level` is the number of findings.
+/// the step the model's first run started from, while no bond exists:
+/// `bonds_exist` non-zero when intact bonds of these models exist over all
+/// ranks, as in a run continued from a restart file). `wall` non-zero: wall
+/// bonds (the sphere's radius alone is the contact distance; the wall's type
+/// needs no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the
+/// message; `units`: the engine's `units` style. `out->level` is the number
+/// of findings.
 ///
 /// # Safety
 /// As `granbond_bond_timestep_check`.
@@ -209,32 +253,33 @@ pub unsafe extern "C" fn granbond_bond_creation_check(
     ntypes: i32,
     bodies: *const TypeBodies,
     first_step: i64,
+    bonds_exist: i32,
     wall: i32,
     naming: i32,
+    units: *const c_char,
     style: *const c_char,
     out: *mut CheckReport,
 ) -> Status {
     out.clear();
-    let naming = match naming {
-        0 => Naming::Lammps,
-        1 => Naming::Liggghts,
-        _ => {
-            return Err(Failure::new(
-                Status::InvalidArgument,
-                format!("naming must be 0 (LAMMPS) or 1 (LIGGGHTS); got {naming}"),
-            ))
-        }
-    };
+    let naming = naming_of(naming)?;
     let style = style_name(style)?;
+    let units = unit_names(units)?;
     let (n, models, bodies) = tables(ntypes, models, bodies)?;
     let table: Vec<Option<BondParams>> = models.iter().map(|m| m.map(|m| m.params)).collect();
     let wall = wall != 0;
-    let found = findings(n, bodies, |a, b| table[a * (n + 1) + b], first_step, wall);
+    let found = findings(
+        n,
+        bodies,
+        |a, b| table[a * (n + 1) + b],
+        first_step,
+        bonds_exist != 0,
+        wall,
+    );
     let text: Vec<String> = found
         .iter()
         .map(|&(f, a, b)| {
             let p = table[a * (n + 1) + b].expect("a finding has a model");
-            message(f, a, b, &p, bodies, first_step, wall, naming, &style)
+            message(f, a, b, &p, bodies, first_step, wall, naming, &units, &style)
         })
         .collect();
     out.write(found.len() as i32, &text.join("\n"));

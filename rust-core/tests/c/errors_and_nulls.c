@@ -239,20 +239,20 @@ static GbStatus null_bond_recommended_timestep(struct world *c, int k)
 
 static GbStatus null_bond_timestep_check(struct world *c, int k)
 {
-    return granbond_bond_timestep_check(ARG(k, 0, c->bond_table), 1, ARG(k, 1, c->bodies), 1.0e-6, ARG(k, 2, "s"),
-                                        ARG(k, 3, &c->report));
+    return granbond_bond_timestep_check(ARG(k, 0, c->bond_table), 1, ARG(k, 1, c->bodies), 1.0e-6, 0,
+                                        ARG(k, 2, "si"), ARG(k, 3, "s"), ARG(k, 4, &c->report));
 }
 
 static GbStatus null_voigt_timestep_check(struct world *c, int k)
 {
     return granbond_voigt_timestep_check(ARG(k, 0, c->voigt_table), 1, ARG(k, 1, c->bodies), 1.0e-6,
-                                         ARG(k, 2, "v"), ARG(k, 3, &c->report));
+                                         ARG(k, 2, "si"), ARG(k, 3, "v"), ARG(k, 4, &c->report));
 }
 
 static GbStatus null_bond_creation_check(struct world *c, int k)
 {
-    return granbond_bond_creation_check(ARG(k, 0, c->bond_table), 1, ARG(k, 1, c->bodies), 0, 0, 0, ARG(k, 2, "c"),
-                                        ARG(k, 3, &c->report));
+    return granbond_bond_creation_check(ARG(k, 0, c->bond_table), 1, ARG(k, 1, c->bodies), 0, 0, 0, 0,
+                                        ARG(k, 2, "si"), ARG(k, 3, "c"), ARG(k, 4, &c->report));
 }
 
 static GbStatus null_voigt_params_default(struct world *c, int k)
@@ -419,9 +419,9 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_bond_contact_distance_factor", null_bond_contact_distance_factor, {"model", "out"}},
     {"granbond_bond_critical_timestep", null_bond_critical_timestep, {"model", "out"}},
     {"granbond_bond_recommended_timestep", null_bond_recommended_timestep, {"model", "out"}},
-    {"granbond_bond_timestep_check", null_bond_timestep_check, {"models", "bodies", "style", "out"}},
-    {"granbond_voigt_timestep_check", null_voigt_timestep_check, {"models", "bodies", "style", "out"}},
-    {"granbond_bond_creation_check", null_bond_creation_check, {"models", "bodies", "style", "out"}},
+    {"granbond_bond_timestep_check", null_bond_timestep_check, {"models", "bodies", "units", "style", "out"}},
+    {"granbond_voigt_timestep_check", null_voigt_timestep_check, {"models", "bodies", "units", "style", "out"}},
+    {"granbond_bond_creation_check", null_bond_creation_check, {"models", "bodies", "units", "style", "out"}},
     {"granbond_voigt_params_default", null_voigt_params_default, {"params"}},
     {"granbond_voigt_model_new", null_voigt_model_new, {"params", "model"}},
     {"granbond_voigt_parameter_name", null_voigt_parameter_name, {"keyword", "liggghts_name"}},

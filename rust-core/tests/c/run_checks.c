@@ -40,33 +40,33 @@ int test_run_checks(void)
     voigts[1 * 3 + 1] = voigt;
 
     EXPECT_OK(granbond_bond_critical_timestep(bond, 1e-3, 1e-3, mass, mass, &critical), "granbond_bond_critical_timestep");
-    EXPECT_OK(granbond_bond_timestep_check(bonds, 2, bodies, 1.01 * critical, "s", &report), "granbond_bond_timestep_check");
+    EXPECT_OK(granbond_bond_timestep_check(bonds, 2, bodies, 1.01 * critical, 0, "si", "s", &report), "granbond_bond_timestep_check");
     CHECK(report.level == 2 && report.type_a == 1 && report.type_b == 1 && report.critical == critical,
           say("above the critical step: level 2 on types 1 1 (got %d on %d %d)", report.level, report.type_a, report.type_b));
     CHECK(strstr(report.message, "s: time step") == report.message && strstr(report.message, "EXCEEDS"),
           say("the warning names the style and says EXCEEDS: %s", report.message));
-    EXPECT_OK(granbond_bond_timestep_check(bonds, 2, bodies, 0.5 * critical, "s", &report), "granbond_bond_timestep_check");
+    EXPECT_OK(granbond_bond_timestep_check(bonds, 2, bodies, 0.5 * critical, 0, "si", "s", &report), "granbond_bond_timestep_check");
     CHECK(report.level == 1, "between the recommended and the critical step: level 1");
-    EXPECT_OK(granbond_bond_timestep_check(bonds, 2, bodies, 0.1 * critical, "s", &report), "granbond_bond_timestep_check");
+    EXPECT_OK(granbond_bond_timestep_check(bonds, 2, bodies, 0.1 * critical, 0, "si", "s", &report), "granbond_bond_timestep_check");
     CHECK(report.level == 0 && report.message[0] == 0, "a safe step: level 0, no message");
-    EXPECT(granbond_bond_timestep_check(bonds, 2, bodies, NAN, "s", &report), GB_STATUS_INVALID_ARGUMENT,
+    EXPECT(granbond_bond_timestep_check(bonds, 2, bodies, NAN, 0, "si", "s", &report), GB_STATUS_INVALID_ARGUMENT,
            "granbond_bond_timestep_check, dt = NaN");
-    EXPECT(granbond_bond_timestep_check(bonds, -1, bodies, 1e-6, "s", &report), GB_STATUS_INVALID_ARGUMENT,
+    EXPECT(granbond_bond_timestep_check(bonds, -1, bodies, 1e-6, 0, "si", "s", &report), GB_STATUS_INVALID_ARGUMENT,
            "granbond_bond_timestep_check, ntypes = -1");
     EXPECT_MESSAGE("ntypes");
 
     EXPECT_OK(granbond_voigt_critical_timestep(voigt, 1e-3, 1e-3, mass, mass, &critical),
               "granbond_voigt_critical_timestep");
-    EXPECT_OK(granbond_voigt_timestep_check(voigts, 2, bodies, 2.0 * critical, "v", &report),
+    EXPECT_OK(granbond_voigt_timestep_check(voigts, 2, bodies, 2.0 * critical, "si", "v", &report),
               "granbond_voigt_timestep_check");
     CHECK(report.level == 2 && strstr(report.message, "stiffest contact"), say("voigt: %s", report.message));
 
-    EXPECT_OK(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 1, "c", &report), "granbond_bond_creation_check");
+    EXPECT_OK(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 0, 1, "si", "c", &report), "granbond_bond_creation_check");
     CHECK(report.level == 1 && strstr(report.message, "createDistanceBondnonlinear 2.2e-3 m > maxDistanceBondnonlinear"),
           say("createDistance > maxDistance found, LIGGGHTS names: %s", report.message));
-    EXPECT_OK(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 0, "c", &report), "granbond_bond_creation_check");
+    EXPECT_OK(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 0, 0, "si", "c", &report), "granbond_bond_creation_check");
     CHECK(strstr(report.message, "create_distance 2.2e-3 m > max_distance"), say("LAMMPS names: %s", report.message));
-    EXPECT(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 2, "c", &report), GB_STATUS_INVALID_ARGUMENT,
+    EXPECT(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 0, 2, "si", "c", &report), GB_STATUS_INVALID_ARGUMENT,
            "granbond_bond_creation_check, naming = 2");
 
     granbond_bond_model_free(bond);

@@ -1626,6 +1626,7 @@ impl<'t> Session<'t> {
                         1,
                         types.as_ptr(),
                         dt,
+                        c"si".as_ptr(),
                         style.as_ptr(),
                         report.ptr(how),
                     );
@@ -1639,6 +1640,8 @@ impl<'t> Session<'t> {
                             1,
                             types.as_ptr(),
                             dt,
+                            0,
+                            c"si".as_ptr(),
                             style.as_ptr(),
                             report.ptr(how),
                         );
@@ -1651,6 +1654,8 @@ impl<'t> Session<'t> {
                             0,
                             0,
                             0,
+                            0,
+                            c"si".as_ptr(),
                             style.as_ptr(),
                             report.ptr(how),
                         );
