@@ -282,6 +282,8 @@ BAD = [
     ("damping ratio >= 1 (core)", f"{VOIGT} bond/nonlinear {BOND} eta_fn 1.0 {BREAK['distance']}", "eta_fn"),
     ("ku < k (core)", f"{VOIGT} bond/nonlinear {BOND} ku_fn2 5e8 {BREAK['distance']}", "ku_fn2"),
     ("lambda 0 (core)", f"{VOIGT} bond/nonlinear {BOND} lambda 0 {BREAK['distance']}", "lambda"),
+    ("lambda 1e300: no time-step estimate (core)", f"{VOIGT} bond/nonlinear {BOND} lambda 1e300 {BREAK['distance']}",
+     "a stiffness or damping parameter of this type pair"),
     ("switch not yes/no", f"{VOIGT} bond/nonlinear {BOND} history_reset maybe {BREAK['distance']}",
      "history_reset"),
     ("unknown break mode", f"{VOIGT} bond/nonlinear {BOND} break strain 1", "strain"),
