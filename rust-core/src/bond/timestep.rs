@@ -7,7 +7,6 @@ use super::model::BondModel;
 use super::params::BondParams;
 use super::section::section;
 use crate::stability::{oscillator_limit, sphere_inertia};
-use crate::timestep_check::{Rattle, StepLimits};
 
 /// Compression the estimate assumes when the square root is not regularised
 /// (its stiffness is unbounded at zero compression), as a fraction of `rb`.
@@ -173,27 +172,6 @@ impl BondModel {
     pub fn recommended_timestep(&self, radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> f64 {
         let critical = self.critical_timestep(radius_i, radius_j, mass_i, mass_j);
         (RECOMMENDED_FRACTION * critical).min(self.rattle_timestep(radius_i, radius_j, mass_i, mass_j))
-    }
-
-    /// The estimates the engines' time-step check reports for this bond
-    /// type between spheres of these radii and masses, at step `dt`.
-    pub fn step_limits(&self, radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64, dt: f64) -> StepLimits {
-        let modes = self.mode_limits(radius_i, radius_j, mass_i, mass_j);
-        let rattle_step = self.rattle_timestep(radius_i, radius_j, mass_i, mass_j);
-        let rattle = rattle_step.is_finite().then(|| Rattle {
-            threshold: self.compression_break_threshold(),
-            floor: self.compression_noise_floor(dt, radius_i, radius_j, mass_i, mass_j),
-            step: rattle_step,
-            max_sigma: self.params.max_sigma,
-            k_fn1: self.params.k_fn1,
-            rb: section(self.params.lambda, radius_i, radius_j).rb,
-        });
-        StepLimits {
-            critical: self.critical_timestep(radius_i, radius_j, mass_i, mass_j),
-            recommended: self.recommended_timestep(radius_i, radius_j, mass_i, mass_j),
-            modes: Some(modes),
-            rattle,
-        }
     }
 
     /// Compression at which the loading branch of the square root reaches

@@ -7,9 +7,10 @@ use super::entry;
 use super::error::{Failure, Status};
 use super::guard::{reference, reference_mut, slice, time_step};
 use crate::bond::creation_check::{findings, message, parameter_name, Naming};
+use crate::bond::section::section;
 use crate::bond::{BondModel, BondParams};
 use crate::contact::VoigtModel;
-use crate::timestep_check::{scan, CitedNames, StepLimits, TimestepLevel, TypeBodies, UnitNames};
+use crate::timestep_check::{scan, CitedNames, Rattle, StepLimits, TimestepLevel, TypeBodies, UnitNames};
 use std::ffi::{c_char, CStr};
 
 /// Capacity of [`CheckReport::message`], terminating NUL included.
@@ -119,6 +120,33 @@ fn cited_names(naming: Naming) -> CitedNames {
     }
 }
 
+/// The estimates the bond time-step check reports for a bond type between
+/// spheres of these radii and masses, at step `dt`.
+fn bond_step_limits(
+    model: &BondModel,
+    radius_i: f64,
+    radius_j: f64,
+    mass_i: f64,
+    mass_j: f64,
+    dt: f64,
+) -> StepLimits {
+    let rattle_step = model.rattle_timestep(radius_i, radius_j, mass_i, mass_j);
+    let rattle = rattle_step.is_finite().then(|| Rattle {
+        threshold: model.compression_break_threshold(),
+        floor: model.compression_noise_floor(dt, radius_i, radius_j, mass_i, mass_j),
+        step: rattle_step,
+        max_sigma: model.params.max_sigma,
+        k_fn1: model.params.k_fn1,
+        rb: section(model.params.lambda, radius_i, radius_j).rb,
+    });
+    StepLimits {
+        critical: model.critical_timestep(radius_i, radius_j, mass_i, mass_j),
+        recommended: model.recommended_timestep(radius_i, radius_j, mass_i, mass_j),
+        modes: Some(model.mode_limits(radius_i, radius_j, mass_i, mass_j)),
+        rattle,
+    }
+}
+
 /// Body of both time-step checks.
 #[allow(clippy::too_many_arguments)]
 unsafe fn timestep_check<M>(
@@ -198,7 +226,7 @@ pub unsafe extern "C" fn granbond_bond_timestep_check(
         units,
         style,
         out,
-        BondModel::step_limits,
+        bond_step_limits,
     )
 }
 
