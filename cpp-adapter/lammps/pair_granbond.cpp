@@ -36,6 +36,7 @@
 #endif
 
 #include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -69,7 +70,7 @@ std::string knownBondKeywords()
     GbParameterInfo info;
     for (size_t id = 0; id < n; id++)
         if (granbond_bond_parameter_info(id, &info) == GB_STATUS_OK) s += std::string(" ") + info.keyword;
-    return s + " smooth_damping";
+    return s + " smooth_damping contact_under_bond";
 }
 
 void copy3(double *to, const double *from)
@@ -79,30 +80,22 @@ void copy3(double *to, const double *from)
     to[2] = from[2];
 }
 
-// The loads an intact bond applied in a force pass, kept in its history for
-// the setup pass of the next run (PairGranbond::kLoadSlots).
-void storeLoads(double *slots, const GbBondOutput &out)
-{
-    copy3(slots, out.force_i);
-    copy3(slots + 3, out.torque_i);
-    copy3(slots + 6, out.torque_j);
-}
 
 }
 
 PairGranbond::PairGranbond(LAMMPS *lmp) :
     Pair(lmp),
-    contactLen_(granbond_state_len(GB_STATE_KIND_CONTACT)),
-    bondLen_(granbond_state_len(GB_STATE_KIND_BOND)),
+    checkIndex_(std::getenv("GRANBOND_CHECK_INDEX") != nullptr),
     sizeHistory_(0),
     anyBond_(false),
     fixHistory_(nullptr),
     atoms_(nullptr),
-    lastBatch_(0),
     checkedNatoms_(-1),
     firstStep_(-1),
     created_(0),
     broken_(0),
+    brokenBy_{0, 0, 0, 0},
+    vanished_(0),
     lossCheck_(false)
 {
     single_enable = 0;
@@ -112,9 +105,11 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     // history is kept beyond contact (bonds) and transferred by us
     beyond_contact = 1;
     nondefault_history_transfer = 1;
-    // `compute ID all pair granbond`: bonds created and broken since the
-    // first run (summed over ranks by the compute)
-    nextra = 2;
+    // `compute ID all pair granbond` (summed over ranks by the compute):
+    // bonds created and broken since the first run, intact after the latest
+    // pass, broken by mode (distance, tension, compression, shear), and
+    // vanished without breaking (docs/reference/pair_granbond.md)
+    nextra = 8;
     pvector = new double[nextra]();
 
     const GbLayout expected = granbond_header_layout();
@@ -122,6 +117,7 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
         error->all(FLERR, std::string("pair granbond: the adapter was built against another granbond.h "
                                       "than the core it links: ") +
                               granbond_last_error_message());
+    granbond_record_layout(1, &layout_);
 
     // one history fix per LAMMPS instance: a second granbond (pair_style
     // hybrid granbond granbond) would take over the first one's
@@ -154,7 +150,7 @@ size_t PairGranbond::at(int i, int j) const
 
 void PairGranbond::freeModels()
 {
-    bondBatches_.clear();   // keyed by model
+    index_.clear();   // keyed by model
     for (GbVoigtModel *m : voigt_) granbond_voigt_model_free(m);
     for (GbBondModel *m : bond_) granbond_bond_model_free(m);
     std::fill(voigt_.begin(), voigt_.end(), nullptr);
@@ -174,6 +170,8 @@ void PairGranbond::allocate()
     voigt_.assign(m, nullptr);
     bond_.assign(m, nullptr);
     createsNow_.assign(m, 0);
+    index_.assign(m, BondIndex());
+    formed_.assign(m, 0);
 }
 
 void PairGranbond::settings(int narg, char **arg)
@@ -244,11 +242,15 @@ void setBond(Args &a, GbBondParams &p, const char *keyword, double value)
         a.fail(std::string("bond/nonlinear: ") + granbond_last_error_message());
 }
 
-void parseBond(Args &a, GbBondParams &p)
+void parseBond(Args &a, GbBondParams &p, int32_t &contactUnderBond)
 {
     while (!a.done()) {
         std::string kw = a.word("bond/nonlinear keyword");
         const std::string what = "bond/nonlinear " + kw;
+        if (kw == "contact_under_bond") {
+            contactUnderBond = a.onOff(what);
+            continue;
+        }
         if (kw == "break") {
             const std::string mode = a.word("break mode (distance|stress)");
             if (mode == "distance") {
@@ -321,7 +323,7 @@ void PairGranbond::coeff(int narg, char **arg)
             tp.voigt.no_attraction = a.onOff("noattraction");
         } else if (kw == "bond/nonlinear") {
             tp.hasBond = 1;
-            parseBond(a, tp.bond);
+            parseBond(a, tp.bond, tp.contactUnderBond);
         } else {
             a.fail("unknown keyword '" + kw + "' (expected rolling, noattraction or bond/nonlinear)");
         }
@@ -372,18 +374,16 @@ void PairGranbond::init_style()
         for (int j = i; j <= n; j++)
             if (setflag[i][j] && pairs_[at(i, j)].hasBond) anyBond_ = true;
 
-    // history: the Voigt contact state, then (if any type pair bonds) the
-    // bond state, with the core's sign-flip flags, and the loads the bond
-    // applied in the latest force pass (kLoadSlots, see transfer_history)
-    const int coreSlots = static_cast<int>(contactLen_ + (anyBond_ ? bondLen_ : 0));
-    const int size = coreSlots + (anyBond_ ? kLoadSlots : 0);
+    // history: the core's pair record (contact, bond, the bond's loads) if
+    // any type pair bonds, else the contact's state alone, with the core's
+    // swap rule of each slot (transfer_history)
+    const GbStateKind kind = anyBond_ ? GB_STATE_KIND_PAIR_RECORD : GB_STATE_KIND_CONTACT;
+    const int size = static_cast<int>(granbond_state_len(kind));
     transferSign_.assign(size, 1.0);
-    for (int k = 0; k < coreSlots; k++) {
-        const bool contact = k < static_cast<int>(contactLen_);
+    for (int k = 0; k < size; k++) {
         int32_t flips = 0;
         const char *name = nullptr;
-        if (granbond_state_slot(contact ? GB_STATE_KIND_CONTACT : GB_STATE_KIND_BOND,
-                                contact ? k : k - contactLen_, &name, &flips) != GB_STATUS_OK)
+        if (granbond_state_slot(kind, k, &name, &flips) != GB_STATUS_OK)
             error->all(FLERR, std::string("pair granbond: ") + granbond_last_error_message());
         transferSign_[k] = flips ? -1.0 : 1.0;
     }
@@ -414,6 +414,8 @@ void PairGranbond::init_style()
     // per-type radii (for the cutoffs) and masses, all ranks
     bodies_ = gatherTypeBodies(n, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
     if (firstStep_ < 0) firstStep_ = update->ntimestep;
+    if (checkIndex_ && anyBond_ && comm->me == 0)
+        utils::logmesg(lmp, "pair granbond: checking the index of bonds after every pass (GRANBOND_CHECK_INDEX)\n");
     if (anyBond_) checkRenumbering();
     runChecks(bodies_, true);
 }
@@ -498,18 +500,7 @@ void PairGranbond::transfer_history(double *source, double *target, int, int)
 void PairGranbond::transfer_history(double *source, double *target)
 #endif
 {
-    const int coreSlots = anyBond_ ? sizeHistory_ - kLoadSlots : sizeHistory_;
-    for (int k = 0; k < coreSlots; k++) target[k] = transferSign_[k] * source[k];
-    if (!anyBond_) return;
-    // the bond's last loads seen from the other atom: the force on it is
-    // minus the force on this one, and the two torques change places
-    const double *from = source + coreSlots;
-    double *to = target + coreSlots;
-    for (int c = 0; c < 3; c++) {
-        to[c] = -from[c];
-        to[3 + c] = from[6 + c];
-        to[6 + c] = from[3 + c];
-    }
+    for (int k = 0; k < sizeHistory_; k++) target[k] = transferSign_[k] * source[k];
 }
 
 // ------------------------------------------------------------ compute
@@ -558,25 +549,59 @@ inline void PairGranbond::apply(double *f, double *torque, int i, int j, const d
     if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fi[0], fi[1], fi[2], del[0], del[1], del[2]);
 }
 
+// One voigt step of a touching pair from what the loop has: the separation
+// and the radii (the core builds the frame: normal, overlap, levers, R*),
+// the velocities and spins where LAMMPS keeps them. The core reads what was
+// just written one double at a time, so no load waits for stores in flight,
+// and nothing is copied; it still checks the result (non-finite force or
+// torque).
+inline void PairGranbond::voigtStep(size_t tp, int i, int j, const double *del, double rsq, double *state,
+                                    GbContactOutput &cout)
+{
+    const double *v0 = atom->v[0], *w0 = atom->omega[0];
+    const size_t I = 3 * static_cast<size_t>(i), J = 3 * static_cast<size_t>(j);
+    if (granbond_voigt_compute_separation_unchecked(voigt_[tp], del, rsq, atom->radius[i], atom->radius[j], v0 + I,
+                                                    v0 + J, w0 + I, w0 + J, update->dt, state,
+                                                    &cout) != GB_STATUS_OK)
+        failPair(i, j, "granbond_voigt_compute_separation_unchecked");
+}
+
+// The setup pass: the loads of the stored state, not advanced, in the frame
+// voigtStep steps in.
+void PairGranbond::voigtEvaluate(size_t tp, int i, int j, const double *del, double rsq, const double *state,
+                                 GbContactOutput &cout)
+{
+    const double *v0 = atom->v[0], *w0 = atom->omega[0];
+    const size_t I = 3 * static_cast<size_t>(i), J = 3 * static_cast<size_t>(j);
+    GbContactFrame frame;
+    if (granbond_contact_frame_separation(del, rsq, atom->radius[i], atom->radius[j], v0 + I, v0 + J, w0 + I,
+                                          w0 + J, &frame) != GB_STATUS_OK)
+        failPair(i, j, "granbond_contact_frame_separation");
+    if (granbond_voigt_evaluate_frame(voigt_[tp], &frame, state, &cout) != GB_STATUS_OK)
+        failPair(i, j, "granbond_voigt_evaluate_frame");
+}
+
+void PairGranbond::pairKinematics(int i, int j, GbPairKinematics &k) const
+{
+    copy3(k.x_i, atom->x[i]);
+    copy3(k.x_j, atom->x[j]);
+    copy3(k.v_i, atom->v[i]);
+    copy3(k.v_j, atom->v[j]);
+    copy3(k.w_i, atom->omega[i]);
+    copy3(k.w_j, atom->omega[j]);
+    k.radius_i = atom->radius[i];
+    k.radius_j = atom->radius[j];
+}
+
 void PairGranbond::compute(int eflag, int vflag)
 {
     ev_init(eflag, vflag);
 
-    double **x = atom->x;
-    double **v = atom->v;
-    double **omega = atom->omega;
     const double *radius = atom->radius;
     const int *type = atom->type;
     const int nlocal = atom->nlocal;
-    const int newton_pair = force->newton_pair;
     const int ntypes1 = atom->ntypes + 1;
-    // per-atom arrays as blocks of 3 doubles per atom (see apply)
-    double *const f0 = atom->nmax > 0 ? atom->f[0] : nullptr;
-    double *const t0 = atom->nmax > 0 ? atom->torque[0] : nullptr;
     const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
-    const double *const v0 = atom->nmax > 0 ? atom->v[0] : nullptr;
-    const double *const w0 = atom->nmax > 0 ? atom->omega[0] : nullptr;
-    auto row = [](const double *block, int atom) { return block + 3 * static_cast<size_t>(atom); };
 
     if (atom->natoms != checkedNatoms_) {
         runChecks(gatherTypeBodies(atom->ntypes, nlocal, type, radius, atom->rmass, world), false);
@@ -588,15 +613,33 @@ void PairGranbond::compute(int eflag, int vflag)
                                                  neighbor->cutneighmax, neighbor->skin);
         if (!thin.empty()) error->all(FLERR, thin);
     }
-    if (anyBond_ && (update->setupflag || neighbor->ago == 0))
+    // the index of bonds is built from the records whenever the lists are
+    // (the records move with them), after the records of atoms no pass
+    // has seen are forgotten
+    if (anyBond_ && (update->setupflag || neighbor->ago == 0)) {
         forgetRecordsOfNewborn(*atoms_, nlocal, atom->nghost, atom->tag, list->inum, list->ilist, list->numneigh,
                                list->firstneigh, fixHistory_->firstflag, fixHistory_->firstvalue, sizeHistory_);
+        indexBonds();
+    }
 
     // setup (run/minimize start) evaluates forces without advancing history
     const bool advance = !update->setupflag;
-    const double dt = update->dt;
     const int64_t step = update->ntimestep;
+    for (size_t tp = 0; tp < bond_.size(); tp++)
+        createsNow_[tp] = advance && bond_[tp] && granbond_bond_creates_at(bond_[tp], step);
 
+    // the bonds, swept; those that broke go back to the contact loop
+    GbSweepTally tally = {};
+    for (BondIndex &b : index_)
+        if (b.size()) {
+            sweep(b, 0, advance, tally);
+            for (size_t k = 0; k < b.size(); k++)
+                if (b.out[k].status != GB_BOND_STATUS_INTACT) *b.flags[k] = 1;
+            b.keepIntact();
+        }
+    for (size_t tp = 0; tp < index_.size(); tp++) formed_[tp] = index_[tp].size();
+
+    // the contacts, and the bonds that form
     const int inum = list->inum;
     const int *ilist = list->ilist;
     const int *numneigh = list->numneigh;
@@ -604,164 +647,7 @@ void PairGranbond::compute(int eflag, int vflag)
     int **firsttouch = fixHistory_->firstflag;
     double **firsthistory = fixHistory_->firstvalue;
     const int size = sizeHistory_;
-
-    // per type pair: whether its bonds may form in this pass (the core
-    // says, once per pass); where not, an unbonded pair is a plain contact
-    for (size_t tp = 0; tp < bond_.size(); tp++)
-        createsNow_[tp] = advance && bond_[tp] && granbond_bond_creates_at(bond_[tp], step);
-
-    double scratch[GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN + kLoadSlots];
-    GbPairKinematics k;
-
-    // One voigt step of a touching pair from what the loop has: the
-    // separation and the radii (the core builds the frame: normal, overlap,
-    // levers, R*), the velocities and spins where LAMMPS keeps them. The
-    // core reads what was just written one double at a time, so no load
-    // waits for stores in flight, and nothing is copied; it still checks
-    // the result (non-finite force or torque).
-    auto voigtStep = [&](size_t tp, int i, int j, const double *del, double rsq, double *state,
-                         GbContactOutput &cout) {
-        if (granbond_voigt_compute_separation_unchecked(voigt_[tp], del, rsq, radius[i], radius[j], row(v0, i),
-                                                        row(v0, j), row(w0, i), row(w0, j), dt, state,
-                                                        &cout) != GB_STATUS_OK)
-            failPair(i, j, "granbond_voigt_compute_separation_unchecked");
-    };
-
-    // The setup pass: the loads of the stored state, not advanced, in the
-    // frame voigtStep steps in.
-    auto voigtEvaluate = [&](size_t tp, int i, int j, const double *del, double rsq, const double *state,
-                             GbContactOutput &cout) {
-        GbContactFrame frame;
-        if (granbond_contact_frame_separation(del, rsq, radius[i], radius[j], row(v0, i), row(v0, j), row(w0, i),
-                                              row(w0, j), &frame) != GB_STATUS_OK)
-            failPair(i, j, "granbond_contact_frame_separation");
-        if (granbond_voigt_evaluate_frame(voigt_[tp], &frame, state, &cout) != GB_STATUS_OK)
-            failPair(i, j, "granbond_voigt_evaluate_frame");
-    };
-
-    // the queued bonds of a block (see PendingBond): advanced together, then
-    // their loads (or, for a bond that broke, the contact's) applied
-    for (BondBatch &b : bondBatches_) b.count = 0;
-    auto advanceBonds = [&](BondBatch &b) {
-        const size_t n = b.count;
-        size_t bad;
-        if (b.advance(atom, dt, bad) != GB_STATUS_OK) failPair(b.bonds[bad].i, b.bonds[bad].j,
-                                                               "granbond_bond_compute_indexed");
-        b.count = 0;
-        for (size_t q = 0; q < n; q++) {
-            const PendingBond &p = b.bonds[q];
-            const GbBondOutput &out = b.outputs[q];
-            if (out.status == GB_BOND_STATUS_INTACT) {
-                storeLoads(p.history + size - kLoadSlots, out);
-                apply(f0, t0, p.i, p.j, out.force_i, out.torque_i, out.torque_j, p.del, nlocal, newton_pair);
-                continue;
-            }
-            if (countsHere(p.i, p.j)) broken_++;
-            if (p.touching)
-                apply(f0, t0, p.i, p.j, p.contact.force_i, p.contact.torque_i, p.contact.torque_j, p.del, nlocal,
-                      newton_pair);
-            else {   // broken and apart: the pair is forgotten, as pair granular's
-                *p.touch = 0;
-                for (int s = 0; s < size; s++) p.history[s] = 0.0;
-            }
-        }
-    };
-    auto pairKinematics = [&](int i, int j) {
-        copy3(k.x_i, x[i]);
-        copy3(k.x_j, x[j]);
-        copy3(k.v_i, v[i]);
-        copy3(k.v_j, v[j]);
-        copy3(k.w_i, omega[i]);
-        copy3(k.w_j, omega[j]);
-        k.radius_i = radius[i];
-        k.radius_j = radius[j];
-    };
-
-    // Every pair but a plain touching contact in a force pass (bonded type
-    // pairs, the setup pass), out of line: the plain contacts' loop stays
-    // small.
-    auto otherPair = [&](int i, int j, int jj, int *touch, double *history, const double *del, double rsq,
-                         bool touching, size_t tp, const GbBondModel *bondModel)
-                         __attribute__((noinline)) {
-        double *state = history;
-        if (!advance) {
-            std::memcpy(scratch, history, size * sizeof(double));
-            state = scratch;
-        }
-        double *contactState = state;
-        double *bondState = state + contactLen_;
-
-        // the bond (created when the creation rules allow), as the
-        // LIGGGHTS adapter: it replaces the contact while intact
-        bool intact = false;
-        GbBondOutput bout;
-        if (bondModel) {
-            // the creation rules, where they may create (the core says,
-            // from the status and the step: an intact bond, or any pair
-            // after the creation step, needs no kinematics)
-            if (createsNow_[tp] && bondState[0] != GB_BOND_STATUS_INTACT &&
-                granbond_bond_may_create(bondModel, bondState, step)) {
-                pairKinematics(i, j);
-                int32_t created = 0;
-                if (granbond_bond_try_create(bondModel, &k, step, bondState, &created) != GB_STATUS_OK)
-                    failPair(i, j, "granbond_bond_try_create");
-                if (created && countsHere(i, j)) created_++;
-            }
-            if (bondState[0] == GB_BOND_STATUS_INTACT && advance) {
-                // a force pass: the contact steps now (its history moves
-                // on under the bond), the bond is queued
-                BondBatch &b = queueOf(bondBatches_, bondModel, lastBatch_);
-                PendingBond &p = b.push(i, j, bondState);
-                p.i = i;
-                p.j = j;
-                p.touch = &touch[jj];
-                p.history = history;
-                p.touching = touching;
-                copy3(p.del, del);
-                if (touching)
-                    voigtStep(tp, i, j, del, rsq, contactState, p.contact);
-                else
-                    for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
-                touch[jj] = 1;
-                if (b.full()) advanceBonds(b);
-                return;
-            }
-            if (bondState[0] == GB_BOND_STATUS_INTACT) {
-                // setup: the loads of the latest force pass, as the
-                // LIGGGHTS adapter, so a second run or a restart starts
-                // from the forces an uninterrupted run has
-                const double *loads = history + size - kLoadSlots;
-                copy3(bout.force_i, loads);
-                copy3(bout.torque_i, loads + 3);
-                copy3(bout.torque_j, loads + 6);
-                intact = true;
-            }
-        }
-        GbContactOutput cout;
-        if (touching && !advance) {
-            voigtEvaluate(tp, i, j, del, rsq, contactState, cout);
-        } else if (touching) {
-            voigtStep(tp, i, j, del, rsq, contactState, cout);
-        } else {
-            for (size_t s = 0; s < contactLen_; s++) contactState[s] = 0.0;
-        }
-
-        if (!touching && !intact) {
-            // apart and not bonded: the pair is forgotten, as pair granular's
-            // (a pair not touching since the last step has nothing left)
-            if (touch[jj] || !advance) {
-                touch[jj] = 0;
-                for (int s = 0; s < size; s++) history[s] = 0.0;
-            }
-            return;
-        }
-        touch[jj] = 1;
-        if (intact)
-            apply(f0, t0, i, j, bout.force_i, bout.torque_i, bout.torque_j, del, nlocal, newton_pair);
-        else
-            apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
-    };
-
+    const size_t contactLen = layout_.contact_len;
     for (int ii = 0; ii < inum; ii++) {
         // the next atom's records, requested while this atom's pairs are
         // computed (history_prefetch.h)
@@ -772,7 +658,7 @@ void PairGranbond::compute(int eflag, int vflag)
         const int i = ilist[ii];
         const int itype = type[i];
         const double radi = radius[i];
-        const double *const xi = row(x0, i);
+        const double *const xi = x0 + 3 * static_cast<size_t>(i);
         const int *jlist = firstneigh[i];
         const int jnum = numneigh[i];
         int *touch = firsttouch[i];
@@ -781,45 +667,185 @@ void PairGranbond::compute(int eflag, int vflag)
         for (int jj = 0; jj < jnum; jj++) {
             const int j = jlist[jj] & NEIGHMASK;
             const int jtype = type[j];
-            const double *const xj = row(x0, j);
+            const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype
+                                             : static_cast<size_t>(jtype) * ntypes1 + itype;
+            // an intact bond: swept above. Its contact's state goes on
+            // under it only where the deck asks for it.
+            if (touch[jj] == kSweptMark && !(advance && pairs_[tp].contactUnderBond)) continue;
+            const double *const xj = x0 + 3 * static_cast<size_t>(j);
             const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
             const double radsum = radi + radius[j];
             const bool touching = rsq < radsum * radsum;
-            const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype
-                                             : static_cast<size_t>(jtype) * ntypes1 + itype;
-            const GbBondModel *bondModel = bond_[tp];
             double *history = &allhistory[size * jj];
-
-            // plain contact, apart: no bond model, or no bond now and none
-            // can form in this pass. A pair not marked touching has an
-            // all-zero history (every path that clears the mark zeroes it),
-            // so its bond status is not read: the unbonded neighbours'
-            // histories stay out of the cache.
-            if (!touching && (!bondModel || (!createsNow_[tp] && (!touch[jj] || history[contactLen_] !=
-                                                                                      GB_BOND_STATUS_INTACT)))) {
-                if (touch[jj]) {   // else nothing is left to forget
-                    touch[jj] = 0;
-                    for (int s = 0; s < size; s++) history[s] = 0.0;
+            if (touch[jj] == kSweptMark) {
+                if (touching) {
+                    GbContactOutput unused;
+                    voigtStep(tp, i, j, del, rsq, history, unused);
+                } else {
+                    std::fill(history, history + contactLen, 0.0);
                 }
                 continue;
             }
-            if (!bondModel && advance) {     // plain contact, touching
-                touch[jj] = 1;
-                GbContactOutput cout;
-                voigtStep(tp, i, j, del, rsq, history, cout);
-                apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newton_pair);
+            const GbBondModel *bondModel = bond_[tp];
+            // apart, and no bond can form: a pair not marked touching has an
+            // all-zero record (every path that clears the mark zeroes it),
+            // so it is not read
+            if (!touching && !(bondModel && createsNow_[tp])) {
+                if (touch[jj]) {
+                    touch[jj] = 0;
+                    std::fill(history, history + size, 0.0);
+                }
                 continue;
             }
-
-            otherPair(i, j, jj, touch, history, del, rsq, touching, tp, bondModel);
+            if (bondModel && createsNow_[tp] &&
+                granbond_bond_may_create(bondModel, history + layout_.bond, step)) {
+                GbPairKinematics k;
+                pairKinematics(i, j, k);
+                int32_t created = 0;
+                if (granbond_bond_try_create(bondModel, &k, step, history + layout_.bond, &created) != GB_STATUS_OK)
+                    failPair(i, j, "granbond_bond_try_create");
+                if (created) {
+                    const bool counts = countsHere(i, j);
+                    if (counts) created_++;
+                    index_[tp].add(i, j, counts, history, &touch[jj]);
+                    touch[jj] = kSweptMark;
+                    continue;
+                }
+            }
+            contactOf(tp, i, j, &touch[jj], history, advance, touching, del, rsq);
         }
     }
-    for (BondBatch &b : bondBatches_)
-        if (b.count) advanceBonds(b);
-    if (lossCheck_) countVanished();
+
+    // the bonds formed in this pass, advanced in it
+    for (size_t tp = 0; tp < index_.size(); tp++) {
+        BondIndex &b = index_[tp];
+        if (b.size() == formed_[tp]) continue;
+        sweep(b, formed_[tp], advance, tally);
+        for (size_t k = formed_[tp]; k < b.size(); k++)
+            if (b.out[k].status != GB_BOND_STATUS_INTACT) {   // broke at once: a contact after all
+                const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
+                const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+                const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
+                const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+                const double radsum = radius[i] + radius[j];
+                *b.flags[k] = 1;
+                contactOf(tp, i, j, b.flags[k], b.records[k], advance, rsq < radsum * radsum, del, rsq);
+            }
+        b.keepIntact();
+    }
+
+    const long long byMode[4] = {tally.broken_distance, tally.broken_tension, tally.broken_compression,
+                                 tally.broken_shear};
+    for (int m = 0; m < 4; m++) {
+        brokenBy_[m] += byMode[m];
+        broken_ += byMode[m];
+    }
+    if (checkIndex_ && anyBond_) checkIndex();
+    if (lossCheck_) countVanished(tally.intact);
     pvector[0] = static_cast<double>(created_);
     pvector[1] = static_cast<double>(broken_);
+    pvector[2] = static_cast<double>(tally.intact);
+    for (int m = 0; m < 4; m++) pvector[3 + m] = static_cast<double>(brokenBy_[m]);
+    pvector[7] = static_cast<double>(vanished_);
+}
+
+// One core call over the bonds of `b` from `first` on, and their loads
+// added to the atoms (those of the bonds that held).
+void PairGranbond::sweep(BondIndex &b, size_t first, bool advance, GbSweepTally &tally)
+{
+    size_t bad = 0;
+    if (b.sweep(atom, first, advance, update->dt, tally, bad) != GB_STATUS_OK)
+        failPair(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
+    double *const f0 = atom->f[0];
+    double *const t0 = atom->torque[0];
+    const double *const x0 = atom->x[0];
+    const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+    for (size_t k = first; k < b.size(); k++) {
+        const GbBondOutput &out = b.out[k];
+        if (out.status != GB_BOND_STATUS_INTACT) continue;
+        const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
+        double del[3] = {0.0, 0.0, 0.0};
+        if (evflag)
+            for (int c = 0; c < 3; c++) del[c] = x0[3 * static_cast<size_t>(i) + c] - x0[3 * static_cast<size_t>(j) + c];
+        apply(f0, t0, i, j, out.force_i, out.torque_i, out.torque_j, del, nlocal, newton_pair);
+    }
+}
+
+// A pair that is no bond in this pass: touching, the Voigt contact (a
+// setup pass evaluates it without advancing); apart, the pair is forgotten,
+// as pair granular's (a pair not touching since the last step has nothing
+// left).
+void PairGranbond::contactOf(size_t tp, int i, int j, int *touch, double *history, bool advance, bool touching,
+                             const double *del, double rsq)
+{
+    if (!touching) {
+        if (*touch || !advance) {
+            *touch = 0;
+            std::fill(history, history + sizeHistory_, 0.0);
+        }
+        return;
+    }
+    *touch = 1;
+    GbContactOutput cout;
+    if (advance)
+        voigtStep(tp, i, j, del, rsq, history, cout);
+    else
+        voigtEvaluate(tp, i, j, del, rsq, history, cout);
+    apply(atom->f[0], atom->torque[0], i, j, cout.force_i, cout.torque_i, cout.torque_j, del, atom->nlocal,
+          force->newton_pair);
+}
+
+// The index, built from the records of the lists just built: every pair of
+// a bonded type pair whose record holds an intact bond.
+void PairGranbond::indexBonds()
+{
+    for (size_t tp = 0; tp < index_.size(); tp++) {
+        index_[tp].clear();
+        index_[tp].model = bond_[tp];
+        index_[tp].pass.with_contact = 1;
+        index_[tp].pass.contact_under_bond = pairs_[tp].contactUnderBond;
+    }
+    const int ntypes1 = atom->ntypes + 1;
+    for (int ii = 0; ii < list->inum; ii++) {
+        const int i = list->ilist[ii];
+        const int *jlist = list->firstneigh[i];
+        int *touch = fixHistory_->firstflag[i];
+        double *allhistory = fixHistory_->firstvalue[i];
+        for (int jj = 0; jj < list->numneigh[i]; jj++) {
+            if (!touch[jj]) continue;   // an unmarked pair's record is all zero
+            const int j = jlist[jj] & NEIGHMASK;
+            const int ti = atom->type[i], tj = atom->type[j];
+            const size_t tp = static_cast<size_t>(std::min(ti, tj)) * ntypes1 + std::max(ti, tj);
+            double *record = &allhistory[sizeHistory_ * jj];
+            if (!bond_[tp] || record[layout_.status] != GB_BOND_STATUS_INTACT) {
+                touch[jj] = 1;
+                continue;
+            }
+            index_[tp].add(i, j, countsHere(i, j), record, &touch[jj]);
+            touch[jj] = kSweptMark;
+        }
+    }
+}
+
+// GRANBOND_CHECK_INDEX: the index recounted from the records after a pass
+// (bond_index.h, checkIndex); a mismatch ends the run.
+void PairGranbond::checkIndex()
+{
+    const int ntypes1 = atom->ntypes + 1;
+    const std::string wrong = granbond::checkIndex(index_, layout_.status, true, [&](auto seen) {
+        for (int ii = 0; ii < list->inum; ii++) {
+            const int i = list->ilist[ii];
+            for (int jj = 0; jj < list->numneigh[i]; jj++) {
+                const int j = list->firstneigh[i][jj] & NEIGHMASK;
+                const int ti = atom->type[i], tj = atom->type[j];
+                if (!bond_[static_cast<size_t>(std::min(ti, tj)) * ntypes1 + std::max(ti, tj)]) continue;
+                seen(&fixHistory_->firstvalue[i][sizeHistory_ * jj], &fixHistory_->firstflag[i][jj]);
+            }
+        }
+    });
+    if (!wrong.empty())
+        error->one(FLERR, "pair granbond: index check at step " + std::to_string(update->ntimestep) + ": " + wrong);
 }
 
 inline bool PairGranbond::countsHere(int i, int j) const
@@ -847,34 +873,23 @@ bool PairGranbond::bondsExist() const
     if (npartner && values)
         for (int i = 0; i < atom->nlocal && !mine; i++)
             for (int k = 0; k < npartner[i] && !mine; k++)
-                mine = values[i][sizeHistory_ * k + contactLen_] == GB_BOND_STATUS_INTACT;
+                mine = values[i][sizeHistory_ * k + layout_.status] == GB_BOND_STATUS_INTACT;
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
     return any != 0;
 }
 
-// The bonds intact after this pass, balanced against the created and
-// broken ones since the previous count (BondBalance); collective.
-void PairGranbond::countVanished()
+// The bonds intact after this pass (`intact` on this rank), balanced
+// against the created and broken ones since the previous count
+// (BondBalance); collective.
+void PairGranbond::countVanished(long long intact)
 {
     lossCheck_ = false;
-    long long intact = 0;
-    for (int ii = 0; ii < list->inum; ii++) {
-        const int i = list->ilist[ii];
-        const int *jlist = list->firstneigh[i];
-        const double *allhistory = fixHistory_->firstvalue[i];
-        for (int jj = 0; jj < list->numneigh[i]; jj++) {
-            const int j = jlist[jj] & NEIGHMASK;
-            const int ti = atom->type[i], tj = atom->type[j];
-            const bool bonds = bond_[at(std::min(ti, tj), std::max(ti, tj))] != nullptr;
-            if (bonds && allhistory[sizeHistory_ * jj + contactLen_] == GB_BOND_STATUS_INTACT && countsHere(i, j))
-                intact++;
-        }
-    }
     const double mine[3] = {static_cast<double>(created_), static_cast<double>(broken_),
                             static_cast<double>(intact)};
     double all[3];
     MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
     const long long vanished = balance_.vanished(all[0], all[1], all[2]);
+    if (comm->me == 0) vanished_ += vanished;   // counted once: the compute sums over ranks
     if (vanished > 0 && comm->me == 0)
         error->warning(FLERR, vanishedMessage("pair granbond (bond/nonlinear)", vanished, update->ntimestep,
                                               "warned each time bonds are found missing (at a run's start, and "

@@ -12,7 +12,7 @@
 
 #include "pair.h"
 #include "granbond.h"
-#include "bond_queue.h"
+#include "bond_index.h"
 #include "run_checks.h"
 
 #include <string>
@@ -40,7 +40,7 @@ public:
     void read_restart(FILE *fp) override;
     void reset_dt() override {}
     // fix neigh/history: the pair seen from the other atom; the core's
-    // sign-flip table says which slots change sign (vectors) and which are
+    // record table says which slots change sign (vectors) and which are
     // copied (scalars such as r0, dmax, dmin, status)
 #ifdef GRANBOND_LAMMPS_TRANSFER_HISTORY_IJ
     void transfer_history(double *source, double *target, int i, int j) override;
@@ -55,6 +55,9 @@ public:
         GbVoigtParams voigt;
         GbBondParams bond;
         int32_t hasBond;
+        // the contact's state goes on under an intact bond (pair_coeff
+        // ... contact_under_bond yes), or starts afresh when it breaks
+        int32_t contactUnderBond;
     };
 
 private:
@@ -68,27 +71,18 @@ private:
     void runChecks(const std::vector<GbTypeBodies> &bodies, bool runStart);
     void checkRenumbering();
     bool countsHere(int i, int j) const;
-    void countVanished();
+    void countVanished(long long intact);
     bool bondsExist() const;
 
-    // An intact bond of a force pass, queued (bond_queue.h): every
-    // kBondBlock bonds of one bond model, and at the end of the pass, one
-    // core call advances them; then the loads go to the atoms. If the bond
-    // breaks, the pair's contact loads of this step (kept here) act
-    // instead, or, apart, the pair is forgotten, as in the per-pair path.
-    static const size_t kBondBlock = 128;
-    // After the core's slots, if any type pair bonds: force_i, torque_i,
-    // torque_j of the bond's latest force pass.
-    static const int kLoadSlots = 9;
-    struct PendingBond {
-        int i, j;
-        int *touch;
-        double *history;
-        bool touching;
-        double del[3];
-        GbContactOutput contact;
-    };
-    typedef BondQueue<PendingBond, kBondBlock> BondBatch;
+    void voigtStep(size_t tp, int i, int j, const double *del, double rsq, double *state, GbContactOutput &cout);
+    void voigtEvaluate(size_t tp, int i, int j, const double *del, double rsq, const double *state,
+                       GbContactOutput &cout);
+    void pairKinematics(int i, int j, GbPairKinematics &k) const;
+    void indexBonds();
+    void sweep(BondIndex &b, size_t first, bool advance, GbSweepTally &tally);
+    void contactOf(size_t tp, int i, int j, int *touch, double *history, bool advance, bool touching,
+                   const double *del, double rsq);
+    void checkIndex();
 
     std::vector<TypePair> pairs_;
     std::vector<GbVoigtModel *> voigt_;
@@ -96,21 +90,24 @@ private:
     std::vector<char> createsNow_;          // per type pair, this pass (compute)
     std::vector<GbTypeBodies> bodies_;      // per type, over all ranks, at the latest run start
     std::vector<double> transferSign_;      // per history slot: +1 copy, -1 negate
-    size_t contactLen_, bondLen_;
+    GbRecordLayout layout_;                 // the core's record: contact, bond, bond loads
+    std::vector<BondIndex> index_;          // per type pair: its intact bonds (bond_index.h)
+    std::vector<size_t> formed_;            // per type pair: where this pass's new bonds start in index_
+    bool checkIndex_;                       // GRANBOND_CHECK_INDEX: recount the index after each pass
     int sizeHistory_;
     bool anyBond_;
     LAMMPS_NS::FixNeighHistory *fixHistory_;
     FixGranbondAtoms *atoms_;               // which atoms bonds have seen (bonded runs)
     std::string message_;                   // outlives error->one's use
-    std::vector<BondBatch> bondBatches_;    // per bond model; reused from pass to pass
-    size_t lastBatch_;
     LAMMPS_NS::bigint checkedNatoms_;       // atom count of the latest checks
     LAMMPS_NS::bigint firstStep_;           // where the first run started
     TimestepWarning contactWarning_, bondWarning_;
     SaidOnce said_;
-    // bonds created and broken on this rank (each pair once), and whether
-    // this pass ends with a count of the bonds that vanished (countVanished)
-    long long created_, broken_;
+    // bonds created and broken on this rank (each pair once), broken by
+    // mode (distance, tension, compression, shear), vanished (rank 0), and
+    // whether this pass ends with a count of the bonds that vanished
+    // (countVanished)
+    long long created_, broken_, brokenBy_[4], vanished_;
     bool lossCheck_;
     BondBalance balance_;
 };

@@ -10,6 +10,7 @@
 #include "pair_gran.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -74,15 +75,24 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     createsNow_(false),
     cursor_(0),
     lastAtom_(-1),
-    lastBatch_(0)
+    indexedAt_(-1),
+    checkIndex_(std::getenv("GRANBOND_CHECK_INDEX") != 0)
 {
     checkCoreLayout(error);
-    offset_ = registerStateSlots(hsetup, isWall_ ? GB_STATE_KIND_WALL_BOND : GB_STATE_KIND_BOND, error);
-    // after the core's state, the loads of the latest force pass (the core
-    // packs them, granbond_bond_output_store), so `compute pair/gran/local
-    // ... history` (and `wall/gran/local`) can dump them and the
-    // per-contact output pass reports the applied forces
-    outputOffset_ = registerStateSlots(hsetup, GB_STATE_KIND_BOND_OUTPUT, error);
+    // after the core's state, the loads of the latest force pass, so that
+    // `compute pair/gran/local ... history` (and `wall/gran/local`) can dump
+    // them and the per-contact output pass reports the applied forces: for
+    // pairs the core's bond record, for walls the wall bond's state and the
+    // same loads
+    if (isWall_) {
+        offset_ = registerStateSlots(hsetup, GB_STATE_KIND_WALL_BOND, error);
+        outputOffset_ = registerStateSlots(hsetup, GB_STATE_KIND_BOND_OUTPUT, error);
+    } else {
+        GbRecordLayout layout;
+        granbond_record_layout(0, &layout);
+        offset_ = registerStateSlots(hsetup, GB_STATE_KIND_BOND_RECORD, error);
+        outputOffset_ = offset_ + static_cast<int>(layout.loads);
+    }
     // the name the reference publishes, so per-contact tools can find the slots
     cmb->add_history_offset("bondnonlinear_contactflag", offset_);
     cmb->add_history_offset("bondnonlinear_output", outputOffset_);
@@ -103,6 +113,12 @@ void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
                         : static_cast<LAMMPS_NS::FixPropertyAtom *>(modify->find_fix_property(
                               "bond_random_id", "property/atom", "scalar", 0, 0, "cohesion bond/nonlinear", false));
     if (!isWall_) checkRenumbering();
+    if (!isWall_ && checkIndex_ && comm->me == 0) {
+        const char *said = "cohesion bond/nonlinear: checking the index of bonds after every pass "
+                           "(GRANBOND_CHECK_INDEX)\n";
+        if (screen) fputs(said, screen);
+        if (logfile) fputs(said, logfile);
+    }
     runChecks(true);
     lossCheck_ = !isWall_;
 }
@@ -159,11 +175,15 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
     // reads each pair's forces as the loop applies them (CFD coupling,
     // stored contact forces, summed normal forces) or the loop's radii are
     // not atom->radius, which the core reads (multicontact radii).
-    for (size_t b = 0; b < batches_.size(); b++) batches_[b].count = 0;
     deferring_ = pair_ && sidata.computeflag && sidata.shearupdate && !pair_->cpl() &&
                  !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
                  !pair_->store_sum_normal_force() && !pair_->storeSumDelta();
-    if (deferring_) book_->beginPassIfNew(tally_, update);
+    if (deferring_) {
+        book_->beginPassIfNew(tally_, update);
+        sweepIndex();
+    } else if (pair_ && sidata.computeflag && sidata.shearupdate) {
+        indexedAt_ = -1;   // the per-pair path forms and breaks bonds: rebuild at the next swept pass
+    }
     cursor_ = 0;
     lastAtom_ = -1;
     // whether any bond may form in this pass (the core says, per bond type)
@@ -178,8 +198,8 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
 void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceData &)
 {
     if (deferring_) {
-        for (size_t b = 0; b < batches_.size(); b++)
-            if (batches_[b].count) advanceBatch(batches_[b]);
+        sweepFormed();
+        if (checkIndex_) checkIndex();
         deferring_ = false;
     }
     if (lossCheck_) countVanished();
@@ -217,24 +237,6 @@ inline void BondNonlinearCohesion::pairKinematics(const SurfacesCloseData &d, Gb
     k.radius_j = d.radj;
 }
 
-inline void BondNonlinearCohesion::defer(SurfacesCloseData &d, const GbBondModel *model, bool created,
-                                  const ForceData *i_forces, const ForceData *j_forces)
-{
-    PendingBatch &b = queueOf(batches_, model, lastBatch_);
-    PendingBond &p = b.push(d.i, d.j, d.contact_history + offset_);
-    p.history = d.contact_history;
-    p.contactFlag = d.contact_flags;
-    p.i = d.i;
-    p.j = d.j;
-    p.created = created;
-    p.touching = i_forces != 0;
-    if (p.touching) {   // ForceData is delta_F[3], delta_torque[3] (checked in liggghts_engine.h)
-        std::memcpy(p.contact, i_forces, sizeof(ForceData));
-        std::memcpy(p.contact + 6, j_forces, sizeof(ForceData));
-    }
-    if (b.full()) advanceBatch(b);
-}
-
 // What the engine's pair loop does with a pair's loads (relaxation factor,
 // newton off, virial).
 inline void BondNonlinearCohesion::addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj,
@@ -265,41 +267,121 @@ inline void BondNonlinearCohesion::addToAtoms(int i, int j, const double *fi, co
     }
 }
 
-void BondNonlinearCohesion::advanceBatch(PendingBatch &b)
+// The index, built from the records of the lists: every pair whose record
+// holds an intact bond (bond_index.h). Rebuilt at the first swept pass after
+// the engine builds its lists, or after a pass of the per-pair path.
+void BondNonlinearCohesion::indexBonds()
 {
-    const size_t n = b.count;
-    size_t bad;
-    const GbStatus status = b.advance(atom, update->dt, bad);
-    b.count = 0;
-    if (status != GB_STATUS_OK) {
-        failed(b.bonds[bad].i, b.bonds[bad].j, "granbond_bond_compute_indexed");
-        return;
+    indexedAt_ = neighbor->ncalls;
+    for (size_t x = 0; x < index_.size(); x++) index_[x].clear();
+    const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
+    if (!list || !history || !history->firstneigh || !history->firstdouble) return;
+    const int dnum = pair_->dnum();
+    for (int ii = 0; ii < list->inum; ii++) {
+        const int i = list->ilist[ii];
+        const int *jlist = list->firstneigh[i];
+        int *flags = history->firstneigh[i];
+        double *records = history->firstdouble[i];
+        for (int jj = 0; jj < list->numneigh[i]; jj++) {
+            double *record = records + static_cast<size_t>(dnum) * jj + offset_;
+            if (record[0] != GB_BOND_STATUS_INTACT) continue;
+            const int j = jlist[jj] & NEIGHMASK;
+            const GbBondModel *model = parameters_.model(atom->type[i], atom->type[j]);
+            if (!model) continue;   // the per-pair path reports it
+            BondIndex &b = indexOf(index_, model);
+            b.pass.with_contact = 0;   // LIGGGHTS's own models keep the contact's state
+            b.add(i, j, countsHere(i, j), record, &flags[jj]);
+        }
     }
-    // the loads of the intact bonds, kept in the same history record as
-    // their states, outputOffset_ - offset_ doubles further on
-    if (granbond_bond_output_store_intact(n, b.outputs.data(), b.states.data(),
-                                          static_cast<size_t>(outputOffset_ - offset_), &bad) != GB_STATUS_OK) {
-        failed(b.bonds[bad].i, b.bonds[bad].j, "granbond_bond_output_store_intact");
-        return;
+}
+
+// The swept pass's bonds, advanced before the engine's pair loop; their
+// loads go straight to the atoms, and those that broke are counted and
+// logged (their pairs' callbacks then see a broken bond: the contact models
+// act alone).
+void BondNonlinearCohesion::sweepIndex()
+{
+    if (indexedAt_ != neighbor->ncalls) indexBonds();
+    formed_.clear();
+    GbSweepTally t = {};
+    for (size_t x = 0; x < index_.size(); x++) {
+        BondIndex &b = index_[x];
+        if (!b.size()) continue;
+        size_t bad = 0;
+        if (b.sweep(atom, 0, true, update->dt, t, bad) != GB_STATUS_OK)
+            failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
+        applySwept(b, 0);
+        b.keepIntact();
     }
-    const int nlocal = atom->nlocal;
-    const int *tag = atom->tag;
-    for (size_t k = 0; k < n; k++) {
-        const PendingBond &p = b.bonds[k];
-        const GbBondOutput &out = b.outputs[k];
+    tally_.intact += t.intact;
+}
+
+void BondNonlinearCohesion::applySwept(BondIndex &b, size_t first)
+{
+    for (size_t k = first; k < b.size(); k++) {
+        const GbBondOutput &out = b.out[k];
+        const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
         if (out.status == GB_BOND_STATUS_INTACT) {
-            // account() for an intact bond, inline: the common case
-            const bool counts = pairCountsHere(p.i, p.j, nlocal, tag);
-            tally_.intact += counts;
-            tally_.created += counts && p.created;
             const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
-            addToAtoms(p.i, p.j, out.force_i, out.torque_i, fj, out.torque_j);
+            addToAtoms(i, j, out.force_i, out.torque_i, fj, out.torque_j);
             continue;
         }
-        account(p.i, p.j, 0, p.history + offset_, p.created, out);
-        if (p.contactFlag) *p.contactFlag &= ~CONTACT_COHESION_MODEL;
-        if (p.touching) addToAtoms(p.i, p.j, p.contact, p.contact + 3, p.contact + 6, p.contact + 9);
+        account(i, j, 0, b.records[k], false, out);
+        *b.flags[k] &= ~CONTACT_COHESION_MODEL;
     }
+}
+
+// The bonds that formed in the pair loop, advanced in the pass they formed
+// in; one that broke at once leaves the contact model's loads of the step.
+void BondNonlinearCohesion::sweepFormed()
+{
+    if (formed_.empty()) return;
+    GbSweepTally t = {};
+    std::vector<size_t> first(index_.size(), std::numeric_limits<size_t>::max());
+    for (size_t f = 0; f < formed_.size(); f++)
+        first[formed_[f].index] = std::min(first[formed_[f].index], formed_[f].at);
+    for (size_t x = 0; x < index_.size(); x++) {
+        BondIndex &b = index_[x];
+        if (first[x] >= b.size()) continue;
+        size_t bad = 0;
+        if (b.sweep(atom, first[x], true, update->dt, t, bad) != GB_STATUS_OK)
+            failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
+        applySwept(b, first[x]);
+    }
+    for (size_t f = 0; f < formed_.size(); f++) {
+        const Formed &p = formed_[f];
+        const BondIndex &b = index_[p.index];
+        if (b.out[p.at].status != GB_BOND_STATUS_INTACT && p.touching)
+            addToAtoms(b.pairs[2 * p.at], b.pairs[2 * p.at + 1], p.contact, p.contact + 3, p.contact + 6,
+                       p.contact + 9);
+    }
+    for (size_t x = 0; x < index_.size(); x++)
+        if (first[x] < index_[x].size()) index_[x].keepIntact();
+    tally_.intact += t.intact;
+    formed_.clear();
+}
+
+// GRANBOND_CHECK_INDEX: the index recounted from the records after a swept
+// pass (bond_index.h, checkIndex); a mismatch ends the run.
+void BondNonlinearCohesion::checkIndex()
+{
+    const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
+    if (!list || !history || !history->firstneigh || !history->firstdouble) return;
+    const int dnum = pair_->dnum();
+    const std::string wrong = granbond::checkIndex(index_, 0, false, [&](auto seen) {
+        for (int ii = 0; ii < list->inum; ii++) {
+            const int i = list->ilist[ii];
+            for (int jj = 0; jj < list->numneigh[i]; jj++) {
+                const int j = list->firstneigh[i][jj] & NEIGHMASK;
+                if (!parameters_.model(atom->type[i], atom->type[j])) continue;
+                seen(history->firstdouble[i] + static_cast<size_t>(dnum) * jj + offset_,
+                     &history->firstneigh[i][jj]);
+            }
+        }
+    });
+    if (!wrong.empty())
+        endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: index check at step " +
+                                         std::to_string(static_cast<long long>(update->ntimestep)) + ": " + wrong);
 }
 
 void BondNonlinearCohesion::runChecks(bool runStart)
@@ -406,7 +488,7 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
     std::memset(&out, 0, sizeof out);
     bool created = false;
     if (deferring_) {
-        // created now (the rules read this pair's data), then queued; a
+        // created now (the rules read this pair's data), then indexed; a
         // pair the rules cannot bond in this step (the core says, from the
         // status and the step) needs no kinematics, unless it may be a
         // `bonded yes` clump's
@@ -415,7 +497,8 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
         pairKinematics(d, k);
         createPair(d, model, k, state, created);
         if (state[0] != GB_BOND_STATUS_INTACT) return false;
-        defer(d, model, created, i_contact, j_contact);
+        if (created && countsHere(d.i, d.j)) tally_.created++;
+        form(d, model, i_contact, j_contact);
         deferred = true;
         return false;
     }
@@ -500,7 +583,7 @@ void BondNonlinearCohesion::apply(const GbBondOutput &out, ForceData &i_forces, 
 // The records of the next atom in the neighbour list
 // (history_prefetch.h), requested while the pairs of atom i are computed:
 // the engine's contact models read each pair's record first. Called at the
-// first callback of each atom of a queued pass; the pair loop walks the
+// first callback of each atom of a swept pass; the pair loop walks the
 // neighbour list in order.
 void BondNonlinearCohesion::prefetchNextAtom(int i)
 {
@@ -514,20 +597,38 @@ void BondNonlinearCohesion::prefetchNextAtom(int i)
                            pair_->dnum());
 }
 
-// The common case of a force pass, without the general path's calls.
-inline bool BondNonlinearCohesion::deferIntact(SurfacesCloseData &d, const ForceData *i_contact,
-                                               const ForceData *j_contact)
+// A pair whose bond the pass swept (an intact bond: the sweep advanced it
+// before the loop): the bond replaces the contact models' loads, and the
+// pair's flag keeps its record.
+inline bool BondNonlinearCohesion::swept(SurfacesCloseData &d)
 {
     if (deferring_ && d.i != lastAtom_) prefetchNextAtom(d.i);
     if (!deferring_ || !d.contact_history || d.contact_history[offset_] != GB_BOND_STATUS_INTACT) return false;
-    const GbBondModel *model = parameters_.model(d.itype, d.jtype);
-    if (!model) return false;   // the general path reports it
-    defer(d, model, false, i_contact, j_contact);
     setContactFlag(d, true);
     return true;
 }
 
-// A pair without an intact bond in a queued pass in which no bond can
+// A bond that formed in the loop of a swept pass: indexed, and advanced at
+// the pass's end (sweepFormed), with the contact model's loads kept in case
+// it breaks at once.
+void BondNonlinearCohesion::form(SurfacesCloseData &d, const GbBondModel *model, const ForceData *i_forces,
+                                 const ForceData *j_forces)
+{
+    BondIndex &b = indexOf(index_, model);
+    b.pass.with_contact = 0;
+    b.add(d.i, d.j, countsHere(d.i, d.j), d.contact_history + offset_, d.contact_flags);
+    Formed f;
+    f.index = static_cast<size_t>(&b - &index_[0]);
+    f.at = b.size() - 1;
+    f.touching = i_forces != 0;
+    if (f.touching) {   // ForceData is delta_F[3], delta_torque[3] (checked in liggghts_engine.h)
+        std::memcpy(f.contact, i_forces, sizeof(ForceData));
+        std::memcpy(f.contact + 6, j_forces, sizeof(ForceData));
+    }
+    formed_.push_back(f);
+}
+
+// A pair without an intact bond in a swept pass in which no bond can
 // form: the contact model acts alone, as the general path would decide
 // after the core's creation rules.
 inline bool BondNonlinearCohesion::unbondable(SurfacesCloseData &d)
@@ -543,7 +644,7 @@ inline bool BondNonlinearCohesion::unbondable(SurfacesCloseData &d)
 void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
                                                  ForceData &j_forces)
 {
-    if (deferIntact(sidata, &i_forces, &j_forces)) {
+    if (swept(sidata)) {
         i_forces.reset();
         j_forces.reset();
         return;
@@ -555,7 +656,7 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
     setContactFlag(sidata, intact || deferred);
     if (!intact && !deferred) return;   // the contact model acts alone
     // an intact bond replaces what normal, tangential and rolling models
-    // added (a queued one keeps a copy in case it breaks)
+    // added (one that formed in this pass keeps a copy in case it breaks at once)
     i_forces.reset();
     j_forces.reset();
     if (intact) apply(out, i_forces, j_forces);
@@ -563,7 +664,7 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
 
 void BondNonlinearCohesion::surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
 {
-    if (deferIntact(scdata, 0, 0) || unbondable(scdata)) return;
+    if (swept(scdata) || unbondable(scdata)) return;
     GbBondOutput out;
     bool deferred;
     const bool intact = advance(scdata, out, deferred, 0, 0);

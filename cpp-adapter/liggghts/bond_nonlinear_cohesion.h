@@ -10,7 +10,7 @@
 
 #include "bond_nonlinear_parameters.h"
 #include "bond_book.h"
-#include "bond_queue.h"
+#include "bond_index.h"
 #include "run_checks.h"
 
 #include <vector>
@@ -37,9 +37,10 @@ public:
     void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *) {}
     void connectToProperties(::PropertyRegistry &registry);
     // Pairs only (walls have no pass hooks): the time-step check when the
-    // number of atoms changed (insertion), a point every rank reaches; and
-    // whether this pass queues its intact bonds for block-wise core calls;
-    // endPass advances what is left (see PendingBond).
+    // number of atoms changed (insertion), a point every rank reaches; and,
+    // in a force pass, the sweep of the index of pair bonds (bond_index.h)
+    // before the engine's pair loop; endPass sweeps the bonds that formed
+    // in the loop.
     void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &);
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &);
 
@@ -50,37 +51,33 @@ public:
     void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
 
 private:
-    // An intact pair bond of a force pass, queued (bond_queue.h): when
-    // kBlock bonds of one type are queued (and in endPass for the rest) the
-    // core computes them in one call and the loads go straight to the
-    // atoms. Until then the bond's pair adds nothing; if it breaks, the
-    // contact model's loads of this step (kept here) act instead, as in the
-    // per-pair path.
-    static const size_t kBlock = 128;
-    struct PendingBond {
-        double *history;
-        int *contactFlag;   // null: none
-        int i, j;
-        bool created;
+    // A bond that formed in the pair loop of a swept pass, advanced at its
+    // end (sweepFormed): if it breaks at once, the contact model's loads of
+    // this step (kept here) act instead.
+    struct Formed {
+        size_t index, at;   // index_[index], bond `at`
         bool touching;
         double contact[12];   // F_i, T_i, F_j, T_j of the contact model
     };
-    typedef BondQueue<PendingBond, kBlock> PendingBatch;
 
     // Creates / advances the bond of this pair. Returns true and fills `out`
     // if the bond is intact after the step. Returns false with `deferred`
-    // set if the bond was queued (see PendingBond).
+    // set if the bond formed in a swept pass (see Formed).
     bool advance(SurfacesCloseData &d, GbBondOutput &out, bool &deferred, const ForceData *i_contact,
                  const ForceData *j_contact);
     void pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const;
     void createPair(const SurfacesCloseData &d, const GbBondModel *model, const GbPairKinematics &k,
                     double *state, bool &created);
-    bool deferIntact(SurfacesCloseData &d, const ForceData *i_contact, const ForceData *j_contact);
+    bool swept(SurfacesCloseData &d);
     bool unbondable(SurfacesCloseData &d);
     void prefetchNextAtom(int i);
-    void defer(SurfacesCloseData &d, const GbBondModel *model, bool created, const ForceData *i_forces,
-               const ForceData *j_forces);
-    void advanceBatch(PendingBatch &b);
+    void form(SurfacesCloseData &d, const GbBondModel *model, const ForceData *i_forces,
+              const ForceData *j_forces);
+    void indexBonds();
+    void sweepIndex();
+    void sweepFormed();
+    void applySwept(BondIndex &b, size_t first);
+    void checkIndex();
     void addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj, const double *tj);
     bool advancePair(SurfacesCloseData &d, const GbBondModel *model, double *state, bool update,
                      GbBondOutput &out, bool &created);
@@ -123,12 +120,14 @@ private:
     BondBalance balance_;
 
     LAMMPS_NS::PairGran *pair_;   // null for walls
-    bool deferring_;              // this pass queues intact bonds
-    bool createsNow_;             // a bond may form in this pass (queued passes only)
+    bool deferring_;              // this force pass sweeps the pair bonds (sweepIndex)
+    bool createsNow_;             // a bond may form in this pass (swept passes only)
     int cursor_;                  // position of the latest atom in the neighbour list (prefetchNextAtom)
     int lastAtom_;
-    std::vector<PendingBatch> batches_;
-    size_t lastBatch_;
+    std::vector<BondIndex> index_;   // per bond model: the intact pair bonds (bond_index.h)
+    std::vector<Formed> formed_;     // bonds formed in this pass's loop
+    bigint indexedAt_;               // neighbor->ncalls when index_ was built; -1: to be built
+    bool checkIndex_;                // GRANBOND_CHECK_INDEX: recount the index after each pass
 };
 
 }

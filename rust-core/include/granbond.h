@@ -12,7 +12,7 @@
  * Number of `double` slots of a bond output as engines keep it
  * (`granbond_bond_output_store`, `GB_STATE_KIND_BOND_OUTPUT`).
  */
-#define GRANBOND_BOND_OUTPUT_LEN 11
+#define GRANBOND_BOND_OUTPUT_LEN 12
 
 #define GRANBOND_BOND_STATE_LEN 19
 
@@ -44,14 +44,14 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 9
+#define GRANBOND_ABI_VERSION 10
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
  * slot is added, removed or changes meaning, so that engines can refuse
  * restart files written with another layout instead of misreading them.
  */
-#define GRANBOND_STATE_LAYOUT_VERSION 2
+#define GRANBOND_STATE_LAYOUT_VERSION 3
 
 /**
  * Capacity of [`CheckReport::message`], terminating NUL included.
@@ -177,6 +177,15 @@ typedef enum GbStateKind {
    * (`granbond_bond_output_store`).
    */
   GB_STATE_KIND_BOND_OUTPUT = 3,
+  /**
+   * A pair record with the Voigt contact's state: contact, bond, bond
+   * loads (`granbond_record_layout`).
+   */
+  GB_STATE_KIND_PAIR_RECORD = 4,
+  /**
+   * A pair record without the contact's state: bond, bond loads.
+   */
+  GB_STATE_KIND_BOND_RECORD = 5,
 } GbStateKind;
 
 /**
@@ -246,6 +255,9 @@ typedef struct GbLayout {
   size_t tangential_output;
   size_t type_bodies;
   size_t check_report;
+  size_t record_layout;
+  size_t sweep_pass;
+  size_t sweep_tally;
   size_t bond_state_len;
   size_t wall_bond_state_len;
   size_t contact_state_len;
@@ -557,6 +569,77 @@ typedef struct GbParameterInfo {
   const char *needed_when;
   double default_value;
 } GbParameterInfo;
+
+/**
+ * Where the parts of a pair record lie, in doubles from its start.
+ */
+typedef struct GbRecordLayout {
+  /**
+   * The contact state: `contact_len` doubles from 0 (0 where the engine
+   * keeps the contact's state).
+   */
+  size_t contact_len;
+  /**
+   * The bond state ([`crate::bond::BondState`]).
+   */
+  size_t bond;
+  /**
+   * The bond's status ([`crate::bond::BondStatus`] as a double): what an
+   * adapter reads to know whether a pair is bonded.
+   */
+  size_t status;
+  /**
+   * The loads of the bond's latest force pass
+   * ([`crate::bond::output_slots`]).
+   */
+  size_t loads;
+  /**
+   * The whole record.
+   */
+  size_t len;
+} GbRecordLayout;
+
+/**
+ * One pass, as the engine describes it.
+ */
+typedef struct GbSweepPass {
+  /**
+   * The time step (force passes).
+   */
+  double dt;
+  /**
+   * 1: a force pass, which advances the bonds; 0: a setup pass.
+   */
+  int32_t advance;
+  /**
+   * 1: the contact's state goes on under an intact bond and acts, from
+   * where it stands, when the bond breaks; 0: it starts afresh.
+   */
+  int32_t contact_under_bond;
+  /**
+   * 1: the records hold the Voigt contact's state first
+   * ([`RecordLayout::new`]).
+   */
+  int32_t with_contact;
+} GbSweepPass;
+
+/**
+ * The bonds one pass counted (only those its caller marked as counted:
+ * each bond once over all ranks).
+ */
+typedef struct GbSweepTally {
+  /**
+   * Intact after the pass.
+   */
+  int64_t intact;
+  /**
+   * Broken in this pass, by [`BreakMode`].
+   */
+  int64_t broken_distance;
+  int64_t broken_tension;
+  int64_t broken_compression;
+  int64_t broken_shear;
+} GbSweepTally;
 
 #ifdef __cplusplus
 extern "C" {
@@ -1369,6 +1452,53 @@ enum GbStatus granbond_voigt_parameter_needed(const struct GbVoigtParams *params
                                               size_t id,
                                               int32_t *needed);
 
+/**
+ * The layout of a pair record, with the Voigt contact's state first
+ * (`with_contact` 1, LAMMPS `pair granbond`) or without it (0, where the
+ * engine keeps the contact's state), written to `layout`. The slots'
+ * names and swap rules are those of `granbond_state_slot` with
+ * `GB_STATE_KIND_PAIR_RECORD` or `GB_STATE_KIND_BOND_RECORD`.
+ *
+ * # Safety
+ * `layout` must be null or valid for writes.
+ */
+enum GbStatus granbond_record_layout(int32_t with_contact, struct GbRecordLayout *layout);
+
+/**
+ * One pass (`pass`: a force or a setup pass) over `count` bonded pairs of
+ * one bond model, as an engine's index of bonds holds them: bond `k`
+ * joins atoms `pairs[2k]` (`i`) and `pairs[2k + 1]` (`j`) of the engine's
+ * arrays `atoms`, and its pair record (`granbond_record_layout`, no two
+ * the same) starts at `records[k]`.
+ *
+ * A force pass advances every bond (bit for bit `granbond_bond_compute_indexed`
+ * on the records' bond states) and writes its loads to `out[k]`; an intact
+ * bond's loads are kept in its record; a bond that breaks has `status`
+ * broken and its `break_mode` in `out[k]`, and unless
+ * `pass->contact_under_bond`, its record's contact state is cleared. A
+ * setup pass advances nothing and writes to `out[k]` the loads the latest
+ * force pass kept. Bonds with `counted[k]` non-zero (each bond on one rank
+ * only) are added to `tally`: intact after the pass, broken by mode.
+ *
+ * Stops at the first bad input and writes its index to `failed_index` (if
+ * not null); a null or misaligned `records[k]` and an atom index outside
+ * `0 .. atoms->count` are reported before any bond is advanced.
+ *
+ * # Safety
+ * Pointers must be null or valid for the sizes above (`pairs`: `2 count`
+ * ints; `counted`: `count` bytes; each `records[k]`: a record's length).
+ */
+enum GbStatus granbond_bond_sweep(const struct GbBondModel *model,
+                                  const struct GbSweepPass *pass,
+                                  size_t count,
+                                  const struct GbAtomArrays *atoms,
+                                  const int32_t *pairs,
+                                  const uint8_t *counted,
+                                  double *const *records,
+                                  struct GbBondOutput *out,
+                                  struct GbSweepTally *tally,
+                                  size_t *failed_index);
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus
@@ -1399,6 +1529,9 @@ static inline GbLayout granbond_header_layout(void)
     l.tangential_output = sizeof(GbTangentialOutput);
     l.type_bodies = sizeof(GbTypeBodies);
     l.check_report = sizeof(GbCheckReport);
+    l.record_layout = sizeof(GbRecordLayout);
+    l.sweep_pass = sizeof(GbSweepPass);
+    l.sweep_tally = sizeof(GbSweepTally);
     l.bond_state_len = GRANBOND_BOND_STATE_LEN;
     l.wall_bond_state_len = GRANBOND_WALL_BOND_STATE_LEN;
     l.contact_state_len = GRANBOND_CONTACT_STATE_LEN;

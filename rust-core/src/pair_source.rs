@@ -87,6 +87,14 @@ impl<'a> IndexedPairs<'a> {
         }
         Ok(Self { atoms, pairs })
     }
+
+    /// The bonds `range` of this batch, whose indices were checked with it.
+    pub fn sub(&self, range: std::ops::Range<usize>) -> Self {
+        Self {
+            atoms: self.atoms,
+            pairs: &self.pairs[range],
+        }
+    }
 }
 
 impl PairSource for IndexedPairs<'_> {

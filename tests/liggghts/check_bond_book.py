@@ -94,21 +94,23 @@ BOND_STATE_LEN = 19
 
 
 def check_dump_columns(path):
-    """id_i id_j periodic f(3) t(3) | state(BOND_STATE_LEN) output(11: f, Ti+Tj, Ti-Tj, sigma, tau) | shear(3)"""
+    """id_i id_j periodic f(3) t(3) | state(BOND_STATE_LEN) output(12: f, T_1, T_2, side, sigma, tau) | shear(3)"""
     first_out = 9 + BOND_STATE_LEN
-    rows = [r for r in read_table_loose(path) if len(r) == first_out + 14 and r[9] == 1.0]
+    rows = [r for r in read_table_loose(path) if len(r) == first_out + 15 and r[9] == 1.0]
     if not rows:
         raise Failure("no intact bond in the dump local output")
     area = math.pi * (LAMBDA * RADIUS) ** 2
     for r in rows:
         force, torque = r[3:6], r[6:9]
-        out = r[first_out:first_out + 11]
+        out = r[first_out:first_out + 12]
         if any(abs(force[c] - out[c]) > 1e-12 * abs(force[0]) for c in range(3)):
             raise Failure(f"dumped force {force} differs from the bond output slots {out[0:3]}")
-        t_i = [0.5 * (out[3 + c] + out[6 + c]) for c in range(3)]
+        if out[9] not in (1.0, -1.0):
+            raise Failure(f"bond_side {out[9]} is neither +1 nor -1")
+        t_i = out[3:6] if out[9] > 0 else out[6:9]
         if any(abs(torque[c] - t_i[c]) > 1e-12 * (abs(force[0]) + 1e-30) for c in range(3)):
             raise Failure(f"dumped torque {torque} differs from the bond output {t_i}")
-        sigma = out[9]
+        sigma = out[10]
         if abs(sigma - abs(force[0]) / area) > 1e-5 * sigma:   # dump local prints 6 digits
             raise Failure(f"sigma {sigma} != |F|/A = {abs(force[0]) / area} for pure tension")
     return len(rows)

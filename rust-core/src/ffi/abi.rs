@@ -9,16 +9,18 @@ use crate::ffi::bond::{AtomArrayPointers, SphereKinematics};
 use crate::ffi::checks::CheckReport;
 use crate::ffi::contact::TangentialOutput;
 use crate::kinematics::PairKinematics;
+use crate::record::RecordLayout;
+use crate::sweep::{SweepPass, SweepTally};
 use crate::timestep_check::TypeBodies;
 use std::mem::size_of;
 
 /// Bumped whenever a struct, a function or a meaning changes.
-pub const GRANBOND_ABI_VERSION: u32 = 9;
+pub const GRANBOND_ABI_VERSION: u32 = 10;
 
 /// The meaning of the state slots (`granbond_state_slot`): bumped whenever a
 /// slot is added, removed or changes meaning, so that engines can refuse
 /// restart files written with another layout instead of misreading them.
-pub const GRANBOND_STATE_LAYOUT_VERSION: u32 = 2;
+pub const GRANBOND_STATE_LAYOUT_VERSION: u32 = 3;
 
 /// What the caller was compiled against: fill it with the header's version
 /// and `sizeof` of each struct, and pass it to `granbond_check_layout`.
@@ -41,6 +43,9 @@ pub struct Layout {
     pub tangential_output: usize,
     pub type_bodies: usize,
     pub check_report: usize,
+    pub record_layout: usize,
+    pub sweep_pass: usize,
+    pub sweep_tally: usize,
     pub bond_state_len: usize,
     pub wall_bond_state_len: usize,
     pub contact_state_len: usize,
@@ -70,6 +75,9 @@ pub fn library_layout() -> Layout {
         tangential_output: size_of::<TangentialOutput>(),
         type_bodies: size_of::<TypeBodies>(),
         check_report: size_of::<CheckReport>(),
+        record_layout: size_of::<RecordLayout>(),
+        sweep_pass: size_of::<SweepPass>(),
+        sweep_tally: size_of::<SweepTally>(),
         bond_state_len: BOND_STATE_LEN,
         wall_bond_state_len: WALL_BOND_STATE_LEN,
         contact_state_len: CONTACT_STATE_LEN,
@@ -103,7 +111,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
         ));
     }
     let e = reference(expected, "expected")?;
-    let items: [(&str, usize, usize); 15] = [
+    let items: [(&str, usize, usize); 18] = [
         ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
         ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
         ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
@@ -124,6 +132,9 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
         ),
         ("sizeof(GbTypeBodies)", e.type_bodies, l.type_bodies),
         ("sizeof(GbCheckReport)", e.check_report, l.check_report),
+        ("sizeof(GbRecordLayout)", e.record_layout, l.record_layout),
+        ("sizeof(GbSweepPass)", e.sweep_pass, l.sweep_pass),
+        ("sizeof(GbSweepTally)", e.sweep_tally, l.sweep_tally),
         ("bond state length", e.bond_state_len, l.bond_state_len),
         (
             "wall bond state length",

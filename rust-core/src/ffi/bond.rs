@@ -240,6 +240,46 @@ pub struct AtomArrayPointers {
     pub count: usize,
 }
 
+/// The engine's per-atom arrays as slices of `atoms->count` atoms.
+///
+/// # Safety
+/// The pointers of `atoms` must be null or valid for that many atoms.
+pub(super) unsafe fn atom_arrays<'a>(atoms: &AtomArrayPointers) -> Result<AtomArrays<'a>, Failure> {
+    let n = atoms.count;
+    // the arrays' sizes in bytes must fit an isize (slices)
+    let n3 = n
+        .checked_mul(3)
+        .filter(|&m| m <= isize::MAX as usize / std::mem::size_of::<f64>())
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("atoms->count {n} is too large")))?;
+    Ok(AtomArrays {
+        x: slice(atoms.x, n3, "atoms->x")?,
+        v: slice(atoms.v, n3, "atoms->v")?,
+        omega: slice(atoms.omega, n3, "atoms->omega")?,
+        radius: slice(atoms.radius, n, "atoms->radius")?,
+    })
+}
+
+/// `pairs` as bonds of `arrays`, each index checked; a bad one is
+/// reported as bond `first + k` of the caller's.
+pub(super) fn indexed_pairs<'a>(
+    arrays: AtomArrays<'a>,
+    pairs: &'a [[i32; 2]],
+    first: usize,
+    failed_index: FailedIndex,
+) -> Result<IndexedPairs<'a>, Failure> {
+    IndexedPairs::new(arrays, pairs).map_err(|e| {
+        let bond = first + e.bond;
+        failed_index.report(bond);
+        Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "bond {bond}: atom index {} outside the {} atoms of the arrays",
+                e.index, e.atoms
+            ),
+        )
+    })
+}
+
 /// `granbond_bond_compute_batch` for bonds whose states lie apart in memory,
 /// as in an engine's contact history, and whose kinematics are read from
 /// the engine's per-atom arrays: bond `k` joins atoms `pairs[2k]` (`i`) and
@@ -268,29 +308,9 @@ pub unsafe extern "C" fn granbond_bond_compute_indexed(
     out: *mut BondOutput,
     failed_index: *mut usize,
 ) -> Status {
-    let n = atoms.count;
-    // the arrays' sizes in bytes must fit an isize (slices)
-    let n3 = n
-        .checked_mul(3)
-        .filter(|&m| m <= isize::MAX as usize / std::mem::size_of::<f64>())
-        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("atoms->count {n} is too large")))?;
-    let arrays = AtomArrays {
-        x: slice(atoms.x, n3, "atoms->x")?,
-        v: slice(atoms.v, n3, "atoms->v")?,
-        omega: slice(atoms.omega, n3, "atoms->omega")?,
-        radius: slice(atoms.radius, n, "atoms->radius")?,
-    };
+    let arrays = atom_arrays(atoms)?;
     let p = slice(pairs as *const [i32; 2], count, "pairs")?;
-    let kinematics = IndexedPairs::new(arrays, p).map_err(|e| {
-        failed_index.report(e.bond);
-        Failure::new(
-            Status::InvalidArgument,
-            format!(
-                "bond {}: atom index {} outside the {} atoms of the arrays",
-                e.bond, e.index, e.atoms
-            ),
-        )
-    })?;
+    let kinematics = indexed_pairs(arrays, p, 0, failed_index)?;
     let model = reference(model, "model")?;
     let pointers = slice(states as *const *mut f64, count, "states")?;
     for (index, &p) in pointers.iter().enumerate() {

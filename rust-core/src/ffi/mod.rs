@@ -18,6 +18,7 @@ pub mod guard;
 pub mod layout;
 pub mod parameters;
 pub mod results;
+pub mod sweep;
 
 pub use error::Status;
 

@@ -639,3 +639,104 @@ int test_bond_limits(void)
     granbond_bond_model_free(m);
     return 0;
 }
+
+/* The pass over an engine's index of bonded pairs: records laid out as
+ * granbond_record_layout says (contact, bond, loads), the scattered bonds
+ * among them. A force pass steps each bond as granbond_bond_compute would,
+ * keeps an intact bond's loads, clears the contact and loads of one that
+ * breaks, and counts what it was asked to; a setup pass applies the kept
+ * loads, bit for bit, and changes nothing. */
+int test_bond_sweep(void)
+{
+    const GbBondParams p = bond_fixture();
+    GbBondModel *m = NULL;
+    GbRecordLayout layout;
+    GbPairKinematics k[N_SCATTERED];
+    GbBondOutput out[N_SCATTERED], setup[N_SCATTERED], single, kept;
+    double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], one[GRANBOND_BOND_STATE_LEN];
+    double records[N_SCATTERED][GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN];
+    double before[sizeof records / sizeof(double)];
+    double x[6 * N_SCATTERED], v[6 * N_SCATTERED], w[6 * N_SCATTERED], radius[2 * N_SCATTERED];
+    double *states[N_SCATTERED], *at[N_SCATTERED];
+    int32_t pairs[2 * N_SCATTERED];
+    uint8_t counted[N_SCATTERED];
+    GbAtomArrays atoms;
+    GbSweepPass pass;
+    GbSweepTally tally;
+    size_t failed = 999, c;
+    int b, intact = 0, broken = 0;
+    const char *name = NULL;
+    int32_t flips = -1;
+
+    EXPECT_OK(granbond_record_layout(1, &layout), "granbond_record_layout(with the contact)");
+    CHECK(layout.len == sizeof records[0] / sizeof(double) && layout.contact_len == GRANBOND_CONTACT_STATE_LEN &&
+              layout.bond == GRANBOND_CONTACT_STATE_LEN && layout.loads == layout.bond + GRANBOND_BOND_STATE_LEN &&
+              layout.len == granbond_state_len(GB_STATE_KIND_PAIR_RECORD),
+          "the record: contact, bond, loads");
+    EXPECT_OK(granbond_state_slot(GB_STATE_KIND_PAIR_RECORD, layout.status, &name, &flips), "granbond_state_slot");
+    CHECK(strcmp(name, "status") == 0 && flips == 0, "layout.status is the bond's status slot");
+
+    if (new_bond_model(&p, &m) || scattered_fixture(m, k, memory, states))
+        return 1;
+    indexed_fixture(k, x, v, w, radius, pairs, &atoms);
+    for (b = 0; b < N_SCATTERED; b++) {
+        /* the records in reverse order of the bonds, their contacts not zero */
+        at[b] = records[N_SCATTERED - 1 - b];
+        for (c = 0; c < layout.len; c++) at[b][c] = 0.0;
+        for (c = 0; c < layout.contact_len; c++) at[b][c] = 1.0e-6 * (double)(c + 1);
+        memcpy(at[b] + layout.bond, states[b], sizeof one);
+        counted[b] = (uint8_t)(b % 3 != 0);
+    }
+    memcpy(before, records, sizeof records);
+
+    pass.dt = DT;
+    pass.advance = 1;
+    pass.contact_under_bond = 0;
+    pass.with_contact = 1;
+    memset(&tally, 0, sizeof tally);
+    EXPECT_OK(granbond_bond_sweep(m, &pass, N_SCATTERED, &atoms, pairs, counted, at, out, &tally, &failed),
+              "granbond_bond_sweep, force pass");
+    for (b = 0; b < N_SCATTERED; b++) {
+        memcpy(one, states[b], sizeof one);
+        EXPECT_OK(granbond_bond_compute(m, &k[b], DT, one, &single), say("granbond_bond_compute, bond %d", b));
+        CHECK(memcmp(&out[b], &single, sizeof single) == 0 && memcmp(one, at[b] + layout.bond, sizeof one) == 0,
+              say("swept bond %d = single call, bit for bit", b));
+        if (out[b].status == GB_BOND_STATUS_INTACT) {
+            intact += counted[b];
+            EXPECT_OK(granbond_bond_output_load(at[b] + layout.loads, &kept), "granbond_bond_output_load");
+            CHECK(memcmp(kept.force_i, out[b].force_i, sizeof kept.force_i) == 0 &&
+                      memcmp(kept.torque_i, out[b].torque_i, sizeof kept.torque_i) == 0 &&
+                      memcmp(kept.torque_j, out[b].torque_j, sizeof kept.torque_j) == 0,
+                  say("bond %d: the record keeps the loads applied", b));
+        } else if (out[b].break_mode != GB_BREAK_MODE_NONE) {
+            broken += counted[b];
+            for (c = 0; c < layout.contact_len; c++)
+                CHECK(at[b][c] == 0.0, say("bond %d broke: its contact starts afresh", b));
+        }
+    }
+    CHECK(out[7].break_mode == GB_BREAK_MODE_DISTANCE && tally.intact == intact &&
+              tally.broken_distance == broken && broken == 1 && tally.broken_tension == 0,
+          say("tally: %d intact and %d broken of the bonds counted", intact, broken));
+
+    memcpy(before, records, sizeof records);
+    pass.advance = 0;
+    memset(&tally, 0, sizeof tally);
+    EXPECT_OK(granbond_bond_sweep(m, &pass, N_SCATTERED, &atoms, pairs, counted, at, setup, &tally, &failed),
+              "granbond_bond_sweep, setup pass");
+    CHECK(memcmp(before, records, sizeof records) == 0 && tally.intact == intact, "a setup pass changes nothing");
+    for (b = 0; b < N_SCATTERED; b++)
+        if (out[b].status == GB_BOND_STATUS_INTACT)
+            CHECK(memcmp(setup[b].force_i, out[b].force_i, sizeof out[b].force_i) == 0 &&
+                      memcmp(setup[b].torque_i, out[b].torque_i, sizeof out[b].torque_i) == 0 &&
+                      memcmp(setup[b].torque_j, out[b].torque_j, sizeof out[b].torque_j) == 0,
+                  say("bond %d: the setup pass applies the force pass's loads, bit for bit", b));
+
+    /* a null record: named before any bond moves */
+    pass.advance = 1;
+    at[4] = NULL;
+    EXPECT(granbond_bond_sweep(m, &pass, N_SCATTERED, &atoms, pairs, counted, at, out, &tally, &failed),
+           GB_STATUS_NULL_POINTER, "granbond_bond_sweep with records[4] = NULL");
+    CHECK(failed == 4 && memcmp(before, records, sizeof records) == 0, "failed_index = 4; no record changed");
+    granbond_bond_model_free(m);
+    return 0;
+}

@@ -1,0 +1,155 @@
+// The index of a pass's bonded pairs of one bond model: where each bond's
+// pair record lies, its two atoms, and the engine's flag of the pair. Each
+// pass hands the whole index to the core (granbond_bond_sweep), which
+// applies the pass rule to every bond in index order; the contact loop
+// passes over a swept pair at once. The same in both adapters.
+//
+// The index holds pointers into the engine's history pages and indices into
+// its atom arrays, so it is rebuilt whenever the engine rebuilds its
+// neighbour lists (the pages move, atoms migrate); a bond that forms in a
+// pass is added to it. Records are keyed by the neighbour list, not by atom
+// IDs, so an ID handed out again cannot lead a bond to another pair
+// (fix_granbond_atoms.h forgets such records before any index is built).
+#ifndef GRANBOND_BOND_INDEX_H
+#define GRANBOND_BOND_INDEX_H
+
+#include "granbond.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+namespace granbond {
+
+// The engine's per-pair flag of an indexed bond, where the adapter owns the
+// contact loop (LAMMPS): the loop leaves the pair to the sweep without
+// reading its record. Engines treat any non-zero flag as "keep the record"
+// (partners), so the mark survives their bookkeeping. Where the engine owns
+// the loop (LIGGGHTS), its callbacks read the bond's status instead, and the
+// flags are the engine's own.
+const int kSweptMark = 2;
+
+struct BondIndex {
+    const GbBondModel *model = nullptr;
+    GbSweepPass pass{};
+    std::vector<int32_t> pairs;      // i, j per bond
+    std::vector<uint8_t> counted;    // this rank counts the bond (each bond on one rank)
+    std::vector<double *> records;
+    std::vector<int *> flags;        // the engine's flag of each bond's pair
+    std::vector<GbBondOutput> out;
+
+    size_t size() const { return records.size(); }
+    void clear()
+    {
+        pairs.clear();
+        counted.clear();
+        records.clear();
+        flags.clear();
+    }
+    void add(int i, int j, bool counts, double *record, int *flag)
+    {
+        pairs.push_back(i);
+        pairs.push_back(j);
+        counted.push_back(counts ? 1 : 0);
+        records.push_back(record);
+        flags.push_back(flag);
+    }
+
+    // One core call over the bonds from `first` on (`advance`: a force
+    // pass), reading the atoms of `atom` (x, v, omega: blocks of 3 doubles
+    // per atom; local and ghost atoms). On failure `bad` is the bond's
+    // position in the index.
+    template<class Atom>
+    GbStatus sweep(const Atom *atom, size_t first, bool advance, double dt, GbSweepTally &tally, size_t &bad)
+    {
+        const size_t n = size() - first;
+        out.resize(size());
+        GbAtomArrays arrays;
+        arrays.x = atom->x[0];
+        arrays.v = atom->v[0];
+        arrays.omega = atom->omega[0];
+        arrays.radius = atom->radius;
+        arrays.count = static_cast<size_t>(atom->nlocal + atom->nghost);
+        pass.advance = advance ? 1 : 0;
+        pass.dt = dt;
+        size_t failed = 0;
+        const GbStatus status = granbond_bond_sweep(model, &pass, n, &arrays, pairs.data() + 2 * first,
+                                                    counted.data() + first, records.data() + first,
+                                                    out.data() + first, &tally, &failed);
+        bad = first + (failed < n ? failed : 0);
+        return status;
+    }
+
+    // Drops the bonds that are no longer intact (they broke in the latest
+    // sweep), keeping the order of the rest.
+    void keepIntact()
+    {
+        size_t kept = 0;
+        while (kept < size() && out[kept].status == GB_BOND_STATUS_INTACT) kept++;   // the common case: all held
+        for (size_t k = kept; k < size(); k++) {
+            if (out[k].status != GB_BOND_STATUS_INTACT) continue;
+            pairs[2 * kept] = pairs[2 * k];
+            pairs[2 * kept + 1] = pairs[2 * k + 1];
+            counted[kept] = counted[k];
+            records[kept] = records[k];
+            flags[kept] = flags[k];
+            out[kept] = out[k];
+            kept++;
+        }
+        pairs.resize(2 * kept);
+        counted.resize(kept);
+        records.resize(kept);
+        flags.resize(kept);
+        out.resize(kept);
+    }
+};
+
+// The index of `model` in `indices`, made on first use.
+inline BondIndex &indexOf(std::vector<BondIndex> &indices, const GbBondModel *model)
+{
+    for (BondIndex &b : indices)
+        if (b.model == model) return b;
+    indices.push_back(BondIndex());
+    indices.back().model = model;
+    return indices.back();
+}
+
+// The check of an index against the records it was built from: every
+// record whose status is intact (`status` doubles from its start) is in the
+// index once (`marked`: with its flag kSweptMark), and nothing else is.
+// `visit(f)` calls `f(record, flag)` for every pair of the engine's lists
+// whose type pair bonds. Returns what is wrong, or an empty string.
+template<class Visit>
+std::string checkIndex(const std::vector<BondIndex> &indices, size_t status, bool marked, Visit visit)
+{
+    std::unordered_set<const double *> indexed;
+    size_t entries = 0;
+    for (const BondIndex &b : indices)
+        for (size_t k = 0; k < b.size(); k++) {
+            entries++;
+            if (!indexed.insert(b.records[k]).second) return "a bond is in the index twice";
+            if (b.records[k][status] != GB_BOND_STATUS_INTACT) return "the index holds a bond that is not intact";
+            if (marked && *b.flags[k] != kSweptMark) return "an indexed bond's pair is not marked";
+        }
+    size_t intact = 0;
+    std::string wrong;
+    visit([&](const double *record, const int *flag) {
+        if (record[status] != GB_BOND_STATUS_INTACT) {
+            if (marked && *flag == kSweptMark && wrong.empty())
+                wrong = "a pair is marked as an indexed bond but is not intact";
+            return;
+        }
+        intact++;
+        if (!indexed.count(record) && wrong.empty()) wrong = "an intact bond is missing from the index";
+    });
+    if (!wrong.empty()) return wrong;
+    if (intact != entries)
+        return "the records hold " + std::to_string(intact) + " intact bonds, the index " + std::to_string(entries);
+    return std::string();
+}
+
+}
+
+#endif

@@ -1,0 +1,113 @@
+//! The rule of a pass over bonded pairs, for engines that keep an index of
+//! the records of intact bonds and sweep it once per pass
+//! (docs/models/bond-nonlinear.md, "Creation" and "Breakage"):
+//!
+//! - a force pass advances each bond; an intact bond's loads are kept in its
+//!   record for the passes that must not advance it; a bond that breaks is
+//!   counted by mode, and unless the contact goes on under the bond, the
+//!   contact starts afresh, as in BPM and LAMMPS `pair granular`;
+//! - a setup pass (a run's start) advances nothing and applies the loads of
+//!   the latest force pass, so a second `run` or a restart continues the
+//!   first bit for bit.
+//!
+//! The bond step itself is [`crate::bond::BondModel`]'s; this module says
+//! what the pass does around it.
+
+use crate::bond::output_slots::{load_output, store_output};
+use crate::bond::{BondOutput, BondStatus, BreakMode};
+use crate::record::RecordLayout;
+
+/// One pass, as the engine describes it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepPass {
+    /// The time step (force passes).
+    pub dt: f64,
+    /// 1: a force pass, which advances the bonds; 0: a setup pass.
+    pub advance: i32,
+    /// 1: the contact's state goes on under an intact bond and acts, from
+    /// where it stands, when the bond breaks; 0: it starts afresh.
+    pub contact_under_bond: i32,
+    /// 1: the records hold the Voigt contact's state first
+    /// ([`RecordLayout::new`]).
+    pub with_contact: i32,
+}
+
+/// The bonds one pass counted (only those its caller marked as counted:
+/// each bond once over all ranks).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SweepTally {
+    /// Intact after the pass.
+    pub intact: i64,
+    /// Broken in this pass, by [`BreakMode`].
+    pub broken_distance: i64,
+    pub broken_tension: i64,
+    pub broken_compression: i64,
+    pub broken_shear: i64,
+}
+
+impl SweepTally {
+    fn count_break(&mut self, mode: i32) {
+        let slot = match mode {
+            m if m == BreakMode::Distance as i32 => &mut self.broken_distance,
+            m if m == BreakMode::Tension as i32 => &mut self.broken_tension,
+            m if m == BreakMode::Compression as i32 => &mut self.broken_compression,
+            m if m == BreakMode::Shear as i32 => &mut self.broken_shear,
+            _ => return,
+        };
+        *slot += 1;
+    }
+
+    /// Bonds broken in the pass, all modes.
+    pub fn broken(&self) -> i64 {
+        self.broken_distance + self.broken_tension + self.broken_compression + self.broken_shear
+    }
+}
+
+/// The rest of a force pass for one bond its step left with `out`: the
+/// loads kept while it is intact; at a break, the count, the loads cleared
+/// and, unless `contact_under_bond`, the contact's state.
+#[inline]
+pub fn after_force_step(
+    layout: &RecordLayout,
+    pass: &SweepPass,
+    record: &mut [f64],
+    out: &BondOutput,
+    counted: bool,
+    tally: &mut SweepTally,
+) {
+    if out.status == BondStatus::Intact as i32 {
+        *layout.loads(record) = store_output(out);
+        tally.intact += i64::from(counted);
+        return;
+    }
+    if out.break_mode != BreakMode::None as i32 {
+        if counted {
+            tally.count_break(out.break_mode);
+        }
+        layout.loads(record).fill(0.0);
+        if pass.contact_under_bond == 0 {
+            record[..layout.contact_len].fill(0.0);
+        }
+    }
+}
+
+/// A setup pass for one bond: the loads of its latest force pass (none for
+/// a bond that is not intact).
+pub fn setup_loads(
+    layout: &RecordLayout,
+    record: &mut [f64],
+    counted: bool,
+    tally: &mut SweepTally,
+) -> BondOutput {
+    let status = BondStatus::from_slot(record[layout.status]);
+    if status != BondStatus::Intact {
+        return BondOutput {
+            status: status as i32,
+            ..BondOutput::default()
+        };
+    }
+    tally.intact += i64::from(counted);
+    load_output(layout.loads(record))
+}

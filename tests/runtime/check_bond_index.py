@@ -1,0 +1,165 @@
+"""Engine-level checks of the index of bonds the adapters sweep each pass
+(docs/performance.md, "The bond sweep"), for LAMMPS (lmp-granbond) and
+LIGGGHTS (liggghts-granbond). One claim per mode:
+
+  index       with GRANBOND_CHECK_INDEX set, every force pass recounts the
+              index from the pair records (each intact bond in it once,
+              nothing else) and ends the run on a mismatch. The deck
+              index_<kind>.in (bonds across the periodic boundary, bonds
+              that break, bonds that form mid-run, delete_atoms ... compress
+              no, a restart file) runs on 1, 2 and 4 ranks; with neighbour
+              lists rebuilt every step, every 100 steps, and with
+              atom_modify sort; and is continued from its restart file on
+              another rank count. Every run passes the check; at every
+              thermo step created = broken + intact + lost; and the bond
+              counts (LAMMPS: created, broken; LIGGGHTS: created, broken,
+              intact, lost) equal those of the reference table
+              data/index_counts_<kind>.txt, which the adapters that visited
+              each bond in the neighbour loop printed for the same deck.
+  under       contact_under_bond yes|no: two touching spheres, bonded, slide
+              past each other until the bond breaks in shear. With yes the
+              contact's tangential spring acts at the break with the
+              history it built under the bond; with no it starts from zero:
+              at the step after the break its force is one step's increment.
+
+usage: check_bond_index.py --mode MODE --engine BIN --kind lammps|liggghts
+                           [--mpiexec MPIEXEC] --workdir DIR
+"""
+
+import argparse
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "liggghts"))
+sys.path.insert(0, HERE)
+
+import liggghts_run  # noqa: E402
+from liggghts_run import Failure, main, read_table, run_deck  # noqa: E402
+
+liggghts_run.DECKS = os.path.join(HERE, "decks")
+CHECK = {"GRANBOND_CHECK_INDEX": "1"}
+ANNOUNCED = "checking the index of bonds after every pass"
+
+
+def launcher(a, n):
+    if n == 1:
+        return [a.engine]
+    if not a.mpiexec:
+        raise Failure("--mpiexec is needed for several ranks")
+    prefix = [a.mpiexec, "-np", str(n)]
+    if os.geteuid() == 0:
+        prefix += ["--allow-run-as-root"]
+    return prefix + ["--oversubscribe", a.engine]
+
+
+def thermo_rows(workdir):
+    """The rows of every thermo block of the run's log, as numbers."""
+    rows, header = [], None
+    with open(os.path.join(workdir, "log.lammps"), encoding="utf-8", errors="replace") as f:
+        for line in f:
+            words = line.split()
+            if words[:1] == ["Step"]:
+                header = words
+            elif line.startswith("Loop time"):
+                header = None
+            elif header and len(words) == len(header) and words[0].isdigit():
+                rows.append([float(w) for w in words])
+    return rows
+
+
+def counts(workdir):
+    """The thermo rows as integers (step, atoms, then the bond counts)."""
+    return [tuple(int(v) for v in row) for row in thermo_rows(workdir)]
+
+
+def index_run(a, n, workdir, variables):
+    rc, text = run_deck(launcher(a, n), f"index_{a.kind}.in", workdir, variables, env=CHECK)
+    if rc != 0:
+        raise Failure(f"{n} ranks, {variables}: exit {rc}:\n{text[-3000:]}")
+    if ANNOUNCED not in text:
+        raise Failure(f"{n} ranks, {variables}: the run did not check its index")
+    return counts(workdir)
+
+
+def check_index(a, workdir):
+    table = os.path.join(HERE, "data", f"index_counts_{a.kind}.txt")
+    # rows: phase (0: the first deck, 1: continued from its restart file), then the thermo columns
+    want = [tuple(int(v) for v in row) for row in read_table(table)]
+    first = [r[1:] for r in want if r[0] == 0]
+    resumed = [r[1:] for r in want if r[0] == 1]
+    d = lambda *p: os.path.join(workdir, *p)  # noqa: E731
+    failures = []
+
+    def judge(label, got, expected, balanced=True):
+        # created = broken + intact + lost (vanished) at every output
+        unbalanced = [r for r in got if balanced and r[2] != r[3] + r[4] + r[5]]
+        if unbalanced:
+            failures.append(f"{label}: created != broken + intact + lost at {unbalanced[:3]}")
+        # the reference holds what the visiting adapters printed: LAMMPS's
+        # created and broken, LIGGGHTS's four counts
+        got = [r[:len(e)] for r, e in zip(got, expected)] + got[len(expected):]
+        if got != expected:
+            diff = [(g, e) for g, e in zip(got, expected) if g != e][:3]
+            failures.append(f"{label}: counts differ from the reference (got, want): "
+                            f"{diff or (len(got), len(expected))}")
+        else:
+            print(f"ok: {label}: {len(got)} rows equal, the last {got[-1]}")
+
+    for n in (1, 2, 4):
+        for every, sort in ((1, 0), (100, 0), (1, 10)):
+            label = f"{n} ranks, lists every {every}, sort {sort}"
+            judge(label, index_run(a, n, d(f"r{n}-e{every}-s{sort}"), {"every": every, "sort": sort}), first)
+    for wrote, reads in ((1, 2), (2, 1), (4, 2)):
+        w = d(f"r{wrote}-e1-s0")
+        label = f"restart written on {wrote} ranks, read on {reads}"
+        # LAMMPS's compute pair counts events of this process only
+        judge(label, index_run(a, reads, w, {"phase": 1}), resumed, balanced=a.kind == "liggghts")
+    if failures:
+        raise Failure("; ".join(failures))
+
+
+def tangential_force_after_break(a, workdir, under):
+    liggghts_run.run_ok([a.engine], "under_lammps.in", workdir, {"under": under})
+    rows = thermo_rows(workdir)
+    broke = [k for k, r in enumerate(rows) if r[1] > 0]
+    if not broke or broke[0] == 0:
+        raise Failure(f"under {under}: the bond did not break within the run")
+    k = broke[0]
+    return rows[k - 1][2], rows[k][2], rows[k][0]
+
+
+def check_under(a, workdir):
+    if a.kind != "lammps":
+        raise Failure("under: lammps only (LIGGGHTS's own contact models step under a bond whatever granbond does)")
+    _, after_yes, step_yes = tangential_force_after_break(a, os.path.join(workdir, "yes"), "yes")
+    before, after_no, step_no = tangential_force_after_break(a, os.path.join(workdir, "no"), "no")
+    print(f"the bond breaks at step {step_yes:.0f} (yes) and {step_no:.0f} (no); "
+          f"tangential contact force after it: yes {after_yes:.6g} N, no {after_no:.6g} N")
+    # from zero, one step of the spring: kt * slip velocity * dt (deck: kt
+    # 1e4 N/m, 0.1 m/s, 1e-6 s), the slip velocity nearly all tangential
+    one_step = 1e4 * 0.1 * 1e-6
+    if abs(after_no - one_step) > 0.01 * one_step:
+        raise Failure(f"no: the contact force after the break {after_no} N is not one step's spring "
+                      f"increment {one_step} N: the contact did not start from zero")
+    if step_yes != step_no:
+        raise Failure(f"the bond broke at step {step_yes} with yes and {step_no} with no: the switch changed the bond")
+    if not after_yes > 20 * after_no > 0:
+        raise Failure(f"the contact force after the break: yes {after_yes} N should keep the history built "
+                      f"under the bond, far above no's one-step increment {after_no} N")
+
+
+def parse():
+    p = argparse.ArgumentParser()
+    p.add_argument("--mode", required=True, choices=["index", "under"])
+    p.add_argument("--engine", required=True)
+    p.add_argument("--kind", required=True, choices=["lammps", "liggghts"])
+    p.add_argument("--mpiexec")
+    p.add_argument("--workdir", required=True)
+    return p.parse_args()
+
+
+if __name__ == "__main__":
+    args = parse()
+    checks = {"index": check_index, "under": check_under}
+    main(lambda: checks[args.mode](args, args.workdir))
