@@ -26,7 +26,8 @@
 
 use granbond::bond::output_slots::{store_output, BOND_OUTPUT_LEN};
 use granbond::bond::{
-    BondModel, BondOutput, BondParams, BondStatus, BOND_STATE_LEN, PARAMETERS, WALL_BOND_STATE_LEN,
+    BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode, BOND_STATE_LEN, PARAMETERS,
+    WALL_BOND_STATE_LEN,
 };
 use granbond::contact::{
     ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN, VOIGT_PARAMETERS,
@@ -39,8 +40,11 @@ use granbond::ffi::contact_geometry as fcg;
 use granbond::ffi::error::{granbond_last_error_message, granbond_last_error_parameter};
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::parameters::{self as fp, ParameterRow};
+use granbond::ffi::sweep::{granbond_bond_sweep, granbond_record_layout};
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
+use granbond::record::RecordLayout;
+use granbond::sweep::{SweepPass, SweepTally};
 use granbond::timestep_check::TypeBodies;
 use std::collections::BTreeMap;
 use std::ffi::{c_char, CStr};
@@ -50,7 +54,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 59] = [
+pub const ENTRY_POINTS: [&str; 61] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -110,6 +114,8 @@ pub const ENTRY_POINTS: [&str; 59] = [
     "granbond_last_error_parameter",
     "granbond_state_len",
     "granbond_state_slot",
+    "granbond_record_layout",
+    "granbond_bond_sweep",
 ];
 
 /// The set-by-name and need entries of one parameter table.
@@ -335,6 +341,17 @@ impl<'a> Input<'a> {
         }
     }
 
+    /// A pointer argument drawn after the older ones of its operation: a
+    /// zero byte, as past the end of the input, passes it valid, so inputs
+    /// made before it was drawn still get past its check.
+    fn late_pointer(&mut self) -> Pointer {
+        match self.byte() % 16 {
+            1 => Pointer::Null,
+            2 => Pointer::Misaligned,
+            _ => Pointer::Valid,
+        }
+    }
+
     /// Overwrites a few 8-byte words of `value` with fuzzed bits: a double,
     /// or two small `i32` (the switches and counts of the structs).
     fn mutate<T: Copy>(&mut self, value: &mut T) {
@@ -402,8 +419,13 @@ const fn max(a: usize, b: usize) -> usize {
     }
 }
 
-/// Slots of the largest state: every pool entry can be handed to any model.
+/// Slots of the largest state of a model.
 const MAX_STATE: usize = max(max(BOND_STATE_LEN, WALL_BOND_STATE_LEN), CONTACT_STATE_LEN);
+/// A pool entry holds the largest state or pair record, and one slot more
+/// (a misaligned pointer stays inside): every entry can be handed to any
+/// model and to the bond sweep.
+const ENTRY: usize = max(MAX_STATE, RecordLayout::new(true).len) + 1;
+type Entry = [f64; ENTRY];
 const POOL: usize = 8;
 const MAX_BATCH: usize = 8;
 const MAX_ATOMS: usize = 8;
@@ -458,6 +480,73 @@ fn realistic_pair(input: &mut Input) -> PairKinematics {
     }
 }
 
+/// What `Session::indexed_bonds` draws: the engine's arrays and index of
+/// bonds, the pool entries of the bonds' states or records, and how the
+/// pointer arguments are passed (atoms, pairs, states, out, failed_index).
+struct IndexedBonds {
+    model: *const BondModel,
+    count: usize,
+    /// What `atoms` points into.
+    _arrays: [Vec<f64>; 4],
+    atoms: Place<AtomArrayPointers>,
+    /// `2 count` indices and one more, so a misaligned pointer stays inside.
+    pairs: Vec<i32>,
+    dt: f64,
+    entries: Vec<usize>,
+    states: Vec<*mut f64>,
+    how: [Pointer; 5],
+}
+
+impl IndexedBonds {
+    /// Whether the arrays of `atoms` pass the ABI's checks.
+    fn arrays_pass(&self) -> bool {
+        let a = self.atoms.get();
+        a.count == 0
+            || [a.x, a.v, a.omega, a.radius]
+                .iter()
+                .all(|p| !p.is_null() && *p as usize % align_of::<f64>() == 0)
+    }
+
+    /// The first bond with an atom index outside `atoms->count`.
+    fn first_bad_pair(&self) -> Option<usize> {
+        let atoms = self.atoms.get().count;
+        (0..self.count).find(|&k| {
+            self.pairs[2 * k..2 * k + 2]
+                .iter()
+                .any(|&i| usize::try_from(i).map_or(true, |i| i >= atoms))
+        })
+    }
+}
+
+/// `start` with the bonds that `counted` marks added by what the pass left
+/// them: intact, or broken in the pass by mode.
+fn tally_after(start: SweepTally, out: &[BondOutput], counted: &[u8]) -> SweepTally {
+    let mut t = start;
+    for (o, _) in out.iter().zip(counted).filter(|(_, &c)| c != 0) {
+        t.intact += (o.status == BondStatus::Intact as i32) as i64;
+        match o.break_mode {
+            m if m == BreakMode::Distance as i32 => t.broken_distance += 1,
+            m if m == BreakMode::Tension as i32 => t.broken_tension += 1,
+            m if m == BreakMode::Compression as i32 => t.broken_compression += 1,
+            m if m == BreakMode::Shear as i32 => t.broken_shear += 1,
+            _ => {}
+        }
+    }
+    t
+}
+
+fn bits(values: &[f64]) -> Vec<u64> {
+    values.iter().map(|x| x.to_bits()).collect()
+}
+
+fn same_pool(a: &[Entry], b: &[Entry]) -> bool {
+    a.iter().zip(b).all(|(x, y)| bits(x) == bits(y))
+}
+
+fn bond_output_bits(o: &BondOutput) -> (Vec<u64>, i32, i32) {
+    (bits(&bond_output_numbers(o)), o.status, o.break_mode)
+}
+
 fn message() -> String {
     let p = granbond_last_error_message();
     assert!(!p.is_null(), "granbond_last_error_message returned NULL");
@@ -500,7 +589,7 @@ struct Session<'t> {
     voigt_models: Vec<*mut VoigtModel>,
     /// States of every kind, in one pool: any entry may be handed to any
     /// model, so a state written by one model is read by another.
-    pool: Vec<[f64; MAX_STATE + 1]>,
+    pool: Vec<Entry>,
     /// Contiguous states of the batch calls, as many of the largest kind.
     flat: Vec<f64>,
     pair: PairKinematics,
@@ -526,7 +615,7 @@ impl<'t> Session<'t> {
             tally,
             bond_models: Vec::new(),
             voigt_models: Vec::new(),
-            pool: vec![[0.0; MAX_STATE + 1]; POOL],
+            pool: vec![[0.0; ENTRY]; POOL],
             flat: vec![0.0; MAX_BATCH * MAX_STATE + 1],
             pair: realistic_pair(&mut Input::new(&[])),
             frame: ContactFrame {
@@ -796,7 +885,8 @@ impl<'t> Session<'t> {
             6 => self.bond_create(input, true),
             7 => self.bond_compute(input),
             8 => self.bond_batch(input),
-            9 | 10 => self.bond_indexed(input),
+            9 => self.bond_indexed(input),
+            10 => self.bond_sweep(input),
             11 => self.wall_try_create(input),
             12 => self.wall_compute(input),
             13 | 14 => self.bond_reach(input),
@@ -1338,12 +1428,11 @@ impl<'t> Session<'t> {
     }
 
     /// Distinct pool entries, then some of them replaced by null or
-    /// misaligned pointers.
-    fn scattered_pointers(&mut self, input: &mut Input, count: usize) -> Vec<*mut f64> {
+    /// misaligned pointers: the entries and the pointers.
+    fn scattered_pointers(&mut self, input: &mut Input, count: usize) -> (Vec<usize>, Vec<*mut f64>) {
         let start = input.below(POOL);
-        let mut p: Vec<*mut f64> = (0..count)
-            .map(|c| self.pool[(start + c) % POOL].as_mut_ptr())
-            .collect();
+        let entries: Vec<usize> = (0..count).map(|c| (start + c) % POOL).collect();
+        let mut p: Vec<*mut f64> = entries.iter().map(|&e| self.pool[e].as_mut_ptr()).collect();
         if count > 0 && input.below(4) == 0 {
             let c = input.below(count);
             p[c] = match input.below(2) {
@@ -1351,7 +1440,7 @@ impl<'t> Session<'t> {
                 _ => (p[c] as *mut u8).wrapping_add(1) as *mut f64,
             };
         }
-        p
+        (entries, p)
     }
 
     fn after_scattered(
@@ -1359,7 +1448,7 @@ impl<'t> Session<'t> {
         function: &'static str,
         status: Status,
         out: &[BondOutput],
-        before: &[[f64; MAX_STATE + 1]],
+        before: &[Entry],
         hf: Pointer,
         failed: &Place<usize>,
     ) {
@@ -1379,8 +1468,10 @@ impl<'t> Session<'t> {
         }
     }
 
-    fn bond_indexed(&mut self, input: &mut Input) {
-        let m = self.bond_model(input);
+    /// The arguments of the indexed entries, drawn in one order for both,
+    /// so that an input made for one drives the other to the same point.
+    fn indexed_bonds(&mut self, input: &mut Input) -> IndexedBonds {
+        let model = self.bond_model(input);
         let count = self.count(input).min(POOL);
         let atoms = input.below(MAX_ATOMS + 1);
         let mut x = Vec::with_capacity(3 * atoms + 1);
@@ -1410,47 +1501,64 @@ impl<'t> Session<'t> {
             })
             .collect();
         let (hx, hv, hw, hr) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
-        let mut a = Place::new(AtomArrayPointers {
+        let mut a = AtomArrayPointers {
             x: Self::batch_ptr(&mut x, hx),
             v: Self::batch_ptr(&mut v, hv),
             omega: Self::batch_ptr(&mut w, hw),
             radius: Self::batch_ptr(&mut radius, hr),
             count: atoms,
-        });
+        };
         if input.below(8) == 0 {
             // a count the arrays cannot hold: only with null arrays, which
             // the ABI must refuse before it reads them
-            a = Place::new(AtomArrayPointers {
+            a = AtomArrayPointers {
                 x: null(),
                 v: null(),
                 omega: null(),
                 radius: null(),
                 count: input.usize(),
-            });
+            };
         }
         let dt = self.dt(input);
-        let mut states = self.scattered_pointers(input, count);
+        let (entries, states) = self.scattered_pointers(input, count);
+        let how = [
+            input.pointer(),
+            input.pointer(),
+            input.pointer(),
+            input.pointer(),
+            input.pointer(),
+        ];
+        IndexedBonds {
+            model,
+            count,
+            _arrays: [x, v, w, radius],
+            atoms: Place::new(a),
+            pairs,
+            dt,
+            entries,
+            states,
+            how,
+        }
+    }
+
+    fn bond_indexed(&mut self, input: &mut Input) {
+        let mut b = self.indexed_bonds(input);
+        let count = b.count;
+        let mut states = b.states.clone();
         states.push(null_mut());
         let mut out = vec![BondOutput::default(); count + 1];
         let mut failed = Place::new(usize::MAX);
-        let (ha, hp, hs, ho, hf) = (
-            input.pointer(),
-            input.pointer(),
-            input.pointer(),
-            input.pointer(),
-            input.pointer(),
-        );
-        let mut pairs = pairs;
+        let [ha, hp, hs, ho, hf] = b.how;
         let before = self.pool.clone();
         // SAFETY: arrays of `atoms->count` atoms, `count` distinct states,
         // `2 count` indices, `count` outputs (null or misaligned checked).
         let status = unsafe {
             fb::granbond_bond_compute_indexed(
-                m,
+                b.model,
                 count,
-                a.ptr(ha),
-                Self::batch_ptr(&mut pairs, hp),
-                dt,
+                b.atoms.ptr(ha),
+                Self::batch_ptr(&mut b.pairs, hp),
+                b.dt,
                 Self::batch_ptr(&mut states, hs),
                 Self::batch_ptr(&mut out, ho),
                 failed.ptr(hf),
@@ -1464,6 +1572,361 @@ impl<'t> Session<'t> {
             hf,
             &failed,
         );
+    }
+
+    /// `granbond_bond_sweep` over records in pool entries, its bonds drawn
+    /// as `bond_indexed` draws them, so that an input made for one drives
+    /// the other past the same checks; then what the indexed entry does
+    /// not take, where zero bytes mean a force pass over records without
+    /// the contact's state, all bonds counted and valid pointers.
+    fn bond_sweep(&mut self, input: &mut Input) {
+        const F: &str = "granbond_bond_sweep";
+        let mut b = self.indexed_bonds(input);
+        let count = b.count;
+        let flags = input.byte();
+        let mut pass = SweepPass {
+            dt: b.dt,
+            advance: (flags & 1 == 0) as i32,
+            contact_under_bond: (flags >> 1 & 1) as i32,
+            with_contact: (flags >> 2 & 1) as i32,
+        };
+        input.mutate(&mut pass);
+        let layout = self.record_layout(input, pass.with_contact);
+        let mut counted: Vec<u8> = (0..count + 1).map(|_| [1, 0, 2, 255][input.below(4)]).collect();
+        // a running tally: the pass adds to it
+        let n = input.below(4) as i64;
+        let start = SweepTally {
+            intact: n,
+            broken_distance: n,
+            broken_tension: n,
+            broken_compression: n,
+            broken_shear: n,
+        };
+        if input.below(4) == 1 {
+            // bonds as just created, over a contact state that is not zero,
+            // so that clearing it shows: the pool rarely holds them at the
+            // offset of a record with the contact's state
+            for &e in &b.entries {
+                let r = &mut self.pool[e];
+                for (c, v) in r[..layout.contact_len].iter_mut().enumerate() {
+                    *v = 1e-6 * (c + 1) as f64;
+                }
+                r[layout.bond..layout.loads].copy_from_slice(BondState::created(2e-3).as_slots());
+            }
+        }
+        // words written over, the kept loads too, which no other
+        // operation writes
+        for _ in 0..input.below(3) {
+            let e = b.entries.get(input.below(count.max(1))).copied();
+            let (slot, value) = (input.below(layout.len), input.f64());
+            if let Some(e) = e {
+                self.pool[e][slot] = value;
+            }
+        }
+        let (hpass, hcounted, htally) = (input.late_pointer(), input.late_pointer(), input.late_pointer());
+        let then_setup = input.below(4) != 3;
+
+        // the records as `indexed_bonds` passes them, taken again after the
+        // writes above, from one borrow of the pool
+        let pool = self.pool.as_mut_ptr();
+        let mut records: Vec<*mut f64> = b
+            .entries
+            .iter()
+            .zip(&b.states)
+            .map(|(&e, &s)| match s {
+                s if s.is_null() => null_mut(),
+                // SAFETY: `e` is an entry of the pool.
+                s => unsafe { (pool.add(e) as *mut u8).add(s as usize % align_of::<f64>()) as *mut f64 },
+            })
+            .collect();
+        records.push(null_mut());
+        let mut out = vec![BondOutput::default(); count + 1];
+        let mut failed = Place::new(usize::MAX);
+        let mut p = Place::new(pass);
+        let mut tally = Place::new(start);
+        let [ha, hp, hs, ho, hf] = b.how;
+        let before = self.pool.clone();
+        // SAFETY: arrays of `atoms->count` atoms, `2 count` indices, `count`
+        // flags, `count` distinct records of `layout.len` doubles, `count`
+        // outputs (null or misaligned pointers are checked).
+        let status = unsafe {
+            granbond_bond_sweep(
+                b.model,
+                p.ptr(hpass),
+                count,
+                b.atoms.ptr(ha),
+                Self::batch_ptr(&mut b.pairs, hp),
+                Self::batch_ptr(&mut counted, hcounted),
+                Self::batch_ptr(&mut records, hs),
+                Self::batch_ptr(&mut out, ho),
+                tally.ptr(htally),
+                failed.ptr(hf),
+            )
+        };
+        // `u8` has no alignment to miss: one byte in is the next flags
+        let counted = match hcounted {
+            Pointer::Misaligned => &counted[1..],
+            _ => &counted[..count],
+        };
+        let records = &records[..count];
+        let out = &out[..count];
+
+        if !self.answer(F, status) {
+            let valid = !b.model.is_null()
+                && b.how
+                    .iter()
+                    .chain([&hpass, &htally])
+                    .all(|&h| h == Pointer::Valid)
+                && hcounted != Pointer::Null
+                && b.arrays_pass();
+            let bad_record = records
+                .iter()
+                .position(|&r| r.is_null() || r as usize % align_of::<f64>() != 0);
+            let first = match bad_record {
+                Some(k) => Some((Status::NullPointer, k)),
+                None => b.first_bad_pair().map(|k| (Status::InvalidArgument, k)),
+            };
+            if let (true, Some((want, k))) = (valid, first) {
+                assert_eq!(status, want, "{F}: bond {k} refused as {status:?}: {}", message());
+                assert_eq!(failed.get(), k, "{F}: failed_index for bond {k}");
+            }
+            // pointers, indices and the time step are refused before any
+            // bond is advanced
+            if matches!(status, Status::NullPointer | Status::InvalidArgument) {
+                assert!(
+                    same_pool(&before, &self.pool),
+                    "{F}: {status:?} but a record changed"
+                );
+                assert_eq!(tally.get(), start, "{F}: {status:?} but the tally changed");
+            }
+            if hf == Pointer::Valid && failed.get() != usize::MAX {
+                assert!(
+                    failed.get() < count,
+                    "{F}: failed_index {} of {count}",
+                    failed.get()
+                );
+            }
+            return;
+        }
+
+        assert_eq!(
+            tally.get(),
+            tally_after(start, out, counted),
+            "{F}: the tally is not that of the bonds counted ({counted:?}), by status and break mode: {:?}",
+            out.iter().map(|o| (o.status, o.break_mode)).collect::<Vec<_>>()
+        );
+        if b.entries.iter().all(|&e| all_finite(&before[e][..layout.len])) {
+            for o in out {
+                self.check_bond_output(F, o);
+            }
+        }
+        if pass.advance == 0 {
+            self.check_setup_pass(&before, &b.entries, &layout, out);
+            return;
+        }
+        self.check_force_pass(&b, &pass, &layout, &before, out);
+        if then_setup {
+            // the loads kept are those the force pass applied, bit for bit
+            let setup = SweepPass { advance: 0, ..pass };
+            let mut again = vec![BondOutput::default(); count];
+            let mut t = SweepTally::default();
+            let kept = self.pool.clone();
+            // SAFETY: as above, every pointer valid.
+            let status = unsafe {
+                granbond_bond_sweep(
+                    b.model,
+                    &setup,
+                    count,
+                    b.atoms.ptr(Pointer::Valid),
+                    b.pairs.as_ptr(),
+                    counted.as_ptr(),
+                    records.as_ptr(),
+                    again.as_mut_ptr(),
+                    &mut t,
+                    null_mut(),
+                )
+            };
+            assert!(
+                self.answer(F, status),
+                "{F}: a setup pass refused what a force pass took"
+            );
+            assert_eq!(
+                t,
+                tally_after(SweepTally::default(), &again, counted),
+                "{F}: setup tally"
+            );
+            self.check_setup_pass(&kept, &b.entries, &layout, &again);
+            for (k, (o, s)) in out.iter().zip(&again).enumerate() {
+                let (mut o, mut s) = (*o, *s);
+                o.break_mode = BreakMode::None as i32;
+                if o.status == BondStatus::Intact as i32 {
+                    // the record keeps neither
+                    (o.normal_force, o.delta, s.normal_force, s.delta) = (0.0, 0.0, 0.0, 0.0);
+                } else {
+                    o = BondOutput {
+                        status: o.status,
+                        ..BondOutput::default()
+                    };
+                }
+                assert_eq!(
+                    bond_output_bits(&s),
+                    bond_output_bits(&o),
+                    "{F}: bond {k}: the setup pass applies {s:?}, the force pass applied {o:?}"
+                );
+            }
+        }
+    }
+
+    /// After an OK setup pass: nothing written, each bond's output as its
+    /// record's status says.
+    fn check_setup_pass(
+        &mut self,
+        before: &[Entry],
+        entries: &[usize],
+        layout: &RecordLayout,
+        out: &[BondOutput],
+    ) {
+        const F: &str = "granbond_bond_sweep";
+        assert!(
+            same_pool(before, &self.pool),
+            "{F}: a setup pass changed a record"
+        );
+        for (k, (o, &e)) in out.iter().zip(entries).enumerate() {
+            let status = BondStatus::from_slot(before[e][layout.status]) as i32;
+            assert_eq!(o.status, status, "{F}: setup pass, bond {k}'s status");
+            assert_eq!(
+                o.break_mode,
+                BreakMode::None as i32,
+                "{F}: setup pass, bond {k} broke"
+            );
+        }
+    }
+
+    /// After an OK force pass: the bond states and outputs of
+    /// `granbond_bond_compute_indexed` on copies, bit for bit; each record's
+    /// loads and contact state as the bond's output says; nothing else
+    /// written.
+    fn check_force_pass(
+        &mut self,
+        b: &IndexedBonds,
+        pass: &SweepPass,
+        layout: &RecordLayout,
+        before: &[Entry],
+        out: &[BondOutput],
+    ) {
+        const F: &str = "granbond_bond_sweep";
+        let count = b.count;
+        let mut copies: Vec<[f64; BOND_STATE_LEN]> = b
+            .entries
+            .iter()
+            .map(|&e| {
+                before[e][layout.bond..layout.loads]
+                    .try_into()
+                    .expect("a bond state")
+            })
+            .collect();
+        let mut states: Vec<*mut f64> = copies.iter_mut().map(|c| c.as_mut_ptr()).collect();
+        let mut want = vec![BondOutput::default(); count];
+        let atoms = b.atoms.get();
+        // SAFETY: the arguments the sweep took, with distinct copies of its
+        // records' bond states.
+        let status = unsafe {
+            fb::granbond_bond_compute_indexed(
+                b.model,
+                count,
+                &atoms,
+                b.pairs.as_ptr(),
+                pass.dt,
+                states.as_mut_ptr(),
+                want.as_mut_ptr(),
+                null_mut(),
+            )
+        };
+        // not counted: with every pointer valid it would reach OK for
+        // inputs that never drive the indexed entry itself there
+        assert_eq!(
+            status,
+            Status::Ok,
+            "{F}: OK, but granbond_bond_compute_indexed refused the same bonds: {}",
+            message()
+        );
+        for (e, entry) in before.iter().enumerate() {
+            if !b.entries.contains(&e) {
+                assert_eq!(bits(entry), bits(&self.pool[e]), "{F}: wrote outside its records");
+            }
+        }
+        for (k, &e) in b.entries.iter().enumerate() {
+            let (old, new, o) = (&before[e], &self.pool[e], &out[k]);
+            assert_eq!(
+                bits(&new[layout.bond..layout.loads]),
+                bits(&copies[k]),
+                "{F}: bond {k}'s state is not that of granbond_bond_compute_indexed"
+            );
+            assert_eq!(
+                bond_output_bits(o),
+                bond_output_bits(&want[k]),
+                "{F}: bond {k}'s output is not that of granbond_bond_compute_indexed"
+            );
+            assert_eq!(
+                bits(&old[layout.len..]),
+                bits(&new[layout.len..]),
+                "{F}: wrote past record {k}"
+            );
+            let contact = ..layout.contact_len;
+            let loads = layout.loads..layout.len;
+            let (want_contact, want_loads) = if o.status == BondStatus::Intact as i32 {
+                (bits(&old[contact]), bits(&store_output(o)))
+            } else if o.break_mode != BreakMode::None as i32 {
+                let cleared = vec![0.0; layout.contact_len];
+                let contact = if pass.contact_under_bond == 0 {
+                    &cleared[..]
+                } else {
+                    &old[contact]
+                };
+                (bits(contact), bits(&[0.0; BOND_OUTPUT_LEN]))
+            } else {
+                (bits(&old[contact]), bits(&old[loads.clone()]))
+            };
+            assert_eq!(
+                bits(&new[contact]),
+                want_contact,
+                "{F}: bond {k} ({o:?}): contact state"
+            );
+            assert_eq!(bits(&new[loads]), want_loads, "{F}: bond {k} ({o:?}): kept loads");
+        }
+    }
+
+    /// `granbond_record_layout` for `with_contact`, checked against the
+    /// parts' lengths and `granbond_state_len`; the layout the ABI answers
+    /// with, or the one it should have.
+    fn record_layout(&mut self, input: &mut Input, with_contact: i32) -> RecordLayout {
+        const F: &str = "granbond_record_layout";
+        let want = RecordLayout::new(with_contact != 0);
+        let mut l = Place::new(RecordLayout {
+            contact_len: usize::MAX,
+            ..want
+        });
+        let how = input.late_pointer();
+        // SAFETY: null, misaligned or valid.
+        let status = unsafe { granbond_record_layout(with_contact, l.ptr(how)) };
+        if !self.answer(F, status) {
+            return want;
+        }
+        let l = l.get();
+        let (contact, kind) = match with_contact {
+            0 => (0, 5),
+            _ => (CONTACT_STATE_LEN, 4),
+        };
+        assert!(
+            l.contact_len == contact
+                && l.bond == contact
+                && (l.bond..l.loads).contains(&l.status)
+                && l.loads == l.bond + BOND_STATE_LEN
+                && l.len == l.loads + BOND_OUTPUT_LEN
+                && l.len == granbond_state_len(kind),
+            "{F}({with_contact}): {l:?}"
+        );
+        l
     }
 
     fn wall_try_create(&mut self, input: &mut Input) {
@@ -1806,7 +2269,7 @@ impl<'t> Session<'t> {
         let del = [f.n[0] * distance, f.n[1] * distance, f.n[2] * distance];
         let rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
         // SAFETY: `s` is the start of a state of the pool.
-        let mut copy = unsafe { *(s as *const [f64; MAX_STATE + 1]) };
+        let mut copy = unsafe { *(s as *const Entry) };
         // SAFETY: as above; `del` three doubles, `copy` a whole state.
         let status = unsafe {
             fcg::granbond_voigt_compute_separation_unchecked(
@@ -1828,7 +2291,7 @@ impl<'t> Session<'t> {
             self.check_unchecked_flags(&out);
         }
         // SAFETY: as above.
-        let mut copy = unsafe { *(s as *const [f64; MAX_STATE + 1]) };
+        let mut copy = unsafe { *(s as *const Entry) };
         let status = unsafe {
             fcg::granbond_voigt_compute_normal_unchecked(
                 m,
@@ -2115,6 +2578,8 @@ impl<'t> Session<'t> {
             1 => WALL_BOND_STATE_LEN,
             2 => CONTACT_STATE_LEN,
             3 => BOND_OUTPUT_LEN,
+            4 => CONTACT_STATE_LEN + BOND_STATE_LEN + BOND_OUTPUT_LEN,
+            5 => BOND_STATE_LEN + BOND_OUTPUT_LEN,
             _ => 0,
         };
         assert_eq!(len, want, "granbond_state_len({kind})");
@@ -2129,8 +2594,37 @@ impl<'t> Session<'t> {
             assert!(index < len, "granbond_state_slot: OK for slot {index} of {len}");
             assert!(flips.get() == 0 || flips.get() == 1);
             // SAFETY: static NUL-terminated storage of the library.
-            assert!(!unsafe { CStr::from_ptr(name.get()) }.to_bytes().is_empty());
+            let got = unsafe { CStr::from_ptr(name.get()) };
+            assert!(!got.to_bytes().is_empty());
+            if kind == 4 || kind == 5 {
+                self.record_slot_is_its_parts(kind, index, got, flips.get());
+            }
         }
+    }
+
+    /// A pair record's slot is named and swapped as the slot of the part
+    /// it lies in: contact state, bond state, bond loads.
+    fn record_slot_is_its_parts(&mut self, kind: i32, index: usize, name: &CStr, flips: i32) {
+        let contact = if kind == 4 { CONTACT_STATE_LEN } else { 0 };
+        let (part, at) = match index {
+            i if i < contact => (2, i),
+            i if i < contact + BOND_STATE_LEN => (0, i - contact),
+            i => (3, i - contact - BOND_STATE_LEN),
+        };
+        let (mut part_name, mut part_flips) = (null::<c_char>(), -7);
+        // SAFETY: valid pointers.
+        let status = unsafe { granbond_state_slot(part, at, &mut part_name, &mut part_flips) };
+        assert!(
+            self.answer("granbond_state_slot", status),
+            "granbond_state_slot: kind {kind} has slot {index}, kind {part} has no slot {at}"
+        );
+        // SAFETY: static NUL-terminated storage of the library.
+        let part_name = unsafe { CStr::from_ptr(part_name) };
+        assert_eq!(
+            (name, flips),
+            (part_name, part_flips),
+            "granbond_state_slot: slot {index} of kind {kind} is not slot {at} of kind {part}"
+        );
     }
 }
 
