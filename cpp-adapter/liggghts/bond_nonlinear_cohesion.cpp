@@ -64,6 +64,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     stateLen_(granbond_state_len(cmb->is_wall() ? GB_STATE_KIND_WALL_BOND : GB_STATE_KIND_BOND)),
     offset_(-1),
     outputOffset_(-1),
+    status_(0),
     clumpIds_(0),
     atoms_(0),
     checkedNatoms_(-1),
@@ -87,11 +88,13 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     if (isWall_) {
         offset_ = registerStateSlots(hsetup, GB_STATE_KIND_WALL_BOND, error);
         outputOffset_ = registerStateSlots(hsetup, GB_STATE_KIND_BOND_OUTPUT, error);
+        status_ = slotNamed(GB_STATE_KIND_WALL_BOND, "status", error);
     } else {
         GbRecordLayout layout;
         granbond_record_layout(0, &layout);
         offset_ = registerStateSlots(hsetup, GB_STATE_KIND_BOND_RECORD, error);
         outputOffset_ = offset_ + static_cast<int>(layout.loads);
+        status_ = layout.status;
     }
     // the name the reference publishes, so per-contact tools can find the slots
     cmb->add_history_offset("bondnonlinear_contactflag", offset_);
@@ -284,7 +287,7 @@ void BondNonlinearCohesion::indexBonds()
         double *records = history->firstdouble[i];
         for (int jj = 0; jj < list->numneigh[i]; jj++) {
             double *record = records + static_cast<size_t>(dnum) * jj + offset_;
-            if (record[0] != GB_BOND_STATUS_INTACT) continue;
+            if (record[status_] != GB_BOND_STATUS_INTACT) continue;
             const int j = jlist[jj] & NEIGHMASK;
             const GbBondModel *model = parameters_.model(atom->type[i], atom->type[j]);
             if (!model) continue;   // the per-pair path reports it
@@ -368,7 +371,7 @@ void BondNonlinearCohesion::checkIndex()
     const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
     if (!list || !history || !history->firstneigh || !history->firstdouble) return;
     const int dnum = pair_->dnum();
-    const std::string wrong = granbond::checkIndex(index_, 0, false, [&](auto seen) {
+    const std::string wrong = granbond::checkIndex(index_, status_, false, [&](auto seen) {
         for (int ii = 0; ii < list->inum; ii++) {
             const int i = list->ilist[ii];
             for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -420,7 +423,7 @@ void BondNonlinearCohesion::account(int i, int j, const double *wallDelta, const
 {
     if (!countsHere(i, j)) return;
     if (created) tally_.created++;
-    if (state[0] == GB_BOND_STATUS_INTACT) tally_.intact++;
+    if (state[status_] == GB_BOND_STATUS_INTACT) tally_.intact++;
     if (out.break_mode == GB_BREAK_MODE_NONE) return;
     tally_.broken++;
     BondBook &book = *book_;
@@ -474,7 +477,7 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
     // force pass applied, so a run continued (or restarted) starts from the
     // same forces as an uninterrupted one.
     if (!d.computeflag || !d.shearupdate) {
-        if (history[0] != GB_BOND_STATUS_INTACT) return false;
+        if (history[status_] != GB_BOND_STATUS_INTACT) return false;
         if (granbond_bond_output_load(outputSlots, &out) != GB_STATUS_OK)
             failed(d.i, d.j, "granbond_bond_output_load");
         if (d.computeflag) {
@@ -496,7 +499,7 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
         GbPairKinematics k;
         pairKinematics(d, k);
         createPair(d, model, k, state, created);
-        if (state[0] != GB_BOND_STATUS_INTACT) return false;
+        if (state[status_] != GB_BOND_STATUS_INTACT) return false;
         if (created && countsHere(d.i, d.j)) tally_.created++;
         form(d, model, i_contact, j_contact);
         deferred = true;
@@ -517,8 +520,8 @@ bool BondNonlinearCohesion::advancePair(SurfacesCloseData &d, const GbBondModel 
     pairKinematics(d, k);
     // an intact bond cannot be created again: skip the core's creation call
     // (it would return at once, not created)
-    if (advanceState && state[0] != GB_BOND_STATUS_INTACT) createPair(d, model, k, state, created);
-    if (state[0] != GB_BOND_STATUS_INTACT) return false;
+    if (advanceState && state[status_] != GB_BOND_STATUS_INTACT) createPair(d, model, k, state, created);
+    if (state[status_] != GB_BOND_STATUS_INTACT) return false;
     if (granbond_bond_compute(model, &k, update->dt, state, &out) != GB_STATUS_OK)
         failed(d.i, d.j, "granbond_bond_compute");
     return out.status == GB_BOND_STATUS_INTACT;
@@ -533,7 +536,7 @@ void BondNonlinearCohesion::createPair(const SurfacesCloseData &d, const GbBondM
             failed(d.i, d.j, "granbond_bond_try_create");
         // spheres of one `bonded yes` clump, in the first force pass after
         // their insertion (the id is the insertion step plus a fraction)
-        if (!made && clumpIds_ && state[0] == GB_BOND_STATUS_UNBONDED) {
+        if (!made && clumpIds_ && state[status_] == GB_BOND_STATUS_UNBONDED) {
             const double *ids = clumpIds_->vector_atom;
             if (ids[d.i] >= 0.0 && ids[d.i] == ids[d.j] && static_cast<double>(update->ntimestep) < ids[d.i] &&
                 granbond_bond_create_now(model, &k, state, &made) != GB_STATUS_OK)
@@ -552,7 +555,7 @@ bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel 
     double wallVelocity[3] = {0.0, 0.0, 0.0};
     if (d.v_j) copy3(wallVelocity, d.v_j);
 
-    if (advanceState && state[0] != GB_BOND_STATUS_INTACT) {   // as advancePair
+    if (advanceState && state[status_] != GB_BOND_STATUS_INTACT) {   // as advancePair
         double contactPoint[3];
         wallPoint(s.x, d.delta, contactPoint);
         int32_t made = 0;
@@ -561,7 +564,7 @@ bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel 
             failed(d.i, d.j, "granbond_wall_bond_try_create");
         created = made != 0;
     }
-    if (state[0] != GB_BOND_STATUS_INTACT) return false;
+    if (state[status_] != GB_BOND_STATUS_INTACT) return false;
     if (granbond_wall_bond_compute(model, &s, wallVelocity, update->dt, state, &out) != GB_STATUS_OK)
         failed(d.i, d.j, "granbond_wall_bond_compute");
     return out.status == GB_BOND_STATUS_INTACT;
@@ -603,7 +606,7 @@ void BondNonlinearCohesion::prefetchNextAtom(int i)
 inline bool BondNonlinearCohesion::swept(SurfacesCloseData &d)
 {
     if (deferring_ && d.i != lastAtom_) prefetchNextAtom(d.i);
-    if (!deferring_ || !d.contact_history || d.contact_history[offset_] != GB_BOND_STATUS_INTACT) return false;
+    if (!deferring_ || !d.contact_history || d.contact_history[offset_ + status_] != GB_BOND_STATUS_INTACT) return false;
     setContactFlag(d, true);
     return true;
 }
@@ -634,7 +637,7 @@ void BondNonlinearCohesion::form(SurfacesCloseData &d, const GbBondModel *model,
 inline bool BondNonlinearCohesion::unbondable(SurfacesCloseData &d)
 {
     if (!deferring_ || createsNow_ || clumpIds_ || !d.contact_history ||
-        d.contact_history[offset_] == GB_BOND_STATUS_INTACT)
+        d.contact_history[offset_ + status_] == GB_BOND_STATUS_INTACT)
         return false;
     if (!parameters_.model(d.itype, d.jtype)) return false;   // the general path reports it
     setContactFlag(d, false);

@@ -105,6 +105,7 @@ private:
     const size_t stateLen_;
     int offset_;        // core state slots
     int outputOffset_;  // last output (GB_STATE_KIND_BOND_OUTPUT slots)
+    size_t status_;     // the status slot in the state (the core's table)
     BondTally tally_;
     BondBook *book_;    // this instance's book (looked up once: std::map)
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)

@@ -67,5 +67,18 @@ int registerStateSlots(LIGGGHTS::IContactHistorySetup *hsetup, GbStateKind kind,
     return offset;
 }
 
+size_t slotNamed(GbStateKind kind, const char *name, LAMMPS_NS::Error *error)
+{
+    const size_t n = granbond_state_len(kind);
+    for (size_t k = 0; k < n; k++) {
+        const char *slot = 0;
+        int32_t flips = 0;
+        if (granbond_state_slot(kind, k, &slot, &flips) == GB_STATUS_OK && std::string(slot) == name) return k;
+    }
+    endRun(error, FLERR, std::string("granbond: the core's state kind ") + std::to_string(static_cast<int>(kind)) +
+                             " has no slot " + name);
+    return 0;
+}
+
 }
 }

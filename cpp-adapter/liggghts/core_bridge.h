@@ -28,6 +28,10 @@ int registerStateSlots(LIGGGHTS::IContactHistorySetup *hsetup, GbStateKind kind,
 int registerStateSlots(LIGGGHTS::IContactHistorySetup *hsetup, GbStateKind kind, LAMMPS_NS::Error *error,
                        size_t first, size_t count, const char *prefix);
 
+// Where the core's slot `name` lies in state `kind` (the run ends if the
+// core has no such slot): adapters find slots by name, never by number.
+size_t slotNamed(GbStateKind kind, const char *name, LAMMPS_NS::Error *error);
+
 }
 }
 

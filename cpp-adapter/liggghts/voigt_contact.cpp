@@ -66,9 +66,6 @@ std::map<const void *, VoigtContactShare *> &shares()
     return all;
 }
 
-// The core's state slots of the Voigt contact: 0-2 tangential spring, 3-5
-// rolling angle.
-const size_t TANGENTIAL_SLOTS = 0, ROLLING_SLOTS = 3;
 
 }
 
@@ -420,7 +417,9 @@ template class VoigtHistoryModel<RollingModelBase>;
 
 VoigtTangential::VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                                  ContactModelBase *cmb) :
-    VoigtHistoryModel<TangentialModelBase>(lmp, hsetup, cmb, TANGENTIAL_SLOTS, "voigt_tangential_spring",
+    VoigtHistoryModel<TangentialModelBase>(lmp, hsetup, cmb,
+                                           slotNamed(GB_STATE_KIND_CONTACT, "tangential_spring_x", lmp->error),
+                                           "voigt_tangential_spring",
                                            CONTACT_TANGENTIAL_MODEL),
     k_t_(0),
     gamma_t_(0),
@@ -489,7 +488,9 @@ MatrixProperty *createRollingViscousDamping(PropertyRegistry &registry, const ch
 
 VoigtRolling::VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                            ContactModelBase *cmb) :
-    VoigtHistoryModel<RollingModelBase>(lmp, hsetup, cmb, ROLLING_SLOTS, "voigt_rolling_angle",
+    VoigtHistoryModel<RollingModelBase>(lmp, hsetup, cmb,
+                                        slotNamed(GB_STATE_KIND_CONTACT, "rolling_angle_x", lmp->error),
+                                        "voigt_rolling_angle",
                                         CONTACT_ROLLING_MODEL),
     mu_r_(0),
     k_r_(0),
