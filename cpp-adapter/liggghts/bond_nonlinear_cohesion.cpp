@@ -99,6 +99,9 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     // the name the reference publishes, so per-contact tools can find the slots
     cmb->add_history_offset("bondnonlinear_contactflag", offset_);
     cmb->add_history_offset("bondnonlinear_output", outputOffset_);
+    // where contact models find whether the pair's bond is intact
+    // (`model voigt ... contactUnderBond off`)
+    cmb->add_history_offset("bondnonlinear_status", offset_ + status_);
     tally_.wall = isWall_;
     book_ = &BondBook::of(lmp);   // std::map: the address stays
     book_->add(&tally_);

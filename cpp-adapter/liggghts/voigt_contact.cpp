@@ -72,8 +72,28 @@ std::map<const void *, VoigtContactShare *> &shares()
 // ------------------------------------------------------------ shared state
 
 VoigtContactShare::VoigtContactShare() :
-    frame(), normal(false), tangential_offset(-1), rolling_offset(-1), users_(0), stride_(0)
+    frame(),
+    normal(false),
+    tangential_offset(-1),
+    rolling_offset(-1),
+    users_(0),
+    stride_(0),
+    settingRegistered_(false),
+    contactUnderBond_(false),
+    bondStatus_(-1)
 {}
+
+void VoigtContactShare::registerSettings(::Settings &settings)
+{
+    if (settingRegistered_) return;
+    settingRegistered_ = true;
+    settings.registerOnOff("contactUnderBond", contactUnderBond_, false);
+}
+
+void VoigtContactShare::findBond(LIGGGHTS::ContactModels::ContactModelBase *cmb)
+{
+    bondStatus_ = cmb->get_history_offset("bondnonlinear_status");
+}
 
 VoigtContactShare *VoigtContactShare::attach(const void *owner, bool *first)
 {
@@ -250,6 +270,7 @@ VoigtNormal::~VoigtNormal() { VoigtContactShare::detach(owner_); }
 void VoigtNormal::registerSettings(::Settings &settings)
 {
     settings.registerOnOff("noAttraction", no_attraction_, true);
+    share_->registerSettings(settings);
 }
 
 void VoigtNormal::connectToProperties(::PropertyRegistry &registry)
@@ -334,7 +355,26 @@ void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_force
     // per-contact output pass)
     double scratch[GRANBOND_CONTACT_STATE_LEN];
     double *state = stored;
-    if (!(sidata.computeflag && sidata.shearupdate && fusedRolling_)) {
+    const bool force = sidata.computeflag && sidata.shearupdate;
+    if (force && share_->heldByBond(sidata.contact_history)) {
+        // the loads of a fresh contact, in case the bond breaks in this
+        // step's pair callback; the history stays at zero
+        const int own = fusedRolling_ ? GRANBOND_CONTACT_STATE_LEN : 3;
+        for (int k = 0; k < GRANBOND_CONTACT_STATE_LEN; k++)
+            scratch[k] = 0.0;
+        for (int k = 0; k < own; k++)
+            stored[k] = 0.0;
+        GbContactOutput out;
+        const EngineContact c = engineContact(sidata);
+        if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
+                                                    c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt,
+                                                    scratch, &out) != GB_STATUS_OK)
+            voigtFailed(lmp, sidata, "model voigt");
+        sidata.Fn = fresh(out.normal_force);
+        addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
+        return;
+    }
+    if (!(force && fusedRolling_)) {
         // the core writes 6 slots; without rolling voigt only 3 are ours
         for (int k = 0; k < GRANBOND_CONTACT_STATE_LEN; k++)
             scratch[k] = (fusedRolling_ || k < 3) ? stored[k] : 0.0;
@@ -390,7 +430,12 @@ double *VoigtHistoryModel<EngineBase>::begin(const SurfacesIntersectData &sidata
 {
     if (computesFrame_ || always) engineFrame(this->lmp, sidata, share_->frame);
     double *const stored = &sidata.contact_history[offset_];
-    if (sidata.computeflag && sidata.shearupdate) return stored;
+    if (sidata.computeflag && sidata.shearupdate) {
+        if (!share_->heldByBond(sidata.contact_history)) return stored;
+        for (int k = 0; k < 3; k++)
+            stored[k] = scratch[k] = 0.0;
+        return scratch;
+    }
     for (int k = 0; k < 3; k++)
         scratch[k] = stored[k];
     return scratch;
@@ -457,8 +502,9 @@ void VoigtTangential::intersect(const SurfacesIntersectData &sidata, ForceData &
     const GbVoigtModel *model = models_.at(sidata.itype, sidata.jtype);
     // setup and output passes: the loads of the stored spring, not advanced
     const GbStatus status =
-        spring == scratch ? granbond_voigt_tangential_evaluate(model, &share_->frame, sidata.Fn, spring, &out)
-                          : granbond_voigt_tangential(model, &share_->frame, sidata.Fn, update->dt, spring, &out);
+        !(sidata.computeflag && sidata.shearupdate)
+            ? granbond_voigt_tangential_evaluate(model, &share_->frame, sidata.Fn, spring, &out)
+            : granbond_voigt_tangential(model, &share_->frame, sidata.Fn, update->dt, spring, &out);
     if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "tangential voigt");
     addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
 }
@@ -536,7 +582,7 @@ void VoigtRolling::intersect(SurfacesIntersectData &sidata, ForceData &i_forces,
     const GbVoigtModel *model = models_.at(sidata.itype, sidata.jtype);
     // setup and output passes: the loads of the stored angle, not advanced
     const GbStatus status =
-        angle == scratch
+        !(sidata.computeflag && sidata.shearupdate)
             ? granbond_voigt_rolling_evaluate(model, &share_->frame, sidata.Fn, angle, torque_i, &slip)
             : granbond_voigt_rolling(model, &share_->frame, sidata.Fn, update->dt, angle, torque_i, &slip);
     if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "rolling_friction voigt");

@@ -83,6 +83,19 @@ public:
     const GbVoigtModel *fusedModel(int itype, int jtype) const { return table_.at(itype, jtype); }
     const VoigtModelTable &fusedTable() const { return table_; }
 
+    // `contactUnderBond on|off`, registered by whichever voigt sub-model
+    // the engine asks for its settings first (each name once per style).
+    void registerSettings(::Settings &settings);
+    // Finds the status slot of a `cohesion bond/nonlinear` of the same
+    // style, if there is one (all sub-models are constructed by then).
+    void findBond(LIGGGHTS::ContactModels::ContactModelBase *cmb);
+    // With contactUnderBond off, an intact bond holds the contact's history
+    // at zero: the contact starts afresh when the bond breaks.
+    bool heldByBond(const double *history) const
+    {
+        return bondStatus_ >= 0 && !contactUnderBond_ && history && history[bondStatus_] == GB_BOND_STATUS_INTACT;
+    }
+
     GbContactFrame frame;
     bool normal;               // model voigt present
     int tangential_offset;     // history offset of tangential voigt, -1 if absent
@@ -95,6 +108,9 @@ private:
 
     int users_;
     int stride_;
+    bool settingRegistered_;
+    bool contactUnderBond_;
+    int bondStatus_;   // history offset of the bond's status, -1 without bond/nonlinear
     std::vector<GbVoigtParams> params_;
     VoigtModelTable table_;
 };
@@ -109,7 +125,10 @@ public:
     ~VoigtNormal();
 
     void registerSettings(::Settings &settings);
-    void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *) {}
+    void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *cmb)
+    {
+        share_->findBond(cmb);
+    }
     void connectToProperties(::PropertyRegistry &registry);
     double stressStrainExponent() { return 1.0; }
     // inline: voigt x voigt goes straight to the one core call
@@ -166,8 +185,11 @@ public:
                       int contactFlag);
     ~VoigtHistoryModel();
 
-    void registerSettings(::Settings &) {}
-    void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *) {}
+    void registerSettings(::Settings &settings) { share_->registerSettings(settings); }
+    void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *cmb)
+    {
+        share_->findBond(cmb);
+    }
     void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &);
     void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
@@ -176,7 +198,8 @@ protected:
     // Fills share_->frame if this model computes it (`always`: also when
     // another voigt model would have), and returns the three slots to
     // advance: the stored ones in a real force step, else a copy in
-    // `scratch` (setup pass, per-contact output).
+    // `scratch` (setup pass, per-contact output); under a bond that holds
+    // the contact (heldByBond), zeroed stored slots and a zero `scratch`.
     double *begin(const SurfacesIntersectData &sidata, bool always, double *scratch);
 
     const void *owner_;

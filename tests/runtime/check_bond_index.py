@@ -16,11 +16,13 @@ LIGGGHTS (liggghts-granbond). One claim per mode:
               intact, lost) equal those of the reference table
               data/index_counts_<kind>.txt, which the adapters that visited
               each bond in the neighbour loop printed for the same deck.
-  under       contact_under_bond yes|no: two touching spheres, bonded, slide
-              past each other until the bond breaks in shear. With yes the
-              contact's tangential spring acts at the break with the
-              history it built under the bond; with no it starts from zero:
-              at the step after the break its force is one step's increment.
+  under       LAMMPS contact_under_bond yes|no, LIGGGHTS model voigt's
+              contactUnderBond on|off (deck under_<kind>.in): two touching
+              spheres, bonded, slide past each other until the bond breaks
+              beyond its distance limit. With yes/on the contact's
+              tangential spring acts at the break with the history it built
+              under the bond; with no/off it starts from zero: in the step
+              of the break its force is one step's increment.
 
 usage: check_bond_index.py --mode MODE --engine BIN --kind lammps|liggghts
                            [--mpiexec MPIEXEC] --workdir DIR
@@ -120,7 +122,7 @@ def check_index(a, workdir):
 
 
 def tangential_force_after_break(a, workdir, under):
-    liggghts_run.run_ok([a.engine], "under_lammps.in", workdir, {"under": under})
+    liggghts_run.run_ok([a.engine], f"under_{a.kind}.in", workdir, {"under": under})
     rows = thermo_rows(workdir)
     broke = [k for k, r in enumerate(rows) if r[1] > 0]
     if not broke or broke[0] == 0:
@@ -130,23 +132,25 @@ def tangential_force_after_break(a, workdir, under):
 
 
 def check_under(a, workdir):
-    if a.kind != "lammps":
-        raise Failure("under: lammps only (LIGGGHTS's own contact models step under a bond whatever granbond does)")
-    _, after_yes, step_yes = tangential_force_after_break(a, os.path.join(workdir, "yes"), "yes")
-    before, after_no, step_no = tangential_force_after_break(a, os.path.join(workdir, "no"), "no")
-    print(f"the bond breaks at step {step_yes:.0f} (yes) and {step_no:.0f} (no); "
-          f"tangential contact force after it: yes {after_yes:.6g} N, no {after_no:.6g} N")
+    # the switch in each engine's spelling: pair_coeff ... contact_under_bond
+    # yes|no, pair_style gran model voigt ... contactUnderBond on|off
+    keep, fresh = ("yes", "no") if a.kind == "lammps" else ("on", "off")
+    _, after_yes, step_yes = tangential_force_after_break(a, os.path.join(workdir, keep), keep)
+    before, after_no, step_no = tangential_force_after_break(a, os.path.join(workdir, fresh), fresh)
+    print(f"the bond breaks at step {step_yes:.0f} ({keep}) and {step_no:.0f} ({fresh}); "
+          f"tangential contact force after it: {keep} {after_yes:.6g} N, {fresh} {after_no:.6g} N")
     # from zero, one step of the spring: kt * slip velocity * dt (deck: kt
     # 1e4 N/m, 0.1 m/s, 1e-6 s), the slip velocity nearly all tangential
     one_step = 1e4 * 0.1 * 1e-6
     if abs(after_no - one_step) > 0.01 * one_step:
-        raise Failure(f"no: the contact force after the break {after_no} N is not one step's spring "
+        raise Failure(f"{fresh}: the contact force after the break {after_no} N is not one step's spring "
                       f"increment {one_step} N: the contact did not start from zero")
     if step_yes != step_no:
-        raise Failure(f"the bond broke at step {step_yes} with yes and {step_no} with no: the switch changed the bond")
+        raise Failure(f"the bond broke at step {step_yes} with {keep} and {step_no} with {fresh}: "
+                      "the switch changed the bond")
     if not after_yes > 20 * after_no > 0:
-        raise Failure(f"the contact force after the break: yes {after_yes} N should keep the history built "
-                      f"under the bond, far above no's one-step increment {after_no} N")
+        raise Failure(f"the contact force after the break: {keep} {after_yes} N should keep the history built "
+                      f"under the bond, far above {fresh}'s one-step increment {after_no} N")
 
 
 def parse():
