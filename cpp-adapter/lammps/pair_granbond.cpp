@@ -648,6 +648,8 @@ void PairGranbond::compute(int eflag, int vflag)
     double **firsthistory = fixHistory_->firstvalue;
     const int size = sizeHistory_;
     const size_t contactLen = layout_.contact_len;
+    double *const f0 = atom->f[0], *const t0 = atom->torque[0];
+    const int newtonPair = force->newton_pair;
     for (int ii = 0; ii < inum; ii++) {
         // the next atom's records, requested while this atom's pairs are
         // computed (history_prefetch.h)
@@ -696,6 +698,13 @@ void PairGranbond::compute(int eflag, int vflag)
                     touch[jj] = 0;
                     std::fill(history, history + size, 0.0);
                 }
+                continue;
+            }
+            if (!bondModel && advance) {   // a plain contact, touching: inline, the loads applied here
+                touch[jj] = 1;
+                GbContactOutput cout;
+                voigtStep(tp, i, j, del, rsq, history, cout);
+                apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newtonPair);
                 continue;
             }
             if (bondModel && createsNow_[tp] &&
