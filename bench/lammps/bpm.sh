@@ -36,10 +36,8 @@
 # bonds and the neighbour walk over the 52,680 unbonded diagonal neighbour
 # pairs within the cutoff (no contact, as they do not touch; no creation
 # check after step 1); a bonded pair exerts no contact force (the bond
-# replaces it), but its Voigt contact is still stepped every step (its
-# history moves on under the bond, and it acts if the bond breaks). BPM
-# makes its
-# bonds at setup (r0 at the first run); granbond in step 1 (create_step 1).
+# replaces it), and its Voigt contact is not stepped under the intact bond
+# (contact_under_bond no, the default). BPM makes its bonds at setup (r0 at the first run); granbond in step 1 (create_step 1).
 #
 # Prints, per style and case: best and median Bond time (BPM: the "Bond" row
 # of the timing breakdown; granbond: the "Pair" row), best and median loop
