@@ -72,11 +72,13 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     lossCheck_(false),
     warnedLost_(false),
     pair_(cmb->is_wall() ? 0 : dynamic_cast<LAMMPS_NS::PairGran *>(hsetup)),
-    deferring_(false),
+    sweeping_(false),
+    direct_(false),
     createsNow_(false),
     cursor_(0),
     lastAtom_(-1),
     indexedAt_(-1),
+    pruneIndex_(false),
     checkIndex_(std::getenv("GRANBOND_CHECK_INDEX") != 0)
 {
     checkCoreLayout(error);
@@ -177,25 +179,24 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
         if (!thin.empty()) endRun(error, FLERR, thin);
     }
     if (atoms_ && (update->setupflag || neighbor->ago == 0)) forgetRecordsOfNewborn();
-    // Queue the bonds of force passes, unless something in the engine
-    // reads each pair's forces as the loop applies them (CFD coupling,
-    // stored contact forces, summed normal forces) or the loop's radii are
-    // not atom->radius, which the core reads (multicontact radii).
-    deferring_ = pair_ && sidata.computeflag && sidata.shearupdate && !pair_->cpl() &&
-                 !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
-                 !pair_->store_sum_normal_force() && !pair_->storeSumDelta();
-    if (deferring_) {
+    // Every force pass sweeps the pair bonds before the engine's loop. Their
+    // loads go straight to the atoms, unless something in the engine reads
+    // each pair's forces as the loop applies them (per-contact output, CFD
+    // coupling, stored contact forces, summed normal forces or deltas):
+    // then each pair's callback applies its bond's loads.
+    sweeping_ = pair_ && sidata.computeflag && sidata.shearupdate;
+    direct_ = sweeping_ && !pair_->cpl() && !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
+              !pair_->store_sum_normal_force() && !pair_->storeSumDelta();
+    if (sweeping_) {
         book_->beginPassIfNew(tally_, update);
         sweepIndex();
-    } else if (pair_ && sidata.computeflag && sidata.shearupdate) {
-        indexedAt_ = -1;   // the per-pair path forms and breaks bonds: rebuild at the next swept pass
     }
     cursor_ = 0;
     lastAtom_ = -1;
     // whether any bond may form in this pass (the core says, per bond type)
     createsNow_ = false;
     const int n = parameters_.ntypes();
-    for (int t = 0; deferring_ && t < (n + 1) * (n + 1); t++) {
+    for (int t = 0; sweeping_ && t < (n + 1) * (n + 1); t++) {
         const GbBondModel *model = parameters_.table()[t];
         if (model && granbond_bond_creates_at(model, update->ntimestep)) createsNow_ = true;
     }
@@ -203,10 +204,13 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
 
 void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceData &)
 {
-    if (deferring_) {
+    if (sweeping_) {
         sweepFormed();
+        if (pruneIndex_)
+            for (BondIndex &b : index_) b.keepIntact();
+        pruneIndex_ = false;
         if (checkIndex_) checkIndex();
-        deferring_ = false;
+        sweeping_ = direct_ = false;
     }
     if (lossCheck_) countVanished();
 }
@@ -328,6 +332,7 @@ void BondNonlinearCohesion::applySwept(BondIndex &b, size_t first)
         const GbBondOutput &out = b.out[k];
         const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
         if (out.status == GB_BOND_STATUS_INTACT) {
+            if (!direct_) continue;   // the pair's callback applies them
             const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
             addToAtoms(i, j, out.force_i, out.torque_i, fj, out.torque_j);
             continue;
@@ -493,7 +498,11 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
     double *const state = history;
     std::memset(&out, 0, sizeof out);
     bool created = false;
-    if (deferring_) {
+    if (!isWall_) {
+        if (!sweeping_) {
+            failed(d.i, d.j, "a force pass without the engine's beginPass");
+            return false;
+        }
         // created now (the rules read this pair's data), then indexed; a
         // pair the rules cannot bond in this step (the core says, from the
         // status and the step) needs no kinematics, unless it may be a
@@ -504,53 +513,57 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
         createPair(d, model, k, state, created);
         if (state[status_] != GB_BOND_STATUS_INTACT) return false;
         if (created && countsHere(d.i, d.j)) tally_.created++;
-        form(d, model, i_contact, j_contact);
-        deferred = true;
-        return false;
+        const Formed f = form(d, model, i_contact, j_contact);
+        if (direct_) {   // advanced at the pass's end (sweepFormed)
+            formed_.push_back(f);
+            deferred = true;
+            return false;
+        }
+        return sweepNow(f, out);
     }
-    const bool intact = isWall_ ? advanceWall(d, model, state, true, out, created)
-                                : advancePair(d, model, state, true, out, created);
+    const bool intact = advanceWall(d, model, state, out, created);
     if (intact && granbond_bond_output_store(&out, outputSlots) != GB_STATUS_OK)
         failed(d.i, d.j, "granbond_bond_output_store");
     account(d.i, d.j, d.delta, state, created, out);
     return intact;
 }
 
-bool BondNonlinearCohesion::advancePair(SurfacesCloseData &d, const GbBondModel *model, double *state,
-                                        bool advanceState, GbBondOutput &out, bool &created)
+// A bond that formed in the loop of a pass whose callbacks apply the
+// loads: advanced at once, in the loop's order; the index drops it at the
+// pass's end if it broke at once (then the contact models' loads stand).
+bool BondNonlinearCohesion::sweepNow(const Formed &f, GbBondOutput &out)
 {
-    GbPairKinematics k;
-    pairKinematics(d, k);
-    // an intact bond cannot be created again: skip the core's creation call
-    // (it would return at once, not created)
-    if (advanceState && state[status_] != GB_BOND_STATUS_INTACT) createPair(d, model, k, state, created);
-    if (state[status_] != GB_BOND_STATUS_INTACT) return false;
-    if (granbond_bond_compute(model, &k, update->dt, state, &out) != GB_STATUS_OK)
-        failed(d.i, d.j, "granbond_bond_compute");
+    BondIndex &b = index_[f.index];
+    GbSweepTally t = {};
+    size_t bad = 0;
+    if (b.sweep(atom, f.at, true, update->dt, t, bad) != GB_STATUS_OK)
+        failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
+    applySwept(b, f.at);
+    tally_.intact += t.intact;
+    out = b.out[f.at];
+    pruneIndex_ = pruneIndex_ || out.status != GB_BOND_STATUS_INTACT;
     return out.status == GB_BOND_STATUS_INTACT;
 }
 
 void BondNonlinearCohesion::createPair(const SurfacesCloseData &d, const GbBondModel *model,
                                        const GbPairKinematics &k, double *state, bool &created)
 {
-    {
-        int32_t made = 0;
-        if (granbond_bond_try_create(model, &k, update->ntimestep, state, &made) != GB_STATUS_OK)
-            failed(d.i, d.j, "granbond_bond_try_create");
-        // spheres of one `bonded yes` clump, in the first force pass after
-        // their insertion (the id is the insertion step plus a fraction)
-        if (!made && clumpIds_ && state[status_] == GB_BOND_STATUS_UNBONDED) {
-            const double *ids = clumpIds_->vector_atom;
-            if (ids[d.i] >= 0.0 && ids[d.i] == ids[d.j] && static_cast<double>(update->ntimestep) < ids[d.i] &&
-                granbond_bond_create_now(model, &k, state, &made) != GB_STATUS_OK)
-                failed(d.i, d.j, "granbond_bond_create_now");
-        }
-        created = made != 0;
+    int32_t made = 0;
+    if (granbond_bond_try_create(model, &k, update->ntimestep, state, &made) != GB_STATUS_OK)
+        failed(d.i, d.j, "granbond_bond_try_create");
+    // spheres of one `bonded yes` clump, in the first force pass after
+    // their insertion (the id is the insertion step plus a fraction)
+    if (!made && clumpIds_ && state[status_] == GB_BOND_STATUS_UNBONDED) {
+        const double *ids = clumpIds_->vector_atom;
+        if (ids[d.i] >= 0.0 && ids[d.i] == ids[d.j] && static_cast<double>(update->ntimestep) < ids[d.i] &&
+            granbond_bond_create_now(model, &k, state, &made) != GB_STATUS_OK)
+            failed(d.i, d.j, "granbond_bond_create_now");
     }
+    created = made != 0;
 }
 
 bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state,
-                                        bool advanceState, GbBondOutput &out, bool &created)
+                                        GbBondOutput &out, bool &created)
 {
     GbSphereKinematics s;
     readAtom(atom, d.i, s.x, s.v, s.w);
@@ -558,7 +571,9 @@ bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel 
     double wallVelocity[3] = {0.0, 0.0, 0.0};
     if (d.v_j) copy3(wallVelocity, d.v_j);
 
-    if (advanceState && state[status_] != GB_BOND_STATUS_INTACT) {   // as advancePair
+    // an intact bond cannot be created again: skip the core's creation call
+    // (it would return at once, not created)
+    if (state[status_] != GB_BOND_STATUS_INTACT) {
         double contactPoint[3];
         wallPoint(s.x, d.delta, contactPoint);
         int32_t made = 0;
@@ -586,6 +601,16 @@ void BondNonlinearCohesion::apply(const GbBondOutput &out, ForceData &i_forces, 
     }
 }
 
+// The loads the sweep kept in the pair's record for a bond it advanced, for
+// the callback to apply.
+void BondNonlinearCohesion::applyKept(SurfacesCloseData &d, ForceData &i_forces, ForceData &j_forces)
+{
+    GbBondOutput out;
+    if (granbond_bond_output_load(d.contact_history + outputOffset_, &out) != GB_STATUS_OK)
+        failed(d.i, d.j, "granbond_bond_output_load");
+    apply(out, i_forces, j_forces);
+}
+
 // The records of the next atom in the neighbour list
 // (history_prefetch.h), requested while the pairs of atom i are computed:
 // the engine's contact models read each pair's record first. Called at the
@@ -608,17 +633,17 @@ void BondNonlinearCohesion::prefetchNextAtom(int i)
 // pair's flag keeps its record.
 inline bool BondNonlinearCohesion::swept(SurfacesCloseData &d)
 {
-    if (deferring_ && d.i != lastAtom_) prefetchNextAtom(d.i);
-    if (!deferring_ || !d.contact_history || d.contact_history[offset_ + status_] != GB_BOND_STATUS_INTACT) return false;
+    if (sweeping_ && d.i != lastAtom_) prefetchNextAtom(d.i);
+    if (!sweeping_ || !d.contact_history || d.contact_history[offset_ + status_] != GB_BOND_STATUS_INTACT) return false;
     setContactFlag(d, true);
     return true;
 }
 
-// A bond that formed in the loop of a swept pass: indexed, and advanced at
-// the pass's end (sweepFormed), with the contact model's loads kept in case
-// it breaks at once.
-void BondNonlinearCohesion::form(SurfacesCloseData &d, const GbBondModel *model, const ForceData *i_forces,
-                                 const ForceData *j_forces)
+// A bond that formed in the loop of a force pass: indexed, with the
+// contact models' loads kept in case it breaks at once (where the pass
+// advances it at its end, sweepFormed).
+BondNonlinearCohesion::Formed BondNonlinearCohesion::form(SurfacesCloseData &d, const GbBondModel *model,
+                                                          const ForceData *i_forces, const ForceData *j_forces)
 {
     BondIndex &b = indexOf(index_, model);
     b.pass.with_contact = 0;
@@ -631,7 +656,7 @@ void BondNonlinearCohesion::form(SurfacesCloseData &d, const GbBondModel *model,
         std::memcpy(f.contact, i_forces, sizeof(ForceData));
         std::memcpy(f.contact + 6, j_forces, sizeof(ForceData));
     }
-    formed_.push_back(f);
+    return f;
 }
 
 // A pair without an intact bond in a swept pass in which no bond can
@@ -639,7 +664,7 @@ void BondNonlinearCohesion::form(SurfacesCloseData &d, const GbBondModel *model,
 // after the core's creation rules.
 inline bool BondNonlinearCohesion::unbondable(SurfacesCloseData &d)
 {
-    if (!deferring_ || createsNow_ || clumpIds_ || !d.contact_history ||
+    if (!sweeping_ || createsNow_ || clumpIds_ || !d.contact_history ||
         d.contact_history[offset_ + status_] == GB_BOND_STATUS_INTACT)
         return false;
     if (!parameters_.model(d.itype, d.jtype)) return false;   // the general path reports it
@@ -653,6 +678,7 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
     if (swept(sidata)) {
         i_forces.reset();
         j_forces.reset();
+        if (!direct_) applyKept(sidata, i_forces, j_forces);
         return;
     }
     if (unbondable(sidata)) return;
@@ -670,7 +696,13 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
 
 void BondNonlinearCohesion::surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
 {
-    if (swept(scdata) || unbondable(scdata)) return;
+    if (swept(scdata)) {
+        if (direct_) return;
+        applyKept(scdata, i_forces, j_forces);
+        scdata.has_force_update = true;   // otherwise the engine drops the forces
+        return;
+    }
+    if (unbondable(scdata)) return;
     GbBondOutput out;
     bool deferred;
     const bool intact = advance(scdata, out, deferred, 0, 0);

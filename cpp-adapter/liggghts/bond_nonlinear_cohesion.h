@@ -60,9 +60,10 @@ private:
         double contact[12];   // F_i, T_i, F_j, T_j of the contact model
     };
 
-    // Creates / advances the bond of this pair. Returns true and fills `out`
-    // if the bond is intact after the step. Returns false with `deferred`
-    // set if the bond formed in a swept pass (see Formed).
+    // Creates the bond of this pair (or advances a wall bond). Returns true
+    // and fills `out` if the bond is intact after the step. Returns false
+    // with `deferred` set if the bond formed in a pass whose loads go
+    // straight to the atoms (see Formed).
     bool advance(SurfacesCloseData &d, GbBondOutput &out, bool &deferred, const ForceData *i_contact,
                  const ForceData *j_contact);
     void pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const;
@@ -71,18 +72,18 @@ private:
     bool swept(SurfacesCloseData &d);
     bool unbondable(SurfacesCloseData &d);
     void prefetchNextAtom(int i);
-    void form(SurfacesCloseData &d, const GbBondModel *model, const ForceData *i_forces,
-              const ForceData *j_forces);
+    Formed form(SurfacesCloseData &d, const GbBondModel *model, const ForceData *i_forces,
+                const ForceData *j_forces);
+    bool sweepNow(const Formed &f, GbBondOutput &out);
+    void applyKept(SurfacesCloseData &d, ForceData &i_forces, ForceData &j_forces);
     void indexBonds();
     void sweepIndex();
     void sweepFormed();
     void applySwept(BondIndex &b, size_t first);
     void checkIndex();
     void addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj, const double *tj);
-    bool advancePair(SurfacesCloseData &d, const GbBondModel *model, double *state, bool update,
-                     GbBondOutput &out, bool &created);
-    bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, bool update,
-                     GbBondOutput &out, bool &created);
+    bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out,
+                     bool &created);
     void apply(const GbBondOutput &out, ForceData &i_forces, ForceData &j_forces);
     void failed(int i, int j, const char *call);
     // Bookkeeping of one step of a bond (update passes): counters, break log.
@@ -121,13 +122,15 @@ private:
     BondBalance balance_;
 
     LAMMPS_NS::PairGran *pair_;   // null for walls
-    bool deferring_;              // this force pass sweeps the pair bonds (sweepIndex)
-    bool createsNow_;             // a bond may form in this pass (swept passes only)
+    bool sweeping_;               // a force pass of pairs: the index is swept (sweepIndex)
+    bool direct_;                 // ... and the bonds' loads go straight to the atoms
+    bool createsNow_;             // a bond may form in this pass (force passes only)
     int cursor_;                  // position of the latest atom in the neighbour list (prefetchNextAtom)
     int lastAtom_;
     std::vector<BondIndex> index_;   // per bond model: the intact pair bonds (bond_index.h)
     std::vector<Formed> formed_;     // bonds formed in this pass's loop
     bigint indexedAt_;               // neighbor->ncalls when index_ was built; -1: to be built
+    bool pruneIndex_;                // a bond formed and broke at once in the loop: drop it at the pass's end
     bool checkIndex_;                // GRANBOND_CHECK_INDEX: recount the index after each pass
 };
 
