@@ -132,10 +132,13 @@ def main():
     if expect(len(program) == 1, "docs/c-abi.md has one runnable C program"):
         penv = dict(env, PKG_CONFIG_PATH=os.path.join(prefix, "lib/pkgconfig"))
         rc, flags = sh(["pkg-config", "--cflags", "--libs", "granbond"], env=penv)
-        if expect(rc == 0, f"pkg-config --cflags --libs granbond: {flags.strip()}"):
-            renv = dict(env, LD_LIBRARY_PATH=os.path.join(prefix, "lib"))
+        rc2, libdir = sh(["pkg-config", "--variable=libdir", "granbond"], env=penv)
+        if expect(rc == 0 and rc2 == 0, f"pkg-config --cflags --libs granbond: {flags.strip()}"):
+            # docs/c-abi.md's line for a prefix of one's own: found by the
+            # rpath, with no LD_LIBRARY_PATH
+            renv = {k: v for k, v in env.items() if k != "LD_LIBRARY_PATH"}
             rc, out = run_docs.compile_and_run_c(program[0].text, os.path.join(work, "c-shared"), [],
-                                                 flags.split() + ["-lm"], env=renv)
+                                                 flags.split() + ["-Wl,-rpath," + libdir.strip(), "-lm"], env=renv)
             expect(rc == 0, "the C program against the installed libgranbond.so: " + (out or "").strip()[-500:])
         consumer = os.path.join(work, "c-cmake")
         os.makedirs(consumer)
