@@ -7,6 +7,13 @@ if ! command -v cargo >/dev/null 2>&1; then
     echo "install-deps: cargo not found; install Rust (https://rustup.rs) first" >&2
     exit 1
 fi
+# rustfmt and clippy: run-tests.sh checks the habits with them
+for tool in rustfmt clippy; do
+    if ! cargo "${tool/rustfmt/fmt}" --version >/dev/null 2>&1; then
+        echo "install-deps: adding the Rust component $tool (rustup)"
+        rustup component add "$tool" || { echo "install-deps: cargo ${tool/rustfmt/fmt} is missing and rustup could not add $tool" >&2; exit 1; }
+    fi
+done
 # Debian packages: compilers, CMake, the stock LIGGGHTS 3.8 (engine,
 # headers, MPI) that the adapter in cpp-adapter/liggghts is built against,
 # and the stock LAMMPS (29 Sep 2021; `lmp`, liblammps-dev) for

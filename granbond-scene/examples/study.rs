@@ -85,7 +85,7 @@ fn timed(repeat: usize, mut f: impl FnMut() -> Result<Run, SceneError>) -> Optio
     for _ in 0..repeat {
         let run = f().ok()?;
         let slow = run.seconds > 2.0;
-        if best.map_or(true, |b| run.seconds < b.seconds) {
+        if best.is_none_or(|b| run.seconds < b.seconds) {
             best = Some(run);
         }
         if slow {

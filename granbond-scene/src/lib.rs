@@ -3,6 +3,9 @@
 //! without an engine. Not a replacement for LIGGGHTS/LAMMPS: no MPI, no
 //! walls other than planes, O(N) cell-list contact search.
 
+// `!(x > 0.0)` rejects NaN along with the values it names.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub mod builders;
 pub mod cells;
 pub mod csv;

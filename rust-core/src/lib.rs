@@ -6,6 +6,10 @@
 //! module of [`bond`] or [`contact`]; the engine adapters and the scene runner
 //! (crate `granbond-scene`) only call them.
 
+// `!(x > 0.0)` is how the models reject NaN along with the non-positive
+// values: `x <= 0.0` would let NaN through.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub mod bond;
 pub mod contact;
 pub mod ffi;

@@ -179,7 +179,7 @@ pub fn scan<M>(
             if !(c > 0.0) {
                 return Err((a, b, c));
             }
-            if l.recommended.is_finite() && worst.map_or(true, |w| l.recommended < w.recommended) {
+            if l.recommended.is_finite() && worst.is_none_or(|w| l.recommended < w.recommended) {
                 worst = Some(TimestepVerdict {
                     level: TimestepLevel::Safe,
                     type_a: a,

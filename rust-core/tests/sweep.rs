@@ -99,6 +99,7 @@ fn bits(v: &[f64]) -> Vec<u64> {
     v.iter().map(|x| x.to_bits()).collect()
 }
 
+#[allow(clippy::too_many_arguments)]
 fn sweep(
     m: &granbond::bond::BondModel,
     s: &Scene,

@@ -45,6 +45,7 @@ fn sum<R: Real>(values: &[R]) -> R {
 
 /// `x - x` is `+0` for a finite `x` and NaN otherwise.
 #[inline(always)]
+#[allow(clippy::eq_op)]
 fn is_finite<R: Real>(x: R) -> R::Mask {
     (x - x).ge(R::splat(0.0))
 }

@@ -37,7 +37,7 @@ mod tests {
         #[test]
         fn carried_spring_lies_in_the_plane_with_its_length(
             x in -1.0..1.0f64, y in -1.0..1.0f64, z in -1.0..1.0f64,
-            length in 1e-9..1e3f64, log_angle in -12.0..0.0f64, turn in 0.0..6.28f64,
+            length in 1e-9..1e3f64, log_angle in -12.0..0.0f64, turn in 0.0..std::f64::consts::TAU,
         ) {
             let n = unit(Vec3::new(x, y, z + 2.0));
             let helper = if n.x.abs() < 0.9 { Vec3::x() } else { Vec3::y() };

@@ -38,7 +38,7 @@ fn check<T>(ptr: *const T, name: &str) -> Result<(), Failure> {
             format!("argument `{name}` is null"),
         ));
     }
-    if (ptr as usize) % std::mem::align_of::<T>() != 0 {
+    if !(ptr as usize).is_multiple_of(std::mem::align_of::<T>()) {
         return Err(Failure::new(
             Status::NullPointer,
             format!("argument `{name}` is misaligned"),

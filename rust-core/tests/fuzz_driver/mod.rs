@@ -358,7 +358,7 @@ impl<'a> Input<'a> {
         let words = size_of::<T>() / 8;
         for _ in 0..self.below(5) {
             let w = self.below(words);
-            let bits = if self.byte() % 3 == 0 {
+            let bits = if self.byte().is_multiple_of(3) {
                 let (a, b) = (self.i32() as u32 as u64, self.i32() as u32 as u64);
                 a | (b << 32)
             } else {
@@ -504,7 +504,7 @@ impl IndexedBonds {
         a.count == 0
             || [a.x, a.v, a.omega, a.radius]
                 .iter()
-                .all(|p| !p.is_null() && *p as usize % align_of::<f64>() == 0)
+                .all(|p| !p.is_null() && (*p as usize).is_multiple_of(align_of::<f64>()))
     }
 
     /// The first bond with an atom index outside `atoms->count`.
@@ -1681,7 +1681,7 @@ impl<'t> Session<'t> {
                 && b.arrays_pass();
             let bad_record = records
                 .iter()
-                .position(|&r| r.is_null() || r as usize % align_of::<f64>() != 0);
+                .position(|&r| r.is_null() || !(r as usize).is_multiple_of(align_of::<f64>()));
             let first = match bad_record {
                 Some(k) => Some((Status::NullPointer, k)),
                 None => b.first_bad_pair().map(|k| (Status::InvalidArgument, k)),
