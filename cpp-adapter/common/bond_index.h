@@ -30,6 +30,10 @@ namespace granbond {
 // the loop (LIGGGHTS), its callbacks read the bond's status instead, and the
 // flags are the engine's own.
 const int kSweptMark = 2;
+// The flag of a pair whose bond broke in this pass's sweep (LAMMPS): the
+// contact loop treats it as a contact, and no bond forms on it before the
+// next pass, as when the bond is stepped in its pair's turn.
+const int kBrokeMark = 3;
 
 struct BondIndex {
     const GbBondModel *model = nullptr;

@@ -634,7 +634,7 @@ void PairGranbond::compute(int eflag, int vflag)
         if (b.size()) {
             sweep(b, 0, advance, tally);
             for (size_t k = 0; k < b.size(); k++)
-                if (b.out[k].status != GB_BOND_STATUS_INTACT) *b.flags[k] = 1;
+                if (b.out[k].status != GB_BOND_STATUS_INTACT) *b.flags[k] = kBrokeMark;
             b.keepIntact();
         }
     for (size_t tp = 0; tp < index_.size(); tp++) formed_[tp] = index_[tp].size();
@@ -707,7 +707,7 @@ void PairGranbond::compute(int eflag, int vflag)
                 apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newtonPair);
                 continue;
             }
-            if (bondModel && createsNow_[tp] &&
+            if (bondModel && createsNow_[tp] && touch[jj] != kBrokeMark &&
                 granbond_bond_may_create(bondModel, history + layout_.bond, step)) {
                 GbPairKinematics k;
                 pairKinematics(i, j, k);

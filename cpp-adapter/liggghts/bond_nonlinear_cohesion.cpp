@@ -187,6 +187,7 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
     sweeping_ = pair_ && sidata.computeflag && sidata.shearupdate;
     direct_ = sweeping_ && !pair_->cpl() && !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
               !pair_->store_sum_normal_force() && !pair_->storeSumDelta();
+    brokeNow_.clear();
     if (sweeping_) {
         book_->beginPassIfNew(tally_, update);
         sweepIndex();
@@ -339,6 +340,7 @@ void BondNonlinearCohesion::applySwept(BondIndex &b, size_t first)
         }
         account(i, j, 0, b.records[k], false, out);
         *b.flags[k] &= ~CONTACT_COHESION_MODEL;
+        brokeNow_.insert(b.records[k]);
     }
 }
 
@@ -508,6 +510,9 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
         // status and the step) needs no kinematics, unless it may be a
         // `bonded yes` clump's
         if (!clumpIds_ && !granbond_bond_may_create(model, state, update->ntimestep)) return false;
+        // a bond that broke in this pass's sweep forms again at the
+        // earliest in the next pass, as when it is stepped in its pair's turn
+        if (!brokeNow_.empty() && brokeNow_.count(state)) return false;
         GbPairKinematics k;
         pairKinematics(d, k);
         createPair(d, model, k, state, created);

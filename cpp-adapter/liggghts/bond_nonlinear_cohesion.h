@@ -13,6 +13,7 @@
 #include "bond_index.h"
 #include "run_checks.h"
 
+#include <unordered_set>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -130,6 +131,7 @@ private:
     std::vector<BondIndex> index_;   // per bond model: the intact pair bonds (bond_index.h)
     std::vector<Formed> formed_;     // bonds formed in this pass's loop
     bigint indexedAt_;               // neighbor->ncalls when index_ was built; -1: to be built
+    std::unordered_set<const double *> brokeNow_;   // records of the bonds this pass's sweep broke
     bool pruneIndex_;                // a bond formed and broke at once in the loop: drop it at the pass's end
     bool checkIndex_;                // GRANBOND_CHECK_INDEX: recount the index after each pass
 };

@@ -23,6 +23,12 @@ LIGGGHTS (liggghts-granbond). One claim per mode:
               tangential spring acts at the break with the history it built
               under the bond; with no/off it starts from zero: in the step
               of the break its force is one step's increment.
+  reform      a bond that breaks between spheres still within the creation
+              distance (create_always / createBondAlways) forms again in
+              the next pass, not in the pass it broke in, as when each bond
+              is stepped in its pair's turn (deck reform_<kind>.in: two
+              spheres pushed together break their bond in compression every
+              other step).
 
 usage: check_bond_index.py --mode MODE --engine BIN --kind lammps|liggghts
                            [--mpiexec MPIEXEC] --workdir DIR
@@ -153,9 +159,29 @@ def check_under(a, workdir):
                       f"under the bond, far above {fresh}'s one-step increment {after_no} N")
 
 
+def check_reform(a, workdir):
+    liggghts_run.run_ok([a.engine], f"reform_{a.kind}.in", workdir, {})
+    rows = thermo_rows(workdir)
+    created = {int(r[0]): r[1] for r in rows}
+    broken = {int(r[0]): r[2] for r in rows}
+    steps = sorted(created)
+    breaks = [n for n in steps[1:] if broken[n] > broken[n - 1]]
+    if len(breaks) < 3:
+        raise Failure(f"the bond broke {len(breaks)} times; the deck should break it every other step")
+    for n in breaks:
+        if created[n] > created[n - 1]:
+            raise Failure(f"step {n}: the bond broke and formed again in the same pass "
+                          f"(created {created[n - 1]:.0f} -> {created[n]:.0f}, broken {broken[n - 1]:.0f} -> "
+                          f"{broken[n]:.0f})")
+        if n + 1 in created and not created[n + 1] > created[n]:
+            raise Failure(f"step {n}: the bond broke and did not form again at step {n + 1}, "
+                          "though the spheres stay within the creation distance")
+    print(f"{len(breaks)} breaks, each followed by a new bond one step later")
+
+
 def parse():
     p = argparse.ArgumentParser()
-    p.add_argument("--mode", required=True, choices=["index", "under"])
+    p.add_argument("--mode", required=True, choices=["index", "under", "reform"])
     p.add_argument("--engine", required=True)
     p.add_argument("--kind", required=True, choices=["lammps", "liggghts"])
     p.add_argument("--mpiexec")
@@ -165,5 +191,5 @@ def parse():
 
 if __name__ == "__main__":
     args = parse()
-    checks = {"index": check_index, "under": check_under}
+    checks = {"index": check_index, "under": check_under, "reform": check_reform}
     main(lambda: checks[args.mode](args, args.workdir))
