@@ -441,7 +441,7 @@ void BondNonlinearCohesion::account(int i, int j, const double *wallDelta, const
     BreakEvent e;
     // the bond centre (the core's): a wall plays sphere j, of radius 0 at the wall point
     double wall[3];
-    if (isWall_) wallPoint(atom->x[i], wallDelta, wall);
+    if (isWall_ && wallDelta) wallPoint(atom->x[i], wallDelta, wall);
     if (granbond_bond_centre(atom->x[i], isWall_ ? wall : atom->x[j], atom->radius[i],
                              isWall_ ? 0.0 : atom->radius[j], e.x) != GB_STATUS_OK)
         failed(i, j, "granbond_bond_centre");
