@@ -2,8 +2,10 @@
 """The `use` graph between the modules of a Rust crate's src/ folder.
 
 Prints one line per module, `module -> the modules it uses`, then every
-cycle (strongly connected group of two or more modules). Exits 1 when there
-is a cycle. Reads `use crate::...`, `use super::...` and `crate::a::b` paths
+cycle (strongly connected group of two or more modules) and every breach
+of the layering: only `ffi` and its submodules may use `ffi`, and only
+they may hold `extern "C"` or `#[no_mangle]` (the C ABI is one layer, on
+top). Exits 1 when there is a cycle or a breach. Reads `use crate::...`, `use super::...` and `crate::a::b` paths
 in the code as text (comments left out); tests (`#[cfg(test)] mod tests` blocks at the end of a
 file) are left out, since a test may reach back up.
 
@@ -47,10 +49,13 @@ def main():
                 files[module_of(path, src)] = path
     modules = set(files)
     edges = {m: set() for m in modules}
+    breaches = []
     for mod, path in files.items():
         text = strip_tests(open(path, encoding="utf-8").read())
         # comments name modules without using them
         text = re.sub(r"//.*", "", text)
+        if not in_ffi(mod) and re.search(r'extern\s+"C"|#\[no_mangle\]|#\[unsafe\(no_mangle\)\]', text):
+            breaches.append(f'{mod} holds extern "C" or no_mangle: the C ABI lives in ffi')
         # an inline `mod x {` inside the file counts as the file's module
         is_dir_module = os.path.basename(path) in ("mod.rs", "lib.rs")
         parent = mod if is_dir_module else "::".join(mod.split("::")[:-1])
@@ -70,12 +75,24 @@ def main():
     for mod in sorted(modules):
         if edges[mod]:
             print(f"{mod} -> {', '.join(sorted(edges[mod]))}")
+    for mod in sorted(modules):
+        for target in sorted(edges[mod]):
+            if in_ffi(target) and not in_ffi(mod):
+                breaches.append(f"{mod} uses {target}: only the C ABI layer (ffi) may")
     cycles = strongly_connected(edges)
     for group in cycles:
         print("cycle: " + " <-> ".join(sorted(group)))
     if not cycles:
         print("no cycles")
-    return 1 if cycles else 0
+    for breach in sorted(breaches):
+        print("layering: " + breach)
+    if not breaches:
+        print("layering kept")
+    return 1 if cycles or breaches else 0
+
+
+def in_ffi(mod):
+    return mod == "ffi" or mod.startswith("ffi::")
 
 
 def strongly_connected(edges):
