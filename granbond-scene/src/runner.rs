@@ -202,11 +202,12 @@ impl Scene {
                 bond.last = out;
                 if was_intact && out.break_mode != BreakMode::None as i32 {
                     report.bonds_broken += 1;
-                    match out.break_mode {
-                        1 => report.broken_by_distance += 1,
-                        2 => report.broken_by_tension += 1,
-                        3 => report.broken_by_compression += 1,
-                        _ => report.broken_by_shear += 1,
+                    match BreakMode::from_number(f64::from(out.break_mode)) {
+                        BreakMode::Distance => report.broken_by_distance += 1,
+                        BreakMode::Tension => report.broken_by_tension += 1,
+                        BreakMode::Compression => report.broken_by_compression += 1,
+                        BreakMode::Shear => report.broken_by_shear += 1,
+                        BreakMode::None => {}
                     }
                 }
                 let f = v3(out.force_i);

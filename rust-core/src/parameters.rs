@@ -179,6 +179,14 @@ pub struct ParameterError {
     pub message: String,
 }
 
+impl std::fmt::Display for ParameterError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for ParameterError {}
+
 /// Builds the error for row `name` of `table`.
 pub fn refuse<T>(
     model: &str,

@@ -200,6 +200,10 @@ fn setting_refuses_unknown_names_and_values_out_of_range_naming_the_parameter() 
                     "{}",
                     e.message
                 );
+                // a Rust caller reports it as any error: its message
+                assert_eq!(e.to_string(), e.message);
+                let boxed: Box<dyn std::error::Error> = Box::new(e.clone());
+                assert_eq!(boxed.to_string(), e.message);
             }
             other => panic!("{name} = {value} accepted: {other:?}"),
         }
