@@ -270,7 +270,7 @@ void parseBond(Args &a, GbBondParams &p, int32_t &contactUnderBond)
             }
             continue;
         }
-        if (kw == "smooth_damping") kw = "damping_smooth";   // the spelling
+        if (kw == "smooth_damping") kw = "damping_smooth";   // the other spelling pair_granbond.md accepts
         GbParameterInfo info;
         if (!bondRow(kw, info))
             a.fail("unknown bond/nonlinear keyword '" + kw + "' (known: " + knownBondKeywords() + ")");

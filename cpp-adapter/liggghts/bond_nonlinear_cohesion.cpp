@@ -115,8 +115,8 @@ BondNonlinearCohesion::~BondNonlinearCohesion() { book_->remove(&tally_); }
 void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
 {
     parameters_.connectToProperties(registry);
-    // `bonded yes` stores a clump id per atom under this name (the reference
-    // looked for "bondnonlinear_random_id", which nothing creates)
+    // `bonded yes` stores a clump id per atom under this name (LIGGGHTS-INL
+    // looks for "bondnonlinear_random_id", which no fix creates)
     clumpIds_ = isWall_ ? 0
                         : static_cast<LAMMPS_NS::FixPropertyAtom *>(modify->find_fix_property(
                               "bond_random_id", "property/atom", "scalar", 0, 0, "cohesion bond/nonlinear", false));

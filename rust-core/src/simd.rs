@@ -17,8 +17,8 @@ pub enum Simd {
 impl Simd {
     /// What the models use: AVX2 where the CPU has it. AVX-512 is not
     /// chosen by itself: twice the lanes, but twice the transposing per
-    /// chunk too, and on the Xeon this was measured on it was slower than
-    /// AVX2 (`benches/kernels.rs`, `scattered_*`).
+    /// chunk too, which made it slower than AVX2 where it was measured
+    /// (`benches/kernels.rs`, `scattered_*`; docs/performance.md).
     pub fn detect() -> Self {
         #[cfg(target_arch = "x86_64")]
         {

@@ -42,8 +42,9 @@ pub fn advance_bend<R: Real, V: Vector<R>>(theta: V, w_across: V, n: V, dt: R) -
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TorqueLaw {
     pub hysteresis: Loop,
-    /// The reference code's rule: being on one side forgets the other
-    /// side's extreme. Off (the seed): the extremes last the bond's life.
+    /// The history rule of docs/models/bond-nonlinear.md: on
+    /// (`historyReset`, LIGGGHTS-INL's code), being on one side forgets the
+    /// other side's extreme; off, the extremes last the bond's life.
     pub history_reset: bool,
 }
 

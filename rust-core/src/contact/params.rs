@@ -1,4 +1,5 @@
-//! Parameters of the Voigt contact, defaults of the seed's Table 1.
+//! Parameters of the Voigt contact, with the defaults of
+//! docs/models/voigt.md's parameter table.
 
 use crate::parameters::{check_ranges, Need, ParameterError};
 
@@ -30,7 +31,7 @@ pub struct VoigtParams {
 }
 
 impl Default for VoigtParams {
-    /// Table 1 of the seed.
+    /// The defaults of docs/models/voigt.md's parameter table.
     fn default() -> Self {
         Self {
             k_n: 1.0e4,
