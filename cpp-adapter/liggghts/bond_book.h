@@ -12,6 +12,7 @@
 #define GRANBOND_LIGGGHTS_BOND_BOOK_H
 
 #include "liggghts_engine.h"
+#include "break_log.h"
 
 #include <string>
 #include <vector>
@@ -19,15 +20,7 @@
 namespace granbond {
 namespace liggghts {
 
-struct BreakEvent {
-    double step;      // time step (as a double: travels with the rest)
-    double tag_i;     // lower atom id of a pair, the particle for a wall bond
-    double tag_j;     // other atom id; 0 for a wall
-    double x[3];      // bond centre (pairs: the point dividing the centres by the radii;
-                      // walls: the wall point the particle was bonded to)
-    double mode;      // GbBreakMode
-    double sigma, tau;
-};
+class BondNonlinearCohesion;
 
 // Counters of one bond model instance (the pair style's, or one wall fix's).
 struct BondTally {
@@ -74,6 +67,10 @@ public:
     // cumulative counts go on across restarts.
     void restoreTotals(const double totals[kTotals], bool root);
 
+    // The pair style's bond model, for per-bond output (compute
+    // pair/gran/local/bond); null without one.
+    const BondNonlinearCohesion *pairBonds = nullptr;
+
     bool logging() const { return logUsers_ > 0; }
     void addLogUser() { logUsers_++; }
     void removeLogUser() { logUsers_--; }
@@ -93,7 +90,8 @@ private:
 // The warning for bonds dropped with their model (takeDropped).
 std::string droppedMessage(long long dropped);
 
-// Adds `compute bond/counter` and `fix bond/breaklog` to this instance's
+// Adds `compute bond/counter`, `compute pair/gran/local/bond` and
+// `fix bond/breaklog` to this instance's
 // style tables (idempotent). Called when a bond model is constructed, and by
 // the launcher right after LAMMPS is constructed.
 void registerBondStyles(LAMMPS_NS::LAMMPS *lmp);

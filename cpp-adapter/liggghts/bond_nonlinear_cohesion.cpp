@@ -107,10 +107,15 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     tally_.wall = isWall_;
     book_ = &BondBook::of(lmp);   // std::map: the address stays
     book_->add(&tally_);
+    if (!isWall_) book_->pairBonds = this;
     registerBondStyles(lmp);
 }
 
-BondNonlinearCohesion::~BondNonlinearCohesion() { book_->remove(&tally_); }
+BondNonlinearCohesion::~BondNonlinearCohesion()
+{
+    book_->remove(&tally_);
+    if (book_->pairBonds == this) book_->pairBonds = nullptr;
+}
 
 void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
 {
@@ -338,7 +343,7 @@ void BondNonlinearCohesion::applySwept(BondIndex &b, size_t first)
             addToAtoms(i, j, out.force_i, out.torque_i, fj, out.torque_j);
             continue;
         }
-        account(i, j, 0, b.records[k], false, out);
+        account(b.model, i, j, 0, b.records[k], false, out);
         *b.flags[k] &= ~CONTACT_COHESION_MODEL;
         brokeNow_.insert(b.records[k]);
     }
@@ -428,8 +433,8 @@ bool BondNonlinearCohesion::countsHere(int i, int j) const
     return isWall_ || pairCountsHere(i, j, atom->nlocal, atom->tag);
 }
 
-void BondNonlinearCohesion::account(int i, int j, const double *wallDelta, const double *state, bool created,
-                                    const GbBondOutput &out)
+void BondNonlinearCohesion::account(const GbBondModel *model, int i, int j, const double *wallDelta,
+                                    const double *state, bool created, const GbBondOutput &out)
 {
     if (!countsHere(i, j)) return;
     if (created) tally_.created++;
@@ -438,21 +443,15 @@ void BondNonlinearCohesion::account(int i, int j, const double *wallDelta, const
     tally_.broken++;
     BondBook &book = *book_;
     if (!book.logging()) return;
-    BreakEvent e;
-    // the bond centre (the core's): a wall plays sphere j, of radius 0 at the wall point
+    // a wall plays sphere j, of radius 0 at the wall point
     double wall[3];
     if (isWall_ && wallDelta) wallPoint(atom->x[i], wallDelta, wall);
-    if (granbond_bond_centre(atom->x[i], isWall_ ? wall : atom->x[j], atom->radius[i],
-                             isWall_ ? 0.0 : atom->radius[j], e.x) != GB_STATUS_OK)
-        failed(i, j, "granbond_bond_centre");
-    e.step = static_cast<double>(update->ntimestep);
-    const double ti = static_cast<double>(atom->tag[i]);
-    const double tj = isWall_ ? 0.0 : static_cast<double>(atom->tag[j]);
-    e.tag_i = isWall_ ? ti : std::min(ti, tj);
-    e.tag_j = isWall_ ? 0.0 : std::max(ti, tj);
-    e.mode = out.break_mode;
-    e.sigma = out.sigma;
-    e.tau = out.tau;
+    BreakEvent e;
+    if (makeBreakEvent(model, out, atom->x[i],
+                       isWall_ ? wall : atom->x[j], atom->radius[i], isWall_ ? 0.0 : atom->radius[j],
+                       static_cast<double>(atom->tag[i]), isWall_ ? 0.0 : static_cast<double>(atom->tag[j]),
+                       static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
+        failed(i, j, "the break log's event (granbond_bond_centre, granbond_bond_stress_limits)");
     book.record(e);
 }
 
@@ -529,7 +528,7 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
     const bool intact = advanceWall(d, model, state, out, created);
     if (intact && granbond_bond_output_store(&out, outputSlots) != GB_STATUS_OK)
         failed(d.i, d.j, "granbond_bond_output_store");
-    account(d.i, d.j, d.delta, state, created, out);
+    account(model, d.i, d.j, d.delta, state, created, out);
     return intact;
 }
 

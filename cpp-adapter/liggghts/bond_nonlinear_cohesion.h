@@ -51,6 +51,14 @@ public:
     void endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
     void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
 
+    // What per-bond output reads (bond_local.cpp): the pair style, where
+    // the bond record (granbond_record_layout without the contact) lies in
+    // a pair's history, the status slot in it, and each type pair's model.
+    LAMMPS_NS::PairGran *pairStyle() const { return pair_; }
+    int recordOffset() const { return offset_; }
+    size_t statusSlot() const { return status_; }
+    const GbBondModel *model(int itype, int jtype) const { return parameters_.model(itype, jtype); }
+
 private:
     // A bond that formed in the pair loop of a swept pass, advanced at its
     // end (sweepFormed): if it breaks at once, the contact model's loads of
@@ -89,8 +97,8 @@ private:
     void failed(int i, int j, const char *call);
     // Bookkeeping of one step of a bond (update passes): counters, break log.
     // `wallDelta`: for wall bonds, the vector from the wall point to the centre.
-    void account(int i, int j, const double *wallDelta, const double *state, bool created,
-                 const GbBondOutput &out);
+    void account(const GbBondModel *model, int i, int j, const double *wallDelta, const double *state,
+                 bool created, const GbBondOutput &out);
     bool countsHere(int i, int j) const;
     // The core's checks of the time step (warned at a run's start, and when
     // the atom count changes if the limit moved) and, at a run's start, of

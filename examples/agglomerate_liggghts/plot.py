@@ -13,12 +13,15 @@ Writes into OUT_DIR:
   fragments.vtk       the final state with fragment id and size per sphere
                       (ParaView: Glyph, scale by radius, colour by fragment_size)
   fragments.csv       one row per fragment: size
+  post/vtk/           the bond network (bonds.pvd, breaks.pvd) of post/network.dump
+  network.png         that network at three steps, seen from the side
 Analysis only (counting and graph components): no physics here.
 """
 
 import glob
 import os
 import re
+import subprocess
 import sys
 from collections import Counter
 
@@ -215,6 +218,31 @@ def main(out):
           f"{len(sizes)} fragments (largest {sizes[0]})")
     for name in ("broken_bonds.png", "fragment_sizes.png", "fragments.png", "fragments.vtk"):
         print(f"wrote {os.path.join(out, name)}")
+    network(out)
+
+
+def network(out):
+    """The bond network of post/network.dump and post/breaks.txt as VTK
+    lines (post/vtk, tools/bonds_to_vtk.py), drawn at three steps
+    (network.png, tools/plot_bond_network.py)."""
+    post = os.path.join(out, "post")
+    dump = os.path.join(post, "network.dump")
+    if not os.path.exists(dump):
+        return
+    tools = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools")
+    cols = "id pos status stretch normal_force shear_force sigma_ratio tau_ratio"
+    vtk = os.path.join(post, "vtk")
+    subprocess.run([sys.executable, os.path.join(tools, "bonds_to_vtk.py"), dump, "--columns", cols,
+                    "--breaklog", os.path.join(post, "breaks.txt"), "--out", vtk], check=True)
+    with open(dump, encoding="utf-8") as f:
+        lines = f.read().splitlines()
+    steps = [int(lines[k + 1]) for k, line in enumerate(lines) if line == "ITEM: TIMESTEP"]
+    picks = [steps[1], steps[len(steps) // 2], steps[-1]] if len(steps) > 2 else steps
+    subprocess.run([sys.executable, os.path.join(tools, "plot_bond_network.py"), vtk, "--steps",
+                    *[str(s) for s in picks], "--field", "sigma_ratio", "--view", "xz", "--out",
+                    os.path.join(out, "network.png"),
+                    "--title", "cohesion bond/nonlinear: intact bonds coloured by sigma/sigma_max, broken by mode"],
+                   check=True)
 
 
 if __name__ == "__main__":

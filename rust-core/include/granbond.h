@@ -9,6 +9,11 @@
 #include <stdint.h>
 
 /**
+ * Number of fields of [`BOND_FIELDS`].
+ */
+#define BOND_FIELD_COUNT 23
+
+/**
  * Number of `double` slots of a bond output as engines keep it
  * (`granbond_bond_output_store`, `GB_STATE_KIND_BOND_OUTPUT`).
  */
@@ -44,7 +49,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 10
+#define GRANBOND_ABI_VERSION 11
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -1371,6 +1376,65 @@ const char *granbond_last_error_message(void);
  * `InvalidParameter` failure on this thread, or -1.
  */
 int32_t granbond_last_error_parameter(void);
+
+/**
+ * Number of a bond's output fields (`granbond_bond_fields` writes this
+ * many doubles).
+ */
+size_t granbond_bond_field_count(void);
+
+/**
+ * Name (the engines' keyword), SI unit ("-" when dimensionless) and
+ * description of field `id` (`id < granbond_bond_field_count()`), in
+ * static storage.
+ *
+ * # Safety
+ * `name`, `unit` and `description` must be null or valid for writes.
+ */
+enum GbStatus granbond_bond_field_info(size_t id,
+                                       const char **name,
+                                       const char **unit,
+                                       const char **description);
+
+/**
+ * The fields of one bond of `model`, written to `values`
+ * (`double[granbond_bond_field_count()]`, in the table's order): its pair
+ * record `record` (`granbond_record_layout(with_contact)`) as sphere `i`
+ * keeps it, and the centres `x_i`, `x_j` (`double[3]` each) of the two
+ * spheres. Refused: non-finite centres (`GB_STATUS_NON_FINITE_INPUT`),
+ * coincident ones (`GB_STATUS_INVALID_ARGUMENT`), each naming the
+ * argument, and fields that would not be finite (centres whose distance
+ * under- or overflows, a record with non-finite numbers:
+ * `GB_STATUS_NON_FINITE_INPUT`, naming the field); `values` is then left
+ * alone.
+ *
+ * # Safety
+ * `model` must be null or a model; `record` null or valid for the
+ * record's length; `x_i`, `x_j` null or three doubles; `values` null or
+ * valid for the field count.
+ */
+enum GbStatus granbond_bond_fields(const struct GbBondModel *model,
+                                   int32_t with_contact,
+                                   const double *record,
+                                   const double *x_i,
+                                   const double *x_j,
+                                   double *values);
+
+/**
+ * The limits a bond of `model` at compression `delta` (`r0 - r`, negative
+ * when stretched) holds its section stresses against, written to
+ * `sigma_max` and `tau_max`: `sigma_max` times `gamma` while stretched
+ * with the tension/compression ratio; both 0 in distance mode, which has
+ * no stress limits. For engines' logs of broken bonds.
+ *
+ * # Safety
+ * `model` must be null or a model; `sigma_max` and `tau_max` null or
+ * valid for writes.
+ */
+enum GbStatus granbond_bond_stress_limits(const struct GbBondModel *model,
+                                          double delta,
+                                          double *sigma_max,
+                                          double *tau_max);
 
 /**
  * Number of `double` slots in a state array of `kind` (a `GbStateKind`

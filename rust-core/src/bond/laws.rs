@@ -55,6 +55,19 @@ impl BondLaws {
         })
     }
 
+    /// The limits `(sigma_max, tau_max)` the section stresses of a bond at
+    /// compression `delta` are held against (eq. 15): `sigma_max` times
+    /// `gamma` while stretched (`delta < 0`) with `use_ratio`; `(0, 0)` in
+    /// distance mode, which has none.
+    pub fn stress_limits_at(&self, delta: f64) -> (f64, f64) {
+        if !self.stress_break {
+            return (0.0, 0.0);
+        }
+        let l = &self.limits;
+        let factor = if delta < 0.0 { l.tension_factor } else { 1.0 };
+        (l.max_sigma * factor, l.max_tau)
+    }
+
     /// The largest centre distance an intact bond of rest length `r0` can
     /// reach: engines must keep pairs this far apart in their neighbour
     /// lists. Distance mode: `max_distance`. Stress mode: the stretch at which

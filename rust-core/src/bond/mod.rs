@@ -17,6 +17,7 @@ pub mod damping;
 mod dispatch;
 pub mod energy;
 pub mod features;
+pub mod fields;
 pub mod finite;
 pub mod hysteresis;
 pub mod laws;

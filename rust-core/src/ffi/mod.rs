@@ -14,6 +14,7 @@ pub mod checks;
 pub mod contact;
 pub mod contact_geometry;
 pub mod error;
+pub mod fields;
 pub mod guard;
 pub mod layout;
 pub mod parameters;

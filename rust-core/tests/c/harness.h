@@ -136,6 +136,9 @@ size_t bond_field_count(void);
 /* Tests, by topic (each returns non-zero at its first failed check)         */
 /* ------------------------------------------------------------------------ */
 
+/* bond_fields.c */
+int test_bond_fields(void);
+
 /* layout.c */
 int test_version_and_layout(void);
 int test_state_layout(void);

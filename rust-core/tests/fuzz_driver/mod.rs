@@ -24,6 +24,7 @@
 //! planes, layouts, counts, indices, ids and kinds.
 #![allow(dead_code)]
 
+use granbond::bond::fields::{BOND_FIELDS, BOND_FIELD_COUNT};
 use granbond::bond::output_slots::{store_output, BOND_OUTPUT_LEN};
 use granbond::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode, BOND_STATE_LEN, PARAMETERS,
@@ -38,6 +39,9 @@ use granbond::ffi::checks::{self as fk, CheckReport};
 use granbond::ffi::contact::{self as fc, TangentialOutput};
 use granbond::ffi::contact_geometry as fcg;
 use granbond::ffi::error::{granbond_last_error_message, granbond_last_error_parameter};
+use granbond::ffi::fields::{
+    granbond_bond_field_count, granbond_bond_field_info, granbond_bond_fields, granbond_bond_stress_limits,
+};
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::parameters::{self as fp, ParameterRow};
 use granbond::ffi::sweep::{granbond_bond_sweep, granbond_record_layout};
@@ -54,7 +58,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 61] = [
+pub const ENTRY_POINTS: [&str; 65] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -116,6 +120,10 @@ pub const ENTRY_POINTS: [&str; 61] = [
     "granbond_state_slot",
     "granbond_record_layout",
     "granbond_bond_sweep",
+    "granbond_bond_field_count",
+    "granbond_bond_field_info",
+    "granbond_bond_fields",
+    "granbond_bond_stress_limits",
 ];
 
 /// The set-by-name and need entries of one parameter table.
@@ -2013,6 +2021,52 @@ impl<'t> Session<'t> {
             // infinite is documented (a bond that never breaks); NaN is not
             assert!(d >= 0.0, "{function}({length}) = {d}");
         }
+        // the same model and length, read no further from the input so the
+        // corpus keeps its meaning: a break's limits at compression
+        // `length`, and the fields of a bond created at 2e-3 whose centres
+        // are `length` apart
+        self.stress_limits(m, length);
+        self.bond_fields(m, length);
+    }
+
+    fn stress_limits(&mut self, m: *const BondModel, delta: f64) {
+        let (mut sigma_max, mut tau_max) = (f64::NAN, f64::NAN);
+        // SAFETY: the model pointer as the driver keeps it; valid outputs.
+        let status = unsafe { granbond_bond_stress_limits(m, delta, &mut sigma_max, &mut tau_max) };
+        if self.answer("granbond_bond_stress_limits", status) {
+            assert!(
+                sigma_max >= 0.0 && tau_max >= 0.0,
+                "granbond_bond_stress_limits({delta}) = {sigma_max}, {tau_max}"
+            );
+        }
+    }
+
+    fn bond_fields(&mut self, m: *const BondModel, distance: f64) {
+        let layout = RecordLayout::new(false);
+        let mut record = vec![0.0; layout.len];
+        record[layout.bond..layout.bond + BOND_STATE_LEN]
+            .copy_from_slice(BondState::created(2e-3).as_slots());
+        let (x_i, x_j) = ([distance, 0.0, 0.0], [0.0; 3]);
+        let mut values = vec![f64::NAN; BOND_FIELD_COUNT];
+        // SAFETY: the model pointer as the driver keeps it; valid buffers.
+        let status = unsafe {
+            granbond_bond_fields(
+                m,
+                0,
+                record.as_ptr(),
+                x_i.as_ptr(),
+                x_j.as_ptr(),
+                values.as_mut_ptr(),
+            )
+        };
+        if self.answer("granbond_bond_fields", status) {
+            assert!(distance != 0.0, "granbond_bond_fields: OK for coincident centres");
+            self.note_finite("granbond_bond_fields", all_finite(&values));
+            assert_eq!(
+                values[0], 1.0,
+                "granbond_bond_fields: the status of an intact bond"
+            );
+        }
     }
 
     /// The three time-step estimates.
@@ -2572,6 +2626,7 @@ impl<'t> Session<'t> {
 
     fn state_layout(&mut self, input: &mut Input) {
         let kind = input.i32();
+        self.field_table(kind);
         let len = granbond_state_len(kind);
         let want = match kind {
             0 => BOND_STATE_LEN,
@@ -2599,6 +2654,27 @@ impl<'t> Session<'t> {
             if kind == 4 || kind == 5 {
                 self.record_slot_is_its_parts(kind, index, got, flips.get());
             }
+        }
+    }
+
+    /// Row `id` of the bond field table (`id` read no further from the
+    /// input: the state kind drawn for the slot query).
+    fn field_table(&mut self, id: i32) {
+        let count = granbond_bond_field_count();
+        assert_eq!(count, BOND_FIELD_COUNT, "granbond_bond_field_count");
+        self.answer_value("granbond_bond_field_count");
+        let (mut name, mut unit, mut description) = (null::<c_char>(), null::<c_char>(), null::<c_char>());
+        let id = id as u32 as usize;
+        // SAFETY: valid outputs.
+        let status = unsafe { granbond_bond_field_info(id, &mut name, &mut unit, &mut description) };
+        if self.answer("granbond_bond_field_info", status) {
+            assert!(
+                id < count,
+                "granbond_bond_field_info: OK for field {id} of {count}"
+            );
+            // SAFETY: static NUL-terminated storage of the library.
+            let got = unsafe { CStr::from_ptr(name) };
+            assert_eq!(got.to_str().ok(), Some(BOND_FIELDS[id].name));
         }
     }
 

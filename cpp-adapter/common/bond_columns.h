@@ -1,0 +1,102 @@
+// The columns of the per-bond local output of both engines (LAMMPS
+// `compute granbond/local`, LIGGGHTS `compute pair/gran/local/bond`), chosen
+// by keyword: `id` (both atom ids), `pos` (both centres), every field the
+// core names (granbond_bond_field_info), and `all` for all of those fields.
+// The core computes the fields (granbond_bond_fields); this only picks
+// columns, so a field the core gains is a keyword in both engines.
+#ifndef GRANBOND_BOND_COLUMNS_H
+#define GRANBOND_BOND_COLUMNS_H
+
+#include "granbond.h"
+
+#include <string>
+#include <vector>
+
+namespace granbond {
+
+class BondColumns {
+public:
+    BondColumns() : fields_(granbond_bond_field_count(), 0.0) {}
+
+    // Reads the keywords; returns what is wrong (naming the keyword), or an
+    // empty string.
+    std::string parse(int narg, char **arg)
+    {
+        columns_.clear();
+        if (narg < 1) return "no keyword (known: " + known() + ")";
+        for (int k = 0; k < narg; k++) {
+            const std::string word = arg[k];
+            if (word == "id") {
+                columns_.push_back(Column{kIdI, 0});
+                columns_.push_back(Column{kIdJ, 0});
+            } else if (word == "pos") {
+                for (int c = 0; c < 6; c++) columns_.push_back(Column{kPos, c});
+            } else if (word == "all") {
+                for (size_t f = 0; f < fields_.size(); f++) columns_.push_back(Column{kField, static_cast<int>(f)});
+            } else {
+                const int f = field(word);
+                if (f < 0) return "unknown keyword '" + word + "' (known: " + known() + ")";
+                columns_.push_back(Column{kField, f});
+            }
+        }
+        return std::string();
+    }
+
+    size_t size() const { return columns_.size(); }
+
+    // The row of one bond: its model and pair record
+    // (granbond_record_layout(with_contact)) as sphere i keeps it, the
+    // spheres' ids and centres. On failure the core's message says why.
+    GbStatus row(const GbBondModel *model, int with_contact, const double *record, double tag_i, double tag_j,
+                 const double *x_i, const double *x_j, double *out)
+    {
+        const GbStatus s = granbond_bond_fields(model, with_contact, record, x_i, x_j, fields_.data());
+        if (s != GB_STATUS_OK) return s;
+        for (size_t c = 0; c < columns_.size(); c++) {
+            const Column &col = columns_[c];
+            switch (col.kind) {
+            case kIdI: out[c] = tag_i; break;
+            case kIdJ: out[c] = tag_j; break;
+            case kPos: out[c] = col.index < 3 ? x_i[col.index] : x_j[col.index - 3]; break;
+            default: out[c] = fields_[col.index]; break;
+            }
+        }
+        return GB_STATUS_OK;
+    }
+
+    // The position of field `name` in the core's table, or -1.
+    static int field(const std::string &name)
+    {
+        const size_t n = granbond_bond_field_count();
+        for (size_t f = 0; f < n; f++) {
+            const char *fname = nullptr, *unit = nullptr, *description = nullptr;
+            if (granbond_bond_field_info(f, &fname, &unit, &description) == GB_STATUS_OK && name == fname)
+                return static_cast<int>(f);
+        }
+        return -1;
+    }
+
+    static std::string known()
+    {
+        std::string s = "id pos all";
+        const size_t n = granbond_bond_field_count();
+        for (size_t f = 0; f < n; f++) {
+            const char *fname = nullptr, *unit = nullptr, *description = nullptr;
+            if (granbond_bond_field_info(f, &fname, &unit, &description) == GB_STATUS_OK) s += std::string(" ") + fname;
+        }
+        return s;
+    }
+
+private:
+    enum Kind { kIdI, kIdJ, kPos, kField };
+    struct Column {
+        Kind kind;
+        int index;
+    };
+    std::vector<Column> columns_;
+    std::vector<double> fields_;
+};
+
+}
+
+#endif

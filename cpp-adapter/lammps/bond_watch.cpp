@@ -1,0 +1,305 @@
+#include "bond_watch.h"
+#include "pair_granbond.h"
+#include "bond_columns.h"
+#include "run_checks.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "compute.h"
+#include "error.h"
+#include "fix.h"
+#include "force.h"
+#include "lammpsplugin.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+namespace granbond {
+namespace lammps {
+
+bool PairGranbond::indexCurrent() const
+{
+    return passStep_ == update->ntimestep && passAtoms_ == static_cast<bigint>(atom->nlocal) + atom->nghost;
+}
+
+// The bonds of `b` from `first` on that broke in this force pass, each on
+// the rank that counts it.
+void PairGranbond::logBreaks(const BondIndex &b, size_t first)
+{
+    for (size_t k = first; k < b.size(); k++) {
+        const GbBondOutput &out = b.out[k];
+        if (out.status == GB_BOND_STATUS_INTACT || out.break_mode == GB_BREAK_MODE_NONE || !b.counted[k]) continue;
+        const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
+        BreakEvent e;
+        if (makeBreakEvent(b.model, out, atom->x[i], atom->x[j], atom->radius[i], atom->radius[j],
+                           static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
+                           static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
+            failPair(i, j, "the break log's event (granbond_bond_centre, granbond_bond_stress_limits)");
+        breaks_.push_back(e);
+    }
+}
+
+namespace {
+
+// The pair granbond of this run, or an error naming `who`.
+PairGranbond *pairOf(LAMMPS *lmp, const char *who)
+{
+    PairGranbond *pair = dynamic_cast<PairGranbond *>(lmp->force->pair_match("granbond", 1));
+    if (!pair)
+        lmp->error->all(FLERR, std::string(who) + " needs pair_style granbond (defined before the run)");
+    return pair;
+}
+
+// Every intact bond of the latest pass: f(index, k) for bond k of each
+// index; an error naming `who` if the latest pass is not of this step.
+template<class F>
+void forEachBond(LAMMPS *lmp, PairGranbond *pair, const char *who, F f)
+{
+    if (!pair->indexCurrent())
+        lmp->error->all(FLERR, std::string(who) + ": pair granbond has no force pass at step " +
+                                   std::to_string(static_cast<long long>(lmp->update->ntimestep)) +
+                                   " for the present atoms (use it in a run's output, not between runs)");
+    for (const BondIndex &b : pair->bondIndex())
+        for (size_t k = 0; k < b.size(); k++) f(b, k);
+}
+
+// ------------------------------------------------------------ per atom
+// compute ID group granbond/atom: the number of intact bonds of each atom
+// of the group (0 for the others), the analogue of BPM's nbond/atom.
+class ComputeGranbondAtom : public Compute {
+public:
+    ComputeGranbondAtom(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg), nmax_(0), count_(nullptr)
+    {
+        if (narg != 3)
+            error->all(FLERR, "compute granbond/atom takes no arguments: compute ID group granbond/atom");
+        peratom_flag = 1;
+        size_peratom_cols = 0;
+    }
+    ~ComputeGranbondAtom() override { memory->destroy(count_); }
+
+    void init() override
+    {
+        pairOf(lmp, "compute granbond/atom");
+        // a pair straddling two ranks is on both ranks' lists only with
+        // newton off, and so is its count on each side
+        if (force->newton_pair)
+            error->all(FLERR, "compute granbond/atom needs newton_pair off (newton off), as pair granbond");
+    }
+
+    void compute_peratom() override
+    {
+        invoked_peratom = update->ntimestep;
+        if (atom->nmax > nmax_) {
+            memory->destroy(count_);
+            nmax_ = atom->nmax;
+            memory->create(count_, nmax_, "granbond/atom:count");
+            vector_atom = count_;
+        }
+        const int nlocal = atom->nlocal;
+        for (int i = 0; i < nlocal; i++) count_[i] = 0.0;
+        forEachBond(lmp, pairOf(lmp, "compute granbond/atom"), "compute granbond/atom",
+                    [&](const BondIndex &b, size_t k) {
+                        for (int side = 0; side < 2; side++) {
+                            const int a = b.pairs[2 * k + side];
+                            if (a < nlocal) count_[a] += 1.0;
+                        }
+                    });
+        const int *mask = atom->mask;
+        for (int i = 0; i < nlocal; i++)
+            if (!(mask[i] & groupbit)) count_[i] = 0.0;
+    }
+
+    double memory_usage() override { return static_cast<double>(nmax_) * sizeof(double); }
+
+private:
+    int nmax_;
+    double *count_;
+};
+
+// ------------------------------------------------------------ per bond
+// compute ID group granbond/local keyword ...: one row per intact bond
+// whose atoms are both in the group, each bond on one rank; columns by
+// keyword (bond_columns.h).
+class ComputeGranbondLocal : public Compute {
+public:
+    ComputeGranbondLocal(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg), rows_(0), data_(nullptr)
+    {
+        const std::string wrong = columns_.parse(narg - 3, arg + 3);
+        if (!wrong.empty()) error->all(FLERR, "compute granbond/local: " + wrong);
+        local_flag = 1;
+        size_local_rows = 0;
+        size_local_cols = columns_.size() == 1 ? 0 : static_cast<int>(columns_.size());
+    }
+    ~ComputeGranbondLocal() override { std::free(data_); std::free(pointers_); }
+
+    void init() override { pairOf(lmp, "compute granbond/local"); }
+
+    void compute_local() override
+    {
+        invoked_local = update->ntimestep;
+        PairGranbond *pair = pairOf(lmp, "compute granbond/local");
+        const int *mask = atom->mask;
+        const size_t ncols = columns_.size();
+        std::vector<double> &rows = buffer_;
+        rows.clear();
+        std::vector<double> row(ncols);
+        forEachBond(lmp, pair, "compute granbond/local", [&](const BondIndex &b, size_t k) {
+            const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
+            if (!b.counted[k] || !(mask[i] & groupbit) || !(mask[j] & groupbit)) return;
+            if (columns_.row(b.model, 1, b.records[k], static_cast<double>(atom->tag[i]),
+                             static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j], row.data()) != GB_STATUS_OK)
+                error->one(FLERR, "compute granbond/local: atoms " + std::to_string(static_cast<long long>(atom->tag[i])) +
+                                      " and " + std::to_string(static_cast<long long>(atom->tag[j])) + ": " +
+                                      granbond_last_error_message());
+            rows.insert(rows.end(), row.begin(), row.end());
+        });
+        rows_ = static_cast<int>(rows.size() / ncols);
+        size_local_rows = rows_;
+        // dump local reads vector_local, or array_local as row pointers
+        data_ = static_cast<double *>(std::realloc(data_, sizeof(double) * (rows.size() + 1)));
+        std::copy(rows.begin(), rows.end(), data_);
+        if (size_local_cols == 0) {
+            vector_local = data_;
+        } else {
+            pointers_ = static_cast<double **>(std::realloc(pointers_, sizeof(double *) * (rows_ + 1)));
+            for (int r = 0; r < rows_; r++) pointers_[r] = data_ + static_cast<size_t>(r) * ncols;
+            array_local = pointers_;
+        }
+    }
+
+    double memory_usage() override { return static_cast<double>(buffer_.capacity()) * 2 * sizeof(double); }
+
+private:
+    BondColumns columns_;
+    std::vector<double> buffer_;
+    int rows_;
+    double *data_;
+    double **pointers_ = nullptr;
+};
+
+// ------------------------------------------------------------ break log
+// fix ID group bond/breaklog FILE [every N]: LIGGGHTS's break log
+// (break_log.h) for pair granbond. The group is ignored, as there.
+class FixBondBreakLog : public Fix {
+public:
+    FixBondBreakLog(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), file_(nullptr), pair_(nullptr)
+    {
+        if (narg < 4) error->all(FLERR, "fix bond/breaklog: expected fix ID group bond/breaklog FILE [every N]");
+        nevery = 100;
+        for (int iarg = 4; iarg < narg; iarg += 2) {
+            if (std::strcmp(arg[iarg], "every") == 0 && iarg + 1 < narg) {
+                nevery = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+                if (nevery < 1) error->all(FLERR, "fix bond/breaklog: every must be >= 1");
+            } else {
+                error->all(FLERR, std::string("fix bond/breaklog: unknown keyword '") + arg[iarg] +
+                                      "' (the only one is: every N)");
+            }
+        }
+        if (comm->me == 0) {
+            file_ = std::fopen(arg[3], "w");
+            if (!file_) error->one(FLERR, std::string("fix bond/breaklog: cannot open ") + arg[3]);
+            std::fputs(breakLogHeader(), file_);
+            std::fflush(file_);
+        }
+    }
+    ~FixBondBreakLog() override
+    {
+        listen(nullptr);
+        if (file_) std::fclose(file_);
+    }
+
+    int setmask() override { return FixConst::END_OF_STEP | FixConst::POST_RUN; }
+
+    void init() override { listen(pairOf(lmp, "fix bond/breaklog")); }
+
+    // every step: the events leave the pair (nevery only paces the writing)
+    void end_of_step() override
+    {
+        take();
+        if (update->ntimestep % nevery == 0) writeBreakEvents(events_, file_, world);
+    }
+    void post_run() override
+    {
+        take();
+        writeBreakEvents(events_, file_, world);
+    }
+
+private:
+    // Follows `pair` from now on (null: none); the pair keeps break events
+    // only while a log follows it.
+    void listen(PairGranbond *pair)
+    {
+        // at the instance's end the pair style is gone before the fixes
+        PairGranbond *current = force ? dynamic_cast<PairGranbond *>(force->pair_match("granbond", 1)) : nullptr;
+        if (pair_ && pair_ == current) pair_->breakLogUsers--;
+        pair_ = pair;
+        if (pair_) pair_->breakLogUsers++;
+    }
+    void take()
+    {
+        if (!pair_) return;
+        std::vector<BreakEvent> &e = pair_->breakEvents();
+        events_.insert(events_.end(), e.begin(), e.end());
+        if (pair_->breakLogUsers <= 1) e.clear();
+    }
+
+    FILE *file_;
+    PairGranbond *pair_;
+    std::vector<BreakEvent> events_;
+};
+
+Compute *createAtom(LAMMPS *lmp, int narg, char **arg) { return new ComputeGranbondAtom(lmp, narg, arg); }
+Compute *createLocal(LAMMPS *lmp, int narg, char **arg) { return new ComputeGranbondLocal(lmp, narg, arg); }
+Fix *createBreakLog(LAMMPS *lmp, int narg, char **arg) { return new FixBondBreakLog(lmp, narg, arg); }
+
+void *createAtomPlugin(void *lmp, int narg, char **arg) { return createAtom(static_cast<LAMMPS *>(lmp), narg, arg); }
+void *createLocalPlugin(void *lmp, int narg, char **arg) { return createLocal(static_cast<LAMMPS *>(lmp), narg, arg); }
+void *createBreakLogPlugin(void *lmp, int narg, char **arg)
+{
+    return createBreakLog(static_cast<LAMMPS *>(lmp), narg, arg);
+}
+
+}
+
+void registerWatchStyles(LAMMPS *lmp)
+{
+    (*lmp->modify->compute_map)["granbond/atom"] = &createAtom;
+    (*lmp->modify->compute_map)["granbond/local"] = &createLocal;
+    (*lmp->modify->fix_map)["bond/breaklog"] = &createBreakLog;
+}
+
+void loadWatchPlugins(void *lmp, void *handle, void *regfunc, const char *version)
+{
+    struct Style {
+        const char *style, *name, *info;
+        lammpsplugin_factory2 *creator;
+    };
+    const Style styles[] = {
+        {"compute", "granbond/atom", "granbond: intact bonds per atom", &createAtomPlugin},
+        {"compute", "granbond/local", "granbond: per-bond fields for dump local", &createLocalPlugin},
+        {"fix", "bond/breaklog", "granbond: one line per broken bond", &createBreakLogPlugin},
+    };
+    for (const Style &s : styles) {
+        lammpsplugin_t plugin;
+        plugin.version = version;
+        plugin.style = s.style;
+        plugin.name = s.name;
+        plugin.info = s.info;
+        plugin.author = "granbond";
+        plugin.creator.v2 = s.creator;
+        plugin.handle = handle;
+        (*reinterpret_cast<lammpsplugin_regfunc>(regfunc))(&plugin, lmp);
+    }
+}
+
+}
+}

@@ -1,0 +1,119 @@
+#include "bond_local.h"
+#include "bond_book.h"
+#include "bond_columns.h"
+#include "bond_nonlinear_cohesion.h"
+#include "core_bridge.h"
+#include "run_checks.h"
+
+#include "compute.h"
+#include "pair_gran.h"
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace granbond {
+namespace liggghts {
+
+namespace {
+
+using LAMMPS_NS::LAMMPS;
+
+class ComputePairGranLocalBond : public LAMMPS_NS::Compute {
+public:
+    ComputePairGranLocalBond(LAMMPS *lmp, int &iarg, int narg, char **arg) :
+        Compute(lmp, iarg, narg, arg), data_(0), pointers_(0)
+    {
+        const std::string wrong = columns_.parse(narg - iarg, arg + iarg);
+        if (!wrong.empty()) endRun(error, FLERR, "compute pair/gran/local/bond: " + wrong);
+        iarg = narg;
+        local_flag = 1;
+        size_local_rows = 0;
+        size_local_cols = columns_.size() == 1 ? 0 : static_cast<int>(columns_.size());
+    }
+    ~ComputePairGranLocalBond()
+    {
+        std::free(data_);
+        std::free(pointers_);
+    }
+
+    void init() { bonds(); }
+
+    void compute_local()
+    {
+        invoked_local = update->ntimestep;
+        const BondNonlinearCohesion *model = bonds();
+        const LAMMPS_NS::PairGran *pair = model->pairStyle();
+        const LAMMPS_NS::NeighList *list = pair ? pair->list : 0;
+        const LAMMPS_NS::NeighList *history = pair ? pair->listgranhistory : 0;
+        rows_.clear();
+        if (list && history && history->firstdouble) {
+            const int dnum = const_cast<LAMMPS_NS::PairGran *>(pair)->dnum();
+            const int offset = model->recordOffset();
+            const size_t status = model->statusSlot();
+            const int *mask = atom->mask;
+            std::vector<double> row(columns_.size());
+            for (int ii = 0; ii < list->inum; ii++) {
+                const int i = list->ilist[ii];
+                const int *jlist = list->firstneigh[i];
+                const double *records = history->firstdouble[i];
+                for (int jj = 0; jj < list->numneigh[i]; jj++) {
+                    const double *record = records + static_cast<size_t>(dnum) * jj + offset;
+                    if (record[status] != GB_BOND_STATUS_INTACT) continue;
+                    const int j = jlist[jj] & NEIGHMASK;
+                    if (!pairCountsHere(i, j, atom->nlocal, atom->tag)) continue;
+                    if (!(mask[i] & groupbit) || !(mask[j] & groupbit)) continue;
+                    const GbBondModel *m = model->model(atom->type[i], atom->type[j]);
+                    if (!m || columns_.row(m, 0, record, static_cast<double>(atom->tag[i]),
+                                           static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j],
+                                           row.data()) != GB_STATUS_OK)
+                        endRunOnThisRank(lmp, FLERR,
+                                         "compute pair/gran/local/bond: atoms " +
+                                             std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
+                                             std::to_string(static_cast<long long>(atom->tag[j])) + ": " +
+                                             (m ? granbond_last_error_message() : "no bond model for their types"));
+                    rows_.insert(rows_.end(), row.begin(), row.end());
+                }
+            }
+        }
+        const size_t ncols = columns_.size();
+        size_local_rows = static_cast<int>(rows_.size() / ncols);
+        // dump local reads vector_local, or array_local as row pointers
+        data_ = static_cast<double *>(std::realloc(data_, sizeof(double) * (rows_.size() + 1)));
+        std::copy(rows_.begin(), rows_.end(), data_);
+        if (size_local_cols == 0) {
+            vector_local = data_;
+            return;
+        }
+        pointers_ = static_cast<double **>(std::realloc(pointers_, sizeof(double *) * (size_local_rows + 1)));
+        for (int r = 0; r < size_local_rows; r++) pointers_[r] = data_ + static_cast<size_t>(r) * ncols;
+        array_local = pointers_;
+    }
+
+    double memory_usage() { return static_cast<double>(rows_.capacity()) * 2 * sizeof(double); }
+
+private:
+    const BondNonlinearCohesion *bonds()
+    {
+        const BondNonlinearCohesion *b = BondBook::of(lmp).pairBonds;
+        if (!b)
+            endRun(error, FLERR, "compute pair/gran/local/bond needs pair_style gran with cohesion bond/nonlinear "
+                                 "(defined before the run)");
+        return b;
+    }
+
+    BondColumns columns_;
+    std::vector<double> rows_;
+    double *data_;
+    double **pointers_;
+};
+
+}
+
+LAMMPS_NS::Compute *createPairGranLocalBond(LAMMPS *lmp, int iarg, int narg, char **arg)
+{
+    return new ComputePairGranLocalBond(lmp, iarg, narg, arg);
+}
+
+}
+}

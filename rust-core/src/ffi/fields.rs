@@ -1,0 +1,138 @@
+//! `extern "C"` surface of a bond's named output fields
+//! (`crate::bond::fields`): the table engines build their keywords and
+//! columns from, and the fields of one bond.
+
+use super::entry;
+use super::error::{Failure, Status};
+use super::guard::{finite, finite_vector3, reference, reference_mut, slice, slice_mut};
+use crate::bond::fields::{bond_fields, BOND_FIELDS, BOND_FIELD_COUNT};
+use crate::bond::output_slots::BOND_OUTPUT_LEN;
+use crate::bond::{BondModel, BondState, BOND_STATE_LEN};
+use crate::record::RecordLayout;
+use std::ffi::{c_char, CString};
+use std::sync::OnceLock;
+
+/// The name, unit and description of every field, as C strings.
+fn c_strings() -> &'static [[CString; 3]] {
+    static TABLE: OnceLock<Vec<[CString; 3]>> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let c = |s: &str| CString::new(s).expect("no NUL in the field table");
+        BOND_FIELDS
+            .iter()
+            .map(|f| [c(f.name), c(f.unit), c(f.description)])
+            .collect()
+    })
+}
+
+/// Number of a bond's output fields (`granbond_bond_fields` writes this
+/// many doubles).
+#[entry(or = 0)]
+#[no_mangle]
+pub extern "C" fn granbond_bond_field_count() -> usize {
+    BOND_FIELD_COUNT
+}
+
+/// Name (the engines' keyword), SI unit ("-" when dimensionless) and
+/// description of field `id` (`id < granbond_bond_field_count()`), in
+/// static storage.
+///
+/// # Safety
+/// `name`, `unit` and `description` must be null or valid for writes.
+#[entry(name: reference_mut, unit: reference_mut, description: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_field_info(
+    id: usize,
+    name: *mut *const c_char,
+    unit: *mut *const c_char,
+    description: *mut *const c_char,
+) -> Status {
+    let row = c_strings().get(id).ok_or_else(|| {
+        Failure::new(
+            Status::InvalidArgument,
+            format!("field id {id} out of range (there are {BOND_FIELD_COUNT} fields)"),
+        )
+    })?;
+    *name = row[0].as_ptr();
+    *unit = row[1].as_ptr();
+    *description = row[2].as_ptr();
+    Ok(())
+}
+
+/// The fields of one bond of `model`, written to `values`
+/// (`double[granbond_bond_field_count()]`, in the table's order): its pair
+/// record `record` (`granbond_record_layout(with_contact)`) as sphere `i`
+/// keeps it, and the centres `x_i`, `x_j` (`double[3]` each) of the two
+/// spheres. Refused: non-finite centres (`GB_STATUS_NON_FINITE_INPUT`),
+/// coincident ones (`GB_STATUS_INVALID_ARGUMENT`), each naming the
+/// argument, and fields that would not be finite (centres whose distance
+/// under- or overflows, a record with non-finite numbers:
+/// `GB_STATUS_NON_FINITE_INPUT`, naming the field); `values` is then left
+/// alone.
+///
+/// # Safety
+/// `model` must be null or a model; `record` null or valid for the
+/// record's length; `x_i`, `x_j` null or three doubles; `values` null or
+/// valid for the field count.
+#[entry(model: reference, x_i: finite_vector3, x_j: finite_vector3)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_fields(
+    model: *const BondModel,
+    with_contact: i32,
+    record: *const f64,
+    x_i: *const f64,
+    x_j: *const f64,
+    values: *mut f64,
+) -> Status {
+    let layout = RecordLayout::new(with_contact != 0);
+    let record = slice(record, layout.len, "record")?;
+    let values = slice_mut(values, BOND_FIELD_COUNT, "values")?;
+    if x_i == x_j {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!("x_i and x_j coincide ({x_i:?}): a bond's spheres are apart"),
+        ));
+    }
+    let state: &[f64; BOND_STATE_LEN] = record[layout.bond..layout.bond + BOND_STATE_LEN]
+        .try_into()
+        .expect("the bond part has BOND_STATE_LEN slots");
+    // SAFETY: BondState is repr(C) of exactly BOND_STATE_LEN f64.
+    let state = &*(state as *const [f64; BOND_STATE_LEN] as *const BondState);
+    let loads: &[f64; BOND_OUTPUT_LEN] = record[layout.loads..layout.loads + BOND_OUTPUT_LEN]
+        .try_into()
+        .expect("the loads part has BOND_OUTPUT_LEN slots");
+    let fields = bond_fields(model, state, loads, x_i, x_j);
+    // centres so close or so far apart that their distance under- or
+    // overflows, or a record holding non-finite numbers
+    if let Some(k) = fields.iter().position(|v| !v.is_finite()) {
+        return Err(Failure::new(
+            Status::NonFiniteInput,
+            format!(
+                "field {} is {} for centres x_i {x_i:?}, x_j {x_j:?}: their distance or the record is out of range",
+                BOND_FIELDS[k].name, fields[k]
+            ),
+        ));
+    }
+    values.copy_from_slice(&fields);
+    Ok(())
+}
+
+/// The limits a bond of `model` at compression `delta` (`r0 - r`, negative
+/// when stretched) holds its section stresses against, written to
+/// `sigma_max` and `tau_max`: `sigma_max` times `gamma` while stretched
+/// with the tension/compression ratio; both 0 in distance mode, which has
+/// no stress limits. For engines' logs of broken bonds.
+///
+/// # Safety
+/// `model` must be null or a model; `sigma_max` and `tau_max` null or
+/// valid for writes.
+#[entry(model: reference, delta: finite, sigma_max: reference_mut, tau_max: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_stress_limits(
+    model: *const BondModel,
+    delta: f64,
+    sigma_max: *mut f64,
+    tau_max: *mut f64,
+) -> Status {
+    (*sigma_max, *tau_max) = model.stress_limits_at(delta);
+    Ok(())
+}
