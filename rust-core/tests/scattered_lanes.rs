@@ -343,6 +343,23 @@ fn every_step(
     runs
 }
 
+/// `base` with the switches of the `features` bits, and a damping ratio
+/// that makes the damping bit count.
+fn switched_on(features: u32, base: BondParams) -> BondParams {
+    let on = |bit: u32| (features & bit != 0) as i32;
+    BondParams {
+        tension: on(TENSION),
+        compression: on(COMPRESSION),
+        shear: on(SHEAR),
+        twist: on(TWIST),
+        bend: on(BEND),
+        damping: on(DAMPING),
+        damping_smooth: on(SMOOTH),
+        eta_fn: 0.3,
+        ..base
+    }
+}
+
 /// The combinations decks use have steps compiled for them alone (on AVX2
 /// where the CPU has it), and those give every bond the bits of the steps
 /// that read the switches at run time, in both breakage modes.
@@ -356,22 +373,13 @@ fn common_switch_sets_run_an_avx2_step_of_their_own_with_the_same_bits() {
     let base = any_params().new_tree(&mut runner).unwrap().current();
     for features in COMPILED_ALONE {
         for stress_break in [0, 1] {
-            let on = |bit: u32| (features & bit != 0) as i32;
             let p = BondParams {
-                tension: on(TENSION),
-                compression: on(COMPRESSION),
-                shear: on(SHEAR),
-                twist: on(TWIST),
-                bend: on(BEND),
-                damping: on(DAMPING),
-                damping_smooth: on(SMOOTH),
-                eta_fn: 0.3,
                 // above the bonds' speeds, so that smoothing changes the
                 // damping
                 smooth_velocity: 1e2,
                 smooth_angular_velocity: 1e4,
                 stress_break,
-                ..base
+                ..switched_on(features, base)
             };
             let own = BondModel::new(p).unwrap();
             assert_eq!(own.features, features);
@@ -406,11 +414,31 @@ fn every_kernel_names_the_first_bond_whose_results_are_not_finite() {
         bend: 1,
         ..any_params().new_tree(&mut runner).unwrap().current()
     };
+    names_the_first_bond_not_finite(p, &mut runner);
+}
+
+/// The slots of the laws switched off count in the results check like the
+/// others: every common set of switches (twist and bend off in most) names
+/// bond `k` too, in lanes as one step per bond does.
+#[test]
+fn slots_of_switched_off_laws_count_in_the_results_check() {
+    let mut runner = TestRunner::deterministic();
+    let base = any_params().new_tree(&mut runner).unwrap().current();
+    for features in COMPILED_ALONE {
+        names_the_first_bond_not_finite(switched_on(features, base), &mut runner);
+    }
+}
+
+/// With the history extremes of bonds `k` and `k + 5` near the largest
+/// double (finite, but their sum overflows), each batch of a model with
+/// parameters `p` names bond `k`, as one step per bond and the rule of
+/// `bond_finite` do, and advances every bond.
+fn names_the_first_bond_not_finite(p: BondParams, runner: &mut TestRunner) {
     // intact bonds with usable kinematics and finite results, so that every
     // chunk runs in lanes
     let model = BondModel::new(p).unwrap();
     let good: Vec<(PairKinematics, BondState)> = prop::collection::vec(bond(), 400)
-        .new_tree(&mut runner)
+        .new_tree(runner)
         .unwrap()
         .current()
         .into_iter()

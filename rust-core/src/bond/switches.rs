@@ -6,6 +6,10 @@ use super::laws::BondLaws;
 
 /// The switches a compiled step reads.
 pub(crate) trait Switches: Copy {
+    /// Whether the bits are known when the step is compiled, so that what
+    /// a step leaves out for them costs no branch.
+    const FIXED: bool;
+
     fn of(laws: &BondLaws) -> Self;
     fn bits(self) -> u32;
 
@@ -22,6 +26,8 @@ pub(crate) trait Switches: Copy {
 pub(crate) struct Fixed<const F: u32>;
 
 impl<const F: u32> Switches for Fixed<F> {
+    const FIXED: bool = true;
+
     #[inline(always)]
     fn of(_: &BondLaws) -> Self {
         Fixed
@@ -40,6 +46,8 @@ impl<const F: u32> Switches for Fixed<F> {
 pub(crate) struct Switched(u32);
 
 impl Switches for Switched {
+    const FIXED: bool = false;
+
     #[inline(always)]
     fn of(laws: &BondLaws) -> Self {
         Switched(laws.features)
