@@ -7,9 +7,9 @@
 //! call, so they are predicted, but the code around them is laid out for
 //! every law. The combinations of [`COMPILED_ALONE`] also get steps
 //! compiled for them alone ([`Fixed`]) on the scalar and AVX2 paths, where
-//! a switched-off law is not in the code at all. Compiling every one of the
-//! 128 combinations made the build slow and the library large for
-//! combinations no deck uses (docs/development.md).
+//! a switched-off law is not in the code at all. Every one of the 128
+//! combinations compiled on every path would make the build slow and the
+//! library large, for combinations no deck uses (docs/development.md).
 
 use super::features::COMPILED_ALONE;
 use super::finite::BatchResult;
