@@ -12,11 +12,16 @@
 //! (the difference removes start-up and set-up). Without valgrind it prints
 //! the wall time per bond-step of the sweeps.
 //!
-//! Bonds: the `full_6dof` parameters of `benches/kernels.rs`, pairs near
-//! their rest length (half stretched, half compressed) with random motion,
-//! states in records of 32 `f64` in shuffled order.
+//! A third argument names the switches, as in `benches/kernels.rs`:
+//! `full_6dof` (the default), `no_twist`, `no_bend`, `normal_shear`,
+//! `normal_only`, `tension_only`; a fourth, `switched`, runs the steps that
+//! read the switches at run time instead of the ones compiled for them.
+//!
+//! Bonds: the `full_6dof` parameters of `benches/kernels.rs` with those
+//! switches, pairs near their rest length (half stretched, half compressed)
+//! with random motion, states in records of 32 `f64` in shuffled order.
 
-use granbond::bond::{BondModel, BondOutput, BondState, Simd, BOND_STATE_LEN};
+use granbond::bond::{BondModel, BondOutput, BondParams, BondState, Simd, BOND_STATE_LEN};
 use granbond::kinematics::PairKinematics;
 use std::time::Instant;
 
@@ -70,7 +75,36 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let path = args.get(1).map(String::as_str).unwrap_or("avx2");
     let sweeps: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(11);
-    let base = BondModel::new(full_bond(RADIUS)).expect("valid parameters");
+    let variant = args.get(3).map(String::as_str).unwrap_or("full_6dof");
+    let full = full_bond(RADIUS);
+    let params = match variant {
+        "full_6dof" => full,
+        "no_twist" => BondParams { twist: 0, ..full },
+        "no_bend" => BondParams { bend: 0, ..full },
+        "normal_shear" => BondParams {
+            twist: 0,
+            bend: 0,
+            ..full
+        },
+        "normal_only" => BondParams {
+            shear: 0,
+            twist: 0,
+            bend: 0,
+            ..full
+        },
+        "tension_only" => BondParams {
+            compression: 0,
+            shear: 0,
+            twist: 0,
+            bend: 0,
+            ..full
+        },
+        other => panic!("unknown switches {other}"),
+    };
+    let mut base = BondModel::new(params).expect("valid parameters");
+    if args.get(4).map(String::as_str) == Some("switched") {
+        base = base.switched();
+    }
     let model = match path {
         "single" => None,
         "scalar" => Some(base.clone().with_simd(Simd::Scalar).unwrap()),
@@ -123,5 +157,5 @@ fn main() {
     }
     let ns = start.elapsed().as_nanos() as f64 / (sweeps * BONDS) as f64;
     let checksum: f64 = outs.iter().map(|o| o.force_i[0] + o.torque_j[2]).sum();
-    println!("{path}: {sweeps} sweeps of {BONDS} bonds, {ns:.1} ns per bond-step (checksum {checksum:e})");
+    println!("{path} {variant}: {sweeps} sweeps of {BONDS} bonds, {ns:.1} ns per bond-step (checksum {checksum:e})");
 }

@@ -10,7 +10,8 @@
 mod common;
 
 use common::strategies::{bond_params, bonded_pair};
-use granbond::bond::finite::bond_finite;
+use granbond::bond::features::{BEND, COMPILED_ALONE, COMPRESSION, DAMPING, SHEAR, SMOOTH, TENSION, TWIST};
+use granbond::bond::finite::{bond_finite, BatchResult};
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus, Simd};
 use granbond::kinematics::{KinematicsError, PairKinematics};
 use granbond::pair_source::{AtomArrays, IndexedPairs};
@@ -68,7 +69,7 @@ fn bond() -> impl Strategy<Value = (PairKinematics, BondState)> {
     })
 }
 
-/// Every switch at random (all 128 kernels), distance or stress mode with
+/// Every switch at random (all 128 combinations), distance or stress mode with
 /// limits that some bonds exceed, the linear continuation of the
 /// compression law on or off.
 fn any_params() -> impl Strategy<Value = BondParams> {
@@ -194,6 +195,31 @@ impl Atoms {
     }
 }
 
+const SOURCES: [&str; 3] = ["batch", "scattered", "indexed"];
+
+/// `bonds` through `step_batch` (states side by side), `step_scattered` or
+/// `step_indexed` of `m`: the result, the states and the outputs.
+fn run(
+    m: &BondModel,
+    source: &str,
+    kin: &[PairKinematics],
+    indexed: &IndexedPairs<'_>,
+    bonds: &[(PairKinematics, BondState)],
+) -> (BatchResult, Vec<BondState>, Vec<BondOutput>) {
+    let mut states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
+    let mut outs = stale_outputs(bonds.len());
+    let got = if source == "batch" {
+        m.step_batch(kin, DT, &mut states, &mut outs)
+    } else {
+        let mut refs: Vec<&mut BondState> = states.iter_mut().collect();
+        match source {
+            "scattered" => m.step_scattered(kin, DT, &mut refs, &mut outs),
+            _ => m.step_indexed(indexed, DT, &mut refs, &mut outs),
+        }
+    };
+    (got, states, outs)
+}
+
 /// `step_batch` (states side by side), `step_scattered` and `step_indexed`
 /// on every instruction set this CPU runs against one `step` per bond, bit
 /// for bit. Returns how many
@@ -212,18 +238,8 @@ fn check_scattered(p: BondParams, bonds: &[(PairKinematics, BondState)]) -> Resu
             continue;
         };
         ran += 1;
-        for source in ["batch", "scattered", "indexed"] {
-            let mut states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
-            let mut outs = stale_outputs(bonds.len());
-            let got = if source == "batch" {
-                m.step_batch(&kin, DT, &mut states, &mut outs)
-            } else {
-                let mut refs: Vec<&mut BondState> = states.iter_mut().collect();
-                match source {
-                    "scattered" => m.step_scattered(&kin, DT, &mut refs, &mut outs),
-                    _ => m.step_indexed(&indexed, DT, &mut refs, &mut outs),
-                }
-            };
+        for source in SOURCES {
+            let (got, states, outs) = run(&m, source, &kin, &indexed, bonds);
             prop_assert_eq!(got, expected, "{:?} {}: result", simd, source);
             for i in 0..bonds.len() {
                 prop_assert_eq!(
@@ -262,7 +278,7 @@ proptest! {
     }
 }
 
-/// Each of the 128 kernels (feature sets), in both breakage modes, on the
+/// Each of the 128 combinations of switches, in both breakage modes, on the
 /// same 20 bonds drawn once.
 #[test]
 fn every_kernel_gives_every_bond_the_bits_of_a_single_step() {
@@ -292,6 +308,100 @@ fn every_kernel_gives_every_bond_the_bits_of_a_single_step() {
     }
 }
 
+/// Every step of `m` this CPU runs (one bond at a time, and `step_batch`,
+/// `step_scattered`, `step_indexed` on each instruction set) on `bonds`:
+/// the result, the states' and the outputs' bits.
+fn every_step(
+    m: &BondModel,
+    bonds: &[(PairKinematics, BondState)],
+) -> Vec<(String, BatchResult, Vec<Vec<u64>>)> {
+    let kin: Vec<PairKinematics> = bonds.iter().map(|b| b.0).collect();
+    let atoms = Atoms::of(&kin);
+    let indexed = IndexedPairs::new(atoms.arrays(), &atoms.pairs).unwrap();
+    let mut runs = Vec::new();
+    let mut record = |name: String, got: BatchResult, states: &[BondState], outs: &[BondOutput]| {
+        let bits = states
+            .iter()
+            .map(state_bits)
+            .chain(outs.iter().map(output_bits))
+            .collect();
+        runs.push((name, got, bits));
+    };
+    let mut states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
+    let mut outs = stale_outputs(bonds.len());
+    let got = one_by_one(m, &kin, &mut states, &mut outs);
+    record("step".into(), got, &states, &outs);
+    for simd in EVERY_SIMD {
+        let Some(m) = m.clone().with_simd(simd) else {
+            continue;
+        };
+        for source in SOURCES {
+            let (got, states, outs) = run(&m, source, &kin, &indexed, bonds);
+            record(format!("{simd:?} {source}"), got, &states, &outs);
+        }
+    }
+    runs
+}
+
+/// `base` with the switches of the `features` bits, and a damping ratio
+/// that makes the damping bit count.
+fn switched_on(features: u32, base: BondParams) -> BondParams {
+    let on = |bit: u32| (features & bit != 0) as i32;
+    BondParams {
+        tension: on(TENSION),
+        compression: on(COMPRESSION),
+        shear: on(SHEAR),
+        twist: on(TWIST),
+        bend: on(BEND),
+        damping: on(DAMPING),
+        damping_smooth: on(SMOOTH),
+        eta_fn: 0.3,
+        ..base
+    }
+}
+
+/// The combinations decks use have steps compiled for them alone (on AVX2
+/// where the CPU has it), and those give every bond the bits of the steps
+/// that read the switches at run time, in both breakage modes.
+#[test]
+fn common_switch_sets_run_an_avx2_step_of_their_own_with_the_same_bits() {
+    let mut runner = TestRunner::deterministic();
+    let bonds = prop::collection::vec(bond(), 23)
+        .new_tree(&mut runner)
+        .unwrap()
+        .current();
+    let base = any_params().new_tree(&mut runner).unwrap().current();
+    for features in COMPILED_ALONE {
+        for stress_break in [0, 1] {
+            let p = BondParams {
+                // above the bonds' speeds, so that smoothing changes the
+                // damping
+                smooth_velocity: 1e2,
+                smooth_angular_velocity: 1e4,
+                stress_break,
+                ..switched_on(features, base)
+            };
+            let own = BondModel::new(p).unwrap();
+            assert_eq!(own.features, features);
+            assert!(own.compiled_alone(), "{features}: a step of its own");
+            #[cfg(target_arch = "x86_64")]
+            if is_x86_feature_detected!("avx2") {
+                let avx2 = own.clone().with_simd(Simd::Avx2).unwrap();
+                assert!(avx2.compiled_alone(), "{features}: an AVX2 step of its own");
+            }
+            let switched = own.clone().switched();
+            assert!(!switched.compiled_alone());
+            let (mine, theirs) = (every_step(&own, &bonds), every_step(&switched, &bonds));
+            assert_eq!(mine.len(), theirs.len());
+            for (a, b) in mine.iter().zip(&theirs) {
+                assert_eq!(a.0, b.0);
+                assert_eq!(a.1, b.1, "{features} {}: result", a.0);
+                assert!(a.2 == b.2, "{features} {}: bits", a.0);
+            }
+        }
+    }
+}
+
 /// Results that are not finite are found in every lane: with the history
 /// extremes of bonds `k` and `k + 5` near the largest double (finite, but
 /// their sum overflows), each batch names bond `k`, as one step per bond
@@ -304,11 +414,31 @@ fn every_kernel_names_the_first_bond_whose_results_are_not_finite() {
         bend: 1,
         ..any_params().new_tree(&mut runner).unwrap().current()
     };
+    names_the_first_bond_not_finite(p, &mut runner);
+}
+
+/// The slots of the laws switched off count in the results check like the
+/// others: every common set of switches (twist and bend off in most) names
+/// bond `k` too, in lanes as one step per bond does.
+#[test]
+fn slots_of_switched_off_laws_count_in_the_results_check() {
+    let mut runner = TestRunner::deterministic();
+    let base = any_params().new_tree(&mut runner).unwrap().current();
+    for features in COMPILED_ALONE {
+        names_the_first_bond_not_finite(switched_on(features, base), &mut runner);
+    }
+}
+
+/// With the history extremes of bonds `k` and `k + 5` near the largest
+/// double (finite, but their sum overflows), each batch of a model with
+/// parameters `p` names bond `k`, as one step per bond and the rule of
+/// `bond_finite` do, and advances every bond.
+fn names_the_first_bond_not_finite(p: BondParams, runner: &mut TestRunner) {
     // intact bonds with usable kinematics and finite results, so that every
     // chunk runs in lanes
     let model = BondModel::new(p).unwrap();
     let good: Vec<(PairKinematics, BondState)> = prop::collection::vec(bond(), 400)
-        .new_tree(&mut runner)
+        .new_tree(runner)
         .unwrap()
         .current()
         .into_iter()

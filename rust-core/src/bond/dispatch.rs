@@ -1,13 +1,22 @@
-//! The compiled steps, one per combination of [`super::features`] bits and
-//! per instruction set, and the choice among them. Nothing here computes:
+//! The compiled steps and the choice among them. Nothing here computes:
 //! each entry is the scalar path ([`super::scalar`]) or the wide one
-//! ([`super::wide`]) for a fixed set of bits.
+//! ([`super::wide`]) for a way of reading the [`super::features`] bits.
+//!
+//! One step per instruction set reads the bits at run time
+//! ([`Switched`]); its branches on them go the same way for every bond of a
+//! call, so they are predicted, but the code around them is laid out for
+//! every law. The combinations of [`COMPILED_ALONE`] also get steps
+//! compiled for them alone ([`Fixed`]) on the scalar and AVX2 paths, where
+//! a switched-off law is not in the code at all. Every one of the 128
+//! combinations compiled on every path would make the build slow and the
+//! library large, for combinations no deck uses (docs/development.md).
 
-use super::features::FEATURE_COMBINATIONS;
+use super::features::COMPILED_ALONE;
 use super::finite::BatchResult;
 use super::laws::BondLaws;
 use super::scalar::{all_one_by_one, bond_step};
 use super::state::{BondOutput, BondState};
+use super::switches::{Fixed, Switched, Switches};
 use crate::kinematics::{KinematicsError, PairKinematics};
 use crate::pair_source::IndexedPairs;
 use crate::simd::Simd;
@@ -32,23 +41,33 @@ pub(crate) struct Kernels {
     pub scattered: ScatteredKernel,
     pub indexed: IndexedKernel,
     pub simd: Simd,
+    /// Whether the steps are compiled for the model's combination alone
+    /// (the AVX-512 ones never are).
+    pub own: bool,
 }
 
 /// The steps for `features` on `simd`, which the caller has checked this
 /// CPU runs ([`Simd::available`]); `Scalar` for a width not compiled in.
-pub(crate) fn kernels(features: u32, simd: Simd) -> Kernels {
-    let f = features as usize % FEATURE_COMBINATIONS;
-    let (batch, scattered, indexed, simd) = match simd {
+/// With `own`, the steps compiled for `features` alone where there are
+/// such; otherwise the ones that read the bits.
+pub(crate) fn kernels(features: u32, simd: Simd, own: bool) -> Kernels {
+    let switched = COMPILED_ALONE.len();
+    let f = match COMPILED_ALONE.iter().position(|&c| c == features) {
+        Some(f) if own => f,
+        _ => switched,
+    };
+    let (batch, scattered, indexed, simd, f) = match simd {
         #[cfg(target_arch = "x86_64")]
-        Simd::Avx2 => (BATCH_AVX2[f], SCATTERED_AVX2[f], INDEXED_AVX2[f], Simd::Avx2),
+        Simd::Avx2 => (BATCH_AVX2[f], SCATTERED_AVX2[f], INDEXED_AVX2[f], Simd::Avx2, f),
         #[cfg(target_arch = "x86_64")]
         Simd::Avx512 => (
-            BATCH_AVX512[f],
-            SCATTERED_AVX512[f],
-            INDEXED_AVX512[f],
+            wide::batch_avx512::<Switched> as BatchKernel,
+            wide::scattered_avx512::<Switched> as ScatteredKernel,
+            wide::indexed_avx512::<Switched> as IndexedKernel,
             Simd::Avx512,
+            switched,
         ),
-        _ => (BATCH[f], SCATTERED[f], INDEXED[f], Simd::Scalar),
+        _ => (BATCH[f], SCATTERED[f], INDEXED[f], Simd::Scalar, f),
     };
     Kernels {
         single: SINGLE[f],
@@ -56,31 +75,32 @@ pub(crate) fn kernels(features: u32, simd: Simd) -> Kernels {
         scattered,
         indexed,
         simd,
+        own: f != switched,
     }
 }
 
-fn single<const F: u32>(
+fn single<S: Switches>(
     laws: &BondLaws,
     kin: &PairKinematics,
     dt: f64,
     state: &mut BondState,
     out: &mut BondOutput,
 ) -> Result<(), KinematicsError> {
-    bond_step::<F>(laws, kin, dt, state, out)
+    bond_step::<S>(laws, kin, dt, state, out)
 }
 
 /// The scalar entries of the tables, one per state layout and source of
 /// kinematics.
 macro_rules! scalar {
     ($name:ident, $source:ty, $state:ty) => {
-        fn $name<const F: u32>(
+        fn $name<S: Switches>(
             laws: &BondLaws,
             kin: &$source,
             dt: f64,
             states: &mut [$state],
             outs: &mut [BondOutput],
         ) -> BatchResult {
-            all_one_by_one::<F, _, _>(laws, kin, dt, states, outs)
+            all_one_by_one::<S, _, _>(laws, kin, dt, states, outs)
         }
     };
 }
@@ -102,14 +122,14 @@ mod wide {
     macro_rules! compiled {
         ($name:ident, $feature:literal, $pack:ty) => {
             #[target_feature(enable = $feature)]
-            fn $name<const F: u32, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
+            fn $name<S: Switches, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
                 laws: &BondLaws,
                 kin: &K,
                 dt: f64,
-                states: &mut [S],
+                states: &mut [T],
                 outs: &mut [BondOutput],
             ) -> BatchResult {
-                in_chunks::<F, $pack, K, S>(laws, kin, dt, states, outs)
+                in_chunks::<S, $pack, K, T>(laws, kin, dt, states, outs)
             }
         };
     }
@@ -120,7 +140,7 @@ mod wide {
     /// layout and source of kinematics, the same safe shell around each.
     macro_rules! entry {
         ($name:ident, $kernel:ident, $source:ty, $state:ty) => {
-            pub(super) fn $name<const F: u32>(
+            pub(super) fn $name<S: Switches>(
                 laws: &BondLaws,
                 kin: &$source,
                 dt: f64,
@@ -129,7 +149,7 @@ mod wide {
             ) -> BatchResult {
                 // SAFETY: only handed out by `kernels` for the instruction
                 // set it names, which `BondModel` checks the CPU runs.
-                unsafe { $kernel::<F, _, _>(laws, kin, dt, states, outs) }
+                unsafe { $kernel::<S, _, _>(laws, kin, dt, states, outs) }
             }
         };
     }
@@ -141,21 +161,23 @@ mod wide {
     entry!(indexed_avx512, avx512, IndexedPairs<'_>, &mut BondState);
 }
 
-seq!(N in 0..128 {
-    const SINGLE: [Kernel; FEATURE_COMBINATIONS] = [#(single::<N>,)*];
-    const BATCH: [BatchKernel; FEATURE_COMBINATIONS] = [#(batch::<N>,)*];
-    const SCATTERED: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(scattered::<N>,)*];
-    const INDEXED: [IndexedKernel; FEATURE_COMBINATIONS] = [#(indexed::<N>,)*];
+/// The entries of the tables: one for each combination of
+/// [`COMPILED_ALONE`], then the one that reads the bits.
+const ENTRIES: usize = COMPILED_ALONE.len() + 1;
+
+seq!(N in 0..18 {
+    const SINGLE: [Kernel; ENTRIES] = [#(single::<Fixed<{ COMPILED_ALONE[N] }>>,)* single::<Switched>];
+    const BATCH: [BatchKernel; ENTRIES] = [#(batch::<Fixed<{ COMPILED_ALONE[N] }>>,)* batch::<Switched>];
+    const SCATTERED: [ScatteredKernel; ENTRIES] =
+        [#(scattered::<Fixed<{ COMPILED_ALONE[N] }>>,)* scattered::<Switched>];
+    const INDEXED: [IndexedKernel; ENTRIES] = [#(indexed::<Fixed<{ COMPILED_ALONE[N] }>>,)* indexed::<Switched>];
     #[cfg(target_arch = "x86_64")]
-    const BATCH_AVX2: [BatchKernel; FEATURE_COMBINATIONS] = [#(wide::batch_avx2::<N>,)*];
+    const BATCH_AVX2: [BatchKernel; ENTRIES] =
+        [#(wide::batch_avx2::<Fixed<{ COMPILED_ALONE[N] }>>,)* wide::batch_avx2::<Switched>];
     #[cfg(target_arch = "x86_64")]
-    const SCATTERED_AVX2: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(wide::scattered_avx2::<N>,)*];
+    const SCATTERED_AVX2: [ScatteredKernel; ENTRIES] =
+        [#(wide::scattered_avx2::<Fixed<{ COMPILED_ALONE[N] }>>,)* wide::scattered_avx2::<Switched>];
     #[cfg(target_arch = "x86_64")]
-    const INDEXED_AVX2: [IndexedKernel; FEATURE_COMBINATIONS] = [#(wide::indexed_avx2::<N>,)*];
-    #[cfg(target_arch = "x86_64")]
-    const BATCH_AVX512: [BatchKernel; FEATURE_COMBINATIONS] = [#(wide::batch_avx512::<N>,)*];
-    #[cfg(target_arch = "x86_64")]
-    const SCATTERED_AVX512: [ScatteredKernel; FEATURE_COMBINATIONS] = [#(wide::scattered_avx512::<N>,)*];
-    #[cfg(target_arch = "x86_64")]
-    const INDEXED_AVX512: [IndexedKernel; FEATURE_COMBINATIONS] = [#(wide::indexed_avx512::<N>,)*];
+    const INDEXED_AVX2: [IndexedKernel; ENTRIES] =
+        [#(wide::indexed_avx2::<Fixed<{ COMPILED_ALONE[N] }>>,)* wide::indexed_avx2::<Switched>];
 });

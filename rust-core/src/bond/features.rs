@@ -1,5 +1,5 @@
-//! The parts of the bond a model computes, as bits. The step is compiled
-//! once per combination, so a switched-off part costs nothing.
+//! The parts of the bond a model computes, as bits ([`super::switches`]
+//! says how a compiled step reads them).
 
 use super::params::BondParams;
 
@@ -11,6 +11,32 @@ pub const BEND: u32 = 16;
 pub const DAMPING: u32 = 32;
 pub const SMOOTH: u32 = 64;
 pub const FEATURE_COMBINATIONS: usize = 128;
+
+/// Every law of the bond, without damping.
+const ALL_LAWS: u32 = TENSION | COMPRESSION | SHEAR | TWIST | BEND;
+
+/// The combinations that have steps compiled for them alone: the full bond
+/// and the reductions decks use (no twist, no bend, normal and shear,
+/// normal only, tension only), each undamped, damped and smoothly damped.
+/// Every other combination runs the steps that read the bits at run time.
+pub const COMPILED_ALONE: [u32; 18] = {
+    let laws = [
+        ALL_LAWS,
+        ALL_LAWS & !TWIST,
+        ALL_LAWS & !BEND,
+        TENSION | COMPRESSION | SHEAR,
+        TENSION | COMPRESSION,
+        TENSION,
+    ];
+    let damping = [0, DAMPING, DAMPING | SMOOTH];
+    let mut all = [0; 18];
+    let mut i = 0;
+    while i < 18 {
+        all[i] = laws[i / 3] | damping[i % 3];
+        i += 1;
+    }
+    all
+};
 
 /// The bits `params` switch on. Damping with every ratio zero changes
 /// nothing, so it is left out.

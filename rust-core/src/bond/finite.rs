@@ -5,6 +5,8 @@
 
 use super::state::{BondOutput, BondState, BOND_STATE_LEN};
 use crate::kinematics::KinematicsError;
+#[cfg(target_arch = "x86_64")]
+use crate::real::packed::Pack;
 use crate::real::Real;
 
 /// What a batch step answers: `Ok(first)`, where `first` is the first bond
@@ -24,6 +26,25 @@ pub type BatchResult = Result<Option<usize>, (usize, KinematicsError)>;
 pub fn results_finite<R: Real>(loads: [R; 9], scalars: [R; 4], state: [R; BOND_STATE_LEN]) -> R::Mask {
     let outputs = sum(&loads) + sum(&scalars);
     is_finite(outputs) & is_finite(sum(&state))
+}
+
+/// [`results_finite`] of a register of bonds whose first state slots are
+/// in `state` and whose other slots are read from `rest(lane)`: each lane
+/// adds its own rest to its sum, in the same order, so it decides as
+/// [`bond_finite`] does.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(crate) fn results_finite_with_rest<'a, P: Pack>(
+    loads: [P; 9],
+    scalars: [P; 4],
+    state: &[P],
+    rest: impl Fn(usize) -> &'a [f64],
+) -> P::Mask {
+    let outputs = sum(&loads) + sum(&scalars);
+    let mut head = [0.0; 8];
+    sum(state).for_each_lane(|i, x| head[i] = x);
+    let whole = P::gather(|i| rest(i).iter().fold(head[i], |acc, &x| acc + x));
+    is_finite(outputs) & is_finite(whole)
 }
 
 /// [`results_finite`] of one bond.

@@ -6,7 +6,8 @@
 //! engines keep (`state`, `wall`, `output_slots`) and when its results count
 //! as finite (`finite`). Above them, each depending
 //! only on the ones before: the laws of a bond type ([`laws`]) and the parts
-//! switched on ([`features`]); the assembled step (`step`); the paths that
+//! switched on ([`features`]) and how a step reads them (`switches`); the
+//! assembled step (`step`); the paths that
 //! feed it one bond at a time (`scalar`) or in lanes (`wide`); the compiled
 //! steps and the choice among them (`dispatch`); the model ([`model`]).
 
@@ -31,6 +32,7 @@ pub mod section;
 pub mod shear;
 pub mod state;
 mod step;
+mod switches;
 pub mod timestep;
 pub mod twist_bend;
 pub mod wall;

@@ -31,7 +31,7 @@ impl Deref for BondModel {
 impl BondModel {
     pub fn new(params: BondParams) -> Result<Self, ParameterError> {
         let laws = BondLaws::new(params)?;
-        let kernels = kernels(laws.features, Simd::chosen());
+        let kernels = kernels(laws.features, Simd::chosen(), true);
         Ok(Self { laws, kernels })
     }
 
@@ -48,12 +48,27 @@ impl BondModel {
         if !simd.available() {
             return None;
         }
-        let kernels = kernels(self.laws.features, simd);
+        let kernels = kernels(self.laws.features, simd, self.kernels.own);
         if kernels.simd != simd {
             return None;
         }
         self.kernels = kernels;
         Some(self)
+    }
+
+    /// Whether the model's steps are compiled for its combination of
+    /// switches alone ([`super::features::COMPILED_ALONE`]) rather than
+    /// reading the switches at run time.
+    pub fn compiled_alone(&self) -> bool {
+        self.kernels.own
+    }
+
+    /// The model with the steps that read the switches at run time, the ones
+    /// every combination without steps of its own runs: the same results,
+    /// only the speed differs. For tests and benchmarks.
+    pub fn switched(mut self) -> Self {
+        self.kernels = kernels(self.laws.features, self.kernels.simd, false);
+        self
     }
 
     /// Advances one bond (see [`super::scalar::bond_step`]).

@@ -2,10 +2,12 @@
 //! step ([`super::step`]) and its loads back out.
 
 use super::breakage::BreakMode;
+use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
 use super::finite::{bond_finite, BatchResult};
 use super::laws::BondLaws;
 use super::state::{BondOutput, BondState, BondStatus};
 use super::step::{advance, History, Motion};
+use super::switches::Switches;
 use super::twist_bend::{BendHistory, TwistHistory};
 use crate::kinematics::{centre_line, KinematicsError, PairKinematics};
 use crate::pair_source::PairSource;
@@ -26,7 +28,7 @@ fn finish(state: &mut BondState, out: &mut BondOutput, status: BondStatus, mode:
 /// Advances one bond by `dt` and writes the loads on both spheres. A bond
 /// that is not intact, or breaks in this step, exerts nothing.
 #[inline(always)]
-pub fn bond_step<const F: u32>(
+pub(crate) fn bond_step<S: Switches>(
     laws: &BondLaws,
     kin: &PairKinematics,
     dt: f64,
@@ -65,16 +67,27 @@ pub fn bond_step<const F: u32>(
             opposite: state.bend_opposite,
         },
     };
-    let loads = advance::<F, f64, Vec3>(laws, &motion, line, dt, &mut history);
-    state.delta_max = history.delta_max;
-    state.delta_min = history.delta_min;
-    state.shear_force = history.shear_force.into();
-    state.twist_angle = history.twist_angle.into();
-    state.bend_angle = history.bend_angle.into();
-    state.twist_max = history.twist.max;
-    state.twist_min = history.twist.min;
-    state.bend_history = history.bend.leading.into();
-    state.bend_opposite = history.bend.opposite;
+    let loads = advance::<S, f64, Vec3>(laws, &motion, line, dt, &mut history);
+    // The slots of a law switched off are left as they are (as `advance`
+    // leaves them).
+    let on = |bits| S::of(laws).any(bits);
+    if on(TENSION | COMPRESSION) {
+        state.delta_max = history.delta_max;
+        state.delta_min = history.delta_min;
+    }
+    if on(SHEAR) {
+        state.shear_force = history.shear_force.into();
+    }
+    if on(TWIST) {
+        state.twist_angle = history.twist_angle.into();
+        state.twist_max = history.twist.max;
+        state.twist_min = history.twist.min;
+    }
+    if on(BEND) {
+        state.bend_angle = history.bend_angle.into();
+        state.bend_history = history.bend.leading.into();
+        state.bend_opposite = history.bend.opposite;
+    }
     out.delta = loads.delta;
     out.normal_force = loads.normal_force;
     out.sigma = loads.sigma;
@@ -97,18 +110,18 @@ pub fn bond_step<const F: u32>(
 /// Steps bonds `range` one by one, states in place or behind pointers,
 /// checking each bond's results as it goes ([`BatchResult`]).
 #[inline(always)]
-pub(crate) fn one_by_one<const F: u32, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
+pub(crate) fn one_by_one<S: Switches, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
     laws: &BondLaws,
     kin: &K,
     range: Range<usize>,
     dt: f64,
-    states: &mut [S],
+    states: &mut [T],
     outs: &mut [BondOutput],
 ) -> BatchResult {
     let mut first = None;
     for b in range {
         let state = states[b].borrow_mut();
-        bond_step::<F>(laws, &kin.pair(b), dt, state, &mut outs[b]).map_err(|e| (b, e))?;
+        bond_step::<S>(laws, &kin.pair(b), dt, state, &mut outs[b]).map_err(|e| (b, e))?;
         if first.is_none() && !bond_finite(state, &outs[b]) {
             first = Some(b);
         }
@@ -119,13 +132,13 @@ pub(crate) fn one_by_one<const F: u32, K: PairSource + ?Sized, S: BorrowMut<Bond
 /// All bonds of `kin` (as many as the shortest of the three holds) one by
 /// one.
 #[inline(always)]
-pub(crate) fn all_one_by_one<const F: u32, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
+pub(crate) fn all_one_by_one<S: Switches, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
     laws: &BondLaws,
     kin: &K,
     dt: f64,
-    states: &mut [S],
+    states: &mut [T],
     outs: &mut [BondOutput],
 ) -> BatchResult {
     let count = kin.len().min(states.len()).min(outs.len());
-    one_by_one::<F, K, S>(laws, kin, 0..count, dt, states, outs)
+    one_by_one::<S, K, T>(laws, kin, 0..count, dt, states, outs)
 }

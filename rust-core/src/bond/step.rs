@@ -10,6 +10,7 @@ use super::laws::BondLaws;
 use super::paired::{norms, reciprocals};
 use super::section::{lever_arms_scaled, section};
 use super::shear::update_shear_force;
+use super::switches::Switches;
 use super::twist_bend::{advance_bend, advance_twist, split_relative_spin, BendHistory, TwistHistory};
 use crate::kinematics::{slip_velocity, CentreLine};
 use crate::real::Real;
@@ -86,13 +87,14 @@ pub(crate) struct Loads<R, V> {
 /// computed and the broken ones are masked at the end (and the history of
 /// the ones broken by distance restored), unless all of them broke.
 #[inline(always)]
-pub(crate) fn advance<const F: u32, R: Real, V: Vector<R>>(
+pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>>(
     laws: &BondLaws,
     m: &Motion<R, V>,
     line: CentreLine<R, V>,
     dt: R,
     h: &mut History<R, V>,
 ) -> Loads<R, V> {
+    let on = |bits| S::of(laws).any(bits);
     let zero = R::splat(0.0);
     let n = line.n;
     let delta = h.r0 - line.r;
@@ -121,20 +123,17 @@ pub(crate) fn advance<const F: u32, R: Real, V: Vector<R>>(
     let (inv_rb, inv_radius_sum) = super::section::reciprocals(&sec, m.radius_i, m.radius_j);
 
     let mut normal_force = zero;
-    if F & (TENSION | COMPRESSION) != 0 {
+    if on(TENSION | COMPRESSION) {
         let (hi, lo) = laws.normal.update_history(delta, h.delta_max, h.delta_min);
         h.delta_max = hi;
         h.delta_min = lo;
-        normal_force = sec.area
-            * laws
-                .normal
-                .stress(delta, hi, lo, F & TENSION != 0, F & COMPRESSION != 0);
+        normal_force = sec.area * laws.normal.stress(delta, hi, lo, on(TENSION), on(COMPRESSION));
     }
 
     let (mut lever_i, mut lever_j) = (zero, zero);
     let mut slip = V::zeros();
     let mut shear_force = V::zeros();
-    if F & SHEAR != 0 {
+    if on(SHEAR) {
         (lever_i, lever_j) = lever_arms_scaled(line.r, inv_radius_sum, m.radius_i, m.radius_j);
         slip = slip_velocity(m.v_i - m.v_j, m.w_i, m.w_j, n, lever_i, lever_j);
         let stiffness = R::splat(laws.params.k_ft) * sec.area;
@@ -142,7 +141,7 @@ pub(crate) fn advance<const F: u32, R: Real, V: Vector<R>>(
         h.shear_force = shear_force;
     }
 
-    let (twist, bend) = (F & TWIST != 0, F & BEND != 0);
+    let (twist, bend) = (on(TWIST), on(BEND));
     let (w_along, w_across, spin_rate) = if twist || bend {
         split_relative_spin(m.w_i - m.w_j, n)
     } else {
@@ -173,7 +172,7 @@ pub(crate) fn advance<const F: u32, R: Real, V: Vector<R>>(
 
     // Lengths, two per instruction: the shear force (for the stresses and
     // the damping) and, with damping, the slip speed the damping opposes.
-    let (shear, damping) = (F & SHEAR != 0, F & DAMPING != 0);
+    let (shear, damping) = (on(SHEAR), on(DAMPING));
     let (shear_magnitude, slip_speed) = norms(shear_force, shear, slip, shear && damping);
     let (sigma, tau) = section_stresses(
         normal_force,
@@ -194,10 +193,10 @@ pub(crate) fn advance<const F: u32, R: Real, V: Vector<R>>(
     }
 
     if damping {
-        let smooth = F & SMOOTH != 0;
+        let smooth = on(SMOOTH);
         let p = &laws.params;
         let (ve, we) = (p.smooth_velocity, p.smooth_angular_velocity);
-        if F & (TENSION | COMPRESSION) != 0 {
+        if on(TENSION | COMPRESSION) {
             let vn = (m.v_i - m.v_j).dot(&n);
             normal_force = damp_scalar(normal_force, p.eta_fn, vn, ve, smooth);
         }

@@ -17,11 +17,13 @@
 //! kernel, which zeroes the first kind and reports the first bad one with
 //! its index.
 
-use super::finite::{bond_finite, results_finite, BatchResult};
+use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
+use super::finite::{bond_finite, results_finite, results_finite_with_rest, BatchResult};
 use super::laws::BondLaws;
 use super::scalar::one_by_one;
-use super::state::{BondOutput, BondState, BondStatus};
+use super::state::{BondOutput, BondState, BondStatus, BOND_STATE_LEN};
 use super::step::{advance, History, Motion};
+use super::switches::Switches;
 use super::twist_bend::{BendHistory, TwistHistory};
 use crate::kinematics::{axis, separated, usable};
 use crate::pair_source::PairSource;
@@ -32,11 +34,11 @@ use std::borrow::{Borrow, BorrowMut};
 /// [`one_by_one`] in chunks of `P::WIDTH` lanes; the bonds after the last full
 /// chunk one by one.
 #[inline(always)]
-pub(crate) fn in_chunks<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
+pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
     laws: &BondLaws,
     kin: &K,
     dt: f64,
-    states: &mut [S],
+    states: &mut [T],
     outs: &mut [BondOutput],
 ) -> BatchResult {
     let count = kin.len().min(states.len()).min(outs.len());
@@ -44,7 +46,7 @@ pub(crate) fn in_chunks<const F: u32, P: Pack, K: PairSource + ?Sized, S: Borrow
     let mut start = 0;
     while start + P::WIDTH <= count {
         let end = start + P::WIDTH;
-        let found = match step_chunk::<F, P, K, S>(
+        let found = match step_chunk::<S, P, K, T>(
             laws,
             kin,
             start,
@@ -57,12 +59,12 @@ pub(crate) fn in_chunks<const F: u32, P: Pack, K: PairSource + ?Sized, S: Borrow
                 (start..end).find(|&b| !bond_finite(states[b].borrow(), &outs[b]))
             }
             Some(_) => None,
-            None => one_by_one::<F, K, S>(laws, kin, start..end, dt, states, outs)?,
+            None => one_by_one::<S, K, T>(laws, kin, start..end, dt, states, outs)?,
         };
         first = first.or(found);
         start = end;
     }
-    let found = one_by_one::<F, K, S>(laws, kin, start..count, dt, states, outs)?;
+    let found = one_by_one::<S, K, T>(laws, kin, start..count, dt, states, outs)?;
     Ok(first.or(found))
 }
 
@@ -71,12 +73,12 @@ pub(crate) fn in_chunks<const F: u32, P: Pack, K: PairSource + ?Sized, S: Borrow
 /// without touching anything when one of them is not intact or has
 /// unusable kinematics.
 #[inline(always)]
-fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondState>>(
+fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
     laws: &BondLaws,
     kin: &K,
     first: usize,
     dt: f64,
-    states: &mut [S],
+    states: &mut [T],
     outs: &mut [BondOutput],
 ) -> Option<P::Mask> {
     let n = P::WIDTH;
@@ -103,41 +105,76 @@ fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondSt
         return None;
     }
 
+    // The slots after the last one a law switched on uses stay in memory:
+    // the step leaves them alone, and only the results check reads them.
+    // (Where the bits are read at run time, a rest of varying length costs
+    // more than it saves: every slot is moved.)
+    let on = |bits| S::of(laws).any(bits);
+    let live = if S::FIXED {
+        live_slots(on(SHEAR), on(TWIST), on(BEND))
+    } else {
+        BOND_STATE_LEN
+    };
+    let zero = V3::new(P::splat(0.0), P::splat(0.0), P::splat(0.0));
+    let vector = |first: usize, f: fn(&BondState) -> [f64; 3]| {
+        if first < live {
+            gather3(states, f)
+        } else {
+            zero
+        }
+    };
+    let scalar = |slot: usize, f: fn(&BondState) -> f64| {
+        if slot < live {
+            gather(states, f)
+        } else {
+            P::splat(0.0)
+        }
+    };
     let mut h = History {
         r0: gather(states, |s: &BondState| s.r0),
         delta_max: gather(states, |s: &BondState| s.delta_max),
         delta_min: gather(states, |s: &BondState| s.delta_min),
-        shear_force: gather3(states, |s: &BondState| s.shear_force),
-        twist_angle: gather3(states, |s: &BondState| s.twist_angle),
-        bend_angle: gather3(states, |s: &BondState| s.bend_angle),
+        shear_force: vector(4, |s| s.shear_force),
+        twist_angle: vector(7, |s| s.twist_angle),
+        bend_angle: vector(10, |s| s.bend_angle),
         twist: TwistHistory {
-            max: gather(states, |s: &BondState| s.twist_max),
-            min: gather(states, |s: &BondState| s.twist_min),
+            max: scalar(13, |s| s.twist_max),
+            min: scalar(14, |s| s.twist_min),
         },
         bend: BendHistory {
-            leading: gather3(states, |s: &BondState| s.bend_history),
-            opposite: gather(states, |s: &BondState| s.bend_opposite),
+            leading: vector(15, |s| s.bend_history),
+            opposite: scalar(18, |s| s.bend_opposite),
         },
     };
-    let loads = advance::<F, P, V3<P>>(laws, &motion, axis(d, r2), P::splat(dt), &mut h);
+    let loads = advance::<S, P, V3<P>>(laws, &motion, axis(d, r2), P::splat(dt), &mut h);
 
     // Back into the structs one quantity at a time: each register is
     // stored once and its lanes copied out.
     let broken = loads.mode.gt(P::splat(0.0));
     let status = |s: BondStatus| P::splat(s as i32 as f64);
     let status = P::select(broken, status(BondStatus::Broken), status(BondStatus::Intact));
+    // The slots of a law switched off still hold what was loaded (`advance`
+    // leaves them alone): they are not stored back.
     scatter(states, status, |s: &mut BondState, x| s.status = x);
-    scatter(states, h.delta_max, |s: &mut BondState, x| s.delta_max = x);
-    scatter(states, h.delta_min, |s: &mut BondState, x| s.delta_min = x);
-    scatter3(states, h.shear_force, |s: &mut BondState| &mut s.shear_force);
-    scatter3(states, h.twist_angle, |s: &mut BondState| &mut s.twist_angle);
-    scatter3(states, h.bend_angle, |s: &mut BondState| &mut s.bend_angle);
-    scatter(states, h.twist.max, |s: &mut BondState, x| s.twist_max = x);
-    scatter(states, h.twist.min, |s: &mut BondState, x| s.twist_min = x);
-    scatter3(states, h.bend.leading, |s: &mut BondState| &mut s.bend_history);
-    scatter(states, h.bend.opposite, |s: &mut BondState, x| {
-        s.bend_opposite = x
-    });
+    if on(TENSION | COMPRESSION) {
+        scatter(states, h.delta_max, |s: &mut BondState, x| s.delta_max = x);
+        scatter(states, h.delta_min, |s: &mut BondState, x| s.delta_min = x);
+    }
+    if on(SHEAR) {
+        scatter3(states, h.shear_force, |s: &mut BondState| &mut s.shear_force);
+    }
+    if on(TWIST) {
+        scatter3(states, h.twist_angle, |s: &mut BondState| &mut s.twist_angle);
+        scatter(states, h.twist.max, |s: &mut BondState, x| s.twist_max = x);
+        scatter(states, h.twist.min, |s: &mut BondState, x| s.twist_min = x);
+    }
+    if on(BEND) {
+        scatter3(states, h.bend_angle, |s: &mut BondState| &mut s.bend_angle);
+        scatter3(states, h.bend.leading, |s: &mut BondState| &mut s.bend_history);
+        scatter(states, h.bend.opposite, |s: &mut BondState, x| {
+            s.bend_opposite = x
+        });
+    }
     scatter3(outs, loads.force_i, |o: &mut BondOutput| &mut o.force_i);
     scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
     scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
@@ -153,31 +190,53 @@ fn step_chunk<const F: u32, P: Pack, K: PairSource + ?Sized, S: BorrowMut<BondSt
     // in the order of the slots and fields (finite.rs)
     let (f, ti, tj) = (loads.force_i, loads.torque_i, loads.torque_j);
     let (sf, ta, ba, bh) = (h.shear_force, h.twist_angle, h.bend_angle, h.bend.leading);
-    Some(results_finite(
+    let state = [
+        status,
+        h.r0,
+        h.delta_max,
+        h.delta_min,
+        sf.x,
+        sf.y,
+        sf.z,
+        ta.x,
+        ta.y,
+        ta.z,
+        ba.x,
+        ba.y,
+        ba.z,
+        h.twist.max,
+        h.twist.min,
+        bh.x,
+        bh.y,
+        bh.z,
+        h.bend.opposite,
+    ];
+    let (loads, scalars) = (
         [f.x, f.y, f.z, ti.x, ti.y, ti.z, tj.x, tj.y, tj.z],
         [loads.normal_force, loads.sigma, loads.tau, loads.delta],
-        [
-            status,
-            h.r0,
-            h.delta_max,
-            h.delta_min,
-            sf.x,
-            sf.y,
-            sf.z,
-            ta.x,
-            ta.y,
-            ta.z,
-            ba.x,
-            ba.y,
-            ba.z,
-            h.twist.max,
-            h.twist.min,
-            bh.x,
-            bh.y,
-            bh.z,
-            h.bend.opposite,
-        ],
-    ))
+    );
+    Some(if live == BOND_STATE_LEN {
+        results_finite(loads, scalars, state)
+    } else {
+        results_finite_with_rest(loads, scalars, &state[..live], |lane| {
+            &states[lane].borrow().as_slots()[live..]
+        })
+    })
+}
+
+/// How many slots, from the first, a step with these laws switched on
+/// keeps in registers: at least those it changes. A rest of a few slots
+/// costs more added lane by lane than moved into lanes (measured with
+/// `bench/scattered_cost.sh`), so with twist on every slot is.
+#[inline(always)]
+fn live_slots(shear: bool, twist: bool, bend: bool) -> usize {
+    if bend || twist {
+        BOND_STATE_LEN
+    } else if shear {
+        7
+    } else {
+        4
+    }
 }
 
 /// One quantity of `P::WIDTH` items, lane `i` from `items[i]`.
