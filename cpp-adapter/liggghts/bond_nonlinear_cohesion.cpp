@@ -186,11 +186,12 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
     if (atoms_ && (update->setupflag || neighbor->ago == 0)) forgetRecordsOfNewborn();
     // Every force pass sweeps the pair bonds before the engine's loop. Their
     // loads go straight to the atoms, unless something in the engine reads
-    // each pair's forces as the loop applies them (per-contact output, CFD
-    // coupling, stored contact forces, summed normal forces or deltas):
-    // then each pair's callback applies its bond's loads.
+    // each pair's forces as the loop applies them (stored contact forces,
+    // summed normal forces or deltas): then each pair's callback applies its
+    // bond's loads. (compute pair/gran/local reads them in a pass of its
+    // own, which advances nothing: the callbacks apply the kept loads.)
     sweeping_ = pair_ && sidata.computeflag && sidata.shearupdate;
-    direct_ = sweeping_ && !pair_->cpl() && !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
+    direct_ = sweeping_ && !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
               !pair_->store_sum_normal_force() && !pair_->storeSumDelta();
     brokeNow_.clear();
     if (sweeping_) {

@@ -23,6 +23,10 @@ LIGGGHTS (liggghts-granbond). One claim per mode:
               tangential spring acts at the break with the history it built
               under the bond; with no/off it starts from zero: in the step
               of the break its force is one step's increment.
+  observe     LIGGGHTS: output changes no result: the flagship deck's first
+              1000 steps (bonds break under impact, fragments touch) with
+              and without its dumps (compute pair/gran/local among them) end
+              with the same state of every atom, to the last digit.
   reform      a bond that breaks between spheres still within the creation
               distance (create_always / createBondAlways) forms again in
               the next pass, not in the pass it broke in, as when each bond
@@ -36,6 +40,7 @@ usage: check_bond_index.py --mode MODE --engine BIN --kind lammps|liggghts
 
 import argparse
 import os
+import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -179,9 +184,45 @@ def check_reform(a, workdir):
     print(f"{len(breaks)} breaks, each followed by a new bond one step later")
 
 
+def check_observe(a, workdir):
+    """The flagship deck (bonds breaking under impact, contacts between the
+    fragments), its first 1000 steps with and without its dumps, among them
+    compute pair/gran/local: the same state of every atom to the last digit."""
+    if a.kind != "liggghts":
+        raise Failure("observe: liggghts only")
+    example = os.path.join(HERE, "..", "..", "examples", "agglomerate_liggghts")
+    with open(os.path.join(example, "in.agglomerate_liggghts"), encoding="utf-8") as f:
+        deck = f.read()
+    final = ("dump final all custom ${nrun} final.txt id x y z vx vy vz omegax omegay omegaz\n"
+             'dump_modify final sort id format "%d' + " %.17g" * 9 + '"\n')
+    if deck.count("\nrun ${nrun}") != 1:
+        raise Failure("observe: the flagship deck no longer ends with one 'run ${nrun}'")
+    deck = deck.replace("\nrun ${nrun}", "\n" + final + "run ${nrun}")
+    finals = []
+    for dumps in (0, 1):
+        run_dir = os.path.join(workdir, f"dumps{dumps}")
+        os.makedirs(run_dir, exist_ok=True)
+        with open(os.path.join(run_dir, "in.deck"), "w", encoding="utf-8") as f:
+            f.write(deck)
+        p = subprocess.run([a.engine, "-in", "in.deck", "-var", "dumps", str(dumps), "-var", "nrun", "1000",
+                            "-log", "log.lammps"], cwd=run_dir, stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, universal_newlines=True, timeout=600)
+        if p.returncode != 0:
+            raise Failure(f"dumps {dumps}: exit {p.returncode}:\n{p.stdout[-3000:]}")
+        with open(os.path.join(run_dir, "final.txt"), encoding="utf-8") as f:
+            finals.append(f.read().split("ITEM: TIMESTEP")[-1])
+    if not os.path.isdir(os.path.join(workdir, "dumps1", "post")):
+        raise Failure("dumps 1 wrote no dumps")
+    if finals[0] != finals[1]:
+        diff = next((x, y) for x, y in zip(finals[0].splitlines(), finals[1].splitlines()) if x != y)
+        raise Failure(f"the dumps changed the run: without them '{diff[0]}', with them '{diff[1]}'")
+    atoms = finals[0].split("ITEM: NUMBER OF ATOMS")[1].split()[0]
+    print(f"the same final state of {atoms} atoms with and without the dumps (compute pair/gran/local among them)")
+
+
 def parse():
     p = argparse.ArgumentParser()
-    p.add_argument("--mode", required=True, choices=["index", "under", "reform"])
+    p.add_argument("--mode", required=True, choices=["index", "under", "reform", "observe"])
     p.add_argument("--engine", required=True)
     p.add_argument("--kind", required=True, choices=["lammps", "liggghts"])
     p.add_argument("--mpiexec")
@@ -191,5 +232,5 @@ def parse():
 
 if __name__ == "__main__":
     args = parse()
-    checks = {"index": check_index, "under": check_under, "reform": check_reform}
+    checks = {"index": check_index, "under": check_under, "reform": check_reform, "observe": check_observe}
     main(lambda: checks[args.mode](args, args.workdir))
