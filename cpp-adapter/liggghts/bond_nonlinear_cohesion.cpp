@@ -9,11 +9,9 @@
 #include "neighbor.h"
 #include "pair_gran.h"
 
-#include <algorithm>
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -212,7 +210,6 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
 void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceData &)
 {
     if (sweeping_) {
-        sweepFormed();
         if (pruneIndex_)
             for (BondIndex &b : index_) b.keepIntact();
         pruneIndex_ = false;
@@ -319,7 +316,6 @@ void BondNonlinearCohesion::indexBonds()
 void BondNonlinearCohesion::sweepIndex()
 {
     if (indexedAt_ != neighbor->ncalls) indexBonds();
-    formed_.clear();
     GbSweepTally t = {};
     for (size_t x = 0; x < index_.size(); x++) {
         BondIndex &b = index_[x];
@@ -327,19 +323,19 @@ void BondNonlinearCohesion::sweepIndex()
         size_t bad = 0;
         if (b.sweep(atom, 0, true, update->dt, t, bad) != GB_STATUS_OK)
             failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
-        applySwept(b, 0);
+        applySwept(b, 0, direct_);
         b.keepIntact();
     }
     tally_.intact += t.intact;
 }
 
-void BondNonlinearCohesion::applySwept(BondIndex &b, size_t first)
+void BondNonlinearCohesion::applySwept(BondIndex &b, size_t first, bool toAtoms)
 {
     for (size_t k = first; k < b.size(); k++) {
         const GbBondOutput &out = b.out[k];
         const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
         if (out.status == GB_BOND_STATUS_INTACT) {
-            if (!direct_) continue;   // the pair's callback applies them
+            if (!toAtoms) continue;   // the pair's callback applies them
             const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
             addToAtoms(i, j, out.force_i, out.torque_i, fj, out.torque_j);
             continue;
@@ -348,36 +344,6 @@ void BondNonlinearCohesion::applySwept(BondIndex &b, size_t first)
         *b.flags[k] &= ~CONTACT_COHESION_MODEL;
         brokeNow_.insert(b.records[k]);
     }
-}
-
-// The bonds that formed in the pair loop, advanced in the pass they formed
-// in; one that broke at once leaves the contact model's loads of the step.
-void BondNonlinearCohesion::sweepFormed()
-{
-    if (formed_.empty()) return;
-    GbSweepTally t = {};
-    std::vector<size_t> first(index_.size(), std::numeric_limits<size_t>::max());
-    for (size_t f = 0; f < formed_.size(); f++)
-        first[formed_[f].index] = std::min(first[formed_[f].index], formed_[f].at);
-    for (size_t x = 0; x < index_.size(); x++) {
-        BondIndex &b = index_[x];
-        if (first[x] >= b.size()) continue;
-        size_t bad = 0;
-        if (b.sweep(atom, first[x], true, update->dt, t, bad) != GB_STATUS_OK)
-            failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
-        applySwept(b, first[x]);
-    }
-    for (size_t f = 0; f < formed_.size(); f++) {
-        const Formed &p = formed_[f];
-        const BondIndex &b = index_[p.index];
-        if (b.out[p.at].status != GB_BOND_STATUS_INTACT && p.touching)
-            addToAtoms(b.pairs[2 * p.at], b.pairs[2 * p.at + 1], p.contact, p.contact + 3, p.contact + 6,
-                       p.contact + 9);
-    }
-    for (size_t x = 0; x < index_.size(); x++)
-        if (first[x] < index_[x].size()) index_[x].keepIntact();
-    tally_.intact += t.intact;
-    formed_.clear();
 }
 
 // GRANBOND_CHECK_INDEX: the index recounted from the records after a swept
@@ -470,10 +436,8 @@ void BondNonlinearCohesion::failed(int i, int j, const char *call)
     endRunOnThisRank(lmp, FLERR, msg);
 }
 
-bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, bool &deferred,
-                                    const ForceData *i_contact, const ForceData *j_contact)
+bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out)
 {
-    deferred = false;
     const GbBondModel *model = parameters_.model(d.itype, d.jtype);
     if (!model || !d.contact_history) {
         failed(d.i, d.j, model ? "contact history lookup" : "model lookup (types not connected)");
@@ -518,13 +482,7 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
         createPair(d, model, k, state, created);
         if (state[status_] != GB_BOND_STATUS_INTACT) return false;
         if (created && countsHere(d.i, d.j)) tally_.created++;
-        const Formed f = form(d, model, i_contact, j_contact);
-        if (direct_) {   // advanced at the pass's end (sweepFormed)
-            formed_.push_back(f);
-            deferred = true;
-            return false;
-        }
-        return sweepNow(f, out);
+        return sweepNow(form(d, model), out);
     }
     const bool intact = advanceWall(d, model, state, out, created);
     if (intact && granbond_bond_output_store(&out, outputSlots) != GB_STATUS_OK)
@@ -533,9 +491,10 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out, boo
     return intact;
 }
 
-// A bond that formed in the loop of a pass whose callbacks apply the
-// loads: advanced at once, in the loop's order; the index drops it at the
-// pass's end if it broke at once (then the contact models' loads stand).
+// A bond that formed in the pass's loop: advanced at once, and its loads
+// applied by its pair's callback, in the loop's order; the index drops it
+// at the pass's end if it broke at once (then the contact models' loads
+// stand).
 bool BondNonlinearCohesion::sweepNow(const Formed &f, GbBondOutput &out)
 {
     BondIndex &b = index_[f.index];
@@ -543,7 +502,7 @@ bool BondNonlinearCohesion::sweepNow(const Formed &f, GbBondOutput &out)
     size_t bad = 0;
     if (b.sweep(atom, f.at, true, update->dt, t, bad) != GB_STATUS_OK)
         failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
-    applySwept(b, f.at);
+    applySwept(b, f.at, false);
     tally_.intact += t.intact;
     out = b.out[f.at];
     pruneIndex_ = pruneIndex_ || out.status != GB_BOND_STATUS_INTACT;
@@ -644,11 +603,8 @@ inline bool BondNonlinearCohesion::swept(SurfacesCloseData &d)
     return true;
 }
 
-// A bond that formed in the loop of a force pass: indexed, with the
-// contact models' loads kept in case it breaks at once (where the pass
-// advances it at its end, sweepFormed).
-BondNonlinearCohesion::Formed BondNonlinearCohesion::form(SurfacesCloseData &d, const GbBondModel *model,
-                                                          const ForceData *i_forces, const ForceData *j_forces)
+// A bond that formed in the loop of a force pass, added to the index.
+BondNonlinearCohesion::Formed BondNonlinearCohesion::form(SurfacesCloseData &d, const GbBondModel *model)
 {
     BondIndex &b = indexOf(index_, model);
     b.pass.with_contact = 0;
@@ -656,11 +612,6 @@ BondNonlinearCohesion::Formed BondNonlinearCohesion::form(SurfacesCloseData &d, 
     Formed f;
     f.index = static_cast<size_t>(&b - &index_[0]);
     f.at = b.size() - 1;
-    f.touching = i_forces != 0;
-    if (f.touching) {   // ForceData is delta_F[3], delta_torque[3] (checked in liggghts_engine.h)
-        std::memcpy(f.contact, i_forces, sizeof(ForceData));
-        std::memcpy(f.contact + 6, j_forces, sizeof(ForceData));
-    }
     return f;
 }
 
@@ -688,15 +639,13 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
     }
     if (unbondable(sidata)) return;
     GbBondOutput out;
-    bool deferred;
-    const bool intact = advance(sidata, out, deferred, &i_forces, &j_forces);
-    setContactFlag(sidata, intact || deferred);
-    if (!intact && !deferred) return;   // the contact model acts alone
-    // an intact bond replaces what normal, tangential and rolling models
-    // added (one that formed in this pass keeps a copy in case it breaks at once)
+    const bool intact = advance(sidata, out);
+    setContactFlag(sidata, intact);
+    if (!intact) return;   // the contact model acts alone
+    // an intact bond replaces what normal, tangential and rolling models added
     i_forces.reset();
     j_forces.reset();
-    if (intact) apply(out, i_forces, j_forces);
+    apply(out, i_forces, j_forces);
 }
 
 void BondNonlinearCohesion::surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
@@ -709,9 +658,8 @@ void BondNonlinearCohesion::surfacesClose(SurfacesCloseData &scdata, ForceData &
     }
     if (unbondable(scdata)) return;
     GbBondOutput out;
-    bool deferred;
-    const bool intact = advance(scdata, out, deferred, 0, 0);
-    setContactFlag(scdata, intact || deferred);
+    const bool intact = advance(scdata, out);
+    setContactFlag(scdata, intact);
     if (!intact) return;
     apply(out, i_forces, j_forces);
     scdata.has_force_update = true;   // otherwise the engine drops the forces

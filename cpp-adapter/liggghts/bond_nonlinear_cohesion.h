@@ -60,35 +60,27 @@ public:
     const GbBondModel *model(int itype, int jtype) const { return parameters_.model(itype, jtype); }
 
 private:
-    // A bond that formed in the pair loop of a swept pass, advanced at its
-    // end (sweepFormed): if it breaks at once, the contact model's loads of
-    // this step (kept here) act instead.
+    // Where a bond that formed in the pair loop lies in the index.
     struct Formed {
         size_t index, at;   // index_[index], bond `at`
-        bool touching;
-        double contact[12];   // F_i, T_i, F_j, T_j of the contact model
     };
 
-    // Creates the bond of this pair (or advances a wall bond). Returns true
-    // and fills `out` if the bond is intact after the step. Returns false
-    // with `deferred` set if the bond formed in a pass whose loads go
-    // straight to the atoms (see Formed).
-    bool advance(SurfacesCloseData &d, GbBondOutput &out, bool &deferred, const ForceData *i_contact,
-                 const ForceData *j_contact);
+    // Creates the bond of this pair and advances it at once (or advances a
+    // wall bond). Returns true and fills `out` if the bond is intact after
+    // the step: then its loads replace the contact models'.
+    bool advance(SurfacesCloseData &d, GbBondOutput &out);
     void pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const;
     void createPair(const SurfacesCloseData &d, const GbBondModel *model, const GbPairKinematics &k,
                     double *state, bool &created);
     bool swept(SurfacesCloseData &d);
     bool unbondable(SurfacesCloseData &d);
     void prefetchNextAtom(int i);
-    Formed form(SurfacesCloseData &d, const GbBondModel *model, const ForceData *i_forces,
-                const ForceData *j_forces);
+    Formed form(SurfacesCloseData &d, const GbBondModel *model);
     bool sweepNow(const Formed &f, GbBondOutput &out);
     void applyKept(SurfacesCloseData &d, ForceData &i_forces, ForceData &j_forces);
     void indexBonds();
     void sweepIndex();
-    void sweepFormed();
-    void applySwept(BondIndex &b, size_t first);
+    void applySwept(BondIndex &b, size_t first, bool toAtoms);
     void checkIndex();
     void addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj, const double *tj);
     bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out,
@@ -137,7 +129,6 @@ private:
     int cursor_;                  // position of the latest atom in the neighbour list (prefetchNextAtom)
     int lastAtom_;
     std::vector<BondIndex> index_;   // per bond model: the intact pair bonds (bond_index.h)
-    std::vector<Formed> formed_;     // bonds formed in this pass's loop
     bigint indexedAt_;               // neighbor->ncalls when index_ was built; -1: to be built
     std::unordered_set<const double *> brokeNow_;   // records of the bonds this pass's sweep broke
     bool pruneIndex_;                // a bond formed and broke at once in the loop: drop it at the pass's end
