@@ -655,7 +655,7 @@ void PairGranbond::compute(int eflag, int vflag)
         // computed (history_prefetch.h)
         if (ii + 1 < inum) {
             const int next = ilist[ii + 1];
-            prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size);
+            prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size, kSweptMark);
         }
         const int i = ilist[ii];
         const int itype = type[i];

@@ -590,7 +590,7 @@ void BondNonlinearCohesion::prefetchNextAtom(int i)
     if (cursor_ + 1 >= list->inum) return;
     const int next = list->ilist[cursor_ + 1];
     prefetchFlaggedRecords(history->firstneigh[next], history->firstdouble[next], list->numneigh[next],
-                           pair_->dnum());
+                           pair_->dnum(), 0);
 }
 
 // A pair whose bond the pass swept (an intact bond: the sweep advanced it
