@@ -15,6 +15,7 @@
 
 #include "granbond.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -43,9 +44,13 @@ struct BondIndex {
     std::vector<double *> records;
     std::vector<int *> flags;        // the engine's flag of each bond's pair
     // The bonds that broke in the sweeps since the last keepIntact: their
-    // positions, ascending, and their outputs (mode, stresses).
+    // positions, ascending within a sweep, and their outputs (mode,
+    // stresses).
     std::vector<size_t> broken;
     std::vector<GbBondOutput> brokenOut;
+    // The first `ordered` bonds are in the order of the engine's lists (as
+    // indexed when they were built); those after them formed since.
+    size_t ordered = 0;
 
     size_t size() const { return records.size(); }
     void clear()
@@ -56,6 +61,7 @@ struct BondIndex {
         flags.clear();
         broken.clear();
         brokenOut.clear();
+        ordered = 0;
     }
     void add(int i, int j, bool counts, double *record, int *flag)
     {
@@ -66,7 +72,7 @@ struct BondIndex {
         flags.push_back(flag);
     }
 
-    // Core calls over the bonds from `first` on (`advance`: a force pass),
+    // Core calls over the bonds from `first` to `last` (`advance`: a force pass),
     // reading the atoms of `atom` (x, v, omega: blocks of 3 doubles per
     // atom; local and ghost atoms). `intact(k, out)` is called for each bond
     // that held, in index order; those that broke are added to `broken`.
@@ -74,8 +80,8 @@ struct BondIndex {
     // cache between the core writing it and `intact` reading it. On failure
     // `bad` is the bond's position in the index.
     template<class Atom, class Intact>
-    GbStatus sweep(const Atom *atom, size_t first, bool advance, double dt, GbSweepTally &tally, size_t &bad,
-                   Intact intact)
+    GbStatus sweep(const Atom *atom, size_t first, size_t last, bool advance, double dt, GbSweepTally &tally,
+                   size_t &bad, Intact intact)
     {
         GbAtomArrays arrays;
         arrays.x = atom->x[0];
@@ -89,11 +95,11 @@ struct BondIndex {
         const GbStatus laid = granbond_record_layout(pass.with_contact, &layout);
         if (laid != GB_STATUS_OK) return laid;
         GbBondOutput out[kSweepChunk];
-        for (size_t from = first; from < size(); from += kSweepChunk) {
-            const size_t n = size() - from < kSweepChunk ? size() - from : kSweepChunk;
+        for (size_t from = first; from < last; from += kSweepChunk) {
+            const size_t n = last - from < kSweepChunk ? last - from : kSweepChunk;
             // the core requests each call's records ahead from its second
             // block on; the first block of the next call is requested here
-            for (size_t k = from + n; k < size() && k < from + n + kAhead; k++)
+            for (size_t k = from + n; k < last && k < from + n + kAhead; k++)
                 for (size_t s = 0; s < layout.len; s += 8) __builtin_prefetch(records[k] + s, 1);
             size_t failed = 0;
             const GbStatus status = granbond_bond_sweep(model, &pass, n, &arrays, pairs.data() + 2 * from,
@@ -120,6 +126,9 @@ struct BondIndex {
     void keepIntact()
     {
         if (broken.empty()) return;   // the common case: all held
+        // a pass may sweep a bond formed in it (at the end) before others
+        std::sort(broken.begin(), broken.end());
+        ordered -= static_cast<size_t>(std::lower_bound(broken.begin(), broken.end(), ordered) - broken.begin());
         size_t kept = broken[0], next = 0;
         for (size_t k = kept; k < size(); k++) {
             if (next < broken.size() && broken[next] == k) {

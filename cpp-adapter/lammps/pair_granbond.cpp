@@ -769,7 +769,7 @@ void PairGranbond::sweep(BondIndex &b, size_t first, bool advance, GbSweepTally 
     double *const t0 = atom->torque[0];
     const double *const x0 = atom->x[0];
     const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-    if (b.sweep(atom, first, advance, update->dt, tally, bad, [&](size_t k, const GbBondOutput &out) {
+    if (b.sweep(atom, first, b.size(), advance, update->dt, tally, bad, [&](size_t k, const GbBondOutput &out) {
             const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
             double del[3] = {0.0, 0.0, 0.0};
             if (evflag)

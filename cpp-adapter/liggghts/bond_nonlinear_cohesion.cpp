@@ -75,6 +75,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     createsNow_(false),
     cursor_(0),
     lastAtom_(-1),
+    aheadTo_(-1),
     indexedAt_(-1),
     pruneIndex_(false),
     checkIndex_(std::getenv("GRANBOND_CHECK_INDEX") != 0)
@@ -210,6 +211,10 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
 void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceData &)
 {
     if (sweeping_) {
+        sweepAhead(pair_->list->inum - 1);   // atoms the loop made no callback for
+        GbSweepTally t = {};
+        for (size_t x = 0; x < sweptTo_.size(); x++) sweepRange(index_[x], sweptTo_[x], sweepEnd_[x], t);
+        tally_.intact += t.intact;
         if (pruneIndex_)
             for (BondIndex &b : index_) b.keepIntact();
         pruneIndex_ = false;
@@ -307,28 +312,62 @@ void BondNonlinearCohesion::indexBonds()
             b.add(i, j, countsHere(i, j), record, &flags[jj]);
         }
     }
+    for (BondIndex &b : index_) b.ordered = b.size();
 }
 
-// The swept pass's bonds, advanced before the engine's pair loop; their
-// loads go straight to the atoms (unless the pairs' callbacks apply them).
+// The swept pass's bonds, advanced ahead of the engine's pair loop: the
+// bonds of the first atoms of the list now, the rest block by block as the
+// loop reaches their atoms (sweepAhead), so that the loop, whose contact
+// models and callbacks read each bonded record again, finds them in cache.
+// Their loads go straight to the atoms (unless the pairs' callbacks apply
+// them).
 void BondNonlinearCohesion::sweepIndex()
 {
     if (indexedAt_ != neighbor->ncalls) indexBonds();
+    sweptTo_.assign(index_.size(), 0);
+    sweepEnd_.resize(index_.size());
+    for (size_t x = 0; x < index_.size(); x++) sweepEnd_[x] = index_[x].ordered;
+    aheadTo_ = -1;
+    // bonds formed since the lists were built lie out of their order: now
     GbSweepTally t = {};
-    for (size_t x = 0; x < index_.size(); x++) {
+    for (size_t x = 0; x < index_.size(); x++) sweepRange(index_[x], sweepEnd_[x], index_[x].size(), t);
+    sweepAhead(kSweepAheadAtoms);
+    tally_.intact += t.intact;
+}
+
+void BondNonlinearCohesion::sweepRange(BondIndex &b, size_t first, size_t last, GbSweepTally &t)
+{
+    if (first == last) return;
+    const size_t breaks = b.broken.size();
+    size_t bad = 0;
+    const GbStatus status = b.sweep(atom, first, last, true, update->dt, t, bad, [&](size_t k, const GbBondOutput &out) {
+        if (!direct_) return;
+        const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
+        addToAtoms(b.pairs[2 * k], b.pairs[2 * k + 1], out.force_i, out.torque_i, fj, out.torque_j);
+    });
+    if (status != GB_STATUS_OK) failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
+    settleBroken(b, breaks);
+    pruneIndex_ = pruneIndex_ || b.broken.size() > breaks;
+}
+
+// Sweeps the bonds of the list's atoms up to position `upto` (the index
+// holds them in list order).
+void BondNonlinearCohesion::sweepAhead(int upto)
+{
+    const LAMMPS_NS::NeighList *list = pair_->list;
+    if (!list) return;
+    const int last = upto < list->inum - 1 ? upto : list->inum - 1;
+    GbSweepTally t = {};
+    for (size_t x = 0; x < sweptTo_.size(); x++) {   // indices made in the loop hold only bonds formed in it
         BondIndex &b = index_[x];
-        if (!b.size()) continue;
-        size_t bad = 0;
-        const GbStatus status = b.sweep(atom, 0, true, update->dt, t, bad, [&](size_t k, const GbBondOutput &out) {
-            if (!direct_) return;
-            const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
-            addToAtoms(b.pairs[2 * k], b.pairs[2 * k + 1], out.force_i, out.torque_i, fj, out.torque_j);
-        });
-        if (status != GB_STATUS_OK) failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
-        settleBroken(b, 0);
-        b.keepIntact();
+        size_t end = sweptTo_[x];
+        for (int q = aheadTo_ + 1; q <= last; q++)
+            while (end < sweepEnd_[x] && b.pairs[2 * end] == list->ilist[q]) end++;
+        sweepRange(b, sweptTo_[x], end, t);
+        sweptTo_[x] = end;
     }
     tally_.intact += t.intact;
+    aheadTo_ = last;
 }
 
 // The bonds of `b` that broke in a sweep, from its `from`-th break on:
@@ -499,7 +538,7 @@ bool BondNonlinearCohesion::sweepNow(const Formed &f, GbBondOutput &out)
     GbSweepTally t = {};
     size_t bad = 0;
     const size_t breaks = b.broken.size();
-    if (b.sweep(atom, f.at, true, update->dt, t, bad, [&](size_t, const GbBondOutput &held) { out = held; }) !=
+    if (b.sweep(atom, f.at, b.size(), true, update->dt, t, bad, [&](size_t, const GbBondOutput &held) { out = held; }) !=
         GB_STATUS_OK)
         failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
     tally_.intact += t.intact;
@@ -587,6 +626,8 @@ void BondNonlinearCohesion::prefetchNextAtom(int i)
     const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
     if (!list || !history || !history->firstneigh || !history->firstdouble) return;
     while (cursor_ < list->inum && list->ilist[cursor_] != i) cursor_++;
+    if (cursor_ + kSweepAheadAtoms / 2 > aheadTo_ && aheadTo_ < list->inum - 1)
+        sweepAhead(cursor_ + kSweepAheadAtoms);
     if (cursor_ + 1 >= list->inum) return;
     const int next = list->ilist[cursor_ + 1];
     prefetchFlaggedRecords(history->firstneigh[next], history->firstdouble[next], list->numneigh[next],

@@ -80,6 +80,8 @@ private:
     void applyKept(SurfacesCloseData &d, ForceData &i_forces, ForceData &j_forces);
     void indexBonds();
     void sweepIndex();
+    void sweepAhead(int upto);
+    void sweepRange(BondIndex &b, size_t first, size_t last, GbSweepTally &t);
     void settleBroken(BondIndex &b, size_t from);
     void checkIndex();
     void addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj, const double *tj);
@@ -129,6 +131,12 @@ private:
     int cursor_;                  // position of the latest atom in the neighbour list (prefetchNextAtom)
     int lastAtom_;
     std::vector<BondIndex> index_;   // per bond model: the intact pair bonds (bond_index.h)
+    std::vector<size_t> sweptTo_;    // per index: the bonds before it are swept in this pass
+    std::vector<size_t> sweepEnd_;   // per index: its size at the pass's start (later ones formed in it)
+    int aheadTo_;                    // the atoms of the list up to this position have their bonds swept
+    // Atoms whose bonds are swept ahead of the loop at a time: their
+    // records stay in cache until the loop reads them.
+    static const int kSweepAheadAtoms = 128;
     bigint indexedAt_;               // neighbor->ncalls when index_ was built; -1: to be built
     std::unordered_set<const double *> brokeNow_;   // records of the bonds this pass's sweep broke
     bool pruneIndex_;                // a bond formed and broke at once in the loop: drop it at the pass's end
