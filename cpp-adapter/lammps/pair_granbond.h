@@ -75,7 +75,9 @@ private:
     void allocate();
     void freeModels();
     void buildModel(int i, int j);
-    [[noreturn]] void failPair(int i, int j, const char *call);
+    // Ends the run on this rank: `what` of atoms i and j failed, with the
+    // core's reason.
+    [[noreturn]] void failPair(int i, int j, const char *what);
     void apply(double *f, double *torque, int i, int j, const double *fi, const double *ti, const double *tj,
                const double *del, int nlocal, int newton_pair);
     size_t at(int i, int j) const;
