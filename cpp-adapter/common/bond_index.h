@@ -42,7 +42,10 @@ struct BondIndex {
     std::vector<uint8_t> counted;    // this rank counts the bond (each bond on one rank)
     std::vector<double *> records;
     std::vector<int *> flags;        // the engine's flag of each bond's pair
-    std::vector<GbBondOutput> out;
+    // The bonds that broke in the sweeps since the last keepIntact: their
+    // positions, ascending, and their outputs (mode, stresses).
+    std::vector<size_t> broken;
+    std::vector<GbBondOutput> brokenOut;
 
     size_t size() const { return records.size(); }
     void clear()
@@ -51,6 +54,8 @@ struct BondIndex {
         counted.clear();
         records.clear();
         flags.clear();
+        broken.clear();
+        brokenOut.clear();
     }
     void add(int i, int j, bool counts, double *record, int *flag)
     {
@@ -61,15 +66,17 @@ struct BondIndex {
         flags.push_back(flag);
     }
 
-    // One core call over the bonds from `first` on (`advance`: a force
-    // pass), reading the atoms of `atom` (x, v, omega: blocks of 3 doubles
-    // per atom; local and ghost atoms). On failure `bad` is the bond's
-    // position in the index.
-    template<class Atom>
-    GbStatus sweep(const Atom *atom, size_t first, bool advance, double dt, GbSweepTally &tally, size_t &bad)
+    // Core calls over the bonds from `first` on (`advance`: a force pass),
+    // reading the atoms of `atom` (x, v, omega: blocks of 3 doubles per
+    // atom; local and ghost atoms). `intact(k, out)` is called for each bond
+    // that held, in index order; those that broke are added to `broken`.
+    // The loads pass through a buffer of a few hundred bonds, which stays in
+    // cache between the core writing it and `intact` reading it. On failure
+    // `bad` is the bond's position in the index.
+    template<class Atom, class Intact>
+    GbStatus sweep(const Atom *atom, size_t first, bool advance, double dt, GbSweepTally &tally, size_t &bad,
+                   Intact intact)
     {
-        const size_t n = size() - first;
-        out.resize(size());
         GbAtomArrays arrays;
         arrays.x = atom->x[0];
         arrays.v = atom->v[0];
@@ -78,36 +85,65 @@ struct BondIndex {
         arrays.count = static_cast<size_t>(atom->nlocal + atom->nghost);
         pass.advance = advance ? 1 : 0;
         pass.dt = dt;
-        size_t failed = 0;
-        const GbStatus status = granbond_bond_sweep(model, &pass, n, &arrays, pairs.data() + 2 * first,
-                                                    counted.data() + first, records.data() + first,
-                                                    out.data() + first, &tally, &failed);
-        bad = first + (failed < n ? failed : 0);
-        return status;
+        GbRecordLayout layout;
+        const GbStatus laid = granbond_record_layout(pass.with_contact, &layout);
+        if (laid != GB_STATUS_OK) return laid;
+        GbBondOutput out[kSweepChunk];
+        for (size_t from = first; from < size(); from += kSweepChunk) {
+            const size_t n = size() - from < kSweepChunk ? size() - from : kSweepChunk;
+            // the core requests each call's records ahead from its second
+            // block on; the first block of the next call is requested here
+            for (size_t k = from + n; k < size() && k < from + n + kAhead; k++)
+                for (size_t s = 0; s < layout.len; s += 8) __builtin_prefetch(records[k] + s, 1);
+            size_t failed = 0;
+            const GbStatus status = granbond_bond_sweep(model, &pass, n, &arrays, pairs.data() + 2 * from,
+                                                        counted.data() + from, records.data() + from, out,
+                                                        &tally, &failed);
+            if (status != GB_STATUS_OK) {
+                bad = from + (failed < n ? failed : 0);
+                return status;
+            }
+            for (size_t c = 0; c < n; c++) {
+                if (out[c].status == GB_BOND_STATUS_INTACT) {
+                    intact(from + c, out[c]);
+                    continue;
+                }
+                broken.push_back(from + c);
+                brokenOut.push_back(out[c]);
+            }
+        }
+        return GB_STATUS_OK;
     }
 
-    // Drops the bonds that are no longer intact (they broke in the latest
-    // sweep), keeping the order of the rest.
+    // Drops the bonds that broke in the latest sweeps, keeping the order of
+    // the rest.
     void keepIntact()
     {
-        size_t kept = 0;
-        while (kept < size() && out[kept].status == GB_BOND_STATUS_INTACT) kept++;   // the common case: all held
+        if (broken.empty()) return;   // the common case: all held
+        size_t kept = broken[0], next = 0;
         for (size_t k = kept; k < size(); k++) {
-            if (out[k].status != GB_BOND_STATUS_INTACT) continue;
+            if (next < broken.size() && broken[next] == k) {
+                next++;
+                continue;
+            }
             pairs[2 * kept] = pairs[2 * k];
             pairs[2 * kept + 1] = pairs[2 * k + 1];
             counted[kept] = counted[k];
             records[kept] = records[k];
             flags[kept] = flags[k];
-            out[kept] = out[k];
             kept++;
         }
         pairs.resize(2 * kept);
         counted.resize(kept);
         records.resize(kept);
         flags.resize(kept);
-        out.resize(kept);
+        broken.clear();
+        brokenOut.clear();
     }
+
+private:
+    static const size_t kSweepChunk = 512;
+    static const size_t kAhead = 64;   // the core's own block of bonds (ffi/sweep.rs)
 };
 
 // The index of `model` in `indices`, made on first use.

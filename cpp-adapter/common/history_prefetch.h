@@ -8,13 +8,16 @@
 namespace granbond {
 
 // The records of the `count` pairs of one atom, `size` doubles each, side by
-// side from `records`; pair `jj` is requested if `flags[jj]` is 1 (a plain flagged pair). Always
-// inlined: GCC deletes calls to a function whose only effect is prefetching.
+// side from `records`; pair `jj` is requested if its flag is set and is not
+// `skip` (LAMMPS: kSweptMark, a swept bond whose record the loop does not
+// read; LIGGGHTS: 0, as its loop reads every flagged pair's record, a bond's
+// included). Always inlined: GCC deletes calls to a function whose only
+// effect is prefetching.
 __attribute__((always_inline)) inline void prefetchFlaggedRecords(const int *flags, const double *records,
-                                                                   int count, int size)
+                                                                   int count, int size, int skip)
 {
     for (int jj = 0; jj < count; jj++)
-        if (flags[jj] == 1)   // 2: a swept bond (bond_index.h), whose record the loop does not read
+        if (flags[jj] && flags[jj] != skip)
             for (int s = 0; s < size; s += 8) __builtin_prefetch(records + size * jj + s, 1);
 }
 

@@ -31,13 +31,14 @@ bool PairGranbond::indexCurrent() const
     return passStep_ == update->ntimestep && passAtoms_ == static_cast<bigint>(atom->nlocal) + atom->nghost;
 }
 
-// The bonds of `b` from `first` on that broke in this force pass, each on
+// The bonds of `b` that broke in this force pass's latest sweep, each on
 // the rank that counts it.
-void PairGranbond::logBreaks(const BondIndex &b, size_t first)
+void PairGranbond::logBreaks(const BondIndex &b)
 {
-    for (size_t k = first; k < b.size(); k++) {
-        const GbBondOutput &out = b.out[k];
-        if (out.status == GB_BOND_STATUS_INTACT || out.break_mode == GB_BREAK_MODE_NONE || !b.counted[k]) continue;
+    for (size_t m = 0; m < b.broken.size(); m++) {
+        const size_t k = b.broken[m];
+        const GbBondOutput &out = b.brokenOut[m];
+        if (out.break_mode == GB_BREAK_MODE_NONE || !b.counted[k]) continue;
         const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
         BreakEvent e;
         if (makeBreakEvent(b.model, out, atom->x[i], atom->x[j], atom->radius[i], atom->radius[j],

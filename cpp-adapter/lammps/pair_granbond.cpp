@@ -420,8 +420,7 @@ void PairGranbond::compute(int eflag, int vflag)
     for (BondIndex &b : index_)
         if (b.size()) {
             sweep(b, 0, advance, tally);
-            for (size_t k = 0; k < b.size(); k++)
-                if (b.out[k].status != GB_BOND_STATUS_INTACT) *b.flags[k] = kBrokeMark;
+            for (size_t k : b.broken) *b.flags[k] = kBrokeMark;
             b.keepIntact();
         }
     for (size_t tp = 0; tp < index_.size(); tp++) formed_[tp] = index_[tp].size();
@@ -442,7 +441,7 @@ void PairGranbond::compute(int eflag, int vflag)
         // computed (history_prefetch.h)
         if (ii + 1 < inum) {
             const int next = ilist[ii + 1];
-            prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size);
+            prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size, kSweptMark);
         }
         const int i = ilist[ii];
         const int itype = type[i];
@@ -518,16 +517,15 @@ void PairGranbond::compute(int eflag, int vflag)
         BondIndex &b = index_[tp];
         if (b.size() == formed_[tp]) continue;
         sweep(b, formed_[tp], advance, tally);
-        for (size_t k = formed_[tp]; k < b.size(); k++)
-            if (b.out[k].status != GB_BOND_STATUS_INTACT) {   // broke at once: a contact after all
-                const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
-                const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
-                const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
-                const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-                const double radsum = radius[i] + radius[j];
-                *b.flags[k] = 1;
-                contactOf(tp, i, j, b.flags[k], b.records[k], advance, rsq < radsum * radsum, del, rsq);
-            }
+        for (size_t k : b.broken) {   // broke at once: a contact after all
+            const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
+            const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+            const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
+            const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+            const double radsum = radius[i] + radius[j];
+            *b.flags[k] = 1;
+            contactOf(tp, i, j, b.flags[k], b.records[k], advance, rsq < radsum * radsum, del, rsq);
+        }
         b.keepIntact();
     }
 
@@ -553,22 +551,20 @@ void PairGranbond::compute(int eflag, int vflag)
 void PairGranbond::sweep(BondIndex &b, size_t first, bool advance, GbSweepTally &tally)
 {
     size_t bad = 0;
-    if (b.sweep(atom, first, advance, update->dt, tally, bad) != GB_STATUS_OK)
-        failPair(b.pairs[2 * bad], b.pairs[2 * bad + 1], "the bond");
-    if (breakLogUsers > 0 && advance) logBreaks(b, first);
     double *const f0 = atom->f[0];
     double *const t0 = atom->torque[0];
     const double *const x0 = atom->x[0];
     const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-    for (size_t k = first; k < b.size(); k++) {
-        const GbBondOutput &out = b.out[k];
-        if (out.status != GB_BOND_STATUS_INTACT) continue;
-        const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
-        double del[3] = {0.0, 0.0, 0.0};
-        if (evflag)
-            for (int c = 0; c < 3; c++) del[c] = x0[3 * static_cast<size_t>(i) + c] - x0[3 * static_cast<size_t>(j) + c];
-        apply(f0, t0, i, j, out.force_i, out.torque_i, out.torque_j, del, nlocal, newton_pair);
-    }
+    if (b.sweep(atom, first, advance, update->dt, tally, bad, [&](size_t k, const GbBondOutput &out) {
+            const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
+            double del[3] = {0.0, 0.0, 0.0};
+            if (evflag)
+                for (int c = 0; c < 3; c++)
+                    del[c] = x0[3 * static_cast<size_t>(i) + c] - x0[3 * static_cast<size_t>(j) + c];
+            apply(f0, t0, i, j, out.force_i, out.torque_i, out.torque_j, del, nlocal, newton_pair);
+        }) != GB_STATUS_OK)
+        failPair(b.pairs[2 * bad], b.pairs[2 * bad + 1], "the bond");
+    if (breakLogUsers > 0 && advance) logBreaks(b);
 }
 
 // A pair that is no bond in this pass: touching, the Voigt contact (a

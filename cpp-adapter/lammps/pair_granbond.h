@@ -93,7 +93,7 @@ private:
     void pairKinematics(int i, int j, GbPairKinematics &k) const;
     void indexBonds();
     void sweep(BondIndex &b, size_t first, bool advance, GbSweepTally &tally);
-    void logBreaks(const BondIndex &b, size_t first);
+    void logBreaks(const BondIndex &b);
     void contactOf(size_t tp, int i, int j, int *touch, double *history, bool advance, bool touching,
                    const double *del, double rsq);
     void checkIndex();

@@ -311,9 +311,7 @@ void BondNonlinearCohesion::indexBonds()
 }
 
 // The swept pass's bonds, advanced before the engine's pair loop; their
-// loads go straight to the atoms, and those that broke are counted and
-// logged (their pairs' callbacks then see a broken bond: the contact models
-// act alone).
+// loads go straight to the atoms (unless the pairs' callbacks apply them).
 void BondNonlinearCohesion::sweepIndex()
 {
     if (indexedAt_ != neighbor->ncalls) indexBonds();
@@ -322,26 +320,26 @@ void BondNonlinearCohesion::sweepIndex()
         BondIndex &b = index_[x];
         if (!b.size()) continue;
         size_t bad = 0;
-        if (b.sweep(atom, 0, true, update->dt, t, bad) != GB_STATUS_OK)
-            failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
-        applySwept(b, 0, direct_);
+        const GbStatus status = b.sweep(atom, 0, true, update->dt, t, bad, [&](size_t k, const GbBondOutput &out) {
+            if (!direct_) return;
+            const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
+            addToAtoms(b.pairs[2 * k], b.pairs[2 * k + 1], out.force_i, out.torque_i, fj, out.torque_j);
+        });
+        if (status != GB_STATUS_OK) failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
+        settleBroken(b, 0);
         b.keepIntact();
     }
     tally_.intact += t.intact;
 }
 
-void BondNonlinearCohesion::applySwept(BondIndex &b, size_t first, bool toAtoms)
+// The bonds of `b` that broke in a sweep, from its `from`-th break on:
+// counted and logged; their pairs' callbacks then see a broken bond (the
+// contact models act alone), and no bond forms on them in this pass.
+void BondNonlinearCohesion::settleBroken(BondIndex &b, size_t from)
 {
-    for (size_t k = first; k < b.size(); k++) {
-        const GbBondOutput &out = b.out[k];
-        const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
-        if (out.status == GB_BOND_STATUS_INTACT) {
-            if (!toAtoms) continue;   // the pair's callback applies them
-            const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
-            addToAtoms(i, j, out.force_i, out.torque_i, fj, out.torque_j);
-            continue;
-        }
-        account(b.model, i, j, 0, b.records[k], false, out);
+    for (size_t m = from; m < b.broken.size(); m++) {
+        const size_t k = b.broken[m];
+        account(b.model, b.pairs[2 * k], b.pairs[2 * k + 1], 0, b.records[k], false, b.brokenOut[m]);
         *b.flags[k] &= ~CONTACT_COHESION_MODEL;
         brokeNow_.insert(b.records[k]);
     }
@@ -419,7 +417,7 @@ void BondNonlinearCohesion::account(const GbBondModel *model, int i, int j, cons
                        isWall_ ? wall : atom->x[j], atom->radius[i], isWall_ ? 0.0 : atom->radius[j],
                        static_cast<double>(atom->tag[i]), isWall_ ? 0.0 : static_cast<double>(atom->tag[j]),
                        static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
-        failed(i, j, "the break log's event (granbond_bond_centre, granbond_bond_stress_limits)");
+        failed(i, j, "the break log's event");
     book.record(e);
 }
 
@@ -504,13 +502,16 @@ bool BondNonlinearCohesion::sweepNow(const Formed &f, GbBondOutput &out)
     BondIndex &b = index_[f.index];
     GbSweepTally t = {};
     size_t bad = 0;
-    if (b.sweep(atom, f.at, true, update->dt, t, bad) != GB_STATUS_OK)
+    const size_t breaks = b.broken.size();
+    if (b.sweep(atom, f.at, true, update->dt, t, bad, [&](size_t, const GbBondOutput &held) { out = held; }) !=
+        GB_STATUS_OK)
         failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
-    applySwept(b, f.at, false);
     tally_.intact += t.intact;
-    out = b.out[f.at];
-    pruneIndex_ = pruneIndex_ || out.status != GB_BOND_STATUS_INTACT;
-    return out.status == GB_BOND_STATUS_INTACT;
+    if (b.broken.size() == breaks) return true;
+    out = b.brokenOut.back();
+    settleBroken(b, breaks);
+    pruneIndex_ = true;
+    return false;
 }
 
 void BondNonlinearCohesion::createPair(const SurfacesCloseData &d, const GbBondModel *model,
@@ -593,7 +594,7 @@ void BondNonlinearCohesion::prefetchNextAtom(int i)
     if (cursor_ + 1 >= list->inum) return;
     const int next = list->ilist[cursor_ + 1];
     prefetchFlaggedRecords(history->firstneigh[next], history->firstdouble[next], list->numneigh[next],
-                           pair_->dnum());
+                           pair_->dnum(), 0);
 }
 
 // A pair whose bond the pass swept (an intact bond: the sweep advanced it

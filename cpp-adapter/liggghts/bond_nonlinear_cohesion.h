@@ -80,7 +80,7 @@ private:
     void applyKept(SurfacesCloseData &d, ForceData &i_forces, ForceData &j_forces);
     void indexBonds();
     void sweepIndex();
-    void applySwept(BondIndex &b, size_t first, bool toAtoms);
+    void settleBroken(BondIndex &b, size_t from);
     void checkIndex();
     void addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj, const double *tj);
     bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out,

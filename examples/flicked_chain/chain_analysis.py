@@ -1,5 +1,5 @@
 """Reading and analysing the flicked chain's output (shared by plot.py and
-the ctest tests/liggghts/check_flicked_chain.py).
+the ctest tests/adapters/check_flicked_chain.py).
 
 chain.txt: step, then x z vx omega_y of spheres 2..5 (fix print).
 bonds dump (dump local of compute pair/gran/local id history): id1 id2

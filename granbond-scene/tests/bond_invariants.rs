@@ -1,8 +1,7 @@
 //! Invariants of the assembled bond: Newton's third law, momentum,
 //! rigid-motion indifference, frame indifference, swap symmetry, damping.
 
-#[path = "../../rust-core/tests/common/mod.rs"]
-mod common;
+use granbond_test_support as common;
 
 use common::*;
 use granbond::bond::{BondOutput, BondParams, BondState, BOND_SLOTS};

@@ -1,8 +1,7 @@
 //! The Voigt contact against closed forms: restitution, contact time,
 //! stick/slip at mu Fn, rolling at 5/7 v0, rolling resistance on rolling only.
 
-#[path = "../../rust-core/tests/common/mod.rs"]
-mod common;
+use granbond_test_support as common;
 
 use common::{DENSITY, RADIUS};
 use granbond::contact::{ContactOutput, ContactState, Plane, VoigtModel, VoigtParams};

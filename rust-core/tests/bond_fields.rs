@@ -3,7 +3,7 @@
 //! forms of the normal law and the section (docs/models/bond-nonlinear.md
 //! eq. 2-6, 14).
 
-mod common;
+use granbond_test_support as common;
 
 use common::{bond_at, model, pair_at, params, step, RADIUS};
 use granbond::bond::fields::{BOND_FIELDS, BOND_FIELD_COUNT};

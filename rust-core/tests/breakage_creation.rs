@@ -1,7 +1,7 @@
 //! Breakage happens exactly once, at the step its criterion is first met;
 //! creation follows the distance and step rules.
 
-mod common;
+use granbond_test_support as common;
 
 use common::*;
 use granbond::bond::section::section;

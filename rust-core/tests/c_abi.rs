@@ -16,7 +16,7 @@
 //! features differently), so [`static_library`] takes the newest one that is
 //! not newer than this executable.
 
-mod common;
+use granbond_test_support as common;
 
 use common::header::header_functions;
 use std::ffi::OsStr;

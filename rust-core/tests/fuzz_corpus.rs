@@ -5,7 +5,7 @@
 //! error code. `GRANBOND_FUZZ_CORPUS=<dir>` replays another directory
 //! (scripts/fuzz.sh uses it for the summary of a run).
 
-mod common;
+use granbond_test_support as common;
 mod fuzz_driver;
 
 use common::header::header_functions;

@@ -1,7 +1,7 @@
 //! The bond output as engines keep it in the pair's history
 //! (`bond::output_slots`), and the bond centre engines log.
 
-mod common;
+use granbond_test_support as common;
 
 use common::strategies::vec3;
 use granbond::bond::output_slots::{load_output, store_output, BOND_OUTPUT_LEN, BOND_OUTPUT_SLOTS};

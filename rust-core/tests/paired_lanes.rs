@@ -3,7 +3,7 @@
 //! without jumps. Both must give exactly, bit for bit, what the plain scalar
 //! formulas give.
 
-mod common;
+use granbond_test_support as common;
 
 use granbond::bond::damping::{reciprocal_unit, unit_scale};
 use granbond::bond::features::{BEND, TWIST};

@@ -1,7 +1,7 @@
 //! Property-based checks of the invariants over random parameters and
 //! kinematics (proptest shrinks any counterexample to a small one).
 
-mod common;
+use granbond_test_support as common;
 
 use common::strategies::{bond_params, bonded_pair, vec3};
 use common::{close3, net_moment, norm, rotate, rotate_bond_state, rotate_kinematics, rotation};

@@ -7,7 +7,7 @@
 //! computed, later ones untouched). `BondModel::step_indexed`, which reads
 //! the kinematics from per-atom arrays by index, must give the same bits.
 
-mod common;
+use granbond_test_support as common;
 
 use common::strategies::{bond_params, bonded_pair};
 use granbond::bond::features::{BEND, COMPILED_ALONE, COMPRESSION, DAMPING, SHEAR, SMOOTH, TENSION, TWIST};

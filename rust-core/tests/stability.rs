@@ -1,7 +1,7 @@
 //! The critical-step estimates are the real stability limits of symplectic
 //! Euler: just below them an oscillator stays bounded, just above it blows up.
 
-mod common;
+use granbond_test_support as common;
 
 use common::*;
 use granbond::bond::BondParams;

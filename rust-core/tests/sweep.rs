@@ -2,7 +2,7 @@
 //! (`granbond_bond_sweep`, `crate::sweep`), on records laid out as
 //! `granbond_record_layout` says.
 
-mod common;
+use granbond_test_support as common;
 
 use granbond::bond::{BondOutput, BondState, BondStatus, BreakMode, BOND_STATE_LEN};
 use granbond::ffi::bond::{granbond_bond_compute_indexed, AtomArrayPointers};

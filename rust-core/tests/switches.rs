@@ -2,7 +2,7 @@
 //! compiled out (its own kernel), and its result equals the full kernel with
 //! that part's stiffness zeroed.
 
-mod common;
+use granbond_test_support as common;
 
 use common::*;
 use granbond::bond::features::{BEND, COMPRESSION, DAMPING, SHEAR, SMOOTH, TENSION, TWIST};

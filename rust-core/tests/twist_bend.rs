@@ -6,7 +6,7 @@
 //! expected torques are computed here, independently of the core, from the
 //! law's table.
 
-mod common;
+use granbond_test_support as common;
 
 use common::*;
 use granbond::bond::section::section;

@@ -3,7 +3,7 @@
 //! steps of sticking, sliding and rolling contacts of pairs and walls; a
 //! non-finite result is still reported, and coincident centres are named.
 
-mod common;
+use granbond_test_support as common;
 
 use common::RADIUS;
 use granbond::contact::{ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN};

@@ -49,7 +49,7 @@ import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "liggghts"))
+sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
 import liggghts_run  # noqa: E402
 from liggghts_run import Failure, main, run_deck  # noqa: E402

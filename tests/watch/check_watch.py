@@ -35,7 +35,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tests", "liggghts"))
+sys.path.insert(0, os.path.join(ROOT, "tests", "support"))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 
 from liggghts_run import Failure, main  # noqa: E402
@@ -138,7 +138,7 @@ def mpi_prefix(mpiexec, n):
 
 def run(a, ranks, workdir):
     os.makedirs(workdir, exist_ok=True)
-    lines = lammps_deck() if a.kind == "lammps" else liggghts_deck(os.path.join(ROOT, "tests", "liggghts", "decks"))
+    lines = lammps_deck() if a.kind == "lammps" else liggghts_deck(os.path.join(ROOT, "tests", "adapters", "decks"))
     deck = os.path.join(workdir, "watch.in")
     with open(deck, "w", encoding="utf-8") as f:
         f.write("\n".join(lines) + "\n")

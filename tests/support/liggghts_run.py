@@ -6,7 +6,9 @@ import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-DECKS = os.path.join(HERE, "decks")
+# The decks of tests/adapters (bond_properties.in, plane.stl, ...); a check
+# with decks of its own sets DECKS.
+DECKS = os.path.join(HERE, "..", "adapters", "decks")
 
 # A deck that hangs is a failure too; every deck here runs in well under this.
 TIMEOUT_S = 120

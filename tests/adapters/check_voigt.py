@@ -4,7 +4,7 @@
     check_voigt.py --engine <liggghts launcher> --workdir <dir> --check <name> [--mpiexec MPIEXEC]
 
 Each check is one claim; it prints PASS or FAIL: <why> and exits non-zero on
-failure. Decks: decks/ here; runs go through tests/liggghts/liggghts_run.py.
+failure. Decks: decks/ here; runs go through tests/support/liggghts_run.py.
 """
 
 import argparse
@@ -13,7 +13,7 @@ import os
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "liggghts"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 import liggghts_run  # noqa: E402
 from liggghts_run import Failure, names_a_core_entry, read_table  # noqa: E402
 

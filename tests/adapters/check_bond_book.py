@@ -18,8 +18,10 @@ usage: check_bond_book.py --mode MODE --engine EXE [--mpiexec MPIEXEC] --workdir
 import argparse
 import math
 import os
+import sys
 
-from liggghts_run import Failure, main, read_table, run_deck, run_ok
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from liggghts_run import Failure, main, read_table, run_deck, run_ok  # noqa: E402
 
 DIAMETER = 2e-3
 RADIUS = DIAMETER / 2

@@ -5,7 +5,7 @@ use std::path::Path;
 /// Names of the functions `include/granbond.h` declares (its `static
 /// inline` helpers included).
 pub fn header_functions() -> Vec<String> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("include/granbond.h");
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../rust-core/include/granbond.h");
     let header = std::fs::read_to_string(path).expect("read granbond.h");
     let mut names = Vec::new();
     for line in header.lines().map(str::trim) {

@@ -13,8 +13,10 @@ usage: check_same_output.py --mode preload --engine EXE --stock EXE --library SO
 
 import argparse
 import os
+import sys
 
-from liggghts_run import Failure, main, run_deck, run_ok
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from liggghts_run import Failure, main, run_deck, run_ok  # noqa: E402
 
 VARIABLES = {"out": "pull.txt", "nrun": 1000}
 

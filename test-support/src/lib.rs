@@ -1,6 +1,6 @@
-//! Shared fixtures of the physics tests: a realistic bond parameter set,
-//! pair kinematics, rotations.
-#![allow(dead_code)]
+//! Fixtures shared by the tests of `granbond` (rust-core/tests) and
+//! `granbond-scene` (granbond-scene/tests): a realistic bond parameter set,
+//! pair kinematics, rotations; proptest strategies; the header's names.
 
 pub mod header;
 pub mod strategies;

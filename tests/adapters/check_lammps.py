@@ -4,9 +4,9 @@ Modes (one ctest each):
   pull-distance, pull-stress, pull-stress-ratio, pull-compression
       two spheres pulled apart (pushed together) by fix move: every step
       equals the core's closed forms (the checks of
-      tests/liggghts/check_bond_pull.py: virgin branches, creation at step 1,
+      tests/adapters/check_bond_pull.py: virgin branches, creation at step 1,
       break step, zero force after) and, with --liggghts, the LIGGGHTS
-      adapter's output for the same motion (tests/liggghts/decks/bond_pull.in)
+      adapter's output for the same motion (tests/adapters/decks/bond_pull.in)
       to the last digit printed.
   cycle
       sphere 2 wiggled (fix move wiggle, +-4e-5 m, 2.5 periods): the virgin
@@ -34,16 +34,16 @@ Modes (one ctest each):
       spin difference is bounded by delta_max/R times the spin.
   granular-cradle
       a row of 6 pre-overlapping spheres of which the first moves
-      towards the others (tests/lammps/decks/cradle.in): several contacts per
+      towards the others (tests/adapters/decks/cradle.in): several contacts per
       sphere and step, all normal, so several contacts sum on each sphere;
       positions and velocities equal pair granular's to 1e-9 relative.
   twist-reversal, bend-reversal, twist-reversal-reset, bend-reversal-reset
               the prescribed twisting and bending reversals of
-              tests/liggghts/check_bond_motion.py (decks/bond_rotation.in):
+              tests/adapters/check_bond_motion.py (decks/bond_rotation.in):
               forces and torques of both spheres against the signed
               two-sided torque law every step (same checks, same
               tolerances), history kept or history_reset yes.
-  chain       a free chain of 9 bonded spheres (tests/lammps/decks/chain.in),
+  chain       a free chain of 9 bonded spheres (tests/adapters/decks/chain.in),
               each with its own velocity and spin, no damping, 2000 steps:
               its 8 bonds go through the queued path (one
               granbond_bond_compute_indexed call per pass, 4 bonds per
@@ -79,16 +79,16 @@ import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "liggghts"))
+sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
 import liggghts_run  # noqa: E402
 from liggghts_run import Failure, judge_refusal, main, read_table, run_deck  # noqa: E402
 from check_bond_pull import MODES as PULL_MODES, PARAMS, pair_samples, verify  # noqa: E402
 
 DECKS = os.path.join(HERE, "decks")
-LIGGGHTS_DECKS = os.path.join(HERE, "..", "liggghts", "decks")
+LIGGGHTS_DECKS = os.path.join(HERE, "decks")
 
-# the bond of tests/liggghts/decks/bond_properties.in, in pair_coeff keywords
+# the bond of tests/adapters/decks/bond_properties.in, in pair_coeff keywords
 BOND = ("lambda 0.5 k_fn1 1e9 ku_fn1 2e9 kc_fn1 5e8 k_fn2 1e9 ku_fn2 2e9 kc_fn2 5e8 "
         "k_ft 4e8 k_tn 4e8 ku_tn 4e8 kc_tn 4e8 k_tt 4e8 ku_tt 4e8 kc_tt 4e8 "
         "eta_fn 0 eta_ft 0 eta_tn 0 eta_tt 0 create_distance 2.05e-3 create_step 1")
@@ -116,7 +116,7 @@ def bond_model(workdir, brk="distance", extra=""):
 
 
 def run_lammps(command, deck, workdir, variables):
-    """Runs a deck of tests/lammps/decks; (exit code, text)."""
+    """Runs a deck of tests/adapters/decks; (exit code, text)."""
     liggghts_run.DECKS = DECKS
     return run_deck(command, deck, workdir, dict(variables, decks=DECKS))
 
@@ -173,12 +173,12 @@ def check_pull(a, mode, workdir):
 
 
 def liggghts_wiggle_deck(workdir):
-    """tests/liggghts/decks/bond_pull.in with fix move wiggle instead of linear."""
+    """tests/adapters/decks/bond_pull.in with fix move wiggle instead of linear."""
     with open(os.path.join(LIGGGHTS_DECKS, "bond_pull.in"), encoding="utf-8") as f:
         text = f.read()
     old = "fix pull g2 move linear ${vpull} 0.0 0.0"
     if old not in text:
-        raise Failure("tests/liggghts/decks/bond_pull.in no longer has the line " + old)
+        raise Failure("tests/adapters/decks/bond_pull.in no longer has the line " + old)
     os.makedirs(workdir, exist_ok=True)
     path = os.path.join(workdir, "bond_wiggle.in")
     with open(path, "w", encoding="utf-8") as f:

@@ -23,7 +23,8 @@ import argparse
 import os
 import sys
 
-from liggghts_run import Failure, main, run_ok
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from liggghts_run import Failure, main, run_ok  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "..", "examples", "flicked_chain")

@@ -10,8 +10,10 @@ usage: check_bad_input.py --engine EXE --workdir DIR
 
 import argparse
 import os
+import sys
 
-from liggghts_run import Failure, judge_refusal, main, run_deck
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from liggghts_run import Failure, judge_refusal, main, run_deck  # noqa: E402
 
 CASES = [
     # (label, overridden variables, text the ERROR line must contain)

@@ -53,8 +53,10 @@ usage: check_bond_motion.py --mode MODE --engine EXE --workdir DIR
 import argparse
 import math
 import os
+import sys
 
-from liggghts_run import Failure, main, run_ok
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from liggghts_run import Failure, main, run_ok  # noqa: E402
 
 RELATIVE_TOLERANCE = 1e-6
 DT = 1e-6

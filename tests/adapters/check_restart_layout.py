@@ -1,7 +1,7 @@
 """Restart files written with an older bond state layout (15 slots per bond,
 before the two-sided twisting/bending history) are refused, never misread:
-tests/liggghts/data/state_layout_1.restart (the flicked chain, LIGGGHTS) and
-tests/lammps/data/state_layout_1.restart (the wiggled pair, LAMMPS), both
+tests/adapters/data/state_layout_1_liggghts.restart (the flicked chain, LIGGGHTS) and
+tests/adapters/data/state_layout_1_lammps.restart (the wiggled pair, LAMMPS), both
 written by a granbond of that layout. LIGGGHTS refuses a contact history of
 another length itself; pair_style granbond writes its state layout version
 into LAMMPS restart files and refuses a file without it or with another.
@@ -13,18 +13,20 @@ usage: check_restart_layout.py --engine LIGGGHTS_GRANBOND [--lammps LMP_GRANBOND
 
 import argparse
 import os
+import sys
 
-from liggghts_run import Failure, judge_refusal, main, run_deck, run_ok
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from liggghts_run import Failure, judge_refusal, main, run_deck, run_ok  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "..", "examples", "flicked_chain")
-LAMMPS_DECKS = os.path.join(HERE, "..", "lammps", "decks")
+LAMMPS_DECKS = os.path.join(HERE, "decks")
 
 
 def check(engine, lammps, workdir):
     failures = []
     rc, text = run_deck([engine], "restart_old_layout.in", os.path.join(workdir, "liggghts"),
-                        {"restart": os.path.join(HERE, "data", "state_layout_1.restart"),
+                        {"restart": os.path.join(HERE, "data", "state_layout_1_liggghts.restart"),
                          "params": os.path.join(EXAMPLE, "params.in"), "here": EXAMPLE})
     judge_refusal("LIGGGHTS, older layout", rc, text, "contact history", failures)
     # the control: the same deck continues a file this granbond wrote
@@ -38,7 +40,7 @@ def check(engine, lammps, workdir):
     if lammps:
         rc, text = run_deck([lammps], os.path.join(LAMMPS_DECKS, "restart_continue.in"),
                             os.path.join(workdir, "lammps"),
-                            {"restart": os.path.join(HERE, "..", "lammps", "data", "state_layout_1.restart"),
+                            {"restart": os.path.join(HERE, "data", "state_layout_1_lammps.restart"),
                              "motion": "wiggle", "out": "second.txt", "nrun": 10})
         judge_refusal("LAMMPS, older layout", rc, text, "older layout", failures)
     if failures:
