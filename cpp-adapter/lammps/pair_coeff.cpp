@@ -32,7 +32,8 @@ namespace lammps {
 namespace {
 
 // The model words of pair_coeff; `contact_under_bond` is the pass's own
-// setting (which records the core's sweep steps), given in the bond's clause.
+// setting (whether the contact is stepped under an intact bond), given in
+// the bond's clause.
 const char *const kVoigt = "voigt";
 const char *const kBond = "bond/nonlinear";
 const char *const kContactUnderBond = "contact_under_bond";

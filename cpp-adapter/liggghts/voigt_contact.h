@@ -250,6 +250,11 @@ public:
     VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                     LIGGGHTS::ContactModels::ContactModelBase *cmb);
 
+    void registerSettings(::Settings &settings)
+    {
+        deck_.registerSettings(settings);
+        share_->registerSettings(settings);
+    }
     void connectToProperties(::PropertyRegistry &registry);
     // inline: in voigt x voigt the call costs only the flag and the test
     void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -269,6 +274,11 @@ public:
     VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                  LIGGGHTS::ContactModels::ContactModelBase *cmb);
 
+    void registerSettings(::Settings &settings)
+    {
+        deck_.registerSettings(settings);
+        share_->registerSettings(settings);
+    }
     void connectToProperties(::PropertyRegistry &registry);
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
