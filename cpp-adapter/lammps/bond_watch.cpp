@@ -1,6 +1,7 @@
 #include "bond_watch.h"
 #include "pair_granbond.h"
 #include "bond_columns.h"
+#include "core_message.h"
 #include "run_checks.h"
 
 #include "atom.h"
@@ -9,7 +10,6 @@
 #include "error.h"
 #include "fix.h"
 #include "force.h"
-#include "lammpsplugin.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -44,7 +44,7 @@ void PairGranbond::logBreaks(const BondIndex &b)
         if (makeBreakEvent(b.model, out, atom->x[i], atom->x[j], atom->radius[i], atom->radius[j],
                            static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
                            static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
-            failPair(i, j, "the break log's event (granbond_bond_centre, granbond_bond_stress_limits)");
+            failPair(i, j, "the break log's event");
         breaks_.push_back(e);
     }
 }
@@ -160,7 +160,7 @@ public:
                              static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j], row.data()) != GB_STATUS_OK)
                 error->one(FLERR, "compute granbond/local: atoms " + std::to_string(static_cast<long long>(atom->tag[i])) +
                                       " and " + std::to_string(static_cast<long long>(atom->tag[j])) + ": " +
-                                      granbond_last_error_message());
+                                      coreReason());
             rows.insert(rows.end(), row.begin(), row.end());
         });
         rows_ = static_cast<int>(rows.size() / ncols);
@@ -258,49 +258,14 @@ private:
     std::vector<BreakEvent> events_;
 };
 
-Compute *createAtom(LAMMPS *lmp, int narg, char **arg) { return new ComputeGranbondAtom(lmp, narg, arg); }
-Compute *createLocal(LAMMPS *lmp, int narg, char **arg) { return new ComputeGranbondLocal(lmp, narg, arg); }
-Fix *createBreakLog(LAMMPS *lmp, int narg, char **arg) { return new FixBondBreakLog(lmp, narg, arg); }
+}
 
-void *createAtomPlugin(void *lmp, int narg, char **arg) { return createAtom(static_cast<LAMMPS *>(lmp), narg, arg); }
-void *createLocalPlugin(void *lmp, int narg, char **arg) { return createLocal(static_cast<LAMMPS *>(lmp), narg, arg); }
-void *createBreakLogPlugin(void *lmp, int narg, char **arg)
+Compute *newComputeGranbondAtom(LAMMPS *lmp, int narg, char **arg) { return new ComputeGranbondAtom(lmp, narg, arg); }
+Compute *newComputeGranbondLocal(LAMMPS *lmp, int narg, char **arg)
 {
-    return createBreakLog(static_cast<LAMMPS *>(lmp), narg, arg);
+    return new ComputeGranbondLocal(lmp, narg, arg);
 }
-
-}
-
-void registerWatchStyles(LAMMPS *lmp)
-{
-    (*lmp->modify->compute_map)["granbond/atom"] = &createAtom;
-    (*lmp->modify->compute_map)["granbond/local"] = &createLocal;
-    (*lmp->modify->fix_map)["bond/breaklog"] = &createBreakLog;
-}
-
-void loadWatchPlugins(void *lmp, void *handle, void *regfunc, const char *version)
-{
-    struct Style {
-        const char *style, *name, *info;
-        lammpsplugin_factory2 *creator;
-    };
-    const Style styles[] = {
-        {"compute", "granbond/atom", "granbond: intact bonds per atom", &createAtomPlugin},
-        {"compute", "granbond/local", "granbond: per-bond fields for dump local", &createLocalPlugin},
-        {"fix", "bond/breaklog", "granbond: one line per broken bond", &createBreakLogPlugin},
-    };
-    for (const Style &s : styles) {
-        lammpsplugin_t plugin;
-        plugin.version = version;
-        plugin.style = s.style;
-        plugin.name = s.name;
-        plugin.info = s.info;
-        plugin.author = "granbond";
-        plugin.creator.v2 = s.creator;
-        plugin.handle = handle;
-        (*reinterpret_cast<lammpsplugin_regfunc>(regfunc))(&plugin, lmp);
-    }
-}
+Fix *newFixBondBreakLog(LAMMPS *lmp, int narg, char **arg) { return new FixBondBreakLog(lmp, narg, arg); }
 
 }
 }

@@ -10,18 +10,18 @@
 
 namespace LAMMPS_NS {
 class LAMMPS;
+class Compute;
+class Fix;
 }
 
 namespace granbond {
 namespace lammps {
 
-// Adds the styles above to this instance's tables (the launcher, after
-// constructing LAMMPS and after every `clear`).
-void registerWatchStyles(LAMMPS_NS::LAMMPS *lmp);
-
-// The same styles for `plugin load` (lammpsplugin_init's arguments, and
-// the LAMMPS version the plugins were built for).
-void loadWatchPlugins(void *lmp, void *handle, void *regfunc, const char *version);
+// The styles above, made as LAMMPS makes a style from its command's
+// arguments (registered by plugin.cpp).
+LAMMPS_NS::Compute *newComputeGranbondAtom(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
+LAMMPS_NS::Compute *newComputeGranbondLocal(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
+LAMMPS_NS::Fix *newFixBondBreakLog(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
 
 }
 }

@@ -1,5 +1,5 @@
 #include "pair_granbond.h"
-#include "bond_watch.h"
+#include "core_message.h"
 #include "fix_granbond_atoms.h"
 #include "history_prefetch.h"
 
@@ -10,7 +10,6 @@
 #include "fix.h"
 #include "fix_neigh_history.h"
 #include "force.h"
-#include "lammpsplugin.h"
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -24,19 +23,10 @@
 //   GRANBOND_LAMMPS_ADD_REQUEST          neighbor->add_request(pair, flags)
 //                                        (else request() + NeighRequest fields)
 //   GRANBOND_LAMMPS_TRANSFER_HISTORY_IJ  Pair::transfer_history(src, dst, i, j)
-//   GRANBOND_LAMMPS_VERSION_STRING       the version for plugin load (the
-//                                        wheel has no version.h)
 #ifndef GRANBOND_LAMMPS_ADD_REQUEST
 #include "neigh_request.h"
 #endif
-#ifdef GRANBOND_LAMMPS_VERSION_STRING
-#define GRANBOND_LAMMPS_VERSION GRANBOND_LAMMPS_VERSION_STRING
-#else
-#include "version.h"
-#define GRANBOND_LAMMPS_VERSION LAMMPS_VERSION
-#endif
 
-#include <cerrno>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -53,26 +43,6 @@ namespace {
 
 const char *const kFixDummy = "NEIGH_HISTORY_GRANBOND_DUMMY";
 const char *const kFix = "NEIGH_HISTORY_GRANBOND";
-
-// The core's row of a bond/nonlinear keyword (its parameter table is the
-// deck's list of keywords).
-bool bondRow(const std::string &keyword, GbParameterInfo &info)
-{
-    const size_t n = granbond_bond_parameter_count();
-    for (size_t id = 0; id < n; id++)
-        if (granbond_bond_parameter_info(id, &info) == GB_STATUS_OK && keyword == info.keyword) return true;
-    return false;
-}
-
-std::string knownBondKeywords()
-{
-    std::string s = "break";
-    const size_t n = granbond_bond_parameter_count();
-    GbParameterInfo info;
-    for (size_t id = 0; id < n; id++)
-        if (granbond_bond_parameter_info(id, &info) == GB_STATUS_OK) s += std::string(" ") + info.keyword;
-    return s + " smooth_damping contact_under_bond";
-}
 
 void copy3(double *to, const double *from)
 {
@@ -117,7 +87,7 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     if (granbond_check_layout(&expected) != GB_STATUS_OK)
         error->all(FLERR, std::string("pair granbond: the adapter was built against another granbond.h "
                                       "than the core it links: ") +
-                              granbond_last_error_message());
+                              coreReason());
     granbond_record_layout(1, &layout_);
 
     // one history fix per LAMMPS instance: a second granbond (pair_style
@@ -175,191 +145,6 @@ void PairGranbond::allocate()
     formed_.assign(m, 0);
 }
 
-void PairGranbond::settings(int narg, char **arg)
-{
-    if (narg != 0)
-        error->all(FLERR, std::string("pair_style granbond takes no arguments (got '") + arg[0] +
-                              "'); the models are set per type pair with pair_coeff");
-}
-
-// ------------------------------------------------------------ pair_coeff
-
-namespace {
-
-class Args {
-public:
-    Args(int narg, char **arg, Error *error) : narg_(narg), arg_(arg), error_(error), at_(2) {}
-    bool done() const { return at_ >= narg_; }
-    std::string peek() const { return done() ? std::string() : std::string(arg_[at_]); }
-    std::string word(const std::string &what)
-    {
-        if (done()) fail("missing " + what);
-        return arg_[at_++];
-    }
-    double number(const std::string &what)
-    {
-        const std::string s = word(what);
-        errno = 0;
-        char *end = nullptr;
-        const double v = std::strtod(s.c_str(), &end);
-        if (end == s.c_str() || *end != '\0' || errno == ERANGE)
-            fail(what + " expects a number, got '" + s + "'");
-        return v;
-    }
-    int64_t integer(const std::string &what)
-    {
-        const std::string s = word(what);
-        errno = 0;
-        char *end = nullptr;
-        const long long v = std::strtoll(s.c_str(), &end, 10);
-        if (end == s.c_str() || *end != '\0' || errno == ERANGE)
-            fail(what + " expects an integer, got '" + s + "'");
-        return v;
-    }
-    int32_t onOff(const std::string &what)
-    {
-        const std::string s = word(what);
-        if (s == "yes" || s == "on") return 1;
-        if (s == "no" || s == "off") return 0;
-        fail(what + " expects yes|no (or on|off), got '" + s + "'");
-    }
-    [[noreturn]] void fail(const std::string &what)
-    {
-        error_->all(FLERR, "pair_coeff granbond: " + what);
-        std::abort();   // not reached
-    }
-
-private:
-    int narg_;
-    char **arg_;
-    Error *error_;
-    int at_;
-};
-
-// The core stores each value and refuses one out of range, naming it.
-void setBond(Args &a, GbBondParams &p, const char *keyword, double value)
-{
-    if (granbond_bond_params_set(&p, keyword, value) != GB_STATUS_OK)
-        a.fail(std::string("bond/nonlinear: ") + granbond_last_error_message());
-}
-
-void parseBond(Args &a, GbBondParams &p, int32_t &contactUnderBond)
-{
-    while (!a.done()) {
-        std::string kw = a.word("bond/nonlinear keyword");
-        const std::string what = "bond/nonlinear " + kw;
-        if (kw == "contact_under_bond") {
-            contactUnderBond = a.onOff(what);
-            continue;
-        }
-        if (kw == "break") {
-            const std::string mode = a.word("break mode (distance|stress)");
-            if (mode == "distance") {
-                setBond(a, p, "stress_break", 0);
-                setBond(a, p, "max_distance", a.number("break distance <rmax>"));
-            } else if (mode == "stress") {
-                setBond(a, p, "stress_break", 1);
-                setBond(a, p, "max_sigma", a.number("break stress <sigma_max>"));
-                setBond(a, p, "max_tau", a.number("break stress <tau_max>"));
-                if (a.peek() == "ratio") {
-                    a.word("ratio");
-                    setBond(a, p, "use_ratio", 1);
-                    setBond(a, p, "tension_compression_ratio", a.number("break stress ratio <gamma>"));
-                }
-            } else {
-                a.fail("bond/nonlinear break expects distance or stress, got '" + mode + "'");
-            }
-            continue;
-        }
-        if (kw == "smooth_damping") kw = "damping_smooth";   // the other spelling pair_granbond.md accepts
-        GbParameterInfo info;
-        if (!bondRow(kw, info))
-            a.fail("unknown bond/nonlinear keyword '" + kw + "' (known: " + knownBondKeywords() + ")");
-        double value = 0.0;
-        switch (info.kind) {
-        case GB_PARAMETER_KIND_SWITCH: value = a.onOff(what); break;
-        case GB_PARAMETER_KIND_INTEGER: value = static_cast<double>(a.integer(what)); break;
-        default: value = a.number(what); break;
-        }
-        setBond(a, p, info.keyword, value);
-        // a creation step means bonds are created at that step only
-        if (kw == "create_step") setBond(a, p, "create_always", 0);
-    }
-}
-
-}
-
-void PairGranbond::coeff(int narg, char **arg)
-{
-    if (!allocated) allocate();
-    if (narg < 3) error->all(FLERR, "pair_coeff granbond: expected I J voigt <kn> <gamman> <kt> <gammat> <mu> ...");
-    int ilo, ihi, jlo, jhi;
-    utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
-    utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-
-    Args a(narg, arg, error);
-    TypePair tp;
-    std::memset(&tp, 0, sizeof tp);
-    granbond_voigt_params_default(&tp.voigt);
-    granbond_bond_params_default(&tp.bond);
-    tp.hasBond = 0;
-
-    const std::string model = a.word("model (voigt)");
-    if (model != "voigt") a.fail("unknown model '" + model + "' (expected voigt)");
-    tp.voigt.k_n = a.number("voigt <kn>");
-    tp.voigt.gamma_n = a.number("voigt <gamman>");
-    tp.voigt.k_t = a.number("voigt <kt>");
-    tp.voigt.gamma_t = a.number("voigt <gammat>");
-    tp.voigt.mu = a.number("voigt <mu>");
-    tp.voigt.rolling = 0;
-    while (!a.done()) {
-        const std::string kw = a.word("keyword");
-        if (kw == "rolling") {
-            tp.voigt.rolling = 1;
-            tp.voigt.k_r = a.number("rolling <kr>");
-            tp.voigt.gamma_r = a.number("rolling <gammar>");
-            tp.voigt.mu_r = a.number("rolling <mur>");
-            tp.voigt.eta_r = a.number("rolling <etar>");
-        } else if (kw == "noattraction") {
-            tp.voigt.no_attraction = a.onOff("noattraction");
-        } else if (kw == "bond/nonlinear") {
-            tp.hasBond = 1;
-            parseBond(a, tp.bond, tp.contactUnderBond);
-        } else {
-            a.fail("unknown keyword '" + kw + "' (expected rolling, noattraction or bond/nonlinear)");
-        }
-    }
-
-    int count = 0;
-    for (int ti = ilo; ti <= ihi; ti++)
-        for (int tj = jlo; tj <= jhi; tj++) {
-            const int i = std::min(ti, tj), j = std::max(ti, tj);
-            pairs_[at(i, j)] = tp;
-            pairs_[at(j, i)] = tp;
-            buildModel(i, j);
-            setflag[i][j] = setflag[j][i] = 1;
-            count++;
-        }
-    if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
-}
-
-// Builds the core's models of types (i, j), i <= j, from pairs_ (stored at
-// (i, j) only); the core validates, and its message names the parameter,
-// its range and the value.
-void PairGranbond::buildModel(int i, int j)
-{
-    const size_t k = at(i, j);
-    const TypePair &tp = pairs_[k];
-    granbond_voigt_model_free(voigt_[k]);
-    granbond_bond_model_free(bond_[k]);
-    voigt_[k] = nullptr;
-    bond_[k] = nullptr;
-    if (granbond_voigt_model_new(&tp.voigt, &voigt_[k]) != GB_STATUS_OK)
-        error->all(FLERR, std::string("pair_coeff granbond: voigt: ") + granbond_last_error_message());
-    if (tp.hasBond && granbond_bond_model_new(&tp.bond, &bond_[k]) != GB_STATUS_OK)
-        error->all(FLERR, std::string("pair_coeff granbond: bond/nonlinear: ") + granbond_last_error_message());
-}
-
 // ------------------------------------------------------------ init
 
 void PairGranbond::init_style()
@@ -385,7 +170,7 @@ void PairGranbond::init_style()
         int32_t flips = 0;
         const char *name = nullptr;
         if (granbond_state_slot(kind, k, &name, &flips) != GB_STATUS_OK)
-            error->all(FLERR, std::string("pair granbond: ") + granbond_last_error_message());
+            error->all(FLERR, std::string("pair_style granbond: ") + coreReason());
         transferSign_[k] = flips ? -1.0 : 1.0;
     }
 
@@ -458,17 +243,17 @@ void PairGranbond::runChecks(const std::vector<GbTypeBodies> &bodies, bool runSt
     const char *const units = update->unit_style;
     if (granbond_voigt_timestep_check(voigt_.data(), n, bodies.data(), update->dt, units, contact, &report) !=
         GB_STATUS_OK)
-        error->all(FLERR, std::string(contact) + ": " + granbond_last_error_message());
+        error->all(FLERR, std::string(contact) + ": " + coreReason());
     if (contactWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
     if (!anyBond_) return;
     if (granbond_bond_timestep_check(bond_.data(), n, bodies.data(), update->dt, 0, units, bond, &report) !=
         GB_STATUS_OK)
-        error->all(FLERR, std::string(bond) + ": " + granbond_last_error_message());
+        error->all(FLERR, std::string(bond) + ": " + coreReason());
     if (bondWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
     if (!runStart) return;
     if (granbond_bond_creation_check(bond_.data(), n, bodies.data(), firstStep_, bondsExist() ? 1 : 0, 0, 0, units,
                                      bond, &report) != GB_STATUS_OK)
-        error->all(FLERR, std::string(bond) + ": " + granbond_last_error_message());
+        error->all(FLERR, std::string(bond) + ": " + coreReason());
     for (const std::string &line : said_.fresh(report))
         if (comm->me == 0) error->warning(FLERR, line);
 }
@@ -482,14 +267,15 @@ double PairGranbond::init_one(int i, int j)
     const GbBondModel *b = bond_[at(std::min(i, j), std::max(i, j))];
     const double rmin = std::min(bodies_[i].radius_min, bodies_[j].radius_min);
     if (b && std::isfinite(rmin) && rmin > 0.0) {
+        const std::string pairCoeff = "pair_coeff " + std::to_string(std::min(i, j)) + " " +
+                                      std::to_string(std::max(i, j)) + " bond/nonlinear: ";
         // the core's neighbour-list reach that keeps every intact bond
         double factor = 0.0;
         if (granbond_bond_contact_distance_factor(b, rmin, &factor) != GB_STATUS_OK)
-            error->all(FLERR, std::string("pair granbond: ") + granbond_last_error_message());
+            error->all(FLERR, pairCoeff + coreReason());
         if (!std::isfinite(factor))
-            error->all(FLERR, "pair granbond: bond/nonlinear of atom types " + std::to_string(i) + " and " +
-                                  std::to_string(j) + " never breaks, so no neighbour list can keep it: "
-                                  "set 'break distance <rmax>' or 'break stress <sigma_max> <tau_max>'");
+            error->all(FLERR, pairCoeff + "the bond never breaks, so no neighbour list can keep it: "
+                                          "set 'break distance <rmax>' or 'break stress <sigma_max> <tau_max>'");
         cut = std::max(cut, factor * 2.0 * rmin);
     }
     return cut;
@@ -506,12 +292,12 @@ void PairGranbond::transfer_history(double *source, double *target)
 
 // ------------------------------------------------------------ compute
 
-void PairGranbond::failPair(int i, int j, const char *call)
+void PairGranbond::failPair(int i, int j, const char *what)
 {
-    message_ = "pair granbond: " + std::string(call) + " failed for atoms " +
+    message_ = "pair_style granbond: " + std::string(what) + " of atoms " +
                std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
                std::to_string(static_cast<long long>(atom->tag[j])) + " at step " +
-               std::to_string(static_cast<long long>(update->ntimestep)) + ": " + granbond_last_error_message();
+               std::to_string(static_cast<long long>(update->ntimestep)) + ": " + coreReason();
     // error->one aborts without flushing: write the message first
     FILE *streams[2] = {screen, logfile};
     for (FILE *s : streams)
@@ -564,7 +350,7 @@ inline void PairGranbond::voigtStep(size_t tp, int i, int j, const double *del, 
     if (granbond_voigt_compute_separation_unchecked(voigt_[tp], del, rsq, atom->radius[i], atom->radius[j], v0 + I,
                                                     v0 + J, w0 + I, w0 + J, update->dt, state,
                                                     &cout) != GB_STATUS_OK)
-        failPair(i, j, "granbond_voigt_compute_separation_unchecked");
+        failPair(i, j, "the voigt contact");
 }
 
 // The setup pass: the loads of the stored state, not advanced, in the frame
@@ -577,9 +363,9 @@ void PairGranbond::voigtEvaluate(size_t tp, int i, int j, const double *del, dou
     GbContactFrame frame;
     if (granbond_contact_frame_separation(del, rsq, atom->radius[i], atom->radius[j], v0 + I, v0 + J, w0 + I,
                                           w0 + J, &frame) != GB_STATUS_OK)
-        failPair(i, j, "granbond_contact_frame_separation");
+        failPair(i, j, "the voigt contact");
     if (granbond_voigt_evaluate_frame(voigt_[tp], &frame, state, &cout) != GB_STATUS_OK)
-        failPair(i, j, "granbond_voigt_evaluate_frame");
+        failPair(i, j, "the voigt contact");
 }
 
 void PairGranbond::pairKinematics(int i, int j, GbPairKinematics &k) const
@@ -713,7 +499,7 @@ void PairGranbond::compute(int eflag, int vflag)
                 pairKinematics(i, j, k);
                 int32_t created = 0;
                 if (granbond_bond_try_create(bondModel, &k, step, history + layout_.bond, &created) != GB_STATUS_OK)
-                    failPair(i, j, "granbond_bond_try_create");
+                    failPair(i, j, "the bond's creation");
                 if (created) {
                     const bool counts = countsHere(i, j);
                     if (counts) created_++;
@@ -777,7 +563,7 @@ void PairGranbond::sweep(BondIndex &b, size_t first, bool advance, GbSweepTally 
                     del[c] = x0[3 * static_cast<size_t>(i) + c] - x0[3 * static_cast<size_t>(j) + c];
             apply(f0, t0, i, j, out.force_i, out.torque_i, out.torque_j, del, nlocal, newton_pair);
         }) != GB_STATUS_OK)
-        failPair(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
+        failPair(b.pairs[2 * bad], b.pairs[2 * bad + 1], "the bond");
     if (breakLogUsers > 0 && advance) logBreaks(b);
 }
 
@@ -963,50 +749,4 @@ double PairGranbond::memory_usage()
 }
 
 }
-}
-
-// ------------------------------------------------------------ registration
-
-namespace {
-
-LAMMPS_NS::Pair *createPairGranbond(LAMMPS_NS::LAMMPS *lmp)
-{
-    return new granbond::lammps::PairGranbond(lmp);
-}
-
-void *createPairGranbondPlugin(void *lmp)
-{
-    return createPairGranbond(static_cast<LAMMPS_NS::LAMMPS *>(lmp));
-}
-
-}
-
-// Adds pair_style granbond to this LAMMPS instance (the launcher calls it
-// after constructing LAMMPS and after every `clear`).
-extern "C" __attribute__((visibility("default"))) void granbond_lammps_register(void *lmp)
-{
-    (*static_cast<LAMMPS_NS::LAMMPS *>(lmp)->force->pair_map)["granbond"] = &createPairGranbond;
-    granbond::lammps::registerWatchStyles(static_cast<LAMMPS_NS::LAMMPS *>(lmp));
-}
-
-// The ABI version of the core linked into this library, for
-// `lmp-granbond --version`.
-extern "C" __attribute__((visibility("default"))) unsigned granbond_lammps_core_abi_version(void)
-{
-    return granbond_abi_version();
-}
-
-// `plugin load libgranbond_lammps.so` in a LAMMPS built with PLUGIN.
-extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
-{
-    lammpsplugin_t plugin;
-    plugin.version = GRANBOND_LAMMPS_VERSION;
-    plugin.style = "pair";
-    plugin.name = "granbond";
-    plugin.info = "granbond: voigt contact and bond/nonlinear bond (Rust core)";
-    plugin.author = "granbond";
-    plugin.creator.v1 = &createPairGranbondPlugin;
-    plugin.handle = handle;
-    (*reinterpret_cast<lammpsplugin_regfunc>(regfunc))(&plugin, lmp);
-    granbond::lammps::loadWatchPlugins(lmp, handle, regfunc, GRANBOND_LAMMPS_VERSION);
 }

@@ -1,12 +1,12 @@
 // pair_style granbond: the granbond core's `voigt` contact and
-// `bond/nonlinear` bond as one LAMMPS pair style. Translation only: the deck
-// is parsed into the core's parameter structs, the per-pair state lives in
-// fix neigh/history (as pair granular's), and every force comes from the core.
+// `bond/nonlinear` bond as one LAMMPS pair style. Translation only: the
+// deck's words become rows of the core's parameter tables (pair_coeff.cpp),
+// the per-pair state lives in fix neigh/history (as pair granular's), and
+// every force comes from the core (pair_granbond.cpp); plugin.cpp registers
+// the style.
 //
 //   pair_style granbond
-//   pair_coeff I J voigt <kn> <gamman> <kt> <gammat> <mu> &
-//                  [rolling <kr> <gammar> <mur> <etar>] &
-//                  [bond/nonlinear <keyword> <value> ...]
+//   pair_coeff I J voigt <values> [voigt keyword ...] [bond/nonlinear keyword ...]
 #ifndef GRANBOND_LAMMPS_PAIR_GRANBOND_H
 #define GRANBOND_LAMMPS_PAIR_GRANBOND_H
 
@@ -75,7 +75,9 @@ private:
     void allocate();
     void freeModels();
     void buildModel(int i, int j);
-    [[noreturn]] void failPair(int i, int j, const char *call);
+    // Ends the run on this rank: `what` of atoms i and j failed, with the
+    // core's reason.
+    [[noreturn]] void failPair(int i, int j, const char *what);
     void apply(double *f, double *torque, int i, int j, const double *fi, const double *ti, const double *tj,
                const double *del, int nlocal, int newton_pair);
     size_t at(int i, int j) const;

@@ -1,4 +1,5 @@
 #include "bond_local.h"
+#include "core_message.h"
 #include "bond_book.h"
 #include "bond_columns.h"
 #include "bond_nonlinear_cohesion.h"
@@ -71,7 +72,7 @@ public:
                                          "compute pair/gran/local/bond: atoms " +
                                              std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
                                              std::to_string(static_cast<long long>(atom->tag[j])) + ": " +
-                                             (m ? granbond_last_error_message() : "no bond model for their types"));
+                                             (m ? coreReason() : std::string("no bond model for their types")));
                     rows_.insert(rows_.end(), row.begin(), row.end());
                 }
             }

@@ -1,4 +1,5 @@
 #include "bond_nonlinear_cohesion.h"
+#include "core_message.h"
 #include "core_bridge.h"
 #include "fix_granbond_atoms.h"
 #include "history_prefetch.h"
@@ -417,14 +418,14 @@ void BondNonlinearCohesion::runChecks(bool runStart)
     GbCheckReport report;
     if (granbond_bond_timestep_check(parameters_.table(), ntypes, bodies.data(), update->dt, 1, update->unit_style,
                                      style, &report) != GB_STATUS_OK)
-        endRun(error, FLERR, std::string(style) + ": " + granbond_last_error_message());
+        endRun(error, FLERR, std::string(style) + ": " + coreReason());
     if (timestepWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
     if (!runStart) return;
     const long long dropped = book_->takeDropped(world);
     if (dropped > 0 && comm->me == 0) error->warning(FLERR, droppedMessage(dropped).c_str());
     if (granbond_bond_creation_check(parameters_.table(), ntypes, bodies.data(), firstStep_, 0, isWall_ ? 1 : 0, 1,
                                      update->unit_style, style, &report) != GB_STATUS_OK)
-        endRun(error, FLERR, std::string(style) + ": " + granbond_last_error_message());
+        endRun(error, FLERR, std::string(style) + ": " + coreReason());
     const std::vector<std::string> lines = said_.fresh(report);
     for (size_t k = 0; k < lines.size(); k++)
         if (comm->me == 0) error->warning(FLERR, lines[k].c_str());
@@ -455,7 +456,7 @@ void BondNonlinearCohesion::account(const GbBondModel *model, int i, int j, cons
                        isWall_ ? wall : atom->x[j], atom->radius[i], isWall_ ? 0.0 : atom->radius[j],
                        static_cast<double>(atom->tag[i]), isWall_ ? 0.0 : static_cast<double>(atom->tag[j]),
                        static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
-        failed(i, j, "the break log's event (granbond_bond_centre, granbond_bond_stress_limits)");
+        failed(i, j, "the break log's event");
     book.record(e);
 }
 
@@ -467,9 +468,12 @@ void BondNonlinearCohesion::failed(int i, int j, const char *call)
     else
         snprintf(where, sizeof where, "atoms %ld and %ld", static_cast<long>(atom->tag[i]),
                  static_cast<long>(atom->tag[j]));
-    const std::string msg = std::string("cohesion bond/nonlinear: ") + call + " failed for " + where +
-                            " at step " + std::to_string(static_cast<long long>(update->ntimestep)) + ": " +
-                            granbond_last_error_message();
+    // a core entry's failure is told by the core's reason; the adapter's
+    // own, by what it was doing
+    const std::string step = " at step " + std::to_string(static_cast<long long>(update->ntimestep));
+    const std::string msg = std::strncmp(call, "granbond_", 9) == 0
+                                ? "cohesion bond/nonlinear: " + std::string(where) + step + ": " + coreReason()
+                                : "cohesion bond/nonlinear: " + std::string(call) + " failed for " + where + step;
     endRunOnThisRank(lmp, FLERR, msg);
 }
 

@@ -1,4 +1,5 @@
 #include "bond_nonlinear_parameters.h"
+#include "core_message.h"
 #include "core_bridge.h"
 
 #include <array>
@@ -96,7 +97,7 @@ void BondNonlinearParameters::registerSettings(Settings &settings)
 void BondNonlinearParameters::set(GbBondParams &p, const GbParameterInfo &info, double value, const std::string &where)
 {
     if (granbond_bond_params_set(&p, info.keyword, value) != GB_STATUS_OK)
-        endRun(error, FLERR, std::string(kCaller) + where + ": " + granbond_last_error_message());
+        endRun(error, FLERR, std::string(kCaller) + " " + info.liggghts_name + where + ": " + coreReason());
 }
 
 void BondNonlinearParameters::connectToProperties(PropertyRegistry &registry)
@@ -116,7 +117,7 @@ void BondNonlinearParameters::connectToProperties(PropertyRegistry &registry)
         const GbParameterInfo info = row(k);
         int32_t needed = 0;
         if (granbond_bond_parameter_needed(&switches_, k, &needed) != GB_STATUS_OK)
-            endRun(error, FLERR, std::string(kCaller) + ": " + granbond_last_error_message());
+            endRun(error, FLERR, std::string(kCaller) + ": " + coreReason());
         if (!needed) continue;
         // a setting LIGGGHTS-INL does not have: read only where the deck
         // defines it, so INL's decks keep the default and INL's law
@@ -157,7 +158,7 @@ void BondNonlinearParameters::buildModels(PropertyRegistry &registry)
             }
             GbBondModel *m = 0;
             if (granbond_bond_model_new(&p, &m) != GB_STATUS_OK)
-                endRun(error, FLERR, std::string(kCaller) + where + ": " + granbond_last_error_message());
+                endRun(error, FLERR, std::string(kCaller) + where + ": " + coreReason());
             models_[a * (ntypes + 1) + b] = m;
         }
 }
@@ -178,7 +179,7 @@ void BondNonlinearParameters::registerContactDistanceFactor(PropertyRegistry &re
         for (int b = 1; b <= ntypes_; b++) {
             double f = 0.0;
             if (granbond_bond_contact_distance_factor(model(a, b), minRadius, &f) != GB_STATUS_OK) {
-                endRun(error, FLERR, std::string(kCaller) + ": " + granbond_last_error_message());
+                endRun(error, FLERR, std::string(kCaller) + ": " + coreReason());
             }
             char msg[640];
             if (!std::isfinite(f)) {

@@ -1,4 +1,5 @@
 #include "core_bridge.h"
+#include "core_message.h"
 
 #include <cstdio>
 #include <string>
@@ -41,7 +42,7 @@ void checkCoreLayout(LAMMPS_NS::Error *error)
     GbLayout expected = granbond_header_layout();
     if (granbond_check_layout(&expected) != GB_STATUS_OK) {
         endRun(error, FLERR, std::string("granbond: the adapter was built against another granbond.h than "
-                                         "the core it links: ") + granbond_last_error_message());
+                                         "the core it links: ") + coreReason());
     }
 }
 
@@ -58,7 +59,7 @@ int registerStateSlots(LIGGGHTS::IContactHistorySetup *hsetup, GbStateKind kind,
         const char *name = 0;
         int32_t flips = 0;
         if (granbond_state_slot(kind, k, &name, &flips) != GB_STATUS_OK) {
-            endRun(error, FLERR, std::string("granbond: ") + granbond_last_error_message());
+            endRun(error, FLERR, std::string("granbond: ") + coreReason());
         }
         // "1": the engine negates the value when the pair is seen from the other atom
         const int at = hsetup->add_history_value(std::string(prefix) + name, flips ? "1" : "0");

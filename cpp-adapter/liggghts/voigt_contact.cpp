@@ -1,9 +1,15 @@
 #include "voigt_contact.h"
-#include "core_bridge.h"
 
+#include "force.h"
+#include "core_bridge.h"
+#include "core_message.h"
+
+#include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
+#include <utility>
 
 using namespace LIGGGHTS::ContactModels;
 
@@ -23,9 +29,8 @@ void VoigtModelTable::build(LAMMPS_NS::Error *error, const char *who, int ntypes
         for (int b = 1; b <= ntypes; b++) {
             GbVoigtModel *model = 0;
             if (granbond_voigt_model_new(&params[a * stride_ + b], &model) != GB_STATUS_OK) {
-                char where[64];
-                std::snprintf(where, sizeof where, " (fix property/global, atom types %d %d)", a, b);
-                const std::string msg = std::string(who) + ": " + granbond_last_error_message() + where;
+                const std::string msg = std::string(who) + " (atom types " + std::to_string(a) + " and " +
+                                        std::to_string(b) + "): " + coreReason();
                 clear();
                 endRun(error, FLERR, msg);
             }
@@ -42,22 +47,52 @@ void VoigtModelTable::clear()
 
 namespace {
 
-// Parameters of every type pair, `fill` writing a sub-model's own values
-// over the core defaults; `rolling` switches the rolling part of the model.
-template<class Fill>
-std::vector<GbVoigtParams> typePairParams(int ntypes, bool rolling, Fill fill)
+// The core's Voigt table, row by row, with the part of the contact each
+// row belongs to.
+struct VoigtRow {
+    GbParameterInfo info;
+    GbContactPart part;
+};
+
+const std::vector<VoigtRow> &voigtRows()
 {
-    const int stride = ntypes + 1;
-    GbVoigtParams defaults;
-    granbond_voigt_params_default(&defaults);
-    std::vector<GbVoigtParams> params(stride * stride, defaults);
-    for (int a = 1; a <= ntypes; a++)
-        for (int b = 1; b <= ntypes; b++) {
-            GbVoigtParams &p = params[a * stride + b];
-            fill(p, a, b);
-            p.rolling = rolling ? 1 : 0;
+    static const std::vector<VoigtRow> rows = [] {
+        std::vector<VoigtRow> r;
+        VoigtRow row;
+        for (size_t id = 0; granbond_voigt_parameter_info(id, &row.info) == GB_STATUS_OK; id++) {
+            if (granbond_voigt_parameter_part(id, &row.part) != GB_STATUS_OK) std::abort();   // id < rows, read
+            r.push_back(row);
         }
-    return params;
+        return r;
+    }();
+    return rows;
+}
+
+// The engine's registry takes a plain function per property, so there is
+// one creator per row id of the core's table, reading the row's name.
+const size_t kMaxRows = 32;
+
+template<size_t N>
+MatrixProperty *createRow(PropertyRegistry &registry, const char *caller, bool)
+{
+    return MODEL_PARAMS::createPerTypePairProperty(registry, voigtRows()[N].info.liggghts_name, caller);
+}
+
+template<size_t... N>
+std::array<MatrixPropertyCreator, sizeof...(N)> rowCreators(std::index_sequence<N...>)
+{
+    return {{&createRow<N>...}};
+}
+
+const std::array<MatrixPropertyCreator, kMaxRows> kRowCreators = rowCreators(std::make_index_sequence<kMaxRows>());
+
+bool in(unsigned parts, GbContactPart part) { return (parts & partBit(part)) != 0; }
+
+void set(LAMMPS_NS::Error *error, const std::string &caller, GbVoigtParams &p, const GbParameterInfo &info,
+         double value)
+{
+    if (granbond_voigt_params_set(&p, info.keyword, value) != GB_STATUS_OK)
+        endRun(error, FLERR, caller + ": " + coreReason());
 }
 
 std::map<const void *, VoigtContactShare *> &shares()
@@ -67,6 +102,80 @@ std::map<const void *, VoigtContactShare *> &shares()
 }
 
 
+}
+
+// ------------------------------------------------------------ deck
+
+VoigtDeck::VoigtDeck(unsigned owns, unsigned reads) :
+    owns_(owns), reads_(reads | owns), values_(voigtRows().size(), static_cast<double **>(0)),
+    switches_(voigtRows().size(), false)
+{}
+
+void setPresentParts(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, unsigned present)
+{
+    for (const VoigtRow &r : voigtRows())
+        if (r.info.kind == GB_PARAMETER_KIND_SWITCH && r.info.liggghts_source == GB_LIGGGHTS_SOURCE_FIXED)
+            set(error, caller, p, r.info, in(present, r.part) ? 1.0 : 0.0);
+}
+
+void VoigtDeck::registerSettings(::Settings &settings)
+{
+    const std::vector<VoigtRow> &rows = voigtRows();
+    for (size_t k = 0; k < rows.size(); k++)
+        if (in(owns_, rows[k].part) && rows[k].info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
+            settings.registerOnOff(rows[k].info.liggghts_name, switches_[k], rows[k].info.default_value != 0.0);
+}
+
+void VoigtDeck::connect(::PropertyRegistry &registry, const char *caller)
+{
+    // LIGGGHTS's own creators scale the stiffness and damping of a
+    // coarse-grained deck; the core's table takes the values as written,
+    // so such a deck would silently run other physics
+    if (registry.getLAMMPS()->force->cg_active())
+        endRun(registry.getLAMMPS()->error, FLERR,
+               std::string(caller) + ": coarse-graining (the coarsegraining command) is not supported by the voigt "
+                                     "sub-models");
+    const std::vector<VoigtRow> &rows = voigtRows();
+    if (rows.size() > kMaxRows)
+        endRun(registry.getLAMMPS()->error, FLERR,
+               std::string(caller) + ": the core's Voigt table has more rows than this adapter has property "
+                                     "creators (raise kMaxRows)");
+    for (size_t k = 0; k < rows.size(); k++) {
+        values_[k] = 0;
+        if (!in(reads_, rows[k].part) || rows[k].info.liggghts_source != GB_LIGGGHTS_SOURCE_PER_TYPE_PAIR) continue;
+        // registry keys of our own, so they cannot meet a stock model's
+        // key of the same property with another creator
+        const std::string key = std::string("voigt_") + rows[k].info.liggghts_name;
+        registry.registerProperty(key, kRowCreators[k]);
+        registry.connect(key, values_[k], caller);
+    }
+}
+
+void VoigtDeck::fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, int a, int b, unsigned parts,
+                     unsigned present) const
+{
+    const std::vector<VoigtRow> &rows = voigtRows();
+    const std::string where = std::string(caller) + " (fix property/global, atom types " + std::to_string(a) +
+                              " and " + std::to_string(b) + ")";
+    for (size_t k = 0; k < rows.size(); k++) {
+        if (!in(parts, rows[k].part)) continue;
+        if (values_[k]) set(error, where, p, rows[k].info, values_[k][a][b]);
+        if (in(owns_, rows[k].part) && rows[k].info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
+            set(error, caller, p, rows[k].info, switches_[k] ? 1.0 : 0.0);
+    }
+    if (present) setPresentParts(error, caller, p, present);
+}
+
+std::vector<GbVoigtParams> VoigtDeck::all(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts,
+                                          unsigned present) const
+{
+    const int stride = ntypes + 1;
+    GbVoigtParams defaults;
+    granbond_voigt_params_default(&defaults);
+    std::vector<GbVoigtParams> params(stride * stride, defaults);
+    for (int a = 1; a <= ntypes; a++)
+        for (int b = 1; b <= ntypes; b++) fill(error, caller, params[a * stride + b], a, b, parts, present);
+    return params;
 }
 
 // ------------------------------------------------------------ shared state
@@ -125,8 +234,9 @@ void VoigtContactShare::resize(int ntypes)
 void VoigtContactShare::rebuild(LAMMPS_NS::Error *error)
 {
     if (!fused()) return;
-    for (size_t k = 0; k < params_.size(); k++)
-        params_[k].rolling = fusedRolling() ? 1 : 0;
+    const unsigned present = partBit(GB_CONTACT_PART_NORMAL) | partBit(GB_CONTACT_PART_TANGENTIAL) |
+                             (fusedRolling() ? partBit(GB_CONTACT_PART_ROLLING) : 0u);
+    for (size_t k = 0; k < params_.size(); k++) setPresentParts(error, "voigt contact", params_[k], present);
     table_.build(error, "voigt contact", stride_ - 1, params_);
 }
 
@@ -231,29 +341,25 @@ void voigtFailed(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const c
         std::snprintf(where, sizeof where, "atoms %ld and %ld", static_cast<long>(lmp->atom->tag[d.i]),
                       static_cast<long>(lmp->atom->tag[d.j]));
     endRunOnThisRank(lmp, FLERR,
-                     std::string(who) + ": failed for " + where + " at step " +
-                         std::to_string(static_cast<long long>(lmp->update->ntimestep)) + ": " +
-                         granbond_last_error_message());
+                     std::string(who) + ": " + where + " at step " +
+                         std::to_string(static_cast<long long>(lmp->update->ntimestep)) + ": " + coreReason());
 }
 
 // ------------------------------------------------------------ model voigt
 //
-//   pair_style gran model voigt [noAttraction on|off] tangential ...
+//   pair_style gran model voigt [switches of the normal part] tangential ...
 //
-// Properties (fix property/global, peratomtypepair, as hooke/stiffness with
-// absolute_damping on): kn, gamman_abs (its own law), kt, gammat_abs (handed
-// to whichever tangential/rolling model follows through sidata, so stock
-// `tangential history` works after it). noAttraction (default on): clamp the
-// normal force at zero.
+// The normal part of the core's Voigt table (docs/reference/voigt.md): its
+// per-type-pair properties and switches. The tangential part's spring and
+// dashpot are read as well, to be handed to whichever tangential or rolling
+// model follows through sidata, so stock `tangential history` works after
+// it.
 
 VoigtNormal::VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup, ContactModelBase *cmb) :
     NormalModelBase(lmp, hsetup, cmb),
     owner_(cmb),
-    k_n_(0),
-    k_t_(0),
-    gamma_n_(0),
-    gamma_t_(0),
-    no_attraction_(true),
+    deck_(partBit(GB_CONTACT_PART_NORMAL), partBit(GB_CONTACT_PART_TANGENTIAL)),
+    stride_(0),
     fused_(false),
     fusedRolling_(false),
     wall_(cmb->is_wall()),
@@ -269,33 +375,21 @@ VoigtNormal::~VoigtNormal() { VoigtContactShare::detach(owner_); }
 
 void VoigtNormal::registerSettings(::Settings &settings)
 {
-    settings.registerOnOff("noAttraction", no_attraction_, true);
+    deck_.registerSettings(settings);
     share_->registerSettings(settings);
 }
 
 void VoigtNormal::connectToProperties(::PropertyRegistry &registry)
 {
     const char *caller = "model voigt";
-    registry.registerProperty("k_n", &MODEL_PARAMS::createKn);
-    registry.registerProperty("k_t", &MODEL_PARAMS::createKt);
-    registry.registerProperty("gamman_abs", &MODEL_PARAMS::createGammanAbs);
-    registry.registerProperty("gammat_abs", &MODEL_PARAMS::createGammatAbs);
-    registry.connect("k_n", k_n_, caller);
-    registry.connect("k_t", k_t_, caller);
-    registry.connect("gamman_abs", gamma_n_, caller);
-    registry.connect("gammat_abs", gamma_t_, caller);
-    double **kn = k_n_, **gn = gamma_n_;
-    const int no_attraction = no_attraction_ ? 1 : 0;
-    // k_t and gamma_t are only handed on (sidata); the tangential model that
-    // uses them checks them
-    auto own = [=](GbVoigtParams &p, int a, int b) {
-        p.k_n = kn[a][b];
-        p.gamma_n = gn[a][b];
-        p.no_attraction = no_attraction;
-    };
+    deck_.connect(registry, caller);
     const int ntypes = registry.max_type();
-    models_.build(error, caller, ntypes, typePairParams(ntypes, false, own));
-    share_->contribute(error, ntypes, own);
+    stride_ = ntypes + 1;
+    const unsigned own = deck_.owns();
+    models_.build(error, caller, ntypes, deck_.all(error, caller, ntypes, own, own));
+    // the tangential part is only handed on (sidata)
+    handed_ = deck_.all(error, caller, ntypes, own | partBit(GB_CONTACT_PART_TANGENTIAL), 0);
+    share_->contribute(error, caller, ntypes, deck_);
     fused_ = share_->fused();   // every sub-model exists by now
     fusedRolling_ = share_->fusedRolling();
     checkPending_ = true;
@@ -314,17 +408,17 @@ void VoigtNormal::checkTimestep()
     if (granbond_voigt_timestep_check(table.data(), ntypes, bodies.data(), update->dt, update->unit_style,
                                       "model voigt", &report) !=
         GB_STATUS_OK)
-        endRun(error, FLERR, std::string("model voigt: ") + granbond_last_error_message());
+        endRun(error, FLERR, std::string("model voigt: ") + coreReason());
     if (timestepWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
 }
 
 void VoigtNormal::handOn(SurfacesIntersectData &sidata)
 {
-    const int a = sidata.itype, b = sidata.jtype;
-    sidata.kn = k_n_[a][b];
-    sidata.kt = k_t_[a][b];
-    sidata.gamman = gamma_n_[a][b];
-    sidata.gammat = gamma_t_[a][b];
+    const GbVoigtParams &p = handed_[sidata.itype * stride_ + sidata.jtype];
+    sidata.kn = p.k_n;
+    sidata.kt = p.k_t;
+    sidata.gamman = p.gamma_n;
+    sidata.gammat = p.gamma_t;
 }
 
 void VoigtNormal::normalPart(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -457,8 +551,9 @@ template class VoigtHistoryModel<RollingModelBase>;
 // ------------------------------------------------------------ tangential voigt
 //
 // Cundall-Strack spring-dashpot with the Coulomb cap, after any normal model
-// (the cap uses the normal force it left in sidata.Fn). Properties: kt,
-// gammat_abs, coefficientFriction. History: the spring elongation.
+// (the cap uses the normal force it left in sidata.Fn). Properties: the
+// tangential part of the core's Voigt table. History: the spring
+// elongation.
 
 VoigtTangential::VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                                  ContactModelBase *cmb) :
@@ -466,9 +561,7 @@ VoigtTangential::VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHisto
                                            slotNamed(GB_STATE_KIND_CONTACT, "tangential_spring_x", lmp->error),
                                            "voigt_tangential_spring",
                                            CONTACT_TANGENTIAL_MODEL),
-    k_t_(0),
-    gamma_t_(0),
-    mu_(0)
+    deck_(partBit(GB_CONTACT_PART_TANGENTIAL), 0)
 {
     share_->tangential_offset = offset_;
 }
@@ -476,21 +569,10 @@ VoigtTangential::VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHisto
 void VoigtTangential::connectToProperties(::PropertyRegistry &registry)
 {
     const char *caller = "tangential voigt";
-    registry.registerProperty("k_t", &MODEL_PARAMS::createKt);
-    registry.registerProperty("gammat_abs", &MODEL_PARAMS::createGammatAbs);
-    registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict);
-    registry.connect("k_t", k_t_, caller);
-    registry.connect("gammat_abs", gamma_t_, caller);
-    registry.connect("coeffFrict", mu_, caller);
-    double **kt = k_t_, **gt = gamma_t_, **mu = mu_;
-    auto own = [=](GbVoigtParams &p, int a, int b) {
-        p.k_t = kt[a][b];
-        p.gamma_t = gt[a][b];
-        p.mu = mu[a][b];
-    };
+    deck_.connect(registry, caller);
     const int ntypes = registry.max_type();
-    models_.build(error, caller, ntypes, typePairParams(ntypes, false, own));
-    share_->contribute(error, ntypes, own);
+    models_.build(error, caller, ntypes, deck_.all(error, caller, ntypes, deck_.owns(), deck_.owns()));
+    share_->contribute(error, caller, ntypes, deck_);
     skip_ = share_->fused();   // every sub-model exists by now
 }
 
@@ -512,25 +594,8 @@ void VoigtTangential::intersect(const SurfacesIntersectData &sidata, ForceData &
 // ------------------------------------------------------------ rolling_friction voigt
 //
 // Iwashita-Oda rolling resistance (spring, dashpot, cap mu_r |Fn| R*, plus
-// viscous rolling resistance), after any normal model. Properties:
-// coefficientRollingFriction (mu_r), rollingStiffness (k_r, N m/rad),
-// rollingDamping (gamma_r, N m s/rad), rollingViscousDamping (eta_r, N m s).
-// History: the rolling angle.
-
-namespace {
-MatrixProperty *createRollingStiffness(PropertyRegistry &registry, const char *caller, bool)
-{
-    return MODEL_PARAMS::createPerTypePairProperty(registry, "rollingStiffness", caller);
-}
-MatrixProperty *createRollingDamping(PropertyRegistry &registry, const char *caller, bool)
-{
-    return MODEL_PARAMS::createPerTypePairProperty(registry, "rollingDamping", caller);
-}
-MatrixProperty *createRollingViscousDamping(PropertyRegistry &registry, const char *caller, bool)
-{
-    return MODEL_PARAMS::createPerTypePairProperty(registry, "rollingViscousDamping", caller);
-}
-}
+// viscous rolling resistance), after any normal model. Properties: the
+// rolling part of the core's Voigt table. History: the rolling angle.
 
 VoigtRolling::VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                            ContactModelBase *cmb) :
@@ -538,10 +603,7 @@ VoigtRolling::VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetu
                                         slotNamed(GB_STATE_KIND_CONTACT, "rolling_angle_x", lmp->error),
                                         "voigt_rolling_angle",
                                         CONTACT_ROLLING_MODEL),
-    mu_r_(0),
-    k_r_(0),
-    gamma_r_(0),
-    eta_r_(0)
+    deck_(partBit(GB_CONTACT_PART_ROLLING), 0)
 {
     share_->rolling_offset = offset_;
 }
@@ -549,26 +611,10 @@ VoigtRolling::VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetu
 void VoigtRolling::connectToProperties(::PropertyRegistry &registry)
 {
     const char *caller = "rolling_friction voigt";
-    // registry keys of our own, so they cannot meet the stock scalar
-    // "rollingStiffness" of other rolling models
-    registry.registerProperty("coeffRollFrict", &MODEL_PARAMS::createCoeffRollFrict);
-    registry.registerProperty("voigt_rollingStiffness", &createRollingStiffness);
-    registry.registerProperty("voigt_rollingDamping", &createRollingDamping);
-    registry.registerProperty("voigt_rollingViscousDamping", &createRollingViscousDamping);
-    registry.connect("coeffRollFrict", mu_r_, caller);
-    registry.connect("voigt_rollingStiffness", k_r_, caller);
-    registry.connect("voigt_rollingDamping", gamma_r_, caller);
-    registry.connect("voigt_rollingViscousDamping", eta_r_, caller);
-    double **mu_r = mu_r_, **k_r = k_r_, **gamma_r = gamma_r_, **eta_r = eta_r_;
-    auto own = [=](GbVoigtParams &p, int a, int b) {
-        p.mu_r = mu_r[a][b];
-        p.k_r = k_r[a][b];
-        p.gamma_r = gamma_r[a][b];
-        p.eta_r = eta_r[a][b];
-    };
+    deck_.connect(registry, caller);
     const int ntypes = registry.max_type();
-    models_.build(error, caller, ntypes, typePairParams(ntypes, true, own));
-    share_->contribute(error, ntypes, own);
+    models_.build(error, caller, ntypes, deck_.all(error, caller, ntypes, deck_.owns(), deck_.owns()));
+    share_->contribute(error, caller, ntypes, deck_);
     skip_ = share_->fusedRolling();   // every sub-model exists by now
 }
 

@@ -22,6 +22,7 @@
 #include "granbond.h"
 #include "run_checks.h"
 
+#include <deque>
 #include <vector>
 
 namespace granbond {
@@ -54,6 +55,38 @@ private:
     std::vector<GbVoigtModel *> models_;
 };
 
+// The parts of the Voigt contact (granbond_voigt_parameter_part) as bits.
+inline unsigned partBit(GbContactPart part) { return 1u << static_cast<unsigned>(part); }
+
+// What a voigt sub-model reads from the deck, row by row of the core's
+// Voigt table: the per-type-pair properties of the parts it reads (by the
+// row's LIGGGHTS name) and the switches of the parts it owns (registered
+// with the engine's settings).
+class VoigtDeck {
+public:
+    VoigtDeck(unsigned owns, unsigned reads);
+
+    void registerSettings(::Settings &settings);
+    void connect(::PropertyRegistry &registry, const char *caller);
+    // The rows of the parts in `parts` for types a, b written into `p`; the
+    // switches that say a part is present (LiggghtsSource FIXED) on for
+    // the parts in `present`. The core refuses a value out of range.
+    void fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, int a, int b, unsigned parts,
+              unsigned present) const;
+    // `fill` for every pair of types 1..ntypes, over the core's defaults.
+    std::vector<GbVoigtParams> all(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts,
+                                   unsigned present) const;
+    unsigned owns() const { return owns_; }
+
+private:
+    unsigned owns_, reads_;
+    std::vector<double **> values_;   // per row: the connected property, or null
+    std::deque<bool> switches_;       // per row: the engine's Settings take a bool&
+};
+
+// Writes the switches that say a part is present into `p`.
+void setPresentParts(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, unsigned present);
+
 class VoigtContactShare {
 public:
     // Joins the share of ContactModel `owner`; `*first` tells whether the
@@ -64,13 +97,12 @@ public:
     // Writes each type pair's parameters owned by the caller into the
     // combined set, and rebuilds the combined models when they are used.
     // Every sub-model has validated its own parameters by then.
-    template<class Fill>
-    void contribute(LAMMPS_NS::Error *error, int ntypes, Fill fill)
+    void contribute(LAMMPS_NS::Error *error, const char *caller, int ntypes, const VoigtDeck &deck)
     {
         resize(ntypes);
         for (int a = 1; a <= ntypes; a++)
             for (int b = 1; b <= ntypes; b++)
-                fill(params_[a * stride_ + b], a, b);
+                deck.fill(error, caller, params_[a * stride_ + b], a, b, deck.owns(), 0);
         rebuild(error);
     }
 
@@ -164,8 +196,10 @@ private:
     const void *owner_;
     VoigtContactShare *share_;
     VoigtModelTable models_;
-    double **k_n_, **k_t_, **gamma_n_, **gamma_t_;
-    bool no_attraction_;
+    VoigtDeck deck_;
+    // per type pair, what handOn passes on: the normal and tangential parts
+    std::vector<GbVoigtParams> handed_;
+    int stride_;
     bool fused_, fusedRolling_;   // share_->fused(), fusedRolling(), known once connected
     const bool wall_;
     bool checkPending_;           // a run starts: check at its first pass
@@ -216,6 +250,11 @@ public:
     VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                     LIGGGHTS::ContactModels::ContactModelBase *cmb);
 
+    void registerSettings(::Settings &settings)
+    {
+        deck_.registerSettings(settings);
+        share_->registerSettings(settings);
+    }
     void connectToProperties(::PropertyRegistry &registry);
     // inline: in voigt x voigt the call costs only the flag and the test
     void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -227,7 +266,7 @@ public:
 private:
     void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
 
-    double **k_t_, **gamma_t_, **mu_;
+    VoigtDeck deck_;
 };
 
 class VoigtRolling : public VoigtHistoryModel<LIGGGHTS::ContactModels::RollingModelBase> {
@@ -235,6 +274,11 @@ public:
     VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                  LIGGGHTS::ContactModels::ContactModelBase *cmb);
 
+    void registerSettings(::Settings &settings)
+    {
+        deck_.registerSettings(settings);
+        share_->registerSettings(settings);
+    }
     void connectToProperties(::PropertyRegistry &registry);
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
@@ -245,7 +289,7 @@ public:
 private:
     void intersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
 
-    double **mu_r_, **k_r_, **gamma_r_, **eta_r_;
+    VoigtDeck deck_;
 };
 
 }

@@ -125,6 +125,17 @@ typedef int32_t GbBreakMode;
 #endif // __cplusplus
 
 /**
+ * The part of the contact whose law reads a parameter (the sections of
+ * docs/models/voigt.md): an engine that composes the contact from
+ * sub-models (LIGGGHTS) hands each part its own values.
+ */
+typedef enum GbContactPart {
+  GB_CONTACT_PART_NORMAL = 0,
+  GB_CONTACT_PART_TANGENTIAL = 1,
+  GB_CONTACT_PART_ROLLING = 2,
+} GbContactPart;
+
+/**
  * Where a LIGGGHTS deck gives a value.
  */
 typedef enum GbLiggghtsSource {
@@ -545,6 +556,31 @@ typedef struct GbTangentialOutput {
   double torque_j[3];
   int32_t sliding;
 } GbTangentialOutput;
+
+/**
+ * One phrase (strings in static storage).
+ */
+typedef struct GbPhrase {
+  /**
+   * The opening words, space-separated; "" for the values that follow
+   * the model's name.
+   */
+  const char *words;
+  /**
+   * The phrase this one may only follow directly; "" for anywhere.
+   */
+  const char *follows;
+  /**
+   * Keywords of the rows that take the phrase's values, space-separated,
+   * in the order a deck writes the values.
+   */
+  const char *reads;
+  /**
+   * What the phrase itself sets after its values: keyword and value
+   * pairs, space-separated ("stress_break 1").
+   */
+  const char *sets;
+} GbPhrase;
 
 /**
  * One row of a parameter table (strings in static storage).
@@ -1364,6 +1400,33 @@ enum GbStatus granbond_contact_frame_normal(const double *n,
                                             const double *w_i,
                                             const double *w_j,
                                             struct GbContactFrame *frame);
+
+/**
+ * Phrase `id` of the `bond/nonlinear` clause; `GB_STATUS_INVALID_ARGUMENT`
+ * past the last one.
+ *
+ * # Safety
+ * `phrase` must be null or valid for writes.
+ */
+enum GbStatus granbond_bond_phrase_info(size_t id, struct GbPhrase *phrase);
+
+/**
+ * Phrase `id` of the `voigt` clause; `GB_STATUS_INVALID_ARGUMENT` past the
+ * last one.
+ *
+ * # Safety
+ * `phrase` must be null or valid for writes.
+ */
+enum GbStatus granbond_voigt_phrase_info(size_t id, struct GbPhrase *phrase);
+
+/**
+ * The part of the Voigt contact whose law reads parameter `id` (a row of
+ * `granbond_voigt_parameter_info`).
+ *
+ * # Safety
+ * `part` must be null or valid for writes.
+ */
+enum GbStatus granbond_voigt_parameter_part(size_t id, enum GbContactPart *part);
 
 /**
  * Message of the last failed call on this thread ("" after a success).

@@ -220,6 +220,24 @@ pub fn check_ranges<T>(model: &str, table: &[ParameterInfo<T>], params: &T) -> R
     Ok(())
 }
 
+/// A phrase of a LAMMPS deck: words that open it and the values that follow
+/// them, each stored in the table row `reads` names, in order; then the rows
+/// of `sets` take the values the phrase implies. A keyword without a phrase
+/// is a row's own keyword with one value. The rules of a deck's grammar
+/// (which switch a break mode means, what a creation step implies) are
+/// these phrases, so an engine's parser only looks words up.
+pub struct Phrase {
+    /// The opening words, space-separated; empty for the values that follow
+    /// the model's name in `pair_coeff`.
+    pub words: &'static str,
+    /// A phrase this one may only follow directly (empty: anywhere).
+    pub follows: &'static str,
+    /// Rows that take the phrase's values, in the order they are written.
+    pub reads: &'static [&'static str],
+    /// Rows set by the phrase itself, after its values.
+    pub sets: &'static [(&'static str, f64)],
+}
+
 /// `parameter_table!(NAME: Type { field, "liggghts name", Source, "unit", Range, NEED; ... })`
 /// defines the table `NAME` for the struct `Type`; `NEED` is a
 /// [`Need<Type>`](Need) constant in scope.

@@ -317,3 +317,106 @@ fn the_documented_parameter_table_agrees_with_the_core() {
         }
     }
 }
+
+/// The phrases of a table name its rows, with values the rows admit, and a
+/// phrase that follows another follows one that exists.
+fn check_phrases<T>(
+    table: &[granbond::parameters::ParameterInfo<T>],
+    phrases: &[granbond::parameters::Phrase],
+) {
+    use granbond::parameters::find;
+    for p in phrases {
+        for name in p.reads {
+            assert!(find(table, name).is_some(), "'{}' reads {name}", p.words);
+        }
+        for (name, value) in p.sets {
+            let (_, row) = find(table, name).unwrap_or_else(|| panic!("'{}' sets {name}", p.words));
+            assert!(row.range.admits(*value), "'{}' sets {name} = {value}", p.words);
+        }
+        assert!(
+            p.follows.is_empty() || phrases.iter().any(|q| q.words == p.follows),
+            "'{}' follows '{}'",
+            p.words,
+            p.follows
+        );
+    }
+}
+
+#[test]
+fn every_phrase_reads_and_sets_rows_of_its_table() {
+    check_phrases(PARAMETERS, granbond::bond::PHRASES);
+    check_phrases(VOIGT_PARAMETERS, granbond::contact::VOIGT_PHRASES);
+}
+
+/// After a phrase's own settings, the model reads every value the phrase
+/// reads: a break mode takes the limits of that mode, a tension ratio is
+/// read once the phrase switched it on, rolling takes the rolling values.
+#[test]
+fn a_phrase_reads_the_values_its_settings_make_the_model_read() {
+    use granbond::parameters::{find, set_by_name, ParameterInfo, Phrase};
+    fn check<T: Default>(model: &str, table: &[ParameterInfo<T>], phrases: &[Phrase]) {
+        for p in phrases {
+            let mut params = T::default();
+            let mut chain: Vec<&Phrase> = vec![p];
+            while let Some(before) = phrases
+                .iter()
+                .find(|q| !chain[0].follows.is_empty() && q.words == chain[0].follows)
+            {
+                chain.insert(0, before);
+            }
+            for q in chain {
+                for (name, value) in q.sets {
+                    set_by_name(model, table, &mut params, name, *value).unwrap();
+                }
+            }
+            for name in p.reads {
+                assert!(
+                    find(table, name).unwrap().1.needed(&params),
+                    "'{}': {name} unread",
+                    p.words
+                );
+            }
+        }
+    }
+    check("bond/nonlinear", PARAMETERS, granbond::bond::PHRASES);
+    check("voigt", VOIGT_PARAMETERS, granbond::contact::VOIGT_PHRASES);
+}
+
+#[test]
+fn a_break_mode_sets_the_stress_switch() {
+    let mode = |words: &str| {
+        granbond::bond::PHRASES
+            .iter()
+            .find(|p| p.words == words)
+            .map(|p| p.sets.to_vec())
+    };
+    assert_eq!(mode("break distance"), Some(vec![("stress_break", 0.0)]));
+    assert_eq!(mode("break stress"), Some(vec![("stress_break", 1.0)]));
+    assert_eq!(mode("create_step"), Some(vec![("create_always", 0.0)]));
+}
+
+#[test]
+fn every_voigt_row_has_its_part() {
+    let parts: Vec<&str> = granbond::contact::VOIGT_PARTS
+        .iter()
+        .map(|(name, _)| *name)
+        .collect();
+    let rows: Vec<&str> = VOIGT_PARAMETERS.iter().map(|r| r.name).collect();
+    assert_eq!(parts, rows);
+}
+
+/// Rolling resistance reads exactly the rolling part's values.
+#[test]
+fn the_rolling_part_is_what_rolling_resistance_reads() {
+    use granbond::contact::ContactPart;
+    let off = VoigtParams {
+        rolling: 0,
+        ..VoigtParams::default()
+    };
+    for (row, (_, part)) in VOIGT_PARAMETERS.iter().zip(granbond::contact::VOIGT_PARTS) {
+        let only_with_rolling = !row.needed(&off) && row.needed(&VoigtParams::default());
+        if row.name != "rolling" {
+            assert_eq!(only_with_rolling, *part == ContactPart::Rolling, "{}", row.name);
+        }
+    }
+}

@@ -2,7 +2,8 @@
 
 Each case runs decks/bond_pull.in with one value overridden and expects: a
 non-zero exit code, no signal, and an ERROR line naming the property (the
-LIGGGHTS-INL fix property/global name users write in their decks).
+LIGGGHTS-INL fix property/global name users write in their decks) and the
+command (`cohesion bond/nonlinear`), and no C entry of the core.
 
 usage: check_bad_input.py --engine EXE --workdir DIR
 """
@@ -31,7 +32,7 @@ def check_all(engine, workdir):
     for index, (label, variables, name) in enumerate(CASES):
         rc, text = run_deck([engine], "bond_pull.in", os.path.join(workdir, f"case{index}"),
                             dict(variables, nrun=10))
-        judge_refusal(label, rc, text, name, failures)
+        judge_refusal(label, rc, text, name, failures, command="cohesion bond/nonlinear")
     if failures:
         raise Failure("\n".join(failures))
 

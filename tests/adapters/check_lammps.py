@@ -275,7 +275,8 @@ def check_clear(a, workdir):
 
 
 BAD = [
-    # (label, pair_coeff arguments after "* *", text the ERROR line must contain)
+    # (label, pair_coeff arguments after "* *", text the ERROR line must contain;
+    # it names the deck's command too, COMMAND below)
     ("unknown bond keyword", f"{VOIGT} bond/nonlinear {BOND} k_fnx 1e9 {BREAK['distance']}", "k_fnx"),
     ("value not a number", f"{VOIGT} bond/nonlinear {BOND} k_fn2 abc {BREAK['distance']}", "k_fn2"),
     ("negative stiffness (core)", f"{VOIGT} bond/nonlinear {BOND} k_fn2 -1e9 {BREAK['distance']}", "k_fn2"),
@@ -296,15 +297,20 @@ BAD = [
 ]
 
 
+# The command a BAD case's error names: pair_coeff, but for the time-step
+# check of the run (the pair style's, with the type pair in its message).
+COMMAND = {"lambda 1e300: no time-step estimate (core)": "pair granbond (bond/nonlinear)"}
+
+
 def check_bad_input(a, workdir):
     failures = []
     for index, (label, args, name) in enumerate(BAD):
         d = os.path.join(workdir, f"case{index}")
         model = write_model(d, ["pair_style granbond", f"pair_coeff * * {args}"])
         rc, text = run_lammps([a.engine], "pair_move.in", d, {"model": model, "nrun": 10, "out": "pull.txt"})
-        judge_refusal(label, rc, text, name, failures)
+        judge_refusal(label, rc, text, name, failures, command=COMMAND.get(label, "pair_coeff"))
     rc, text = run_lammps([a.engine], "coincident.in", os.path.join(workdir, "coincident"), {})
-    judge_refusal("two spheres at one point", rc, text, "coincident centres", failures)
+    judge_refusal("two spheres at one point", rc, text, "coincident centres", failures, command="pair_style granbond")
     d = os.path.join(workdir, "hybrid")
     model = write_model(d, ["pair_style hybrid granbond granbond", f"pair_coeff * * granbond 1 {VOIGT}"])
     rc, text = run_lammps([a.engine], "pair_move.in", d, {"model": model, "nrun": 10, "out": "pull.txt"})

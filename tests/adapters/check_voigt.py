@@ -15,7 +15,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 import liggghts_run  # noqa: E402
-from liggghts_run import Failure, read_table  # noqa: E402
+from liggghts_run import Failure, names_a_core_entry, read_table  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DECKS = os.path.join(HERE, "decks")
@@ -178,6 +178,10 @@ def bad_values_are_named(args):
         errors = [l for l in text.splitlines() if "ERROR" in l]
         expect(rc != 0 and errors, f"{name} = -1 was accepted")
         expect(any(f"({name})" in l for l in errors), f"{name} = -1: error does not name it: {errors}")
+        expect(any(f"({name})" in l and " voigt (" in l for l in errors),
+               f"{name} = -1: error does not name the sub-model: {errors}")
+        expect(not any(names_a_core_entry(l) for l in errors),
+               f"{name} = -1: error names a C entry of the core: {errors}")
 
 
 def wall_sliding_turns_to_rolling(args):

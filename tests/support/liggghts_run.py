@@ -1,6 +1,7 @@
 """Runs a LIGGGHTS deck for the engine-level tests (Python 3 stdlib only)."""
 
 import os
+import re
 import subprocess
 import sys
 
@@ -49,14 +50,27 @@ def run_ok(command, deck, workdir, variables=None, env=None):
     return text
 
 
-def judge_refusal(label, rc, text, name, failures):
-    """A bad-input run must fail with an ERROR line naming `name`; appends
-    to `failures` what went wrong, or prints the error it gave."""
+def names_a_core_entry(line):
+    """Whether an ERROR line names a C entry of the core (granbond_...),
+    which no deck writes; the source location the engine appends is not
+    the message."""
+    message = line.rsplit(" (", 1)[0] if line.endswith(")") else line
+    return re.search(r"\bgranbond_[a-z_]+", message) is not None
+
+
+def judge_refusal(label, rc, text, name, failures, command=None):
+    """A bad-input run must fail with an ERROR line naming `name` (and the
+    deck's `command`, when given) and no C entry of the core; appends to
+    `failures` what went wrong, or prints the error it gave."""
     errors = [line for line in text.splitlines() if line.startswith("ERROR")]
     if rc == 0:
         failures.append(f"{label}: the run succeeded")
     elif not any(name in line for line in errors):
         failures.append(f"{label}: no ERROR line names {name}; got {errors or text[-1500:]}")
+    elif command and not any(name in line and command in line for line in errors):
+        failures.append(f"{label}: the ERROR line naming {name} does not name the command {command!r}: {errors}")
+    elif any(names_a_core_entry(line) for line in errors):
+        failures.append(f"{label}: the ERROR line names a C entry of the core, not the deck's words: {errors}")
     else:
         print(f"ok: {label}: exit {rc}: {errors[0]}")
 

@@ -107,7 +107,7 @@ impl Default for BondParams {
 }
 
 pub use crate::parameters::ParameterError;
-use crate::parameters::{check_ranges, refuse, Need};
+use crate::parameters::{check_ranges, refuse, Need, Phrase};
 
 const MODEL: &str = "bond/nonlinear";
 
@@ -182,6 +182,42 @@ crate::parameter_table!(PARAMETERS: BondParams {
     twist, "normalTorqueStress", Switch, "switch", Switch, ALWAYS;
     bend, "shearTorqueStress", Switch, "switch", Switch, ALWAYS;
 });
+
+// The `bond/nonlinear` phrases of `pair_coeff` (docs/reference/pair_granbond.md):
+// a break mode is the stress switch, a tension ratio switches the ratio on,
+// a creation step means creation at that step only.
+pub const PHRASES: &[Phrase] = &[
+    Phrase {
+        words: "break distance",
+        follows: "",
+        reads: &["max_distance"],
+        sets: &[("stress_break", 0.0)],
+    },
+    Phrase {
+        words: "break stress",
+        follows: "",
+        reads: &["max_sigma", "max_tau"],
+        sets: &[("stress_break", 1.0)],
+    },
+    Phrase {
+        words: "ratio",
+        follows: "break stress",
+        reads: &["tension_compression_ratio"],
+        sets: &[("use_ratio", 1.0)],
+    },
+    Phrase {
+        words: "smooth_damping",
+        follows: "",
+        reads: &["damping_smooth"],
+        sets: &[],
+    },
+    Phrase {
+        words: "create_step",
+        follows: "",
+        reads: &["create_step"],
+        sets: &[("create_always", 0.0)],
+    },
+];
 
 impl BondParams {
     pub fn switch(v: i32) -> bool {

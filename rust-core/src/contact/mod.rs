@@ -12,5 +12,5 @@ pub mod state;
 pub mod tangential;
 
 pub use model::{sphere_plane, sphere_sphere, ContactFrame, Plane, TangentialLoad, VoigtModel};
-pub use params::{VoigtParams, VOIGT_PARAMETERS};
+pub use params::{ContactPart, VoigtParams, VOIGT_PARAMETERS, VOIGT_PARTS, VOIGT_PHRASES};
 pub use state::{ContactOutput, ContactState, CONTACT_SLOTS, CONTACT_STATE_LEN};

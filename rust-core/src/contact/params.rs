@@ -1,7 +1,7 @@
 //! Parameters of the Voigt contact, with the defaults of
 //! docs/models/voigt.md's parameter table.
 
-use crate::parameters::{check_ranges, Need, ParameterError};
+use crate::parameters::{check_ranges, Need, ParameterError, Phrase};
 
 const MODEL: &str = "voigt";
 
@@ -73,6 +73,56 @@ crate::parameter_table!(VOIGT_PARAMETERS: VoigtParams {
     no_attraction, "noAttraction", Switch, "switch", Switch, ALWAYS;
     rolling, "rolling_friction voigt", Fixed, "switch", Switch, ALWAYS;
 });
+
+/// The part of the contact whose law reads a parameter (the sections of
+/// docs/models/voigt.md): an engine that composes the contact from
+/// sub-models (LIGGGHTS) hands each part its own values.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ContactPart {
+    Normal = 0,
+    Tangential = 1,
+    Rolling = 2,
+}
+
+/// The part of each row of [`VOIGT_PARAMETERS`], in its order.
+pub const VOIGT_PARTS: &[(&str, ContactPart)] = &[
+    ("k_n", ContactPart::Normal),
+    ("gamma_n", ContactPart::Normal),
+    ("k_t", ContactPart::Tangential),
+    ("gamma_t", ContactPart::Tangential),
+    ("mu", ContactPart::Tangential),
+    ("k_r", ContactPart::Rolling),
+    ("gamma_r", ContactPart::Rolling),
+    ("mu_r", ContactPart::Rolling),
+    ("eta_r", ContactPart::Rolling),
+    ("no_attraction", ContactPart::Normal),
+    ("rolling", ContactPart::Rolling),
+];
+
+// The `voigt` phrases of `pair_coeff` (docs/reference/pair_granbond.md): the
+// five values after the model's name, rolling resistance with its four, the
+// attraction switch.
+pub const VOIGT_PHRASES: &[Phrase] = &[
+    Phrase {
+        words: "",
+        follows: "",
+        reads: &["k_n", "gamma_n", "k_t", "gamma_t", "mu"],
+        sets: &[("rolling", 0.0)],
+    },
+    Phrase {
+        words: "rolling",
+        follows: "",
+        reads: &["k_r", "gamma_r", "mu_r", "eta_r"],
+        sets: &[("rolling", 1.0)],
+    },
+    Phrase {
+        words: "noattraction",
+        follows: "",
+        reads: &["no_attraction"],
+        sets: &[],
+    },
+];
 
 impl VoigtParams {
     pub fn validate(&self) -> Result<(), ParameterError> {

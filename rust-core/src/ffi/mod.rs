@@ -13,6 +13,7 @@ pub mod bond;
 pub mod checks;
 pub mod contact;
 pub mod contact_geometry;
+pub mod deck;
 pub mod error;
 pub mod fields;
 pub mod guard;

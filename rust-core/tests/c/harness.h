@@ -146,6 +146,7 @@ int test_state_layout(void);
 int test_parameter_tables(void);
 int test_bond_params(void);
 int test_voigt_params(void);
+int test_deck_phrases(void);
 /* bond.c */
 int test_bond_create_and_force(void);
 int test_bond_errors(void);

@@ -7,6 +7,8 @@
 
 #include "harness.h"
 
+#include <stdlib.h>
+
 enum field_type { F_DOUBLE, F_INT64, F_INT32 };
 
 struct field {
@@ -425,5 +427,61 @@ int test_voigt_params(void)
                "granbond_voigt_parameter_name(count)");
     }
 
+    return 0;
+}
+
+/* Every word of a phrase's `reads` and every keyword of its `sets` is a row
+ * the table sets by name, with the phrase's value for `sets`; returns the
+ * number of phrases, or -1. */
+static int check_phrases(const char *what, GbStatus (*phrase)(size_t, GbPhrase *), void *params,
+                         GbStatus (*set)(void *, const char *, double))
+{
+    GbPhrase p;
+    size_t id;
+    for (id = 0; phrase(id, &p) == GB_STATUS_OK; id++) {
+        char words[256], *w;
+        CHECK(p.words && p.follows && p.reads && p.sets, "a phrase's strings are set");
+        CHECK(strlen(p.reads) < sizeof words && strlen(p.sets) < sizeof words, "a phrase fits the buffer");
+        strcpy(words, p.reads);
+        for (w = strtok(words, " "); w; w = strtok(NULL, " "))
+            if (set(params, w, 0.0) != GB_STATUS_OK && set(params, w, 1.0) != GB_STATUS_OK) {
+                fprintf(stderr, "%s phrase '%s' reads '%s', which its table lacks\n", what, p.words, w);
+                return -1;
+            }
+        strcpy(words, p.sets);
+        for (w = strtok(words, " "); w; w = strtok(NULL, " ")) {
+            const char *value = strtok(NULL, " ");
+            CHECK(value != NULL, "a phrase sets keyword and value pairs");
+            EXPECT_OK(set(params, w, atof(value)), "a phrase's setting");
+        }
+    }
+    EXPECT(phrase(id, &p), GB_STATUS_INVALID_ARGUMENT, "phrase past the last one");
+    return (int)id;
+}
+
+int test_deck_phrases(void)
+{
+    GbBondParams b;
+    GbVoigtParams v;
+    GbPhrase p;
+    GbContactPart part = GB_CONTACT_PART_ROLLING;
+    int n;
+    granbond_bond_params_default(&b);
+    granbond_voigt_params_default(&v);
+    n = check_phrases("bond", granbond_bond_phrase_info, &b, bond_set);
+    CHECK(n > 0, "the bond has phrases");
+    n = check_phrases("voigt", granbond_voigt_phrase_info, &v, voigt_set);
+    CHECK(n > 0, "the voigt contact has phrases");
+    EXPECT_OK(granbond_bond_phrase_info(0, &p), "bond phrase 0");
+    CHECK(strcmp(p.words, "break distance") == 0 && strcmp(p.sets, "stress_break 0") == 0,
+          "bond phrase 0: a break distance is the stress switch off");
+    /* the values after the model's name: a phrase without words */
+    EXPECT_OK(granbond_voigt_phrase_info(0, &p), "voigt phrase 0");
+    CHECK(p.words[0] == '\0' && strncmp(p.reads, "k_n ", 4) == 0, "voigt's values start with k_n");
+    EXPECT_OK(granbond_voigt_parameter_part(0, &part), "part of k_n");
+    CHECK(part == GB_CONTACT_PART_NORMAL, "k_n is the normal part's");
+    EXPECT_OK(granbond_voigt_parameter_part(5, &part), "part of k_r");
+    CHECK(part == GB_CONTACT_PART_ROLLING, "k_r is the rolling part's");
+    EXPECT(granbond_voigt_parameter_part(N_VOIGT_FIELDS, &part), GB_STATUS_INVALID_ARGUMENT, "part past the last row");
     return 0;
 }

@@ -38,6 +38,7 @@ use granbond::ffi::bond::{self as fb, AtomArrayPointers};
 use granbond::ffi::checks::{self as fk, CheckReport};
 use granbond::ffi::contact::{self as fc, TangentialOutput};
 use granbond::ffi::contact_geometry as fcg;
+use granbond::ffi::deck::{self as fd, PhraseRow};
 use granbond::ffi::error::{granbond_last_error_message, granbond_last_error_parameter};
 use granbond::ffi::fields::{
     granbond_bond_field_count, granbond_bond_field_info, granbond_bond_fields, granbond_bond_stress_limits,
@@ -58,7 +59,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 65] = [
+pub const ENTRY_POINTS: [&str; 68] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -114,6 +115,9 @@ pub const ENTRY_POINTS: [&str; 65] = [
     "granbond_voigt_params_set",
     "granbond_bond_parameter_needed",
     "granbond_voigt_parameter_needed",
+    "granbond_bond_phrase_info",
+    "granbond_voigt_phrase_info",
+    "granbond_voigt_parameter_part",
     "granbond_last_error_message",
     "granbond_last_error_parameter",
     "granbond_state_len",
@@ -1080,6 +1084,7 @@ impl<'t> Session<'t> {
         if known {
             assert!(id < count, "{function}: OK for id {id} of {count}");
         }
+        self.deck(id, h, bond);
         let name: &[u8] = match input.below(3) {
             0 if known => unsafe { CStr::from_ptr(row.get().keyword) }.to_bytes_with_nul(),
             1 if known => unsafe { CStr::from_ptr(row.get().liggghts_name) }.to_bytes_with_nul(),
@@ -1096,6 +1101,37 @@ impl<'t> Session<'t> {
             self.set_and_need(&BOND_TABLE, id, name_ptr, value, [hp, hn, hd]);
         } else {
             self.set_and_need(&VOIGT_TABLE, id, name_ptr, value, [hp, hn, hd]);
+        }
+    }
+
+    /// The deck's phrase and part of the same id through the same pointer:
+    /// no input of its own, so the corpus reads as before.
+    fn deck(&mut self, id: usize, h: Pointer, bond: bool) {
+        let mut phrase = Place::new(PhraseRow {
+            words: null(),
+            follows: null(),
+            reads: null(),
+            sets: null(),
+        });
+        let (function, status) = if bond {
+            ("granbond_bond_phrase_info", unsafe {
+                fd::granbond_bond_phrase_info(id % 8, phrase.ptr(h))
+            })
+        } else {
+            ("granbond_voigt_phrase_info", unsafe {
+                fd::granbond_voigt_phrase_info(id % 8, phrase.ptr(h))
+            })
+        };
+        if self.answer(function, status) {
+            assert!(!phrase.get().words.is_null() && !phrase.get().reads.is_null());
+        }
+        if !bond {
+            let mut part = Place::new(granbond::contact::ContactPart::Rolling);
+            // SAFETY: null, misaligned or valid pointer.
+            let status = unsafe { fd::granbond_voigt_parameter_part(id, part.ptr(h)) };
+            if self.answer("granbond_voigt_parameter_part", status) {
+                assert!(id < VOIGT_PARAMETERS.len());
+            }
         }
     }
 
