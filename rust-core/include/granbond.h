@@ -49,7 +49,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 11
+#define GRANBOND_ABI_VERSION 12
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -199,7 +199,7 @@ typedef enum GbStateKind {
 typedef enum GbStatus {
   GB_STATUS_OK = 0,
   /**
-   * A required pointer argument was null or misaligned.
+   * A required pointer argument was null.
    */
   GB_STATUS_NULL_POINTER = 1,
   /**
@@ -208,7 +208,8 @@ typedef enum GbStatus {
    */
   GB_STATUS_INVALID_PARAMETER = 2,
   /**
-   * NaN or infinity in positions, velocities or radii.
+   * NaN or infinity in what the caller passed: positions, velocities,
+   * radii, a frame, a state or a number passed by value.
    */
   GB_STATUS_NON_FINITE_INPUT = 3,
   /**
@@ -231,6 +232,16 @@ typedef enum GbStatus {
    * A bug: the call panicked and was stopped at the boundary.
    */
   GB_STATUS_PANIC = 8,
+  /**
+   * A pointer argument is not aligned for the type it points to.
+   */
+  GB_STATUS_MISALIGNED = 9,
+  /**
+   * The result came out NaN or infinite: finite input far outside the
+   * model's range, or (from an unchecked entry) non-finite input the
+   * caller let through. Nothing was written where the entry says so.
+   */
+  GB_STATUS_NON_FINITE_RESULT = 10,
 } GbStatus;
 
 typedef struct GbBondModel GbBondModel;
@@ -252,7 +263,6 @@ typedef struct GbLayout {
   size_t voigt_params;
   size_t pair_kinematics;
   size_t sphere_kinematics;
-  size_t plane;
   size_t bond_output;
   size_t atom_arrays;
   size_t contact_output;
@@ -501,16 +511,6 @@ typedef struct GbContactOutput {
 } GbContactOutput;
 
 /**
- * A plane wall: a point on it, its unit normal towards the particles, and
- * its velocity (walls do not spin).
- */
-typedef struct GbPlane {
-  double point[3];
-  double normal[3];
-  double velocity[3];
-} GbPlane;
-
-/**
  * Where and how deep two bodies touch, how far from each centre the
  * contact point lies, and how the bodies move: everything a contact law
  * needs, for a sphere pair or a sphere on a wall alike.
@@ -527,7 +527,8 @@ typedef struct GbContactFrame {
   double lever_i;
   double lever_j;
   /**
-   * `R*` of the rolling cap.
+   * `R*` of the rolling cap; 0 when built for a model without rolling
+   * (it is read nowhere else, so its division is left out).
    */
   double r_eff;
   double v_i[3];
@@ -698,16 +699,6 @@ void granbond_bond_model_free(struct GbBondModel *model);
  * `granbond_last_error_parameter`).
  */
 size_t granbond_bond_parameter_count(void);
-
-/**
- * LAMMPS keyword and LIGGGHTS name of bond parameter `id` (static storage).
- *
- * # Safety
- * `keyword` and `liggghts_name` must be null or valid for writes.
- */
-enum GbStatus granbond_bond_parameter_name(size_t id,
-                                           const char **keyword,
-                                           const char **liggghts_name);
 
 /**
  * Creates the bond in `state` (`double[GRANBOND_BOND_STATE_LEN]`, all zero
@@ -891,8 +882,9 @@ enum GbStatus granbond_bond_output_store_intact(size_t count,
  * (`GRANBOND_BOND_OUTPUT_LEN` doubles): `force_i`, `torque_i =
  * (sum + diff) / 2`, `torque_j = (sum - diff) / 2`, `sigma`, `tau`; the
  * status intact and no break mode; `normal_force` and `delta`, which the
- * slots do not keep, 0. Slots giving a non-finite load or stress are
- * refused (`GB_STATUS_NON_FINITE_INPUT`), `out` left alone.
+ * slots do not keep, 0. Refused, `out` left alone: a non-finite slot
+ * (`GB_STATUS_NON_FINITE_INPUT`), and slots whose torques overflow
+ * (`GB_STATUS_NON_FINITE_RESULT`).
  *
  * # Safety
  * `slots` must be null or point to `GRANBOND_BOND_OUTPUT_LEN` doubles;
@@ -908,7 +900,8 @@ enum GbStatus granbond_bond_output_load(const double *slots, struct GbBondOutput
  * wall point as `x_j` and `radius_j = 0`: the centre is that point.
  * Refused: non-finite positions (`GB_STATUS_NON_FINITE_INPUT`),
  * `radius_i <= 0`, `radius_j < 0` or not finite
- * (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument.
+ * (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument, and positions
+ * so far apart that the centre overflows (`GB_STATUS_NON_FINITE_RESULT`).
  *
  * # Safety
  * Pointers must be null or valid for three doubles.
@@ -1080,40 +1073,8 @@ enum GbStatus granbond_voigt_compute(const struct GbVoigtModel *model,
                                      struct GbContactOutput *out);
 
 /**
- * `granbond_voigt_compute` over `count` contacts (`states[count *
- * GRANBOND_CONTACT_STATE_LEN]`); stops at the first bad input and writes
- * its index to `failed_index` (if not null; a misaligned one is refused
- * before any contact is advanced).
- *
- * # Safety
- * Pointers must be null or valid for the sizes above.
- */
-enum GbStatus granbond_voigt_compute_batch(const struct GbVoigtModel *model,
-                                           size_t count,
-                                           const struct GbPairKinematics *kinematics,
-                                           double dt,
-                                           double *states,
-                                           struct GbContactOutput *out,
-                                           size_t *failed_index);
-
-/**
- * Advances a sphere-plane contact (the plane's normal points towards the
- * sphere's side and must be a unit vector).
- *
- * # Safety
- * Pointers must be null or valid; `state` holds `GRANBOND_CONTACT_STATE_LEN` doubles.
- */
-enum GbStatus granbond_voigt_compute_plane(const struct GbVoigtModel *model,
-                                           const struct GbSphereKinematics *sphere,
-                                           const struct GbPlane *plane,
-                                           double dt,
-                                           double *state,
-                                           struct GbContactOutput *out);
-
-/**
- * `granbond_voigt_compute` / `granbond_voigt_compute_plane` for a contact
- * whose frame the engine has already built (the fields of the frame
- * `granbond_contact_frame_pair` / `granbond_contact_frame_plane` give),
+ * `granbond_voigt_compute` for a contact whose frame the engine has
+ * already built (the fields of a `GbContactFrame`),
  * handed over one by one, for engines that call once per contact and step
  * and keep the fields in their own arrays: `n` (3 doubles, may have just
  * been written: it is read one double at a time), the overlap, levers and
@@ -1123,13 +1084,12 @@ enum GbStatus granbond_voigt_compute_plane(const struct GbVoigtModel *model,
  * and none is read back.
  *
  * The hot path: no pointer or frame checks, and a success leaves the error
- * record alone. The result is checked: a non-finite force or torque
- * (non-finite input) gives `GB_STATUS_NON_FINITE_INPUT` with a message.
+ * record alone. The result is checked: a non-finite force or torque gives
+ * `GB_STATUS_NON_FINITE_RESULT` with a message.
  * Same physics, same bits as the checked calls given the same frame. The
- * normal and the state are read one double at a time, and the result is
- * checked before it is stored. On a CPU with AVX2 (detected when a model
- * is built) the step runs a copy compiled for AVX2: same bits, fewer
- * instructions.
+ * normal and the state are read one double at a time. On a CPU with AVX2
+ * the step runs a copy compiled for AVX2: same bits, fewer instructions
+ * (`contact::dispatch`).
  *
  * # Safety
  * No pointer may be null. `model` from `granbond_voigt_model_new`, `n` a
@@ -1149,26 +1109,6 @@ enum GbStatus granbond_voigt_compute_fields_unchecked(const struct GbVoigtModel 
                                                       double dt,
                                                       double *state,
                                                       struct GbContactOutput *out);
-
-/**
- * The contact frame (normal, overlap, levers, velocities) of two spheres,
- * for engines that evaluate the Voigt parts separately.
- *
- * # Safety
- * Pointers must be null or valid.
- */
-enum GbStatus granbond_contact_frame_pair(const struct GbPairKinematics *kinematics,
-                                          struct GbContactFrame *frame);
-
-/**
- * The contact frame of a sphere on a plane wall.
- *
- * # Safety
- * Pointers must be null or valid.
- */
-enum GbStatus granbond_contact_frame_plane(const struct GbSphereKinematics *sphere,
-                                           const struct GbPlane *plane,
-                                           struct GbContactFrame *frame);
 
 /**
  * Voigt normal force `k_n delta_n - gamma_n v_n` (clamped at zero when the
@@ -1273,16 +1213,6 @@ enum GbStatus granbond_voigt_critical_timestep(const struct GbVoigtModel *model,
  * Number of rows in the Voigt parameter table.
  */
 size_t granbond_voigt_parameter_count(void);
-
-/**
- * LAMMPS keyword and LIGGGHTS name of Voigt parameter `id` (static storage).
- *
- * # Safety
- * `keyword` and `liggghts_name` must be null or valid for writes.
- */
-enum GbStatus granbond_voigt_parameter_name(size_t id,
-                                            const char **keyword,
-                                            const char **liggghts_name);
 
 /**
  * `granbond_voigt_compute_fields_unchecked` for a touching pair given by
@@ -1401,12 +1331,12 @@ enum GbStatus granbond_bond_field_info(size_t id,
  * (`double[granbond_bond_field_count()]`, in the table's order): its pair
  * record `record` (`granbond_record_layout(with_contact)`) as sphere `i`
  * keeps it, and the centres `x_i`, `x_j` (`double[3]` each) of the two
- * spheres. Refused: non-finite centres (`GB_STATUS_NON_FINITE_INPUT`),
- * coincident ones (`GB_STATUS_INVALID_ARGUMENT`), each naming the
- * argument, and fields that would not be finite (centres whose distance
- * under- or overflows, a record with non-finite numbers:
- * `GB_STATUS_NON_FINITE_INPUT`, naming the field); `values` is then left
- * alone.
+ * spheres. Refused, `values` left alone: non-finite centres or a record
+ * whose bond state or loads hold a non-finite number
+ * (`GB_STATUS_NON_FINITE_INPUT`), coincident centres
+ * (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument, and fields
+ * that come out non-finite (centres whose distance under- or overflows:
+ * `GB_STATUS_NON_FINITE_RESULT`, naming the field).
  *
  * # Safety
  * `model` must be null or a model; `record` null or valid for the
@@ -1585,7 +1515,6 @@ static inline GbLayout granbond_header_layout(void)
     l.voigt_params = sizeof(GbVoigtParams);
     l.pair_kinematics = sizeof(GbPairKinematics);
     l.sphere_kinematics = sizeof(GbSphereKinematics);
-    l.plane = sizeof(GbPlane);
     l.bond_output = sizeof(GbBondOutput);
     l.atom_arrays = sizeof(GbAtomArrays);
     l.contact_output = sizeof(GbContactOutput);

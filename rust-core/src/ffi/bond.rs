@@ -16,7 +16,6 @@ use crate::bond::{
 pub use crate::kinematics::SphereKinematics;
 use crate::kinematics::{bond_centre, PairKinematics};
 use crate::pair_source::{AtomArrays, IndexedPairs};
-use std::ffi::c_char;
 
 /// Fills `params` with the defaults (switches as in the reference, no
 /// stiffness, no breakage).
@@ -68,20 +67,6 @@ pub unsafe extern "C" fn granbond_bond_model_free(model: *mut BondModel) {
 #[no_mangle]
 pub extern "C" fn granbond_bond_parameter_count() -> usize {
     PARAMETERS.len()
-}
-
-/// LAMMPS keyword and LIGGGHTS name of bond parameter `id` (static storage).
-///
-/// # Safety
-/// `keyword` and `liggghts_name` must be null or valid for writes.
-#[entry(keyword: reference_mut, liggghts_name: reference_mut)]
-#[no_mangle]
-pub unsafe extern "C" fn granbond_bond_parameter_name(
-    id: usize,
-    keyword: *mut *const c_char,
-    liggghts_name: *mut *const c_char,
-) -> Status {
-    super::parameters::write_names(super::parameters::bond_rows(), id, keyword, liggghts_name)
 }
 
 /// The bond state as a struct view of a caller's `double[GRANBOND_BOND_STATE_LEN]`.
@@ -394,7 +379,7 @@ pub unsafe extern "C" fn granbond_wall_bond_compute(
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_output_store(out: *const BondOutput, slots: *mut f64) -> Status {
     let stored = store_output(out);
-    kept_finite("a load or stress of `out`", &stored)?;
+    kept_finite(Status::NonFiniteInput, "a load or stress of `out`", &stored)?;
     *slots = stored;
     Ok(())
 }
@@ -442,7 +427,7 @@ pub unsafe extern "C" fn granbond_bond_output_store_intact(
             return Err(store_failed(
                 failed_index,
                 k,
-                kept_finite("a load or stress of `out[k]`", &stored).err(),
+                kept_finite(Status::NonFiniteInput, "a load or stress of `out[k]`", &stored).err(),
             ));
         }
         *(state.wrapping_add(offset) as *mut [f64; BOND_OUTPUT_LEN]) = stored;
@@ -463,8 +448,9 @@ fn store_failed(failed_index: FailedIndex, k: usize, f: Option<Failure>) -> Fail
 /// (`GRANBOND_BOND_OUTPUT_LEN` doubles): `force_i`, `torque_i =
 /// (sum + diff) / 2`, `torque_j = (sum - diff) / 2`, `sigma`, `tau`; the
 /// status intact and no break mode; `normal_force` and `delta`, which the
-/// slots do not keep, 0. Slots giving a non-finite load or stress are
-/// refused (`GB_STATUS_NON_FINITE_INPUT`), `out` left alone.
+/// slots do not keep, 0. Refused, `out` left alone: a non-finite slot
+/// (`GB_STATUS_NON_FINITE_INPUT`), and slots whose torques overflow
+/// (`GB_STATUS_NON_FINITE_RESULT`).
 ///
 /// # Safety
 /// `slots` must be null or point to `GRANBOND_BOND_OUTPUT_LEN` doubles;
@@ -474,8 +460,13 @@ fn store_failed(failed_index: FailedIndex, k: usize, f: Option<Failure>) -> Fail
 pub unsafe extern "C" fn granbond_bond_output_load(slots: *const f64, out: *mut BondOutput) -> Status {
     let loaded = load_output(slots);
     let what = "a load or stress of `slots`";
-    kept_finite(what, slots)?;
-    kept_finite(what, [loaded.torque_i, loaded.torque_j].as_flattened())?;
+    kept_finite(Status::NonFiniteInput, what, slots)?;
+    let torques = "a torque from `slots` (the sum and difference overflow)";
+    kept_finite(
+        Status::NonFiniteResult,
+        torques,
+        [loaded.torque_i, loaded.torque_j].as_flattened(),
+    )?;
     *out = loaded;
     Ok(())
 }
@@ -487,7 +478,8 @@ pub unsafe extern "C" fn granbond_bond_output_load(slots: *const f64, out: *mut 
 /// wall point as `x_j` and `radius_j = 0`: the centre is that point.
 /// Refused: non-finite positions (`GB_STATUS_NON_FINITE_INPUT`),
 /// `radius_i <= 0`, `radius_j < 0` or not finite
-/// (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument.
+/// (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument, and positions
+/// so far apart that the centre overflows (`GB_STATUS_NON_FINITE_RESULT`).
 ///
 /// # Safety
 /// Pointers must be null or valid for three doubles.
@@ -508,19 +500,24 @@ pub unsafe extern "C" fn granbond_bond_centre(
 ) -> Status {
     positive(radius_i + radius_j, "radius_i + radius_j")?;
     let c = bond_centre(x_i, x_j, radius_i, radius_j);
-    kept_finite("the centre of `x_i` and `x_j` (too far apart)", &c)?;
+    kept_finite(
+        Status::NonFiniteResult,
+        "the centre of `x_i` and `x_j` (too far apart)",
+        &c,
+    )?;
     *centre = c;
     Ok(())
 }
 
-/// The numbers an output or position entry gives: finite, else refused
-/// naming `what` (a NaN or infinity passed in, or a sum beyond 1e308).
-fn kept_finite(what: &str, values: &[f64]) -> Result<(), Failure> {
+/// The numbers an output or position entry takes or gives: finite, else
+/// refused as `status` (input or result) naming `what` (a NaN or infinity,
+/// or a sum beyond 1e308).
+fn kept_finite(status: Status, what: &str, values: &[f64]) -> Result<(), Failure> {
     if values.iter().sum::<f64>().is_finite() {
         return Ok(());
     }
     Err(Failure::new(
-        Status::NonFiniteInput,
+        status,
         format!("{what} is not finite or overflows: {values:?}"),
     ))
 }

@@ -1,14 +1,14 @@
 //! Voigt entries that take the geometry an engine's pair loop has (the
 //! separation vector, or the engine's normal and centre distance) and the
-//! radii, a wall written as radius 0: the core builds the frame's normal,
-//! overlap, levers and `R*` ([`crate::contact::geometry`]).
+//! radii, a wall written as radius 0: the core builds the frame
+//! ([`ContactFrame::from_separation`], [`ContactFrame::from_normal`]).
 
-use super::contact::{fields_step, load3};
+use super::contact::non_finite_loads;
 use super::entry;
 use super::error::{record, Failure, Status};
 use super::guard::{reference_mut, vector3};
-use crate::contact::geometry::{from_normal, from_separation, Geometry};
-use crate::contact::{ContactFrame, ContactOutput, VoigtModel};
+use crate::contact::dispatch::{step_normal, step_separation};
+use crate::contact::{ContactFrame, ContactOutput, Motion, VoigtModel};
 use crate::kinematics::{separated, KinematicsError};
 
 /// `granbond_voigt_compute_fields_unchecked` for a touching pair given by
@@ -36,19 +36,16 @@ pub unsafe extern "C" fn granbond_voigt_compute_separation_unchecked(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    let g = from_separation(
-        load3(del as *const [f64; 3]),
-        rsq,
-        radius_i,
-        radius_j,
-        (*model).rolling(),
-    );
-    let status = step(FUNCTION, model, &g, v_i, v_j, w_i, w_j, dt, state, out);
-    if status != Status::Ok && !separated(rsq) {
+    if step_separation(
+        model, del, rsq, radius_i, radius_j, v_i, v_j, w_i, w_j, dt, state, out,
+    ) {
+        return Status::Ok;
+    }
+    if !separated(rsq) {
         // the cause, named (only on the failure path: the step has no branch for it)
         return coincident(FUNCTION);
     }
-    status
+    non_finite_loads(FUNCTION)
 }
 
 /// Records that the centres coincide: the pair has no axis.
@@ -83,60 +80,12 @@ pub unsafe extern "C" fn granbond_voigt_compute_normal_unchecked(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    let g = from_normal(
-        load3(n as *const [f64; 3]),
-        distance,
-        radius_i,
-        radius_j,
-        (*model).rolling(),
-    );
-    step(FUNCTION, model, &g, v_i, v_j, w_i, w_j, dt, state, out)
-}
-
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-unsafe fn step(
-    function: &'static str,
-    model: *const VoigtModel,
-    g: &Geometry,
-    v_i: *const f64,
-    v_j: *const f64,
-    w_i: *const f64,
-    w_j: *const f64,
-    dt: f64,
-    state: *mut f64,
-    out: *mut ContactOutput,
-) -> Status {
-    fields_step(
-        function,
-        model,
-        g.n.as_ptr(),
-        g.overlap,
-        g.lever_i,
-        g.lever_j,
-        g.r_eff,
-        v_i,
-        v_j,
-        w_i,
-        w_j,
-        dt,
-        state,
-        out,
-    )
-}
-
-fn frame(g: Geometry, v_i: [f64; 3], v_j: [f64; 3], w_i: [f64; 3], w_j: [f64; 3]) -> ContactFrame {
-    ContactFrame {
-        n: g.n,
-        overlap: g.overlap,
-        lever_i: g.lever_i,
-        lever_j: g.lever_j,
-        r_eff: g.r_eff,
-        v_i,
-        v_j,
-        w_i,
-        w_j,
+    if step_normal(
+        model, n, distance, radius_i, radius_j, v_i, v_j, w_i, w_j, dt, state, out,
+    ) {
+        return Status::Ok;
     }
+    non_finite_loads(FUNCTION)
 }
 
 /// The contact frame `granbond_voigt_compute_separation_unchecked` builds
@@ -160,13 +109,8 @@ pub unsafe extern "C" fn granbond_contact_frame_separation(
     if !separated(rsq) {
         return Err(KinematicsError::CoincidentCentres.into());
     }
-    *frame = self::frame(
-        from_separation(del, rsq, radius_i, radius_j, true),
-        v_i,
-        v_j,
-        w_i,
-        w_j,
-    );
+    let motion = Motion { v_i, v_j, w_i, w_j };
+    *frame = ContactFrame::from_separation(del, rsq, radius_i, radius_j, true, motion);
     Ok(())
 }
 
@@ -188,12 +132,7 @@ pub unsafe extern "C" fn granbond_contact_frame_normal(
     w_j: *const f64,
     frame: *mut ContactFrame,
 ) -> Status {
-    *frame = self::frame(
-        from_normal(n, distance, radius_i, radius_j, true),
-        v_i,
-        v_j,
-        w_i,
-        w_j,
-    );
+    let motion = Motion { v_i, v_j, w_i, w_j };
+    *frame = ContactFrame::from_normal(n, distance, radius_i, radius_j, true, motion);
     Ok(())
 }

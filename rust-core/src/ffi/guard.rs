@@ -40,7 +40,7 @@ fn check<T>(ptr: *const T, name: &str) -> Result<(), Failure> {
     }
     if !(ptr as usize).is_multiple_of(std::mem::align_of::<T>()) {
         return Err(Failure::new(
-            Status::NullPointer,
+            Status::Misaligned,
             format!("argument `{name}` is misaligned"),
         ));
     }

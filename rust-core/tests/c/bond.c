@@ -220,7 +220,7 @@ int test_bond_errors(void)
 
     /* A misaligned state pointer is refused, not dereferenced. */
     EXPECT(granbond_bond_compute(m, &good, DT, (double *)(void *)(misaligned.bytes + 4), &out),
-           GB_STATUS_NULL_POINTER, "granbond_bond_compute with a misaligned state");
+           GB_STATUS_MISALIGNED, "granbond_bond_compute with a misaligned state");
     EXPECT_MESSAGE("misaligned");
 
     granbond_bond_model_free(m);

@@ -164,8 +164,7 @@ int test_wall_bond(void);
 int test_run_checks(void);
 /* voigt.c */
 int test_voigt_contact(void);
-int test_voigt_batch(void);
-int test_voigt_plane(void);
+int test_voigt_wall(void);
 int test_voigt_timestep(void);
 int test_contact_frames(void);
 int test_voigt_parts(void);
