@@ -769,25 +769,8 @@ enum GbStatus granbond_bond_compute(const struct GbBondModel *model,
                                     struct GbBondOutput *out);
 
 /**
- * `granbond_bond_compute` over `count` bonds: `kinematics[count]`,
- * `states[count * GRANBOND_BOND_STATE_LEN]`, `out[count]`. Stops at the
- * first bad input and writes its index to `failed_index` (if not null;
- * a misaligned one is refused before any bond is advanced).
- *
- * # Safety
- * Pointers must be null or valid for the sizes above.
- */
-enum GbStatus granbond_bond_compute_batch(const struct GbBondModel *model,
-                                          size_t count,
-                                          const struct GbPairKinematics *kinematics,
-                                          double dt,
-                                          double *states,
-                                          struct GbBondOutput *out,
-                                          size_t *failed_index);
-
-/**
- * `granbond_bond_compute_batch` for bonds whose states lie apart in memory,
- * as in an engine's contact history, and whose kinematics are read from
+ * `granbond_bond_compute` over `count` bonds whose states lie apart in
+ * memory, as in an engine's contact history, and whose kinematics are read from
  * the engine's per-atom arrays: bond `k` joins atoms `pairs[2k]` (`i`) and
  * `pairs[2k + 1]` (`j`), so the engine copies nothing per bond, and
  * `states[k]` points to the `GRANBOND_BOND_STATE_LEN` doubles of bond `k`
@@ -854,28 +837,6 @@ enum GbStatus granbond_wall_bond_compute(const struct GbBondModel *model,
  * for `GRANBOND_BOND_OUTPUT_LEN` doubles.
  */
 enum GbStatus granbond_bond_output_store(const struct GbBondOutput *out, double *slots);
-
-/**
- * `granbond_bond_output_store` for the bonds of one
- * `granbond_bond_compute_indexed` call, in one call: for every `k < count`
- * whose `out[k]` is intact, `out[k]` packed into the
- * `GRANBOND_BOND_OUTPUT_LEN` doubles at `states[k] + offset`, for an engine
- * that keeps the output `offset` doubles after the bond's state in the
- * pair's history. Bonds not intact are left alone. Stops at the first bond
- * whose slots are null or misaligned or whose output is not finite (or
- * overflows) and writes its index to `failed_index` (if not null); the
- * bonds before it are stored.
- *
- * # Safety
- * `out` must be null or point to `count` outputs, `states` null or to
- * `count` pointers; for an intact bond, `states[k]` must be null or such
- * that `states[k] + offset` is valid for `GRANBOND_BOND_OUTPUT_LEN` doubles.
- */
-enum GbStatus granbond_bond_output_store_intact(size_t count,
-                                                const struct GbBondOutput *out,
-                                                double *const *states,
-                                                size_t offset,
-                                                size_t *failed_index);
 
 /**
  * Unpacks the output `granbond_bond_output_store` packed into `slots`
@@ -1073,44 +1034,6 @@ enum GbStatus granbond_voigt_compute(const struct GbVoigtModel *model,
                                      struct GbContactOutput *out);
 
 /**
- * `granbond_voigt_compute` for a contact whose frame the engine has
- * already built (the fields of a `GbContactFrame`),
- * handed over one by one, for engines that call once per contact and step
- * and keep the fields in their own arrays: `n` (3 doubles, may have just
- * been written: it is read one double at a time), the overlap, levers and
- * `R*` by value, and the velocities `v_i`, `v_j`, `w_i`, `w_j` (3 doubles
- * each) where the engine keeps them (they are read as the compiler likes:
- * pass the engine's arrays rather than fresh copies). No frame is built
- * and none is read back.
- *
- * The hot path: no pointer or frame checks, and a success leaves the error
- * record alone. The result is checked: a non-finite force or torque gives
- * `GB_STATUS_NON_FINITE_RESULT` with a message.
- * Same physics, same bits as the checked calls given the same frame. The
- * normal and the state are read one double at a time. On a CPU with AVX2
- * the step runs a copy compiled for AVX2: same bits, fewer instructions
- * (`contact::dispatch`).
- *
- * # Safety
- * No pointer may be null. `model` from `granbond_voigt_model_new`, `n` a
- * unit vector, every number finite, `state` `GRANBOND_CONTACT_STATE_LEN`
- * doubles, `out` valid for writes, `dt` finite and >= 0.
- */
-enum GbStatus granbond_voigt_compute_fields_unchecked(const struct GbVoigtModel *model,
-                                                      const double *n,
-                                                      double overlap,
-                                                      double lever_i,
-                                                      double lever_j,
-                                                      double r_eff,
-                                                      const double *v_i,
-                                                      const double *v_j,
-                                                      const double *w_i,
-                                                      const double *w_j,
-                                                      double dt,
-                                                      double *state,
-                                                      struct GbContactOutput *out);
-
-/**
  * Voigt normal force `k_n delta_n - gamma_n v_n` (clamped at zero when the
  * model has no attraction) for a touching frame.
  *
@@ -1215,15 +1138,17 @@ enum GbStatus granbond_voigt_critical_timestep(const struct GbVoigtModel *model,
 size_t granbond_voigt_parameter_count(void);
 
 /**
- * `granbond_voigt_compute_fields_unchecked` for a touching pair given by
- * its separation `del = x_i - x_j` (3 doubles) and `rsq = |del|^2`: the
- * normal is `del / sqrt(rsq)` (one reciprocal), the overlap
- * `(radius_i + radius_j) - sqrt(rsq)`, the levers the radii and `R*` (only
- * with rolling) `R_i R_j / (R_i + R_j)`.
+ * One step of a Voigt contact given by its separation `del = x_i - x_j`
+ * (3 doubles) and `rsq = |del|^2`: the normal is `del / sqrt(rsq)` (one
+ * reciprocal), the overlap `(radius_i + radius_j) - sqrt(rsq)`, the levers
+ * the radii and `R*` (only with rolling) `R_i R_j / (R_i + R_j)`.
+ * Coincident centres (`rsq = 0`) are named as such.
  *
  * # Safety
- * As `granbond_voigt_compute_fields_unchecked`; `del` three doubles,
- * `rsq > 0`.
+ * No pointer may be null. `model` from `granbond_voigt_model_new`; `del`,
+ * `v_*`, `w_*` three doubles each; every number finite, `rsq > 0`, radii
+ * > 0; `state` `GRANBOND_CONTACT_STATE_LEN` doubles; `out` valid for
+ * writes; `dt` finite and >= 0.
  */
 enum GbStatus granbond_voigt_compute_separation_unchecked(const struct GbVoigtModel *model,
                                                           const double *del,
@@ -1239,14 +1164,15 @@ enum GbStatus granbond_voigt_compute_separation_unchecked(const struct GbVoigtMo
                                                           struct GbContactOutput *out);
 
 /**
- * `granbond_voigt_compute_fields_unchecked` for a contact whose unit
- * normal `n` (from `j` to `i`) the engine has built, with the centre
- * distance `distance`; for a wall `radius_j = 0` and `distance` is the
- * centre's distance from the wall along `n` (so the overlap is
- * `radius_i - distance`, the lever of the wall 0 and `R* = R_i`).
+ * One step of a Voigt contact whose unit normal `n` (from `j` to `i`) the
+ * engine has built, with the centre distance `distance`; for a wall
+ * `radius_j = 0` and `distance` is the centre's distance from the wall
+ * along `n` (so the overlap is `radius_i - distance`, the lever of the
+ * wall 0 and `R* = R_i`).
  *
  * # Safety
- * As `granbond_voigt_compute_fields_unchecked`.
+ * As `granbond_voigt_compute_separation_unchecked`, with `n` a unit
+ * vector (three doubles) in place of `del`, and `radius_j >= 0`.
  */
 enum GbStatus granbond_voigt_compute_normal_unchecked(const struct GbVoigtModel *model,
                                                       const double *n,

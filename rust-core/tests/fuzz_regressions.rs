@@ -5,8 +5,8 @@ use granbond::bond::BondState;
 use granbond::bond::{BondModel, BondOutput, BondParams, BOND_STATE_LEN};
 use granbond::contact::{ContactOutput, VoigtModel, VoigtParams, CONTACT_STATE_LEN};
 use granbond::ffi::bond::{
-    granbond_bond_compute, granbond_bond_compute_batch, granbond_bond_compute_indexed,
-    granbond_bond_critical_timestep, granbond_bond_recommended_timestep, AtomArrayPointers,
+    granbond_bond_compute, granbond_bond_compute_indexed, granbond_bond_critical_timestep,
+    granbond_bond_recommended_timestep, AtomArrayPointers,
 };
 use granbond::ffi::contact::{granbond_voigt_compute, granbond_voigt_critical_timestep};
 use granbond::ffi::error::granbond_last_error_message;
@@ -59,30 +59,8 @@ fn expect_failed_index_refused(function: &str, status: Status, words: &[u64; 2])
 #[test]
 fn a_misaligned_failed_index_is_refused_not_written_through() {
     let model = bond_model();
-    // a pair the batch refuses (NaN), so the call has an index to report
-    let bad = PairKinematics {
-        x_i: [f64::NAN, 0.0, 0.0],
-        radius_i: 1e-3,
-        radius_j: 1e-3,
-        ..PairKinematics::default()
-    };
     let mut state = [0.0; BOND_STATE_LEN];
     let mut out = BondOutput::default();
-
-    let mut words = [0u64; 2];
-    // SAFETY: one bond, valid pointers but `failed_index`.
-    let status = unsafe {
-        granbond_bond_compute_batch(
-            &model,
-            1,
-            &bad,
-            1e-7,
-            state.as_mut_ptr(),
-            &mut out,
-            misaligned(&mut words),
-        )
-    };
-    expect_failed_index_refused("granbond_bond_compute_batch", status, &words);
 
     let mut states = [state.as_mut_ptr()];
 
@@ -223,7 +201,7 @@ fn a_bond_whose_section_underflows_is_refused_rather_than_answered_with_nan_stre
 }
 
 #[test]
-fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
+fn a_bond_whose_spring_increment_overflows_is_refused_in_the_indexed_path() {
     let model = bond_model();
     let k = PairKinematics {
         x_i: [2e-3, 0.0, 0.0],
@@ -234,7 +212,6 @@ fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
         ..PairKinematics::default()
     };
     let fresh = BondState::created(2e-3);
-    let mut states = [fresh, fresh];
     let mut out = [BondOutput::default(); 2];
     let calm = PairKinematics {
         v_i: [0.0; 3],
@@ -242,23 +219,6 @@ fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
         ..k
     };
     let kin = [calm, k];
-    let mut failed = usize::MAX;
-    // SAFETY: two bonds, valid pointers of the documented sizes.
-    let status = unsafe {
-        granbond_bond_compute_batch(
-            &model,
-            2,
-            kin.as_ptr(),
-            1e-7,
-            states.as_mut_ptr() as *mut f64,
-            out.as_mut_ptr(),
-            &mut failed,
-        )
-    };
-    assert_eq!(status, Status::NonFiniteResult, "{}", message());
-    assert_eq!(failed, 1, "{}", message());
-    assert!(message().contains("bond 1:"), "{}", message());
-
     let mut states = [fresh, fresh];
     let mut pointers: Vec<*mut f64> = states
         .iter_mut()
@@ -277,7 +237,7 @@ fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
         count: 4,
     };
     let pairs = [0i32, 1, 2, 3];
-    failed = usize::MAX;
+    let mut failed = usize::MAX;
     // SAFETY: as above, four atoms, two distinct states.
     let status = unsafe {
         granbond_bond_compute_indexed(

@@ -7,10 +7,10 @@ mod common;
 
 use common::RADIUS;
 use granbond::contact::{
-    sphere_plane, sphere_sphere, ContactFrame, ContactOutput, ContactState, Plane, VoigtModel, VoigtParams,
+    sphere_plane, ContactFrame, ContactOutput, ContactState, Plane, VoigtModel, VoigtParams,
     CONTACT_STATE_LEN,
 };
-use granbond::ffi::contact::{granbond_voigt_compute, granbond_voigt_compute_fields_unchecked};
+use granbond::ffi::contact::granbond_voigt_compute;
 use granbond::ffi::contact_geometry::{
     granbond_contact_frame_separation, granbond_voigt_compute_normal_unchecked,
     granbond_voigt_compute_separation_unchecked,
@@ -39,24 +39,52 @@ impl Numbers {
     }
 }
 
-/// The unchecked entry on the fields of `frame`.
+/// The separation entry on the pair `k`, as LAMMPS hands it over.
 ///
 /// # Safety
 /// `state` must hold `CONTACT_STATE_LEN` doubles.
-unsafe fn fields_unchecked(
+unsafe fn separation_unchecked(
+    model: &VoigtModel,
+    k: &PairKinematics,
+    dt: f64,
+    state: *mut f64,
+    out: &mut ContactOutput,
+) -> Status {
+    let del = [k.x_i[0] - k.x_j[0], k.x_i[1] - k.x_j[1], k.x_i[2] - k.x_j[2]];
+    let rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+    granbond_voigt_compute_separation_unchecked(
+        model,
+        del.as_ptr(),
+        rsq,
+        k.radius_i,
+        k.radius_j,
+        k.v_i.as_ptr(),
+        k.v_j.as_ptr(),
+        k.w_i.as_ptr(),
+        k.w_j.as_ptr(),
+        dt,
+        state,
+        out,
+    )
+}
+
+/// The normal entry on the geometry and velocities of `frame`.
+///
+/// # Safety
+/// `state` must hold `CONTACT_STATE_LEN` doubles.
+unsafe fn normal_unchecked(
     model: &VoigtModel,
     frame: &ContactFrame,
     dt: f64,
     state: *mut f64,
     out: &mut ContactOutput,
 ) -> Status {
-    granbond_voigt_compute_fields_unchecked(
+    granbond_voigt_compute_normal_unchecked(
         model,
         frame.n.as_ptr(),
-        frame.overlap,
+        frame.lever_i + frame.lever_j - frame.overlap,
         frame.lever_i,
         frame.lever_j,
-        frame.r_eff,
         frame.v_i.as_ptr(),
         frame.v_j.as_ptr(),
         frame.w_i.as_ptr(),
@@ -126,13 +154,12 @@ fn pair_contacts_give_the_bits_of_granbond_voigt_compute() {
             };
             for step in 0..200 {
                 let (mut a, mut b) = (ContactOutput::default(), ContactOutput::default());
-                let frame = sphere_sphere(&k).unwrap();
                 unsafe {
                     assert_eq!(
                         granbond_voigt_compute(model, &k, DT, sa.as_mut_ptr(), &mut a),
                         Status::Ok
                     );
-                    let status = fields_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
+                    let status = separation_unchecked(model, &k, DT, sb.as_mut_ptr(), &mut b);
                     assert_eq!(status, Status::Ok);
                 }
                 assert_same(
@@ -233,18 +260,18 @@ fn a_non_finite_result_is_reported() {
     let mut state = [0.0; CONTACT_STATE_LEN];
     let mut out = ContactOutput::default();
     unsafe {
-        let ok = fields_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
+        let ok = normal_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
         assert_eq!(ok, Status::Ok);
         assert!(out.force_i[0] > 0.0);
         for bad in [f64::NAN, f64::INFINITY] {
             frame.v_i[1] = bad;
-            let status = fields_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
+            let status = normal_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
             assert_eq!(status, Status::NonFiniteResult, "v_i = {bad}");
             let message = CStr::from_ptr(granbond_last_error_message())
                 .to_string_lossy()
                 .into_owned();
             assert!(
-                message.contains("granbond_voigt_compute_fields_unchecked"),
+                message.contains("granbond_voigt_compute_normal_unchecked"),
                 "{message}"
             );
         }

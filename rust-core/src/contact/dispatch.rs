@@ -57,54 +57,17 @@ fn avx2() -> bool {
 }
 
 compiled_twice! {
-    /// One step of a contact whose frame the engine hands over field by
-    /// field: `n` (3 doubles, read one double at a time), the overlap,
-    /// levers and `R*`, and the velocities (3 doubles each, read as the
-    /// compiler likes). False when a load came out non-finite (non-finite
-    /// input the caller let through, or input far outside the model's
-    /// range).
+    /// One step of a pair given by its separation `del` (3 doubles, read
+    /// one double at a time) and `rsq = |del|^2`, with the radii
+    /// ([`ContactFrame::from_separation`]; `R*` only with rolling), and the
+    /// velocities (3 doubles each, read as the compiler likes). False when
+    /// a load came out non-finite (non-finite input the caller let
+    /// through, or input far outside the model's range).
     ///
     /// # Safety
-    /// `model` valid; `n`, `v_*`, `w_*` three doubles each; `state`
+    /// `model` valid; `del`, `v_*`, `w_*` three doubles each; `state`
     /// [`CONTACT_STATE_LEN`](super::CONTACT_STATE_LEN) doubles; `out` valid
     /// for writes.
-    pub fn step_fields(
-        model: *const VoigtModel,
-        n: *const f64,
-        overlap: f64,
-        lever_i: f64,
-        lever_j: f64,
-        r_eff: f64,
-        v_i: *const f64,
-        v_j: *const f64,
-        w_i: *const f64,
-        w_j: *const f64,
-        dt: f64,
-        state: *mut f64,
-        out: *mut ContactOutput,
-    ) -> bool {
-        let frame = ContactFrame {
-            n: load3(n as *const [f64; 3]),
-            overlap,
-            lever_i,
-            lever_j,
-            r_eff,
-            v_i: *(v_i as *const [f64; 3]),
-            v_j: *(v_j as *const [f64; 3]),
-            w_i: *(w_i as *const [f64; 3]),
-            w_j: *(w_j as *const [f64; 3]),
-        };
-        step_stored(&*model, &frame, dt, state, out)
-    }
-}
-
-compiled_twice! {
-    /// [`step_fields`] of a pair given by its separation `del` (3 doubles)
-    /// and `rsq = |del|^2`, with the radii ([`ContactFrame::from_separation`];
-    /// `R*` only with rolling).
-    ///
-    /// # Safety
-    /// As [`step_fields`]; `del` three doubles.
     pub fn step_separation(
         model: *const VoigtModel,
         del: *const f64,
@@ -128,13 +91,13 @@ compiled_twice! {
 }
 
 compiled_twice! {
-    /// [`step_fields`] of a contact given by the engine's unit normal `n`
-    /// (3 doubles) and centre distance, with the radii, a wall as
+    /// [`step_separation`] of a contact given by the engine's unit normal
+    /// `n` (3 doubles) and centre distance, with the radii, a wall as
     /// `radius_j = 0` ([`ContactFrame::from_normal`]; `R*` only with
     /// rolling).
     ///
     /// # Safety
-    /// As [`step_fields`].
+    /// As [`step_separation`]; `n` three doubles.
     pub fn step_normal(
         model: *const VoigtModel,
         n: *const f64,

@@ -105,7 +105,7 @@ impl VoigtModel {
 
     /// One step of any contact. Bodies apart exert nothing and forget their
     /// history. Always inlined: it is the body of the engines' per-contact
-    /// call (`granbond_voigt_compute_fields_unchecked`). Dispatches once on
+    /// calls (`contact::dispatch`). Dispatches once on
     /// the rolling switch to [`Self::step_frame_kernel`].
     #[inline(always)]
     pub fn step_frame(&self, f: &ContactFrame, dt: f64, state: &mut ContactState, out: &mut ContactOutput) {

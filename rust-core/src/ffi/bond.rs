@@ -8,7 +8,7 @@ use super::guard::{
 };
 use super::results;
 use crate::bond::creation::status_and_step_allow;
-use crate::bond::output_slots::{load_output, store_output, BOND_OUTPUT_LEN};
+use crate::bond::output_slots::{load_output, store_output};
 use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
@@ -73,16 +73,6 @@ pub extern "C" fn granbond_bond_parameter_count() -> usize {
 unsafe fn bond_state<'a>(state: *mut f64, name: &str) -> Result<&'a mut BondState, Failure> {
     let slots = reference_mut(state as *mut [f64; BOND_STATE_LEN], name)?;
     Ok(BondState::from_slots_mut(slots))
-}
-
-/// The states of a batch as struct views of a caller's
-/// `double[count * GRANBOND_BOND_STATE_LEN]`.
-unsafe fn bond_states<'a>(
-    states: *mut f64,
-    count: usize,
-    name: &str,
-) -> Result<&'a mut [BondState], Failure> {
-    slice_mut(states as *mut BondState, count, name)
 }
 
 unsafe fn wall_state<'a>(state: *mut f64, name: &str) -> Result<&'a mut WallBondState, Failure> {
@@ -182,35 +172,6 @@ pub unsafe extern "C" fn granbond_bond_compute(
     results::bond(state, out)
 }
 
-/// `granbond_bond_compute` over `count` bonds: `kinematics[count]`,
-/// `states[count * GRANBOND_BOND_STATE_LEN]`, `out[count]`. Stops at the
-/// first bad input and writes its index to `failed_index` (if not null;
-/// a misaligned one is refused before any bond is advanced).
-///
-/// # Safety
-/// Pointers must be null or valid for the sizes above.
-#[entry(
-    model: reference,
-    failed_index: FailedIndex::new,
-    kinematics: slice(count),
-    states: bond_states(count),
-    out: slice_mut(count),
-    dt: time_step,
-)]
-#[no_mangle]
-pub unsafe extern "C" fn granbond_bond_compute_batch(
-    model: *const BondModel,
-    count: usize,
-    kinematics: *const PairKinematics,
-    dt: f64,
-    states: *mut f64,
-    out: *mut BondOutput,
-    failed_index: *mut usize,
-) -> Status {
-    let stepped = model.step_batch(kinematics, dt, states, out);
-    results::bonds(stepped, failed_index)
-}
-
 /// The per-atom arrays of an engine (local and ghost atoms), as
 /// `granbond_bond_compute_indexed` reads them: `x`, `v` and `omega` hold 3
 /// doubles per atom (LAMMPS/LIGGGHTS: `atom->x[0]`, one block), `radius` one.
@@ -265,8 +226,8 @@ pub(super) fn indexed_pairs<'a>(
     })
 }
 
-/// `granbond_bond_compute_batch` for bonds whose states lie apart in memory,
-/// as in an engine's contact history, and whose kinematics are read from
+/// `granbond_bond_compute` over `count` bonds whose states lie apart in
+/// memory, as in an engine's contact history, and whose kinematics are read from
 /// the engine's per-atom arrays: bond `k` joins atoms `pairs[2k]` (`i`) and
 /// `pairs[2k + 1]` (`j`), so the engine copies nothing per bond, and
 /// `states[k]` points to the `GRANBOND_BOND_STATE_LEN` doubles of bond `k`
@@ -382,66 +343,6 @@ pub unsafe extern "C" fn granbond_bond_output_store(out: *const BondOutput, slot
     kept_finite(Status::NonFiniteInput, "a load or stress of `out`", &stored)?;
     *slots = stored;
     Ok(())
-}
-
-/// `granbond_bond_output_store` for the bonds of one
-/// `granbond_bond_compute_indexed` call, in one call: for every `k < count`
-/// whose `out[k]` is intact, `out[k]` packed into the
-/// `GRANBOND_BOND_OUTPUT_LEN` doubles at `states[k] + offset`, for an engine
-/// that keeps the output `offset` doubles after the bond's state in the
-/// pair's history. Bonds not intact are left alone. Stops at the first bond
-/// whose slots are null or misaligned or whose output is not finite (or
-/// overflows) and writes its index to `failed_index` (if not null); the
-/// bonds before it are stored.
-///
-/// # Safety
-/// `out` must be null or point to `count` outputs, `states` null or to
-/// `count` pointers; for an intact bond, `states[k]` must be null or such
-/// that `states[k] + offset` is valid for `GRANBOND_BOND_OUTPUT_LEN` doubles.
-#[entry(failed_index: FailedIndex::new, out: slice(count))]
-#[no_mangle]
-pub unsafe extern "C" fn granbond_bond_output_store_intact(
-    count: usize,
-    out: *const BondOutput,
-    states: *const *mut f64,
-    offset: usize,
-    failed_index: *mut usize,
-) -> Status {
-    let pointers = slice(states, count, "states")?;
-    let intact = BondStatus::Intact as i32;
-    for (k, (o, &state)) in out.iter().zip(pointers).enumerate() {
-        if o.status != intact {
-            continue;
-        }
-        // a null state stays null rather than becoming `offset` doubles
-        // past address 0; `offset` keeps the alignment
-        if state.is_null() || !state.cast::<[f64; BOND_OUTPUT_LEN]>().is_aligned() {
-            return Err(store_failed(
-                failed_index,
-                k,
-                array_mut::<1>(state, "states[k]").err(),
-            ));
-        }
-        let stored = store_output(o);
-        if !stored.iter().sum::<f64>().is_finite() {
-            return Err(store_failed(
-                failed_index,
-                k,
-                kept_finite(Status::NonFiniteInput, "a load or stress of `out[k]`", &stored).err(),
-            ));
-        }
-        *(state.wrapping_add(offset) as *mut [f64; BOND_OUTPUT_LEN]) = stored;
-    }
-    Ok(())
-}
-
-/// The failure of bond `k` of `granbond_bond_output_store_intact`, out of
-/// its loop.
-#[cold]
-#[inline(never)]
-fn store_failed(failed_index: FailedIndex, k: usize, f: Option<Failure>) -> Failure {
-    let f = f.unwrap_or_else(|| Failure::new(Status::InvalidArgument, "states[k]".to_string()));
-    failed_index.fail("bond", k, f)
 }
 
 /// Unpacks the output `granbond_bond_output_store` packed into `slots`

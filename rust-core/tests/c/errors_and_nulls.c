@@ -146,12 +146,6 @@ static GbStatus null_bond_compute(struct world *c, int k)
                                  ARG(k, 3, &c->bond_out[0]));
 }
 
-static GbStatus null_bond_compute_batch(struct world *c, int k)
-{
-    return granbond_bond_compute_batch(ARG(k, 0, c->bond), N_ITEMS, ARG(k, 1, c->pair), DT,
-                                       ARG(k, 2, c->bond_states), ARG(k, 3, c->bond_out), &c->index);
-}
-
 static GbStatus null_bond_compute_indexed(struct world *c, int k)
 {
     GbAtomArrays atoms = c->atoms;
@@ -182,22 +176,6 @@ static GbStatus null_wall_bond_compute(struct world *c, int k)
 static GbStatus null_bond_output_store(struct world *c, int k)
 {
     return granbond_bond_output_store(ARG(k, 0, &c->bond_out[0]), ARG(k, 1, c->output_slots));
-}
-
-/* every output intact, so the slots of bond 0 are the first written */
-static GbStatus null_bond_output_store_intact(struct world *c, int k)
-{
-    GbBondOutput outs[N_ITEMS];
-    double *states[N_ITEMS];
-    int b;
-    for (b = 0; b < N_ITEMS; b++) {
-        outs[b] = c->bond_out[b];
-        outs[b].status = GB_BOND_STATUS_INTACT;
-        states[b] = c->bond_state_pointers[b];
-    }
-    if (k == 2)
-        states[0] = NULL;
-    return granbond_bond_output_store_intact(N_ITEMS, ARG(k, 0, outs), ARG(k, 1, states), 0, &c->index);
 }
 
 static GbStatus null_bond_output_load(struct world *c, int k)
@@ -367,7 +345,6 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_bond_try_create", null_bond_try_create, {"model", "kinematics", "state", "created"}},
     {"granbond_bond_create_now", null_bond_create_now, {"model", "kinematics", "state", "created"}},
     {"granbond_bond_compute", null_bond_compute, {"model", "kinematics", "state", "out"}},
-    {"granbond_bond_compute_batch", null_bond_compute_batch, {"model", "kinematics", "states", "out"}},
     {"granbond_bond_compute_indexed",
      null_bond_compute_indexed,
      {"model", "atoms", "pairs", "states", "out", "atoms->x", "atoms->v", "atoms->omega", "atoms->radius"}},
@@ -376,7 +353,6 @@ static const struct null_entry NULL_ENTRIES[] = {
      {"model", "sphere", "contact_point", "state", "created"}},
     {"granbond_wall_bond_compute", null_wall_bond_compute, {"model", "sphere", "wall_velocity", "state", "out"}},
     {"granbond_bond_output_store", null_bond_output_store, {"out", "slots"}},
-    {"granbond_bond_output_store_intact", null_bond_output_store_intact, {"out", "states", "states[k]"}},
     {"granbond_bond_output_load", null_bond_output_load, {"slots", "out"}},
     {"granbond_bond_centre", null_bond_centre, {"x_i", "x_j", "centre"}},
     {"granbond_bond_max_distance", null_bond_max_distance, {"model", "out"}},

@@ -149,7 +149,6 @@ int test_voigt_params(void);
 /* bond.c */
 int test_bond_create_and_force(void);
 int test_bond_errors(void);
-int test_bond_batch(void);
 int test_bond_indexed_results(void);
 int test_bond_indexed(void);
 int test_bond_break(void);

@@ -256,9 +256,8 @@ int test_voigt_parts(void)
     GbContactOutput whole, parts;
     GbTangentialOutput t;
     double state_whole[GRANBOND_CONTACT_STATE_LEN], state_parts[GRANBOND_CONTACT_STATE_LEN];
-    double state_fields[GRANBOND_CONTACT_STATE_LEN];
     double state_sep[GRANBOND_CONTACT_STATE_LEN], state_normal[GRANBOND_CONTACT_STATE_LEN];
-    GbContactOutput fields, sep, normal;
+    GbContactOutput sep, normal;
     GbContactFrame built;
     double del[3], rsq, distance;
     double fn = 0.0, v_rel[3], torque[3], spring[3] = {0.0, 0.0, 0.0}, angle[3] = {0.0, 0.0, 0.0};
@@ -268,11 +267,10 @@ int test_voigt_parts(void)
     if (new_voigt_model(&p, &m))
         return 1;
 
-    /* The parts, and the unchecked whole step on the frame, reproduce
-     * granbond_voigt_compute, step after step. */
+    /* The parts, and the unchecked whole step on the engine's geometry,
+     * reproduce granbond_voigt_compute, step after step. */
     memset(state_whole, 0, sizeof state_whole);
     memset(state_parts, 0, sizeof state_parts);
-    memset(state_fields, 0, sizeof state_fields);
     memset(state_sep, 0, sizeof state_sep);
     memset(state_normal, 0, sizeof state_normal);
     for (step = 0; step < 4; step++) {
@@ -287,12 +285,6 @@ int test_voigt_parts(void)
         CHECK(same_contact_output(&whole, &parts), say("step %d: normal + tangential + rolling = whole step", step));
         CHECK(vec_close(state_whole, state_parts, 1e-15) && vec_close(state_whole + 3, state_parts + 3, 1e-15),
               say("step %d: same spring and rolling angle", step));
-        EXPECT_OK(granbond_voigt_compute_fields_unchecked(m, frame.n, frame.overlap, frame.lever_i, frame.lever_j,
-                                                          frame.r_eff, frame.v_i, frame.v_j, frame.w_i, frame.w_j, DT,
-                                                          state_fields, &fields),
-                  say("granbond_voigt_compute_fields_unchecked, step %d", step));
-        CHECK(same_contact_output(&fields, &whole) && memcmp(state_fields, state_whole, sizeof state_fields) == 0,
-              say("step %d: unchecked step on the frame's fields = granbond_voigt_compute", step));
         /* From the engine's geometry and the radii: the same frame, the same bits. */
         for (c = 0; c < 3; c++)
             del[c] = k.x_i[c] - k.x_j[c];
@@ -306,20 +298,20 @@ int test_voigt_parts(void)
         EXPECT_OK(granbond_voigt_compute_separation_unchecked(m, del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i,
                                                               k.w_j, DT, state_sep, &sep),
                   say("granbond_voigt_compute_separation_unchecked, step %d", step));
-        CHECK(identical_contact_output(&sep, &fields) && memcmp(state_sep, state_fields, sizeof state_fields) == 0,
-              say("step %d: unchecked step on the separation = on the frame's fields, bit for bit", step));
+        CHECK(same_contact_output(&sep, &whole) && memcmp(state_sep, state_whole, sizeof state_sep) == 0,
+              say("step %d: unchecked step on the separation = granbond_voigt_compute", step));
         EXPECT_OK(granbond_voigt_compute_normal_unchecked(m, frame.n, distance, k.radius_i, k.radius_j, k.v_i, k.v_j,
                                                           k.w_i, k.w_j, DT, state_normal, &normal),
                   say("granbond_voigt_compute_normal_unchecked, step %d", step));
-        CHECK(identical_contact_output(&normal, &fields) && memcmp(state_normal, state_fields, sizeof state_fields) == 0,
-              say("step %d: unchecked step on the normal and distance = on the frame's fields, bit for bit", step));
+        CHECK(identical_contact_output(&normal, &sep) && memcmp(state_normal, state_sep, sizeof state_sep) == 0,
+              say("step %d: unchecked step on the normal and distance = on the separation, bit for bit", step));
     }
     bad = frame;
     bad.w_j[2] = NAN;
-    EXPECT(granbond_voigt_compute_fields_unchecked(m, bad.n, bad.overlap, bad.lever_i, bad.lever_j, bad.r_eff, bad.v_i,
-                                                   bad.v_j, bad.w_i, bad.w_j, DT, state_fields, &fields),
-           GB_STATUS_NON_FINITE_RESULT, "granbond_voigt_compute_fields_unchecked, NaN w_j: a non-finite torque is reported");
-    EXPECT_MESSAGE("granbond_voigt_compute_fields_unchecked");
+    EXPECT(granbond_voigt_compute_normal_unchecked(m, bad.n, distance, k.radius_i, k.radius_j, bad.v_i, bad.v_j, bad.w_i,
+                                                   bad.w_j, DT, state_normal, &normal),
+           GB_STATUS_NON_FINITE_RESULT, "granbond_voigt_compute_normal_unchecked, NaN w_j: a non-finite torque is reported");
+    EXPECT_MESSAGE("granbond_voigt_compute_normal_unchecked");
 
     /* The normal part alone: k_n overlap - gamma_n v_n. */
     contact_at(&k, 1.0e-5, 0.01);
@@ -363,10 +355,12 @@ int test_voigt_parts(void)
         memcpy(copy, held, sizeof held);
         EXPECT_OK(granbond_voigt_evaluate_frame(m, &frame, held, &ev), "granbond_voigt_evaluate_frame");
         CHECK(memcmp(copy, held, sizeof held) == 0, "granbond_voigt_evaluate_frame leaves the state alone");
-        EXPECT_OK(granbond_voigt_compute_fields_unchecked(m, frame.n, frame.overlap, frame.lever_i, frame.lever_j,
-                                                          frame.r_eff, frame.v_i, frame.v_j, frame.w_i, frame.w_j, 0.0,
-                                                          copy, &st),
-                  "granbond_voigt_compute_fields_unchecked, dt = 0");
+        for (c = 0; c < 3; c++)
+            del[c] = k.x_i[c] - k.x_j[c];
+        rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+        EXPECT_OK(granbond_voigt_compute_separation_unchecked(m, del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i,
+                                                              k.w_j, 0.0, copy, &st),
+                  "granbond_voigt_compute_separation_unchecked, dt = 0");
         CHECK(close_to(ev.force_i[0], st.force_i[0], 1e-15) && close_to(ev.force_i[1], st.force_i[1], 1e-15) &&
                   close_to(ev.torque_i[2], st.torque_i[2], 1e-15),
               "evaluation = a step of zero length");

@@ -58,7 +58,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 59] = [
+pub const ENTRY_POINTS: [&str; 56] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -70,12 +70,10 @@ pub const ENTRY_POINTS: [&str; 59] = [
     "granbond_bond_creates_at",
     "granbond_bond_create_now",
     "granbond_bond_compute",
-    "granbond_bond_compute_batch",
     "granbond_bond_compute_indexed",
     "granbond_wall_bond_try_create",
     "granbond_wall_bond_compute",
     "granbond_bond_output_store",
-    "granbond_bond_output_store_intact",
     "granbond_bond_output_load",
     "granbond_bond_centre",
     "granbond_bond_max_distance",
@@ -89,7 +87,6 @@ pub const ENTRY_POINTS: [&str; 59] = [
     "granbond_voigt_model_new",
     "granbond_voigt_model_free",
     "granbond_voigt_compute",
-    "granbond_voigt_compute_fields_unchecked",
     "granbond_voigt_compute_separation_unchecked",
     "granbond_voigt_compute_normal_unchecked",
     "granbond_contact_frame_separation",
@@ -597,8 +594,6 @@ struct Session<'t> {
     /// States of every kind, in one pool: any entry may be handed to any
     /// model, so a state written by one model is read by another.
     pool: Vec<Entry>,
-    /// Contiguous states of the batch calls, as many of the largest kind.
-    flat: Vec<f64>,
     pair: PairKinematics,
     frame: ContactFrame,
 }
@@ -623,7 +618,6 @@ impl<'t> Session<'t> {
             bond_models: Vec::new(),
             voigt_models: Vec::new(),
             pool: vec![[0.0; ENTRY]; POOL],
-            flat: vec![0.0; MAX_BATCH * MAX_STATE + 1],
             pair: realistic_pair(&mut Input::new(&[])),
             frame: ContactFrame {
                 n: [1.0, 0.0, 0.0],
@@ -891,8 +885,7 @@ impl<'t> Session<'t> {
             5 => self.bond_may_create(input),
             6 => self.bond_create(input, true),
             7 => self.bond_compute(input),
-            8 => self.bond_batch(input),
-            9 => self.bond_indexed(input),
+            8 | 9 => self.bond_indexed(input),
             10 => self.bond_sweep(input),
             11 => self.wall_try_create(input),
             12 => self.wall_compute(input),
@@ -921,7 +914,7 @@ impl<'t> Session<'t> {
             20 | 21 => self.voigt_compute(input),
             22 => self.voigt_evaluate_then_step(input),
             23 => self.voigt_evaluate_then_step(input),
-            24 => self.voigt_fields_unchecked(input),
+            24 => self.voigt_unchecked(input),
             25 | 26 => self.frames(input),
             27 => self.voigt_normal_force(input),
             28 => self.voigt_tangential(input),
@@ -1189,40 +1182,6 @@ impl<'t> Session<'t> {
         self.bond_centre(input, &k.get());
     }
 
-    /// The batch store of one bond whose output is kept `offset` doubles
-    /// after its state: `o` there if it is intact, nothing written if not.
-    fn bond_output_slots_intact(&mut self, input: &mut Input, o: &BondOutput) {
-        let offset = input.below(3);
-        let mut record = Place::new([0.0f64; 2 + BOND_OUTPUT_LEN]);
-        let states = [record.ptr(input.pointer()) as *mut f64];
-        let mut out = Place::new(*o);
-        let (ho, hs) = (input.pointer(), input.pointer());
-        let states_ptr = if hs == Pointer::Null {
-            null_mut()
-        } else {
-            states.as_ptr() as *mut *mut f64
-        };
-        let mut failed = usize::MAX;
-        // SAFETY: null, misaligned or valid for their sizes; a valid state
-        // has room for the slots at `offset`.
-        let status =
-            unsafe { fb::granbond_bond_output_store_intact(1, out.ptr(ho), states_ptr, offset, &mut failed) };
-        let function = "granbond_bond_output_store_intact";
-        if self.answer(function, status) {
-            let kept = &record.get()[offset..offset + BOND_OUTPUT_LEN];
-            let want = if o.status == BondStatus::Intact as i32 {
-                store_output(o)
-            } else {
-                [0.0; BOND_OUTPUT_LEN]
-            };
-            assert!(
-                kept.iter().zip(&want).all(|(a, b)| a.to_bits() == b.to_bits()),
-                "{function}: {kept:?} for {o:?} at offset {offset}"
-            );
-            self.note_finite(function, all_finite(kept));
-        }
-    }
-
     /// Stores `o` in history slots and loads it back.
     fn bond_output_slots(&mut self, input: &mut Input, mut o: BondOutput) {
         if input.below(4) == 0 {
@@ -1242,7 +1201,6 @@ impl<'t> Session<'t> {
             );
             self.note_finite("granbond_bond_output_store", all_finite(&stored));
         }
-        self.bond_output_slots_intact(input, &o);
         if input.below(4) == 0 {
             let mut s = slots.get();
             input.mutate(&mut s);
@@ -1345,63 +1303,6 @@ impl<'t> Session<'t> {
             Pointer::Null => null_mut(),
             Pointer::Misaligned => (v.as_mut_ptr() as *mut u8).wrapping_add(1) as *mut T,
             Pointer::Valid => v.as_mut_ptr(),
-        }
-    }
-
-    fn bond_batch(&mut self, input: &mut Input) {
-        let m = self.bond_model(input);
-        self.contiguous_batch(
-            input,
-            "granbond_bond_compute_batch",
-            BOND_STATE_LEN,
-            // SAFETY: buffers of at least `count` elements (null or
-            // misaligned pointers are checked); `failed` may be null.
-            |count, k, dt, s, o, failed| unsafe {
-                fb::granbond_bond_compute_batch(m, count, k, dt, s, o, failed)
-            },
-            Self::check_bond_output,
-        );
-    }
-
-    /// The batch calls over contiguous states: `call(count, kinematics,
-    /// dt, states, out, failed_index)`, each output checked by `check`.
-    fn contiguous_batch<O: Copy + Default>(
-        &mut self,
-        input: &mut Input,
-        function: &'static str,
-        state_len: usize,
-        call: impl FnOnce(usize, *const PairKinematics, f64, *mut f64, *mut O, *mut usize) -> Status,
-        check: fn(&mut Self, &'static str, &O),
-    ) {
-        let count = self.count(input);
-        // one more than `count`, so a misaligned pointer stays inside
-        let mut k = self.pairs(input, count + 1);
-        let dt = self.dt(input);
-        let mut out = vec![O::default(); count + 1];
-        let mut failed = Place::new(usize::MAX);
-        let (hk, hs, ho, hf) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
-        let before = self.flat.clone();
-        let s = Self::batch_ptr(&mut self.flat, hs);
-        let status = call(
-            count,
-            Self::batch_ptr(&mut k, hk),
-            dt,
-            s,
-            Self::batch_ptr(&mut out, ho),
-            failed.ptr(hf),
-        );
-        if self.answer(function, status) {
-            if all_finite(&before[..count * state_len]) {
-                for o in &out[..count] {
-                    check(self, function, o);
-                }
-            }
-        } else if hf == Pointer::Valid && failed.get() != usize::MAX {
-            assert!(
-                failed.get() < count,
-                "{function}: failed_index {} of {count}",
-                failed.get()
-            );
         }
     }
 
@@ -2214,10 +2115,10 @@ impl<'t> Session<'t> {
                 "evaluate wrote the state"
             );
         }
-        self.fields_unchecked(m, &f, dt, s);
+        self.unchecked(m, &f, dt, s);
     }
 
-    fn voigt_fields_unchecked(&mut self, input: &mut Input) {
+    fn voigt_unchecked(&mut self, input: &mut Input) {
         let Some(m) = self.live_voigt_model(input) else {
             return;
         };
@@ -2225,35 +2126,13 @@ impl<'t> Session<'t> {
         let dt = self.dt(input);
         let i = self.state(input);
         let s = self.pool[i].as_mut_ptr();
-        self.fields_unchecked(m, &f, dt, s);
+        self.unchecked(m, &f, dt, s);
     }
 
-    fn fields_unchecked(&mut self, m: *const VoigtModel, f: &ContactFrame, dt: f64, s: *mut f64) {
+    /// The contact of `f` as the engines hand it over: separation or normal
+    /// and distance, with the radii (a wall as radius 0).
+    fn unchecked(&mut self, m: *const VoigtModel, f: &ContactFrame, dt: f64, s: *mut f64) {
         let mut out = ContactOutput::default();
-        // SAFETY: every pointer valid (the entry's contract); the numbers
-        // are arbitrary, which it must answer with a status.
-        let status = unsafe {
-            fc::granbond_voigt_compute_fields_unchecked(
-                m,
-                f.n.as_ptr(),
-                f.overlap,
-                f.lever_i,
-                f.lever_j,
-                f.r_eff,
-                f.v_i.as_ptr(),
-                f.v_j.as_ptr(),
-                f.w_i.as_ptr(),
-                f.w_j.as_ptr(),
-                dt,
-                s,
-                &mut out,
-            )
-        };
-        if self.answer_unchecked("granbond_voigt_compute_fields_unchecked", status) {
-            self.check_unchecked_flags(&out);
-        }
-        // the same contact as the engines hand it over: separation or
-        // normal and distance, with the radii (a wall as radius 0)
         let distance = f.lever_i + f.lever_j - f.overlap;
         let del = [f.n[0] * distance, f.n[1] * distance, f.n[2] * distance];
         let rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
@@ -2279,8 +2158,8 @@ impl<'t> Session<'t> {
         if rsq > 0.0 && self.answer_unchecked("granbond_voigt_compute_separation_unchecked", status) {
             self.check_unchecked_flags(&out);
         }
-        // SAFETY: as above.
-        let mut copy = unsafe { *(s as *const Entry) };
+        // the pool's state itself is advanced by this one
+        // SAFETY: every pointer valid (the entry's contract); `s` a whole state.
         let status = unsafe {
             fcg::granbond_voigt_compute_normal_unchecked(
                 m,
@@ -2293,7 +2172,7 @@ impl<'t> Session<'t> {
                 f.w_i.as_ptr(),
                 f.w_j.as_ptr(),
                 dt,
-                copy.as_mut_ptr(),
+                s,
                 &mut out,
             )
         };
