@@ -159,13 +159,14 @@ fn a_centre_distance_that_overflows_gives_no_contact_frame() {
         ..PairKinematics::default()
     };
     let frame = sphere_sphere(&k);
-    assert_eq!(frame, Err(KinematicsError::NonFinite), "frame {frame:?}");
+    assert_eq!(frame, Err(KinematicsError::DistanceOverflows), "frame {frame:?}");
     let voigt = VoigtModel::new(VoigtParams::default()).unwrap();
     let mut state = [0.0; CONTACT_STATE_LEN];
     let mut out = ContactOutput::default();
     // SAFETY: valid pointers.
     let status = unsafe { granbond_voigt_compute(&voigt, &k, 1e-7, state.as_mut_ptr(), &mut out) };
-    assert_eq!(status, Status::NonFiniteInput, "{out:?}");
+    assert_eq!(status, Status::NonFiniteResult, "{out:?}");
+    assert!(message().contains("centre distance overflows"), "{}", message());
 }
 
 #[test]

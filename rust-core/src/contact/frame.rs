@@ -137,9 +137,8 @@ pub fn sphere_sphere(kin: &PairKinematics) -> Result<ContactFrame, KinematicsErr
     kin.check()?;
     let line = centre_line(kin)?;
     if line.r == f64::INFINITY {
-        // finite centres whose distance overflows (|x| ~ 1e154 and more):
-        // no direction (n = d / inf = 0) and no overlap to speak of
-        return Err(KinematicsError::NonFinite);
+        // n = d / inf would be 0: no direction
+        return Err(KinematicsError::DistanceOverflows);
     }
     let motion = Motion {
         v_i: kin.v_i,

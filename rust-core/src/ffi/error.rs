@@ -81,6 +81,10 @@ impl From<KinematicsError> for Failure {
             KinematicsError::NonPositiveRadius => {
                 Failure::new(Status::NonPositiveRadius, "radius must be > 0")
             }
+            KinematicsError::DistanceOverflows => Failure::new(
+                Status::NonFiniteResult,
+                "the centre distance overflows: the centres are too far apart",
+            ),
         }
     }
 }
