@@ -524,16 +524,35 @@ typedef struct GbContactFrame {
    * `delta_n > 0` when touching.
    */
   double overlap;
+  /**
+   * Distance from the centre of `i` to the contact point: the arm of the
+   * tangential force's couple on `i`.
+   */
   double lever_i;
+  /**
+   * The same for `j`; 0 for a wall, which the couple does not turn.
+   */
   double lever_j;
   /**
    * `R*` of the rolling cap; 0 when built for a model without rolling
    * (it is read nowhere else, so its division is left out).
    */
   double r_eff;
+  /**
+   * Velocity of the centre of `i`.
+   */
   double v_i[3];
+  /**
+   * Velocity of the centre of `j` (of a wall, its velocity).
+   */
   double v_j[3];
+  /**
+   * Angular velocity of `i`.
+   */
   double w_i[3];
+  /**
+   * Angular velocity of `j` (zero for a wall).
+   */
   double w_j[3];
 } GbContactFrame;
 

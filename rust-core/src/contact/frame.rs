@@ -18,14 +18,21 @@ pub struct ContactFrame {
     pub n: [f64; 3],
     /// `delta_n > 0` when touching.
     pub overlap: f64,
+    /// Distance from the centre of `i` to the contact point: the arm of the
+    /// tangential force's couple on `i`.
     pub lever_i: f64,
+    /// The same for `j`; 0 for a wall, which the couple does not turn.
     pub lever_j: f64,
     /// `R*` of the rolling cap; 0 when built for a model without rolling
     /// (it is read nowhere else, so its division is left out).
     pub r_eff: f64,
+    /// Velocity of the centre of `i`.
     pub v_i: [f64; 3],
+    /// Velocity of the centre of `j` (of a wall, its velocity).
     pub v_j: [f64; 3],
+    /// Angular velocity of `i`.
     pub w_i: [f64; 3],
+    /// Angular velocity of `j` (zero for a wall).
     pub w_j: [f64; 3],
 }
 
@@ -33,9 +40,13 @@ pub struct ContactFrame {
 /// the engine has them.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Motion {
+    /// Velocity of the centre of `i`.
     pub v_i: [f64; 3],
+    /// Velocity of the centre of `j` (of a wall, its velocity).
     pub v_j: [f64; 3],
+    /// Angular velocity of `i`.
     pub w_i: [f64; 3],
+    /// Angular velocity of `j` (zero for a wall).
     pub w_j: [f64; 3],
 }
 
@@ -44,8 +55,11 @@ pub struct Motion {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Plane {
+    /// Any point of the plane.
     pub point: [f64; 3],
+    /// Unit normal, pointing to the side the particles are on.
     pub normal: [f64; 3],
+    /// Velocity of the wall (it slides or moves as a whole).
     pub velocity: [f64; 3],
 }
 
