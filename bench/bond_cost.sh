@@ -69,7 +69,7 @@ if not rows:
 kinds = {"bond": 0, "ffi": 1, "contact": 2}
 variants = ["full_6dof", "no_twist", "no_bend", "normal_shear", "normal_only",
             "tension_only", "damping_off", "smooth_damping", "zeroed_twist_bend",
-            "zeroed_shear_twist_bend", "full_6dof_ffi_batch", "voigt_rolling",
+            "zeroed_shear_twist_bend", "full_6dof_ffi_single", "voigt_rolling",
             "voigt_no_rolling"]
 def rank(key):
     kind, name = key

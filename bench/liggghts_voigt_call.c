@@ -1,7 +1,8 @@
-/* Cost of one Voigt contact through the core's unchecked entry
- * (granbond_voigt_compute_fields_unchecked), called the two ways an engine
- * adapter can call it: the fields of a frame written field by field just
- * before the call, or passed from the engine's own arrays; the output read
+/* Cost of one Voigt contact through the core's unchecked entry the LIGGGHTS
+ * adapter calls (granbond_voigt_compute_normal_unchecked), called the two
+ * ways an engine adapter can call it: the normal written component by
+ * component just before the call, or passed from the engine's own arrays;
+ * the output read
  * back one double at a time. 4096 touching contacts with their own history
  * (one copy per way), best of 300 passes, the two ways alternating: a pass
  * is short enough to be rarely interrupted on a shared machine. Built and
@@ -18,7 +19,7 @@
 #define PASSES 300
 
 static double en[CONTACTS][3], vi[CONTACTS][3], vj[CONTACTS][3], wi[CONTACTS][3], wj[CONTACTS][3];
-static double overlap[CONTACTS], history[2][CONTACTS][GRANBOND_CONTACT_STATE_LEN];
+static double distance[CONTACTS], history[2][CONTACTS][GRANBOND_CONTACT_STATE_LEN];
 
 static double seconds(void)
 {
@@ -34,16 +35,13 @@ static double pass(const GbVoigtModel *m, int fields)
         GbContactOutput out;
         GbStatus s;
         if (fields) {
-            s = granbond_voigt_compute_fields_unchecked(m, en[k], overlap[k], 1e-3, 1e-3, 5e-4, vi[k], vj[k], wi[k],
-                                                        wj[k], 1e-6, history[1][k], &out);
+            s = granbond_voigt_compute_normal_unchecked(m, en[k], distance[k], 1e-3, 1e-3, vi[k], vj[k], wi[k], wj[k],
+                                                        1e-6, history[1][k], &out);
         } else {
-            GbContactFrame f;
-            f.n[0] = en[k][0], f.n[1] = en[k][1], f.n[2] = en[k][2];
-            f.overlap = overlap[k], f.lever_i = 1e-3, f.lever_j = 1e-3, f.r_eff = 5e-4;
-            for (int c = 0; c < 3; c++)
-                f.v_i[c] = vi[k][c], f.v_j[c] = vj[k][c], f.w_i[c] = wi[k][c], f.w_j[c] = wj[k][c];
-            s = granbond_voigt_compute_fields_unchecked(m, f.n, f.overlap, f.lever_i, f.lever_j, f.r_eff, f.v_i, f.v_j,
-                                                        f.w_i, f.w_j, 1e-6, history[0][k], &out);
+            double n[3];
+            n[0] = en[k][0], n[1] = en[k][1], n[2] = en[k][2];
+            s = granbond_voigt_compute_normal_unchecked(m, n, distance[k], 1e-3, 1e-3, vi[k], vj[k], wi[k], wj[k], 1e-6,
+                                                        history[0][k], &out);
         }
         const volatile double *const force = out.force_i;
         sum += (s == GB_STATUS_OK) ? force[0] + force[1] + force[2] : NAN;
@@ -68,10 +66,10 @@ int main(void)
             vi[k][c] = 1e-3 * sin(k + c), vj[k][c] = -vi[k][c];
             wi[k][c] = 0.3 * cos(k * c), wj[k][c] = 0.1 * c;
         }
-        overlap[k] = 1e-6 * (1.0 + 0.5 * sin(3.0 * k));
+        distance[k] = 2e-3 - 1e-6 * (1.0 + 0.5 * sin(3.0 * k));
     }
-    const char *names[2] = {"frame written just before, granbond_voigt_compute_fields_unchecked",
-                            "fields from the engine's arrays, granbond_voigt_compute_fields_unchecked"};
+    const char *names[2] = {"normal written just before, granbond_voigt_compute_normal_unchecked",
+                            "normal from the engine's arrays, granbond_voigt_compute_normal_unchecked"};
     double best[2] = {1e9, 1e9}, check = 0.0;
     for (int r = 0; r < PASSES; r++)
         for (int fields = 0; fields < 2; fields++) {

@@ -2,7 +2,7 @@
 
 use super::cells::close_pairs;
 use granbond::bond::{BondModel, BondOutput, BondState, BondStatus, BreakMode};
-use granbond::contact::model::{sphere_plane, sphere_sphere};
+use granbond::contact::{sphere_plane, sphere_sphere};
 use granbond::contact::{ContactOutput, ContactState, Plane, VoigtModel};
 use granbond::integrate::{symplectic_euler, Body};
 use granbond::kinematics::{KinematicsError, PairKinematics, SphereKinematics};

@@ -242,7 +242,7 @@ fn evaluating_the_stored_state_gives_the_loads_of_the_last_step() {
     }
     assert!(last.force_i[1] != 0.0 && last.torque_i[1] != 0.0, "{last:?}");
     let kept = state;
-    let frame = granbond::contact::model::sphere_sphere(&k).unwrap();
+    let frame = granbond::contact::sphere_sphere(&k).unwrap();
     let mut again = ContactOutput::default();
     m.evaluate_frame(&frame, &state, &mut again);
     assert_eq!(again, last);

@@ -36,7 +36,7 @@ use criterion::{
 };
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus, Simd, BOND_STATE_LEN};
 use granbond::contact::{ContactOutput, ContactState, VoigtModel, VoigtParams};
-use granbond::ffi::bond::{granbond_bond_compute_batch, granbond_bond_model_new};
+use granbond::ffi::bond::{granbond_bond_compute, granbond_bond_model_new};
 use granbond::ffi::Status;
 use granbond::kinematics::PairKinematics;
 use std::time::Duration;
@@ -438,8 +438,9 @@ fn bench_scattered(c: &mut Criterion<Clock>, n: usize) {
     group.finish();
 }
 
-/// The same sweep as `bond_1e3/full_6dof` through the C ABI (pointer checks,
-/// `catch_unwind`, error-slot reset): the cost of the boundary.
+/// The sweep of `bond_1e3/full_6dof` one bond per C call (pointer checks,
+/// `catch_unwind`, error-slot reset on every call): the cost of the
+/// boundary, against `scattered_1e3/single` (the same steps in Rust).
 fn bench_ffi(c: &mut Criterion<Clock>) {
     let n = IN_CACHE;
     let pairs = bond_pairs(n);
@@ -450,31 +451,30 @@ fn bench_ffi(c: &mut Criterion<Clock>) {
     assert_eq!(status, Status::Ok);
     let mut states = fresh_states(&pairs);
     let mut outs = vec![BondOutput::default(); n];
-    let mut failed = 0usize;
     let mut sweep = 0usize;
     let mut group = c.benchmark_group("ffi_1e3");
     configure(&mut group, n);
-    group.bench_function(BenchmarkId::new("full_6dof_ffi_batch", n), |b| {
+    group.bench_function(BenchmarkId::new("full_6dof_ffi_single", n), |b| {
         b.iter(|| {
             let kin = pairs.frame(sweep);
             sweep += 1;
-            // SAFETY: every array holds `n` elements; the model is live.
-            let status = unsafe {
-                granbond_bond_compute_batch(
-                    black_box(model),
-                    n,
-                    kin.as_ptr(),
-                    black_box(DT),
-                    states.as_mut_ptr() as *mut f64,
-                    outs.as_mut_ptr(),
-                    &mut failed,
-                )
-            };
-            assert_eq!(status, Status::Ok);
+            for ((k, s), o) in kin.iter().zip(states.iter_mut()).zip(outs.iter_mut()) {
+                // SAFETY: one bond's kinematics, state and output; the model is live.
+                let status = unsafe {
+                    granbond_bond_compute(
+                        black_box(model),
+                        k,
+                        black_box(DT),
+                        s as *mut BondState as *mut f64,
+                        o,
+                    )
+                };
+                assert_eq!(status, Status::Ok);
+            }
         })
     });
     group.finish();
-    assert_sane("full_6dof_ffi_batch", &states, &outs);
+    assert_sane("full_6dof_ffi_single", &states, &outs);
     // SAFETY: from granbond_bond_model_new, not used again.
     unsafe { granbond::ffi::bond::granbond_bond_model_free(model) };
 }

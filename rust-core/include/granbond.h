@@ -49,7 +49,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 11
+#define GRANBOND_ABI_VERSION 12
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -210,7 +210,7 @@ typedef enum GbStateKind {
 typedef enum GbStatus {
   GB_STATUS_OK = 0,
   /**
-   * A required pointer argument was null or misaligned.
+   * A required pointer argument was null.
    */
   GB_STATUS_NULL_POINTER = 1,
   /**
@@ -219,7 +219,8 @@ typedef enum GbStatus {
    */
   GB_STATUS_INVALID_PARAMETER = 2,
   /**
-   * NaN or infinity in positions, velocities or radii.
+   * NaN or infinity in what the caller passed: positions, velocities,
+   * radii, a frame, a state or a number passed by value.
    */
   GB_STATUS_NON_FINITE_INPUT = 3,
   /**
@@ -242,6 +243,16 @@ typedef enum GbStatus {
    * A bug: the call panicked and was stopped at the boundary.
    */
   GB_STATUS_PANIC = 8,
+  /**
+   * A pointer argument is not aligned for the type it points to.
+   */
+  GB_STATUS_MISALIGNED = 9,
+  /**
+   * The result came out NaN or infinite: finite input far outside the
+   * model's range, or (from an unchecked entry) non-finite input the
+   * caller let through. Nothing was written where the entry says so.
+   */
+  GB_STATUS_NON_FINITE_RESULT = 10,
 } GbStatus;
 
 typedef struct GbBondModel GbBondModel;
@@ -263,7 +274,6 @@ typedef struct GbLayout {
   size_t voigt_params;
   size_t pair_kinematics;
   size_t sphere_kinematics;
-  size_t plane;
   size_t bond_output;
   size_t atom_arrays;
   size_t contact_output;
@@ -512,16 +522,6 @@ typedef struct GbContactOutput {
 } GbContactOutput;
 
 /**
- * A plane wall: a point on it, its unit normal towards the particles, and
- * its velocity (walls do not spin).
- */
-typedef struct GbPlane {
-  double point[3];
-  double normal[3];
-  double velocity[3];
-} GbPlane;
-
-/**
  * Where and how deep two bodies touch, how far from each centre the
  * contact point lies, and how the bodies move: everything a contact law
  * needs, for a sphere pair or a sphere on a wall alike.
@@ -535,15 +535,35 @@ typedef struct GbContactFrame {
    * `delta_n > 0` when touching.
    */
   double overlap;
+  /**
+   * Distance from the centre of `i` to the contact point: the arm of the
+   * tangential force's couple on `i`.
+   */
   double lever_i;
+  /**
+   * The same for `j`; 0 for a wall, which the couple does not turn.
+   */
   double lever_j;
   /**
-   * `R*` of the rolling cap.
+   * `R*` of the rolling cap; 0 when built for a model without rolling
+   * (it is read nowhere else, so its division is left out).
    */
   double r_eff;
+  /**
+   * Velocity of the centre of `i`.
+   */
   double v_i[3];
+  /**
+   * Velocity of the centre of `j` (of a wall, its velocity).
+   */
   double v_j[3];
+  /**
+   * Angular velocity of `i`.
+   */
   double w_i[3];
+  /**
+   * Angular velocity of `j` (zero for a wall).
+   */
   double w_j[3];
 } GbContactFrame;
 
@@ -736,16 +756,6 @@ void granbond_bond_model_free(struct GbBondModel *model);
 size_t granbond_bond_parameter_count(void);
 
 /**
- * LAMMPS keyword and LIGGGHTS name of bond parameter `id` (static storage).
- *
- * # Safety
- * `keyword` and `liggghts_name` must be null or valid for writes.
- */
-enum GbStatus granbond_bond_parameter_name(size_t id,
-                                           const char **keyword,
-                                           const char **liggghts_name);
-
-/**
  * Creates the bond in `state` (`double[GRANBOND_BOND_STATE_LEN]`, all zero
  * for a pair never bonded) if the creation rules allow it at `step`;
  * `*created` tells whether it did.
@@ -814,25 +824,8 @@ enum GbStatus granbond_bond_compute(const struct GbBondModel *model,
                                     struct GbBondOutput *out);
 
 /**
- * `granbond_bond_compute` over `count` bonds: `kinematics[count]`,
- * `states[count * GRANBOND_BOND_STATE_LEN]`, `out[count]`. Stops at the
- * first bad input and writes its index to `failed_index` (if not null;
- * a misaligned one is refused before any bond is advanced).
- *
- * # Safety
- * Pointers must be null or valid for the sizes above.
- */
-enum GbStatus granbond_bond_compute_batch(const struct GbBondModel *model,
-                                          size_t count,
-                                          const struct GbPairKinematics *kinematics,
-                                          double dt,
-                                          double *states,
-                                          struct GbBondOutput *out,
-                                          size_t *failed_index);
-
-/**
- * `granbond_bond_compute_batch` for bonds whose states lie apart in memory,
- * as in an engine's contact history, and whose kinematics are read from
+ * `granbond_bond_compute` over `count` bonds whose states lie apart in
+ * memory, as in an engine's contact history, and whose kinematics are read from
  * the engine's per-atom arrays: bond `k` joins atoms `pairs[2k]` (`i`) and
  * `pairs[2k + 1]` (`j`), so the engine copies nothing per bond, and
  * `states[k]` points to the `GRANBOND_BOND_STATE_LEN` doubles of bond `k`
@@ -901,34 +894,13 @@ enum GbStatus granbond_wall_bond_compute(const struct GbBondModel *model,
 enum GbStatus granbond_bond_output_store(const struct GbBondOutput *out, double *slots);
 
 /**
- * `granbond_bond_output_store` for the bonds of one
- * `granbond_bond_compute_indexed` call, in one call: for every `k < count`
- * whose `out[k]` is intact, `out[k]` packed into the
- * `GRANBOND_BOND_OUTPUT_LEN` doubles at `states[k] + offset`, for an engine
- * that keeps the output `offset` doubles after the bond's state in the
- * pair's history. Bonds not intact are left alone. Stops at the first bond
- * whose slots are null or misaligned or whose output is not finite (or
- * overflows) and writes its index to `failed_index` (if not null); the
- * bonds before it are stored.
- *
- * # Safety
- * `out` must be null or point to `count` outputs, `states` null or to
- * `count` pointers; for an intact bond, `states[k]` must be null or such
- * that `states[k] + offset` is valid for `GRANBOND_BOND_OUTPUT_LEN` doubles.
- */
-enum GbStatus granbond_bond_output_store_intact(size_t count,
-                                                const struct GbBondOutput *out,
-                                                double *const *states,
-                                                size_t offset,
-                                                size_t *failed_index);
-
-/**
  * Unpacks the output `granbond_bond_output_store` packed into `slots`
  * (`GRANBOND_BOND_OUTPUT_LEN` doubles): `force_i`, `torque_i =
  * (sum + diff) / 2`, `torque_j = (sum - diff) / 2`, `sigma`, `tau`; the
  * status intact and no break mode; `normal_force` and `delta`, which the
- * slots do not keep, 0. Slots giving a non-finite load or stress are
- * refused (`GB_STATUS_NON_FINITE_INPUT`), `out` left alone.
+ * slots do not keep, 0. Refused, `out` left alone: a non-finite slot
+ * (`GB_STATUS_NON_FINITE_INPUT`), and slots whose torques overflow
+ * (`GB_STATUS_NON_FINITE_RESULT`).
  *
  * # Safety
  * `slots` must be null or point to `GRANBOND_BOND_OUTPUT_LEN` doubles;
@@ -944,7 +916,8 @@ enum GbStatus granbond_bond_output_load(const double *slots, struct GbBondOutput
  * wall point as `x_j` and `radius_j = 0`: the centre is that point.
  * Refused: non-finite positions (`GB_STATUS_NON_FINITE_INPUT`),
  * `radius_i <= 0`, `radius_j < 0` or not finite
- * (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument.
+ * (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument, and positions
+ * so far apart that the centre overflows (`GB_STATUS_NON_FINITE_RESULT`).
  *
  * # Safety
  * Pointers must be null or valid for three doubles.
@@ -1116,97 +1089,6 @@ enum GbStatus granbond_voigt_compute(const struct GbVoigtModel *model,
                                      struct GbContactOutput *out);
 
 /**
- * `granbond_voigt_compute` over `count` contacts (`states[count *
- * GRANBOND_CONTACT_STATE_LEN]`); stops at the first bad input and writes
- * its index to `failed_index` (if not null; a misaligned one is refused
- * before any contact is advanced).
- *
- * # Safety
- * Pointers must be null or valid for the sizes above.
- */
-enum GbStatus granbond_voigt_compute_batch(const struct GbVoigtModel *model,
-                                           size_t count,
-                                           const struct GbPairKinematics *kinematics,
-                                           double dt,
-                                           double *states,
-                                           struct GbContactOutput *out,
-                                           size_t *failed_index);
-
-/**
- * Advances a sphere-plane contact (the plane's normal points towards the
- * sphere's side and must be a unit vector).
- *
- * # Safety
- * Pointers must be null or valid; `state` holds `GRANBOND_CONTACT_STATE_LEN` doubles.
- */
-enum GbStatus granbond_voigt_compute_plane(const struct GbVoigtModel *model,
-                                           const struct GbSphereKinematics *sphere,
-                                           const struct GbPlane *plane,
-                                           double dt,
-                                           double *state,
-                                           struct GbContactOutput *out);
-
-/**
- * `granbond_voigt_compute` / `granbond_voigt_compute_plane` for a contact
- * whose frame the engine has already built (the fields of the frame
- * `granbond_contact_frame_pair` / `granbond_contact_frame_plane` give),
- * handed over one by one, for engines that call once per contact and step
- * and keep the fields in their own arrays: `n` (3 doubles, may have just
- * been written: it is read one double at a time), the overlap, levers and
- * `R*` by value, and the velocities `v_i`, `v_j`, `w_i`, `w_j` (3 doubles
- * each) where the engine keeps them (they are read as the compiler likes:
- * pass the engine's arrays rather than fresh copies). No frame is built
- * and none is read back.
- *
- * The hot path: no pointer or frame checks, and a success leaves the error
- * record alone. The result is checked: a non-finite force or torque
- * (non-finite input) gives `GB_STATUS_NON_FINITE_INPUT` with a message.
- * Same physics, same bits as the checked calls given the same frame. The
- * normal and the state are read one double at a time, and the result is
- * checked before it is stored. On a CPU with AVX2 (detected when a model
- * is built) the step runs a copy compiled for AVX2: same bits, fewer
- * instructions.
- *
- * # Safety
- * No pointer may be null. `model` from `granbond_voigt_model_new`, `n` a
- * unit vector, every number finite, `state` `GRANBOND_CONTACT_STATE_LEN`
- * doubles, `out` valid for writes, `dt` finite and >= 0.
- */
-enum GbStatus granbond_voigt_compute_fields_unchecked(const struct GbVoigtModel *model,
-                                                      const double *n,
-                                                      double overlap,
-                                                      double lever_i,
-                                                      double lever_j,
-                                                      double r_eff,
-                                                      const double *v_i,
-                                                      const double *v_j,
-                                                      const double *w_i,
-                                                      const double *w_j,
-                                                      double dt,
-                                                      double *state,
-                                                      struct GbContactOutput *out);
-
-/**
- * The contact frame (normal, overlap, levers, velocities) of two spheres,
- * for engines that evaluate the Voigt parts separately.
- *
- * # Safety
- * Pointers must be null or valid.
- */
-enum GbStatus granbond_contact_frame_pair(const struct GbPairKinematics *kinematics,
-                                          struct GbContactFrame *frame);
-
-/**
- * The contact frame of a sphere on a plane wall.
- *
- * # Safety
- * Pointers must be null or valid.
- */
-enum GbStatus granbond_contact_frame_plane(const struct GbSphereKinematics *sphere,
-                                           const struct GbPlane *plane,
-                                           struct GbContactFrame *frame);
-
-/**
  * Voigt normal force `k_n delta_n - gamma_n v_n` (clamped at zero when the
  * model has no attraction) for a touching frame.
  *
@@ -1311,25 +1193,17 @@ enum GbStatus granbond_voigt_critical_timestep(const struct GbVoigtModel *model,
 size_t granbond_voigt_parameter_count(void);
 
 /**
- * LAMMPS keyword and LIGGGHTS name of Voigt parameter `id` (static storage).
+ * One step of a Voigt contact given by its separation `del = x_i - x_j`
+ * (3 doubles) and `rsq = |del|^2`: the normal is `del / sqrt(rsq)` (one
+ * reciprocal), the overlap `(radius_i + radius_j) - sqrt(rsq)`, the levers
+ * the radii and `R*` (only with rolling) `R_i R_j / (R_i + R_j)`.
+ * Coincident centres (`rsq = 0`) are named as such.
  *
  * # Safety
- * `keyword` and `liggghts_name` must be null or valid for writes.
- */
-enum GbStatus granbond_voigt_parameter_name(size_t id,
-                                            const char **keyword,
-                                            const char **liggghts_name);
-
-/**
- * `granbond_voigt_compute_fields_unchecked` for a touching pair given by
- * its separation `del = x_i - x_j` (3 doubles) and `rsq = |del|^2`: the
- * normal is `del / sqrt(rsq)` (one reciprocal), the overlap
- * `(radius_i + radius_j) - sqrt(rsq)`, the levers the radii and `R*` (only
- * with rolling) `R_i R_j / (R_i + R_j)`.
- *
- * # Safety
- * As `granbond_voigt_compute_fields_unchecked`; `del` three doubles,
- * `rsq > 0`.
+ * No pointer may be null. `model` from `granbond_voigt_model_new`; `del`,
+ * `v_*`, `w_*` three doubles each; every number finite, `rsq > 0`, radii
+ * > 0; `state` `GRANBOND_CONTACT_STATE_LEN` doubles; `out` valid for
+ * writes; `dt` finite and >= 0.
  */
 enum GbStatus granbond_voigt_compute_separation_unchecked(const struct GbVoigtModel *model,
                                                           const double *del,
@@ -1345,14 +1219,15 @@ enum GbStatus granbond_voigt_compute_separation_unchecked(const struct GbVoigtMo
                                                           struct GbContactOutput *out);
 
 /**
- * `granbond_voigt_compute_fields_unchecked` for a contact whose unit
- * normal `n` (from `j` to `i`) the engine has built, with the centre
- * distance `distance`; for a wall `radius_j = 0` and `distance` is the
- * centre's distance from the wall along `n` (so the overlap is
- * `radius_i - distance`, the lever of the wall 0 and `R* = R_i`).
+ * One step of a Voigt contact whose unit normal `n` (from `j` to `i`) the
+ * engine has built, with the centre distance `distance`; for a wall
+ * `radius_j = 0` and `distance` is the centre's distance from the wall
+ * along `n` (so the overlap is `radius_i - distance`, the lever of the
+ * wall 0 and `R* = R_i`).
  *
  * # Safety
- * As `granbond_voigt_compute_fields_unchecked`.
+ * As `granbond_voigt_compute_separation_unchecked`, with `n` a unit
+ * vector (three doubles) in place of `del`, and `radius_j >= 0`.
  */
 enum GbStatus granbond_voigt_compute_normal_unchecked(const struct GbVoigtModel *model,
                                                       const double *n,
@@ -1464,12 +1339,12 @@ enum GbStatus granbond_bond_field_info(size_t id,
  * (`double[granbond_bond_field_count()]`, in the table's order): its pair
  * record `record` (`granbond_record_layout(with_contact)`) as sphere `i`
  * keeps it, and the centres `x_i`, `x_j` (`double[3]` each) of the two
- * spheres. Refused: non-finite centres (`GB_STATUS_NON_FINITE_INPUT`),
- * coincident ones (`GB_STATUS_INVALID_ARGUMENT`), each naming the
- * argument, and fields that would not be finite (centres whose distance
- * under- or overflows, a record with non-finite numbers:
- * `GB_STATUS_NON_FINITE_INPUT`, naming the field); `values` is then left
- * alone.
+ * spheres. Refused, `values` left alone: non-finite centres or a record
+ * whose bond state or loads hold a non-finite number
+ * (`GB_STATUS_NON_FINITE_INPUT`), coincident centres
+ * (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument, and fields
+ * that come out non-finite (centres whose distance under- or overflows:
+ * `GB_STATUS_NON_FINITE_RESULT`, naming the field).
  *
  * # Safety
  * `model` must be null or a model; `record` null or valid for the
@@ -1648,7 +1523,6 @@ static inline GbLayout granbond_header_layout(void)
     l.voigt_params = sizeof(GbVoigtParams);
     l.pair_kinematics = sizeof(GbPairKinematics);
     l.sphere_kinematics = sizeof(GbSphereKinematics);
-    l.plane = sizeof(GbPlane);
     l.bond_output = sizeof(GbBondOutput);
     l.atom_arrays = sizeof(GbAtomArrays);
     l.contact_output = sizeof(GbContactOutput);

@@ -32,9 +32,15 @@ pub struct SphereKinematics {
 /// Why a pair's kinematics cannot be used.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum KinematicsError {
+    /// NaN or infinity in a position, velocity or radius.
     NonFinite,
+    /// The centres coincide: the pair has no axis.
     CoincidentCentres,
+    /// A radius is zero or negative.
     NonPositiveRadius,
+    /// Finite centres so far apart that their distance overflows: no
+    /// direction and no overlap to speak of.
+    DistanceOverflows,
 }
 
 impl PairKinematics {

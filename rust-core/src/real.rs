@@ -13,7 +13,7 @@
 //! of a jump: for `f64` the mask is a `bool`, for lanes one all-ones or
 //! all-zeros word per lane.
 //!
-//! The lane types ([`packed`]: 4 lanes with AVX2, 8 with AVX-512) wrap the
+//! The lane types (`real::packed`: 4 lanes with AVX2, 8 with AVX-512) wrap the
 //! packed registers and their intrinsics, so LLVM keeps every quantity of a
 //! chunk in one register instead of re-forming vectors from scalars.
 

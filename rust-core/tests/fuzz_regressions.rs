@@ -3,16 +3,12 @@
 
 use granbond::bond::BondState;
 use granbond::bond::{BondModel, BondOutput, BondParams, BOND_STATE_LEN};
-use granbond::contact::{ContactFrame, Plane};
 use granbond::contact::{ContactOutput, VoigtModel, VoigtParams, CONTACT_STATE_LEN};
 use granbond::ffi::bond::{
-    granbond_bond_compute, granbond_bond_compute_batch, granbond_bond_compute_indexed,
-    granbond_bond_critical_timestep, granbond_bond_recommended_timestep, AtomArrayPointers,
+    granbond_bond_compute, granbond_bond_compute_indexed, granbond_bond_critical_timestep,
+    granbond_bond_recommended_timestep, AtomArrayPointers,
 };
-use granbond::ffi::contact::{
-    granbond_contact_frame_plane, granbond_voigt_compute, granbond_voigt_compute_batch,
-    granbond_voigt_critical_timestep,
-};
+use granbond::ffi::contact::{granbond_voigt_compute, granbond_voigt_critical_timestep};
 use granbond::ffi::error::granbond_last_error_message;
 use granbond::ffi::Status;
 use granbond::kinematics::PairKinematics;
@@ -47,7 +43,7 @@ fn misaligned(words: &mut [u64; 2]) -> *mut usize {
 }
 
 fn expect_failed_index_refused(function: &str, status: Status, words: &[u64; 2]) {
-    assert_eq!(status, Status::NullPointer, "{function}: {}", message());
+    assert_eq!(status, Status::Misaligned, "{function}: {}", message());
     let m = message();
     assert!(
         m.starts_with(function) && m.contains("`failed_index`") && m.contains("misaligned"),
@@ -63,30 +59,8 @@ fn expect_failed_index_refused(function: &str, status: Status, words: &[u64; 2])
 #[test]
 fn a_misaligned_failed_index_is_refused_not_written_through() {
     let model = bond_model();
-    // a pair the batch refuses (NaN), so the call has an index to report
-    let bad = PairKinematics {
-        x_i: [f64::NAN, 0.0, 0.0],
-        radius_i: 1e-3,
-        radius_j: 1e-3,
-        ..PairKinematics::default()
-    };
     let mut state = [0.0; BOND_STATE_LEN];
     let mut out = BondOutput::default();
-
-    let mut words = [0u64; 2];
-    // SAFETY: one bond, valid pointers but `failed_index`.
-    let status = unsafe {
-        granbond_bond_compute_batch(
-            &model,
-            1,
-            &bad,
-            1e-7,
-            state.as_mut_ptr(),
-            &mut out,
-            misaligned(&mut words),
-        )
-    };
-    expect_failed_index_refused("granbond_bond_compute_batch", status, &words);
 
     let mut states = [state.as_mut_ptr()];
 
@@ -115,24 +89,6 @@ fn a_misaligned_failed_index_is_refused_not_written_through() {
         )
     };
     expect_failed_index_refused("granbond_bond_compute_indexed", status, &words);
-
-    let voigt = VoigtModel::new(VoigtParams::default()).unwrap();
-    let mut contact = [0.0; CONTACT_STATE_LEN];
-    let mut contact_out = ContactOutput::default();
-    let mut words = [0u64; 2];
-    // SAFETY: as above.
-    let status = unsafe {
-        granbond_voigt_compute_batch(
-            &voigt,
-            1,
-            &bad,
-            1e-7,
-            contact.as_mut_ptr(),
-            &mut contact_out,
-            misaligned(&mut words),
-        )
-    };
-    expect_failed_index_refused("granbond_voigt_compute_batch", status, &words);
 }
 
 #[test]
@@ -194,24 +150,23 @@ fn estimates_that_underflow_are_refused_rather_than_answered_with_zero_or_nan() 
 
 #[test]
 fn a_centre_distance_that_overflows_gives_no_contact_frame() {
-    use granbond::contact::ContactFrame;
-    use granbond::ffi::contact::{granbond_contact_frame_pair, granbond_voigt_compute};
+    use granbond::contact::sphere_sphere;
+    use granbond::kinematics::KinematicsError;
     let k = PairKinematics {
         x_i: [2.2e-3, -7.5e240, 0.0],
         radius_i: 1e-3,
         radius_j: 1e-3,
         ..PairKinematics::default()
     };
-    let mut frame = ContactFrame::default();
-    // SAFETY: valid pointers.
-    let status = unsafe { granbond_contact_frame_pair(&k, &mut frame) };
-    assert_eq!(status, Status::NonFiniteInput, "frame {frame:?}");
+    let frame = sphere_sphere(&k);
+    assert_eq!(frame, Err(KinematicsError::DistanceOverflows), "frame {frame:?}");
     let voigt = VoigtModel::new(VoigtParams::default()).unwrap();
     let mut state = [0.0; CONTACT_STATE_LEN];
     let mut out = ContactOutput::default();
     // SAFETY: valid pointers.
     let status = unsafe { granbond_voigt_compute(&voigt, &k, 1e-7, state.as_mut_ptr(), &mut out) };
-    assert_eq!(status, Status::NonFiniteInput, "{out:?}");
+    assert_eq!(status, Status::NonFiniteResult, "{out:?}");
+    assert!(message().contains("centre distance overflows"), "{}", message());
 }
 
 #[test]
@@ -238,7 +193,7 @@ fn a_bond_whose_section_underflows_is_refused_rather_than_answered_with_nan_stre
             &mut out,
         )
     };
-    assert_eq!(status, Status::NonFiniteInput, "{:?}: {}", out, message());
+    assert_eq!(status, Status::NonFiniteResult, "{:?}: {}", out, message());
     let m = message();
     assert!(
         m.starts_with("granbond_bond_compute") && m.contains("non-finite"),
@@ -247,7 +202,7 @@ fn a_bond_whose_section_underflows_is_refused_rather_than_answered_with_nan_stre
 }
 
 #[test]
-fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
+fn a_bond_whose_spring_increment_overflows_is_refused_in_the_indexed_path() {
     let model = bond_model();
     let k = PairKinematics {
         x_i: [2e-3, 0.0, 0.0],
@@ -258,7 +213,6 @@ fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
         ..PairKinematics::default()
     };
     let fresh = BondState::created(2e-3);
-    let mut states = [fresh, fresh];
     let mut out = [BondOutput::default(); 2];
     let calm = PairKinematics {
         v_i: [0.0; 3],
@@ -266,23 +220,6 @@ fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
         ..k
     };
     let kin = [calm, k];
-    let mut failed = usize::MAX;
-    // SAFETY: two bonds, valid pointers of the documented sizes.
-    let status = unsafe {
-        granbond_bond_compute_batch(
-            &model,
-            2,
-            kin.as_ptr(),
-            1e-7,
-            states.as_mut_ptr() as *mut f64,
-            out.as_mut_ptr(),
-            &mut failed,
-        )
-    };
-    assert_eq!(status, Status::NonFiniteInput, "{}", message());
-    assert_eq!(failed, 1, "{}", message());
-    assert!(message().contains("bond 1:"), "{}", message());
-
     let mut states = [fresh, fresh];
     let mut pointers: Vec<*mut f64> = states
         .iter_mut()
@@ -301,7 +238,7 @@ fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
         count: 4,
     };
     let pairs = [0i32, 1, 2, 3];
-    failed = usize::MAX;
+    let mut failed = usize::MAX;
     // SAFETY: as above, four atoms, two distinct states.
     let status = unsafe {
         granbond_bond_compute_indexed(
@@ -315,7 +252,7 @@ fn a_bond_whose_spring_increment_overflows_is_refused_in_every_batch_path() {
             &mut failed,
         )
     };
-    assert_eq!(status, Status::NonFiniteInput, "{}", message());
+    assert_eq!(status, Status::NonFiniteResult, "{}", message());
     assert_eq!(failed, 1, "{}", message());
 }
 
@@ -340,25 +277,6 @@ fn a_contact_whose_tangential_spring_overflows_is_refused() {
     let mut out = ContactOutput::default();
     // SAFETY: valid pointers of the documented sizes.
     let status = unsafe { granbond_voigt_compute(&model, &k, 1e300, state.as_mut_ptr(), &mut out) };
-    assert_eq!(status, Status::NonFiniteInput, "{out:?}: {}", message());
+    assert_eq!(status, Status::NonFiniteResult, "{out:?}: {}", message());
     assert!(message().starts_with("granbond_voigt_compute"), "{}", message());
-}
-
-#[test]
-fn a_plane_whose_distance_overflows_gives_no_contact_frame() {
-    let sphere = granbond::kinematics::SphereKinematics {
-        x: [1e300, 0.0, 0.0],
-        v: [0.0; 3],
-        w: [0.0; 3],
-        radius: 1e-3,
-    };
-    let plane = Plane {
-        point: [-f64::MAX, 0.0, 0.0],
-        normal: [1.0, 0.0, 0.0],
-        velocity: [0.0; 3],
-    };
-    let mut frame = ContactFrame::default();
-    // SAFETY: valid pointers.
-    let status = unsafe { granbond_contact_frame_plane(&sphere, &plane, &mut frame) };
-    assert_eq!(status, Status::NonFiniteInput, "{frame:?}: {}", message());
 }

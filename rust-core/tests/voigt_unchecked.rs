@@ -1,22 +1,24 @@
-//! `granbond_voigt_compute_fields_unchecked`, the engines' per-contact entry,
-//! gives the same bits as the checked calls for the same frame, over many
-//! steps of sticking, sliding and rolling contacts of pairs and walls; a
-//! non-finite result is still reported, and coincident centres are named.
+//! The unchecked per-contact entries give the same bits as the checked
+//! calls for the same contact, over many steps of sticking, sliding and
+//! rolling contacts of pairs and walls; a non-finite result is still
+//! reported, and coincident centres are named.
 
 use granbond_test_support as common;
 
 use common::RADIUS;
-use granbond::contact::{ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN};
-use granbond::ffi::contact::{
-    granbond_contact_frame_pair, granbond_contact_frame_plane, granbond_voigt_compute,
-    granbond_voigt_compute_fields_unchecked, granbond_voigt_compute_plane,
+use granbond::contact::{
+    sphere_plane, ContactFrame, ContactOutput, ContactState, Plane, VoigtModel, VoigtParams,
+    CONTACT_STATE_LEN,
 };
+use granbond::ffi::contact::granbond_voigt_compute;
 use granbond::ffi::contact_geometry::{
-    granbond_contact_frame_separation, granbond_voigt_compute_separation_unchecked,
+    granbond_contact_frame_separation, granbond_voigt_compute_normal_unchecked,
+    granbond_voigt_compute_separation_unchecked,
 };
 use granbond::ffi::error::granbond_last_error_message;
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
+use granbond::vector::v3;
 use std::ffi::CStr;
 
 const DT: f64 = 1e-7;
@@ -37,24 +39,52 @@ impl Numbers {
     }
 }
 
-/// The unchecked entry on the fields of `frame`.
+/// The separation entry on the pair `k`, as LAMMPS hands it over.
 ///
 /// # Safety
 /// `state` must hold `CONTACT_STATE_LEN` doubles.
-unsafe fn fields_unchecked(
+unsafe fn separation_unchecked(
+    model: &VoigtModel,
+    k: &PairKinematics,
+    dt: f64,
+    state: *mut f64,
+    out: &mut ContactOutput,
+) -> Status {
+    let del = [k.x_i[0] - k.x_j[0], k.x_i[1] - k.x_j[1], k.x_i[2] - k.x_j[2]];
+    let rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+    granbond_voigt_compute_separation_unchecked(
+        model,
+        del.as_ptr(),
+        rsq,
+        k.radius_i,
+        k.radius_j,
+        k.v_i.as_ptr(),
+        k.v_j.as_ptr(),
+        k.w_i.as_ptr(),
+        k.w_j.as_ptr(),
+        dt,
+        state,
+        out,
+    )
+}
+
+/// The normal entry on the geometry and velocities of `frame`.
+///
+/// # Safety
+/// `state` must hold `CONTACT_STATE_LEN` doubles.
+unsafe fn normal_unchecked(
     model: &VoigtModel,
     frame: &ContactFrame,
     dt: f64,
     state: *mut f64,
     out: &mut ContactOutput,
 ) -> Status {
-    granbond_voigt_compute_fields_unchecked(
+    granbond_voigt_compute_normal_unchecked(
         model,
         frame.n.as_ptr(),
-        frame.overlap,
+        frame.lever_i + frame.lever_j - frame.overlap,
         frame.lever_i,
         frame.lever_j,
-        frame.r_eff,
         frame.v_i.as_ptr(),
         frame.v_j.as_ptr(),
         frame.w_i.as_ptr(),
@@ -124,14 +154,12 @@ fn pair_contacts_give_the_bits_of_granbond_voigt_compute() {
             };
             for step in 0..200 {
                 let (mut a, mut b) = (ContactOutput::default(), ContactOutput::default());
-                let mut frame = ContactFrame::default();
                 unsafe {
                     assert_eq!(
                         granbond_voigt_compute(model, &k, DT, sa.as_mut_ptr(), &mut a),
                         Status::Ok
                     );
-                    assert_eq!(granbond_contact_frame_pair(&k, &mut frame), Status::Ok);
-                    let status = fields_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
+                    let status = separation_unchecked(model, &k, DT, sb.as_mut_ptr(), &mut b);
                     assert_eq!(status, Status::Ok);
                 }
                 assert_same(
@@ -156,8 +184,10 @@ fn pair_contacts_give_the_bits_of_granbond_voigt_compute() {
     );
 }
 
+/// A wall as the LIGGGHTS adapter hands it over: its normal, the centre's
+/// distance from it, and radius 0.
 #[test]
-fn wall_contacts_give_the_bits_of_granbond_voigt_compute_plane() {
+fn wall_contacts_through_the_normal_entry_give_the_bits_of_a_sphere_on_a_plane() {
     let mut r = Numbers(11);
     for (m, model) in models().iter().enumerate() {
         for contact in 0..50 {
@@ -179,18 +209,31 @@ fn wall_contacts_give_the_bits_of_granbond_voigt_compute_plane() {
             };
             for step in 0..100 {
                 let (mut a, mut b) = (ContactOutput::default(), ContactOutput::default());
-                let mut frame = ContactFrame::default();
-                unsafe {
-                    let status =
-                        granbond_voigt_compute_plane(model, &sphere, &plane, DT, sa.as_mut_ptr(), &mut a);
-                    assert_eq!(status, Status::Ok);
-                    assert_eq!(
-                        granbond_contact_frame_plane(&sphere, &plane, &mut frame),
-                        Status::Ok
-                    );
-                    let status = fields_unchecked(model, &frame, DT, sb.as_mut_ptr(), &mut b);
-                    assert_eq!(status, Status::Ok);
-                }
+                model.step_frame(
+                    &sphere_plane(&sphere, &plane),
+                    DT,
+                    ContactState::from_slots_mut(&mut sa),
+                    &mut a,
+                );
+                // the centre's distance from the wall through the origin, as `sphere_plane` takes it
+                let distance = v3(sphere.x).dot(&v3(normal));
+                let status = unsafe {
+                    granbond_voigt_compute_normal_unchecked(
+                        model,
+                        normal.as_ptr(),
+                        distance,
+                        RADIUS,
+                        0.0,
+                        sphere.v.as_ptr(),
+                        plane.velocity.as_ptr(),
+                        sphere.w.as_ptr(),
+                        [0.0; 3].as_ptr(),
+                        DT,
+                        sb.as_mut_ptr(),
+                        &mut b,
+                    )
+                };
+                assert_eq!(status, Status::Ok);
                 assert_same(
                     &a,
                     &b,
@@ -217,18 +260,18 @@ fn a_non_finite_result_is_reported() {
     let mut state = [0.0; CONTACT_STATE_LEN];
     let mut out = ContactOutput::default();
     unsafe {
-        let ok = fields_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
+        let ok = normal_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
         assert_eq!(ok, Status::Ok);
         assert!(out.force_i[0] > 0.0);
         for bad in [f64::NAN, f64::INFINITY] {
             frame.v_i[1] = bad;
-            let status = fields_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
-            assert_eq!(status, Status::NonFiniteInput, "v_i = {bad}");
+            let status = normal_unchecked(model, &frame, DT, state.as_mut_ptr(), &mut out);
+            assert_eq!(status, Status::NonFiniteResult, "v_i = {bad}");
             let message = CStr::from_ptr(granbond_last_error_message())
                 .to_string_lossy()
                 .into_owned();
             assert!(
-                message.contains("granbond_voigt_compute_fields_unchecked"),
+                message.contains("granbond_voigt_compute_normal_unchecked"),
                 "{message}"
             );
         }

@@ -1,4 +1,4 @@
-//! The parts of the bond a model computes, as bits ([`super::switches`]
+//! The parts of the bond a model computes, as bits (`bond::switches`
 //! says how a compiled step reads them).
 
 use super::params::BondParams;

@@ -71,7 +71,7 @@ impl BondModel {
         self
     }
 
-    /// Advances one bond (see [`super::scalar::bond_step`]).
+    /// Advances one bond (see `bond::scalar::bond_step`).
     #[inline]
     pub fn step(
         &self,

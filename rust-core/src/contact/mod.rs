@@ -2,8 +2,9 @@
 //! history, Coulomb friction and Iwashita-Oda rolling resistance
 //! (docs/models/voigt.md).
 
+pub mod dispatch;
+pub mod frame;
 pub mod friction_cap;
-pub mod geometry;
 pub mod model;
 pub mod normal;
 pub mod params;
@@ -11,6 +12,7 @@ pub mod rolling;
 pub mod state;
 pub mod tangential;
 
-pub use model::{sphere_plane, sphere_sphere, ContactFrame, Plane, TangentialLoad, VoigtModel};
+pub use frame::{sphere_plane, sphere_sphere, ContactFrame, FrameError, Motion, Plane};
+pub use model::{TangentialLoad, VoigtModel};
 pub use params::{ContactPart, VoigtParams, VOIGT_PARAMETERS, VOIGT_PARTS, VOIGT_PHRASES};
 pub use state::{ContactOutput, ContactState, CONTACT_SLOTS, CONTACT_STATE_LEN};

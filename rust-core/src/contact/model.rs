@@ -1,82 +1,16 @@
 //! A validated Voigt contact type and its step.
 
+use super::frame::{sphere_sphere, ContactFrame};
 use super::friction_cap::capped_spring;
 use super::normal::normal_force;
 use super::params::VoigtParams;
-use super::rolling::{effective_radius, rolling_spin};
+use super::rolling::rolling_spin;
 use super::state::{ContactOutput, ContactState};
 use super::tangential::carry_spring;
-use crate::kinematics::{centre_line, slip_velocity, KinematicsError, PairKinematics, SphereKinematics};
+use crate::kinematics::{slip_velocity, KinematicsError, PairKinematics};
 use crate::parameters::ParameterError;
 use crate::stability::{oscillator_limit, sphere_inertia, RECOMMENDED_FRACTION};
 use crate::vector::{tangential_part, v3, Vec3};
-
-/// Where and how deep two bodies touch, how far from each centre the
-/// contact point lies, and how the bodies move: everything a contact law
-/// needs, for a sphere pair or a sphere on a wall alike.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct ContactFrame {
-    /// Unit normal from `j` to `i`.
-    pub n: [f64; 3],
-    /// `delta_n > 0` when touching.
-    pub overlap: f64,
-    pub lever_i: f64,
-    pub lever_j: f64,
-    /// `R*` of the rolling cap.
-    pub r_eff: f64,
-    pub v_i: [f64; 3],
-    pub v_j: [f64; 3],
-    pub w_i: [f64; 3],
-    pub w_j: [f64; 3],
-}
-
-/// A plane wall: a point on it, its unit normal towards the particles, and
-/// its velocity (walls do not spin).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Plane {
-    pub point: [f64; 3],
-    pub normal: [f64; 3],
-    pub velocity: [f64; 3],
-}
-
-pub fn sphere_sphere(kin: &PairKinematics) -> Result<ContactFrame, KinematicsError> {
-    kin.check()?;
-    let line = centre_line(kin)?;
-    if line.r == f64::INFINITY {
-        // finite centres whose distance overflows (|x| ~ 1e154 and more):
-        // no direction (n = d / inf = 0) and no overlap to speak of
-        return Err(KinematicsError::NonFinite);
-    }
-    Ok(ContactFrame {
-        n: line.n.into(),
-        overlap: kin.radius_i + kin.radius_j - line.r,
-        lever_i: kin.radius_i,
-        lever_j: kin.radius_j,
-        r_eff: effective_radius(kin.radius_i, Some(kin.radius_j)),
-        v_i: kin.v_i,
-        v_j: kin.v_j,
-        w_i: kin.w_i,
-        w_j: kin.w_j,
-    })
-}
-
-pub fn sphere_plane(sphere: &SphereKinematics, plane: &Plane) -> ContactFrame {
-    let n = v3(plane.normal);
-    let gap = (v3(sphere.x) - v3(plane.point)).dot(&n);
-    ContactFrame {
-        n: plane.normal,
-        overlap: sphere.radius - gap,
-        lever_i: sphere.radius,
-        lever_j: 0.0,
-        r_eff: effective_radius(sphere.radius, None),
-        v_i: sphere.v,
-        v_j: plane.velocity,
-        w_i: sphere.w,
-        w_j: [0.0; 3],
-    }
-}
 
 /// Tangential load of one step: the force on `i` and the torques its couple
 /// puts on both bodies.
@@ -171,7 +105,7 @@ impl VoigtModel {
 
     /// One step of any contact. Bodies apart exert nothing and forget their
     /// history. Always inlined: it is the body of the engines' per-contact
-    /// call (`granbond_voigt_compute_fields_unchecked`). Dispatches once on
+    /// calls (`contact::dispatch`). Dispatches once on
     /// the rolling switch to [`Self::step_frame_kernel`].
     #[inline(always)]
     pub fn step_frame(&self, f: &ContactFrame, dt: f64, state: &mut ContactState, out: &mut ContactOutput) {

@@ -4,7 +4,7 @@ use super::entry;
 use super::error::{Failure, Status};
 use super::guard::reference;
 use crate::bond::{BondOutput, BondParams, BOND_STATE_LEN, WALL_BOND_STATE_LEN};
-use crate::contact::{ContactFrame, ContactOutput, Plane, VoigtParams, CONTACT_STATE_LEN};
+use crate::contact::{ContactFrame, ContactOutput, VoigtParams, CONTACT_STATE_LEN};
 use crate::ffi::bond::{AtomArrayPointers, SphereKinematics};
 use crate::ffi::checks::CheckReport;
 use crate::ffi::contact::TangentialOutput;
@@ -15,7 +15,7 @@ use crate::timestep_check::TypeBodies;
 use std::mem::size_of;
 
 /// Bumped whenever a struct, a function or a meaning changes.
-pub const GRANBOND_ABI_VERSION: u32 = 11;
+pub const GRANBOND_ABI_VERSION: u32 = 12;
 
 /// The meaning of the state slots (`granbond_state_slot`): bumped whenever a
 /// slot is added, removed or changes meaning, so that engines can refuse
@@ -35,7 +35,6 @@ pub struct Layout {
     pub voigt_params: usize,
     pub pair_kinematics: usize,
     pub sphere_kinematics: usize,
-    pub plane: usize,
     pub bond_output: usize,
     pub atom_arrays: usize,
     pub contact_output: usize,
@@ -67,7 +66,6 @@ pub fn library_layout() -> Layout {
         voigt_params: size_of::<VoigtParams>(),
         pair_kinematics: size_of::<PairKinematics>(),
         sphere_kinematics: size_of::<SphereKinematics>(),
-        plane: size_of::<Plane>(),
         bond_output: size_of::<BondOutput>(),
         atom_arrays: size_of::<AtomArrayPointers>(),
         contact_output: size_of::<ContactOutput>(),
@@ -111,7 +109,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
         ));
     }
     let e = reference(expected, "expected")?;
-    let items: [(&str, usize, usize); 18] = [
+    let items: [(&str, usize, usize); 17] = [
         ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
         ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
         ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
@@ -120,7 +118,6 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
             e.sphere_kinematics,
             l.sphere_kinematics,
         ),
-        ("sizeof(GbPlane)", e.plane, l.plane),
         ("sizeof(GbBondOutput)", e.bond_output, l.bond_output),
         ("sizeof(GbAtomArrays)", e.atom_arrays, l.atom_arrays),
         ("sizeof(GbContactOutput)", e.contact_output, l.contact_output),

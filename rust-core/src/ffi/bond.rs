@@ -8,7 +8,7 @@ use super::guard::{
 };
 use super::results;
 use crate::bond::creation::status_and_step_allow;
-use crate::bond::output_slots::{load_output, store_output, BOND_OUTPUT_LEN};
+use crate::bond::output_slots::{load_output, store_output};
 use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
@@ -16,7 +16,6 @@ use crate::bond::{
 pub use crate::kinematics::SphereKinematics;
 use crate::kinematics::{bond_centre, PairKinematics};
 use crate::pair_source::{AtomArrays, IndexedPairs};
-use std::ffi::c_char;
 
 /// Fills `params` with the defaults (switches as in the reference, no
 /// stiffness, no breakage).
@@ -70,34 +69,10 @@ pub extern "C" fn granbond_bond_parameter_count() -> usize {
     PARAMETERS.len()
 }
 
-/// LAMMPS keyword and LIGGGHTS name of bond parameter `id` (static storage).
-///
-/// # Safety
-/// `keyword` and `liggghts_name` must be null or valid for writes.
-#[entry(keyword: reference_mut, liggghts_name: reference_mut)]
-#[no_mangle]
-pub unsafe extern "C" fn granbond_bond_parameter_name(
-    id: usize,
-    keyword: *mut *const c_char,
-    liggghts_name: *mut *const c_char,
-) -> Status {
-    super::parameters::write_names(super::parameters::bond_rows(), id, keyword, liggghts_name)
-}
-
 /// The bond state as a struct view of a caller's `double[GRANBOND_BOND_STATE_LEN]`.
 unsafe fn bond_state<'a>(state: *mut f64, name: &str) -> Result<&'a mut BondState, Failure> {
     let slots = reference_mut(state as *mut [f64; BOND_STATE_LEN], name)?;
     Ok(BondState::from_slots_mut(slots))
-}
-
-/// The states of a batch as struct views of a caller's
-/// `double[count * GRANBOND_BOND_STATE_LEN]`.
-unsafe fn bond_states<'a>(
-    states: *mut f64,
-    count: usize,
-    name: &str,
-) -> Result<&'a mut [BondState], Failure> {
-    slice_mut(states as *mut BondState, count, name)
 }
 
 unsafe fn wall_state<'a>(state: *mut f64, name: &str) -> Result<&'a mut WallBondState, Failure> {
@@ -197,35 +172,6 @@ pub unsafe extern "C" fn granbond_bond_compute(
     results::bond(state, out)
 }
 
-/// `granbond_bond_compute` over `count` bonds: `kinematics[count]`,
-/// `states[count * GRANBOND_BOND_STATE_LEN]`, `out[count]`. Stops at the
-/// first bad input and writes its index to `failed_index` (if not null;
-/// a misaligned one is refused before any bond is advanced).
-///
-/// # Safety
-/// Pointers must be null or valid for the sizes above.
-#[entry(
-    model: reference,
-    failed_index: FailedIndex::new,
-    kinematics: slice(count),
-    states: bond_states(count),
-    out: slice_mut(count),
-    dt: time_step,
-)]
-#[no_mangle]
-pub unsafe extern "C" fn granbond_bond_compute_batch(
-    model: *const BondModel,
-    count: usize,
-    kinematics: *const PairKinematics,
-    dt: f64,
-    states: *mut f64,
-    out: *mut BondOutput,
-    failed_index: *mut usize,
-) -> Status {
-    let stepped = model.step_batch(kinematics, dt, states, out);
-    results::bonds(stepped, failed_index)
-}
-
 /// The per-atom arrays of an engine (local and ghost atoms), as
 /// `granbond_bond_compute_indexed` reads them: `x`, `v` and `omega` hold 3
 /// doubles per atom (LAMMPS/LIGGGHTS: `atom->x[0]`, one block), `radius` one.
@@ -280,8 +226,8 @@ pub(super) fn indexed_pairs<'a>(
     })
 }
 
-/// `granbond_bond_compute_batch` for bonds whose states lie apart in memory,
-/// as in an engine's contact history, and whose kinematics are read from
+/// `granbond_bond_compute` over `count` bonds whose states lie apart in
+/// memory, as in an engine's contact history, and whose kinematics are read from
 /// the engine's per-atom arrays: bond `k` joins atoms `pairs[2k]` (`i`) and
 /// `pairs[2k + 1]` (`j`), so the engine copies nothing per bond, and
 /// `states[k]` points to the `GRANBOND_BOND_STATE_LEN` doubles of bond `k`
@@ -394,77 +340,18 @@ pub unsafe extern "C" fn granbond_wall_bond_compute(
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_output_store(out: *const BondOutput, slots: *mut f64) -> Status {
     let stored = store_output(out);
-    kept_finite("a load or stress of `out`", &stored)?;
+    kept_finite(Status::NonFiniteInput, "a load or stress of `out`", &stored)?;
     *slots = stored;
     Ok(())
-}
-
-/// `granbond_bond_output_store` for the bonds of one
-/// `granbond_bond_compute_indexed` call, in one call: for every `k < count`
-/// whose `out[k]` is intact, `out[k]` packed into the
-/// `GRANBOND_BOND_OUTPUT_LEN` doubles at `states[k] + offset`, for an engine
-/// that keeps the output `offset` doubles after the bond's state in the
-/// pair's history. Bonds not intact are left alone. Stops at the first bond
-/// whose slots are null or misaligned or whose output is not finite (or
-/// overflows) and writes its index to `failed_index` (if not null); the
-/// bonds before it are stored.
-///
-/// # Safety
-/// `out` must be null or point to `count` outputs, `states` null or to
-/// `count` pointers; for an intact bond, `states[k]` must be null or such
-/// that `states[k] + offset` is valid for `GRANBOND_BOND_OUTPUT_LEN` doubles.
-#[entry(failed_index: FailedIndex::new, out: slice(count))]
-#[no_mangle]
-pub unsafe extern "C" fn granbond_bond_output_store_intact(
-    count: usize,
-    out: *const BondOutput,
-    states: *const *mut f64,
-    offset: usize,
-    failed_index: *mut usize,
-) -> Status {
-    let pointers = slice(states, count, "states")?;
-    let intact = BondStatus::Intact as i32;
-    for (k, (o, &state)) in out.iter().zip(pointers).enumerate() {
-        if o.status != intact {
-            continue;
-        }
-        // a null state stays null rather than becoming `offset` doubles
-        // past address 0; `offset` keeps the alignment
-        if state.is_null() || !state.cast::<[f64; BOND_OUTPUT_LEN]>().is_aligned() {
-            return Err(store_failed(
-                failed_index,
-                k,
-                array_mut::<1>(state, "states[k]").err(),
-            ));
-        }
-        let stored = store_output(o);
-        if !stored.iter().sum::<f64>().is_finite() {
-            return Err(store_failed(
-                failed_index,
-                k,
-                kept_finite("a load or stress of `out[k]`", &stored).err(),
-            ));
-        }
-        *(state.wrapping_add(offset) as *mut [f64; BOND_OUTPUT_LEN]) = stored;
-    }
-    Ok(())
-}
-
-/// The failure of bond `k` of `granbond_bond_output_store_intact`, out of
-/// its loop.
-#[cold]
-#[inline(never)]
-fn store_failed(failed_index: FailedIndex, k: usize, f: Option<Failure>) -> Failure {
-    let f = f.unwrap_or_else(|| Failure::new(Status::InvalidArgument, "states[k]".to_string()));
-    failed_index.fail("bond", k, f)
 }
 
 /// Unpacks the output `granbond_bond_output_store` packed into `slots`
 /// (`GRANBOND_BOND_OUTPUT_LEN` doubles): `force_i`, `torque_i =
 /// (sum + diff) / 2`, `torque_j = (sum - diff) / 2`, `sigma`, `tau`; the
 /// status intact and no break mode; `normal_force` and `delta`, which the
-/// slots do not keep, 0. Slots giving a non-finite load or stress are
-/// refused (`GB_STATUS_NON_FINITE_INPUT`), `out` left alone.
+/// slots do not keep, 0. Refused, `out` left alone: a non-finite slot
+/// (`GB_STATUS_NON_FINITE_INPUT`), and slots whose torques overflow
+/// (`GB_STATUS_NON_FINITE_RESULT`).
 ///
 /// # Safety
 /// `slots` must be null or point to `GRANBOND_BOND_OUTPUT_LEN` doubles;
@@ -474,8 +361,13 @@ fn store_failed(failed_index: FailedIndex, k: usize, f: Option<Failure>) -> Fail
 pub unsafe extern "C" fn granbond_bond_output_load(slots: *const f64, out: *mut BondOutput) -> Status {
     let loaded = load_output(slots);
     let what = "a load or stress of `slots`";
-    kept_finite(what, slots)?;
-    kept_finite(what, [loaded.torque_i, loaded.torque_j].as_flattened())?;
+    kept_finite(Status::NonFiniteInput, what, slots)?;
+    let torques = "a torque from `slots` (the sum and difference overflow)";
+    kept_finite(
+        Status::NonFiniteResult,
+        torques,
+        [loaded.torque_i, loaded.torque_j].as_flattened(),
+    )?;
     *out = loaded;
     Ok(())
 }
@@ -487,7 +379,8 @@ pub unsafe extern "C" fn granbond_bond_output_load(slots: *const f64, out: *mut 
 /// wall point as `x_j` and `radius_j = 0`: the centre is that point.
 /// Refused: non-finite positions (`GB_STATUS_NON_FINITE_INPUT`),
 /// `radius_i <= 0`, `radius_j < 0` or not finite
-/// (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument.
+/// (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument, and positions
+/// so far apart that the centre overflows (`GB_STATUS_NON_FINITE_RESULT`).
 ///
 /// # Safety
 /// Pointers must be null or valid for three doubles.
@@ -508,19 +401,24 @@ pub unsafe extern "C" fn granbond_bond_centre(
 ) -> Status {
     positive(radius_i + radius_j, "radius_i + radius_j")?;
     let c = bond_centre(x_i, x_j, radius_i, radius_j);
-    kept_finite("the centre of `x_i` and `x_j` (too far apart)", &c)?;
+    kept_finite(
+        Status::NonFiniteResult,
+        "the centre of `x_i` and `x_j` (too far apart)",
+        &c,
+    )?;
     *centre = c;
     Ok(())
 }
 
-/// The numbers an output or position entry gives: finite, else refused
-/// naming `what` (a NaN or infinity passed in, or a sum beyond 1e308).
-fn kept_finite(what: &str, values: &[f64]) -> Result<(), Failure> {
+/// The numbers an output or position entry takes or gives: finite, else
+/// refused as `status` (input or result) naming `what` (a NaN or infinity,
+/// or a sum beyond 1e308).
+fn kept_finite(status: Status, what: &str, values: &[f64]) -> Result<(), Failure> {
     if values.iter().sum::<f64>().is_finite() {
         return Ok(());
     }
     Err(Failure::new(
-        Status::NonFiniteInput,
+        status,
         format!("{what} is not finite or overflows: {values:?}"),
     ))
 }

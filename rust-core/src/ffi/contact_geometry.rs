@@ -1,25 +1,37 @@
 //! Voigt entries that take the geometry an engine's pair loop has (the
 //! separation vector, or the engine's normal and centre distance) and the
-//! radii, a wall written as radius 0: the core builds the frame's normal,
-//! overlap, levers and `R*` ([`crate::contact::geometry`]).
+//! radii, a wall written as radius 0: the core builds the frame
+//! ([`ContactFrame::from_separation`], [`ContactFrame::from_normal`]).
+//!
+//! The `*_unchecked` entries are the engines' per-contact calls, once per
+//! contact and step: no pointer or argument checks, and a success leaves
+//! the error record alone. The result is checked: a non-finite force or
+//! torque gives `GB_STATUS_NON_FINITE_RESULT` with a message. Same physics,
+//! same bits as `granbond_voigt_compute` on the same contact. The
+//! geometry and the state are read one double at a time, the velocities
+//! where the engine keeps them (pass the engine's arrays rather than fresh
+//! copies). On a CPU with AVX2 the step runs a copy compiled for AVX2:
+//! same bits, fewer instructions ([`crate::contact::dispatch`]).
 
-use super::contact::{fields_step, load3};
+use super::contact::non_finite_loads;
 use super::entry;
 use super::error::{record, Failure, Status};
 use super::guard::{reference_mut, vector3};
-use crate::contact::geometry::{from_normal, from_separation, Geometry};
-use crate::contact::{ContactFrame, ContactOutput, VoigtModel};
+use crate::contact::dispatch::{step_normal, step_separation};
+use crate::contact::{ContactFrame, ContactOutput, Motion, VoigtModel};
 use crate::kinematics::{separated, KinematicsError};
 
-/// `granbond_voigt_compute_fields_unchecked` for a touching pair given by
-/// its separation `del = x_i - x_j` (3 doubles) and `rsq = |del|^2`: the
-/// normal is `del / sqrt(rsq)` (one reciprocal), the overlap
-/// `(radius_i + radius_j) - sqrt(rsq)`, the levers the radii and `R*` (only
-/// with rolling) `R_i R_j / (R_i + R_j)`.
+/// One step of a Voigt contact given by its separation `del = x_i - x_j`
+/// (3 doubles) and `rsq = |del|^2`: the normal is `del / sqrt(rsq)` (one
+/// reciprocal), the overlap `(radius_i + radius_j) - sqrt(rsq)`, the levers
+/// the radii and `R*` (only with rolling) `R_i R_j / (R_i + R_j)`.
+/// Coincident centres (`rsq = 0`) are named as such.
 ///
 /// # Safety
-/// As `granbond_voigt_compute_fields_unchecked`; `del` three doubles,
-/// `rsq > 0`.
+/// No pointer may be null. `model` from `granbond_voigt_model_new`; `del`,
+/// `v_*`, `w_*` three doubles each; every number finite, `rsq > 0`, radii
+/// > 0; `state` `GRANBOND_CONTACT_STATE_LEN` doubles; `out` valid for
+/// writes; `dt` finite and >= 0.
 #[entry(unchecked)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_compute_separation_unchecked(
@@ -36,19 +48,16 @@ pub unsafe extern "C" fn granbond_voigt_compute_separation_unchecked(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    let g = from_separation(
-        load3(del as *const [f64; 3]),
-        rsq,
-        radius_i,
-        radius_j,
-        (*model).rolling(),
-    );
-    let status = step(FUNCTION, model, &g, v_i, v_j, w_i, w_j, dt, state, out);
-    if status != Status::Ok && !separated(rsq) {
+    if step_separation(
+        model, del, rsq, radius_i, radius_j, v_i, v_j, w_i, w_j, dt, state, out,
+    ) {
+        return Status::Ok;
+    }
+    if !separated(rsq) {
         // the cause, named (only on the failure path: the step has no branch for it)
         return coincident(FUNCTION);
     }
-    status
+    non_finite_loads(FUNCTION)
 }
 
 /// Records that the centres coincide: the pair has no axis.
@@ -59,14 +68,15 @@ fn coincident(function: &str) -> Status {
     failure.status
 }
 
-/// `granbond_voigt_compute_fields_unchecked` for a contact whose unit
-/// normal `n` (from `j` to `i`) the engine has built, with the centre
-/// distance `distance`; for a wall `radius_j = 0` and `distance` is the
-/// centre's distance from the wall along `n` (so the overlap is
-/// `radius_i - distance`, the lever of the wall 0 and `R* = R_i`).
+/// One step of a Voigt contact whose unit normal `n` (from `j` to `i`) the
+/// engine has built, with the centre distance `distance`; for a wall
+/// `radius_j = 0` and `distance` is the centre's distance from the wall
+/// along `n` (so the overlap is `radius_i - distance`, the lever of the
+/// wall 0 and `R* = R_i`).
 ///
 /// # Safety
-/// As `granbond_voigt_compute_fields_unchecked`.
+/// As `granbond_voigt_compute_separation_unchecked`, with `n` a unit
+/// vector (three doubles) in place of `del`, and `radius_j >= 0`.
 #[entry(unchecked)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_compute_normal_unchecked(
@@ -83,60 +93,12 @@ pub unsafe extern "C" fn granbond_voigt_compute_normal_unchecked(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    let g = from_normal(
-        load3(n as *const [f64; 3]),
-        distance,
-        radius_i,
-        radius_j,
-        (*model).rolling(),
-    );
-    step(FUNCTION, model, &g, v_i, v_j, w_i, w_j, dt, state, out)
-}
-
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-unsafe fn step(
-    function: &'static str,
-    model: *const VoigtModel,
-    g: &Geometry,
-    v_i: *const f64,
-    v_j: *const f64,
-    w_i: *const f64,
-    w_j: *const f64,
-    dt: f64,
-    state: *mut f64,
-    out: *mut ContactOutput,
-) -> Status {
-    fields_step(
-        function,
-        model,
-        g.n.as_ptr(),
-        g.overlap,
-        g.lever_i,
-        g.lever_j,
-        g.r_eff,
-        v_i,
-        v_j,
-        w_i,
-        w_j,
-        dt,
-        state,
-        out,
-    )
-}
-
-fn frame(g: Geometry, v_i: [f64; 3], v_j: [f64; 3], w_i: [f64; 3], w_j: [f64; 3]) -> ContactFrame {
-    ContactFrame {
-        n: g.n,
-        overlap: g.overlap,
-        lever_i: g.lever_i,
-        lever_j: g.lever_j,
-        r_eff: g.r_eff,
-        v_i,
-        v_j,
-        w_i,
-        w_j,
+    if step_normal(
+        model, n, distance, radius_i, radius_j, v_i, v_j, w_i, w_j, dt, state, out,
+    ) {
+        return Status::Ok;
     }
+    non_finite_loads(FUNCTION)
 }
 
 /// The contact frame `granbond_voigt_compute_separation_unchecked` builds
@@ -160,13 +122,8 @@ pub unsafe extern "C" fn granbond_contact_frame_separation(
     if !separated(rsq) {
         return Err(KinematicsError::CoincidentCentres.into());
     }
-    *frame = self::frame(
-        from_separation(del, rsq, radius_i, radius_j, true),
-        v_i,
-        v_j,
-        w_i,
-        w_j,
-    );
+    let motion = Motion { v_i, v_j, w_i, w_j };
+    *frame = ContactFrame::from_separation(del, rsq, radius_i, radius_j, true, motion);
     Ok(())
 }
 
@@ -188,12 +145,133 @@ pub unsafe extern "C" fn granbond_contact_frame_normal(
     w_j: *const f64,
     frame: *mut ContactFrame,
 ) -> Status {
-    *frame = self::frame(
-        from_normal(n, distance, radius_i, radius_j, true),
-        v_i,
-        v_j,
-        w_i,
-        w_j,
-    );
+    let motion = Motion { v_i, v_j, w_i, w_j };
+    *frame = ContactFrame::from_normal(n, distance, radius_i, radius_j, true, motion);
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::{ContactState, VoigtParams, CONTACT_STATE_LEN};
+
+    /// Numbers spread over [-1, 1): an additive recurrence (plastic number).
+    struct Numbers(f64);
+
+    impl Numbers {
+        fn next(&mut self) -> f64 {
+            self.0 = (self.0 + 0.754_877_666_246_692_8).fract();
+            2.0 * self.0 - 1.0
+        }
+        fn vec(&mut self, scale: f64) -> [f64; 3] {
+            [self.next() * scale, self.next() * scale, self.next() * scale]
+        }
+    }
+
+    fn bits(o: &ContactOutput, s: &[f64; CONTACT_STATE_LEN]) -> Vec<u64> {
+        let scalars = [o.normal_force, o.overlap];
+        let loads = o.force_i.iter().chain(&o.torque_i).chain(&o.torque_j);
+        let numbers = loads.chain(scalars.iter()).chain(s.iter());
+        let mut v: Vec<u64> = numbers.map(|x| x.to_bits()).collect();
+        v.extend([o.touching, o.sliding, o.rolling_slip].map(|x| x as u64));
+        v
+    }
+
+    #[test]
+    fn the_normal_entry_gives_the_bits_of_the_kernel() {
+        // the entry runs its AVX2 copy where the CPU has AVX2, the
+        // kernel called here its baseline code
+        let mut r = Numbers(0.3);
+        let (mut touching, mut sliding, mut rolling_slips) = (0, 0, 0);
+        for rolling in [0, 1] {
+            let model = VoigtModel::new(VoigtParams {
+                rolling,
+                mu: 0.3,
+                mu_r: 0.02,
+                ..VoigtParams::default()
+            })
+            .unwrap();
+            for contact in 0..40 {
+                // even contacts: sphere pairs; odd: a sphere on a wall
+                let wall = contact % 2 == 1;
+                let (mut sb, mut sc) = (ContactState::default(), ContactState::default());
+                let radius_i = 1e-3 * (1.0 + 0.3 * r.next());
+                let radius_j = if wall { 0.0 } else { 1e-3 };
+                let d = r.vec(1.0);
+                let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                let n = d.map(|c| c / len);
+                let mut m = Motion {
+                    v_i: r.vec(0.05),
+                    v_j: r.vec(0.05),
+                    w_i: r.vec(50.0),
+                    w_j: if wall { [0.0; 3] } else { r.vec(50.0) },
+                };
+                for step in 0..100 {
+                    // in and out of contact, slowly
+                    let overlap = 1e-6 * (r.next() + 0.3 + (step as f64 * 0.1).sin());
+                    let distance = radius_i + radius_j - overlap;
+                    let frame = ContactFrame::from_normal(n, distance, radius_i, radius_j, rolling == 1, m);
+                    let (mut b, mut c) = (ContactOutput::default(), ContactOutput::default());
+                    model.step_frame(&frame, 1e-7, &mut sc, &mut c);
+                    let status = unsafe {
+                        granbond_voigt_compute_normal_unchecked(
+                            &model,
+                            n.as_ptr(),
+                            distance,
+                            radius_i,
+                            radius_j,
+                            m.v_i.as_ptr(),
+                            m.v_j.as_ptr(),
+                            m.w_i.as_ptr(),
+                            m.w_j.as_ptr(),
+                            1e-7,
+                            &mut sb as *mut ContactState as *mut f64,
+                            &mut b,
+                        )
+                    };
+                    assert_eq!(status, Status::Ok);
+                    let what = format!("rolling {rolling} contact {contact} step {step}");
+                    assert_eq!(
+                        bits(&b, sb.as_slots()),
+                        bits(&c, sc.as_slots()),
+                        "normal entry, {what}"
+                    );
+                    touching += b.touching;
+                    sliding += b.sliding;
+                    rolling_slips += b.rolling_slip;
+                    m.w_i = m.w_i.map(|w| w * 0.97);
+                }
+            }
+        }
+        assert!(
+            touching > 2000 && sliding > 100 && rolling_slips > 100,
+            "the sample missed a regime: {touching} touching, {sliding} sliding, {rolling_slips} rolling-slip steps"
+        );
+    }
+
+    #[test]
+    fn the_normal_entry_reports_a_non_finite_result() {
+        let model = VoigtModel::new(VoigtParams::default()).unwrap();
+        let n = [0.0, 0.0, 1.0];
+        let (v, w_bad) = ([0.0; 3], [0.0, f64::NAN, 0.0]);
+        let mut state = [0.0; CONTACT_STATE_LEN];
+        let mut out = ContactOutput::default();
+        let status = unsafe {
+            granbond_voigt_compute_normal_unchecked(
+                &model,
+                n.as_ptr(),
+                2e-3 - 1e-6,
+                1e-3,
+                1e-3,
+                v.as_ptr(),
+                v.as_ptr(),
+                w_bad.as_ptr(),
+                v.as_ptr(),
+                1e-7,
+                state.as_mut_ptr(),
+                &mut out,
+            )
+        };
+        assert_eq!(status, Status::NonFiniteResult);
+    }
 }

@@ -62,12 +62,12 @@ pub unsafe extern "C" fn granbond_bond_field_info(
 /// (`double[granbond_bond_field_count()]`, in the table's order): its pair
 /// record `record` (`granbond_record_layout(with_contact)`) as sphere `i`
 /// keeps it, and the centres `x_i`, `x_j` (`double[3]` each) of the two
-/// spheres. Refused: non-finite centres (`GB_STATUS_NON_FINITE_INPUT`),
-/// coincident ones (`GB_STATUS_INVALID_ARGUMENT`), each naming the
-/// argument, and fields that would not be finite (centres whose distance
-/// under- or overflows, a record with non-finite numbers:
-/// `GB_STATUS_NON_FINITE_INPUT`, naming the field); `values` is then left
-/// alone.
+/// spheres. Refused, `values` left alone: non-finite centres or a record
+/// whose bond state or loads hold a non-finite number
+/// (`GB_STATUS_NON_FINITE_INPUT`), coincident centres
+/// (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument, and fields
+/// that come out non-finite (centres whose distance under- or overflows:
+/// `GB_STATUS_NON_FINITE_RESULT`, naming the field).
 ///
 /// # Safety
 /// `model` must be null or a model; `record` null or valid for the
@@ -100,14 +100,21 @@ pub unsafe extern "C" fn granbond_bond_fields(
     let loads: &[f64; BOND_OUTPUT_LEN] = record[layout.loads..layout.loads + BOND_OUTPUT_LEN]
         .try_into()
         .expect("the loads part has BOND_OUTPUT_LEN slots");
-    let fields = bond_fields(model, state, loads, x_i, x_j);
-    // centres so close or so far apart that their distance under- or
-    // overflows, or a record holding non-finite numbers
-    if let Some(k) = fields.iter().position(|v| !v.is_finite()) {
+    let read = state.as_slots().iter().chain(loads.iter());
+    if let Some(v) = read.copied().find(|v| !v.is_finite()) {
         return Err(Failure::new(
             Status::NonFiniteInput,
+            format!("`record` holds {v} in its bond state or loads"),
+        ));
+    }
+    let fields = bond_fields(model, state, loads, x_i, x_j);
+    // centres so close or so far apart that their distance under- or
+    // overflows
+    if let Some(k) = fields.iter().position(|v| !v.is_finite()) {
+        return Err(Failure::new(
+            Status::NonFiniteResult,
             format!(
-                "field {} is {} for centres x_i {x_i:?}, x_j {x_j:?}: their distance or the record is out of range",
+                "field {} is {} for centres x_i {x_i:?}, x_j {x_j:?}: their distance is out of range",
                 BOND_FIELDS[k].name, fields[k]
             ),
         ));

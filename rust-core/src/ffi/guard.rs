@@ -40,7 +40,7 @@ fn check<T>(ptr: *const T, name: &str) -> Result<(), Failure> {
     }
     if !(ptr as usize).is_multiple_of(std::mem::align_of::<T>()) {
         return Err(Failure::new(
-            Status::NullPointer,
+            Status::Misaligned,
             format!("argument `{name}` is misaligned"),
         ));
     }
@@ -77,7 +77,7 @@ pub unsafe fn slice<'a, T>(ptr: *const T, len: usize, name: &str) -> Result<&'a 
     Ok(std::slice::from_raw_parts(ptr, len))
 }
 
-/// Mutable counterpart of [`slice`].
+/// Mutable counterpart of [`slice()`].
 ///
 /// # Safety
 /// A non-null `ptr` must point to `len` valid, unaliased elements.
@@ -200,7 +200,7 @@ pub unsafe fn array<'a, const N: usize>(ptr: *const f64, name: &str) -> Result<&
     reference(ptr as *const [f64; N], name)
 }
 
-/// Mutable counterpart of [`array`].
+/// Mutable counterpart of [`array()`].
 ///
 /// # Safety
 /// A non-null `ptr` must point to `N` unaliased doubles.

@@ -93,19 +93,6 @@ fn write_row(rows: &[ParameterRow], id: usize, out: &mut ParameterRow) -> Result
     Ok(())
 }
 
-/// The names of row `id` (static storage), for `granbond_*_parameter_name`.
-pub(super) fn write_names(
-    rows: &'static [ParameterRow],
-    id: usize,
-    keyword: &mut *const c_char,
-    liggghts_name: &mut *const c_char,
-) -> Result<(), Failure> {
-    let row = row_at(rows, id)?;
-    *keyword = row.keyword;
-    *liggghts_name = row.liggghts_name;
-    Ok(())
-}
-
 unsafe fn set<T>(
     model: &str,
     table: &[ParameterInfo<T>],

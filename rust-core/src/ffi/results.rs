@@ -2,7 +2,7 @@
 //! finite but far outside any physical range (a subnormal radius, a tiny
 //! `lambda`, velocities of 1e300, a huge `dt`) overflow or underflow inside
 //! the laws; the engine would integrate the NaN or infinity it is handed,
-//! so such an answer is refused as `GB_STATUS_NON_FINITE_INPUT`, naming
+//! so such an answer is refused as `GB_STATUS_NON_FINITE_RESULT`, naming
 //! what went non-finite.
 
 use super::error::{Failure, Status};
@@ -22,7 +22,7 @@ fn finite(values: &[f64]) -> bool {
 
 pub fn refused(what: &str) -> Failure {
     Failure::new(
-        Status::NonFiniteInput,
+        Status::NonFiniteResult,
         format!(
             "non-finite {what} from finite input: the input lies far outside the model's range \
              (radius, lambda, velocities or dt)"

@@ -220,77 +220,8 @@ int test_bond_errors(void)
 
     /* A misaligned state pointer is refused, not dereferenced. */
     EXPECT(granbond_bond_compute(m, &good, DT, (double *)(void *)(misaligned.bytes + 4), &out),
-           GB_STATUS_NULL_POINTER, "granbond_bond_compute with a misaligned state");
+           GB_STATUS_MISALIGNED, "granbond_bond_compute with a misaligned state");
     EXPECT_MESSAGE("misaligned");
-
-    granbond_bond_model_free(m);
-    return 0;
-}
-
-#define N_BATCH 4
-
-int test_bond_batch(void)
-{
-    const GbBondParams p = bond_fixture();
-    GbBondModel *m = NULL;
-    GbPairKinematics k[N_BATCH];
-    GbBondOutput out[N_BATCH], single;
-    double states[N_BATCH * GRANBOND_BOND_STATE_LEN], before[N_BATCH * GRANBOND_BOND_STATE_LEN];
-    double one[GRANBOND_BOND_STATE_LEN], saved;
-    size_t failed = 999;
-    int b;
-
-    if (new_bond_model(&p, &m))
-        return 1;
-    for (b = 0; b < N_BATCH; b++) {
-        if (create_bond(m, states + b * GRANBOND_BOND_STATE_LEN))
-            return 1;
-        pair_at(&k[b], R0_NOMINAL + (b - 1.5) * 2.0e-6, R_I, R_J);
-        k[b].v_i[0] = 1.0e-3 * b;
-        k[b].w_j[2] = 0.5 * b;
-    }
-    memcpy(before, states, sizeof states);
-
-    /* One bad entry: stops there and reports its index. */
-    saved = k[2].x_i[1];
-    k[2].x_i[1] = NAN;
-    memset(out, 0, sizeof out);
-    out[3].status = -7;
-    EXPECT(granbond_bond_compute_batch(m, N_BATCH, k, DT, states, out, &failed), GB_STATUS_NON_FINITE_INPUT,
-           "granbond_bond_compute_batch with NaN in bond 2");
-    CHECK(failed == 2, say("failed_index = 2 (got %u)", (unsigned)failed));
-    EXPECT_MESSAGE("bond 2");
-    CHECK(out[0].status == GB_BOND_STATUS_INTACT && out[1].status == GB_BOND_STATUS_INTACT,
-          "bonds before the bad one were computed");
-    CHECK(out[3].status == -7 &&
-              memcmp(states + 3 * GRANBOND_BOND_STATE_LEN, before + 3 * GRANBOND_BOND_STATE_LEN,
-                     GRANBOND_BOND_STATE_LEN * sizeof(double)) == 0,
-          "bonds after the bad one were not touched");
-    EXPECT(granbond_bond_compute_batch(m, N_BATCH, k, DT, states, out, NULL), GB_STATUS_NON_FINITE_INPUT,
-           "the same batch with failed_index = NULL");
-    k[2].x_i[1] = saved;
-
-    /* All good: same results as one call per bond. */
-    memcpy(states, before, sizeof states);
-    failed = 999;
-    EXPECT_OK(granbond_bond_compute_batch(m, N_BATCH, k, DT, states, out, &failed), "granbond_bond_compute_batch");
-    CHECK(failed == 999, "failed_index left alone on success");
-    for (b = 0; b < N_BATCH; b++) {
-        memcpy(one, before + b * GRANBOND_BOND_STATE_LEN, sizeof one);
-        EXPECT_OK(granbond_bond_compute(m, &k[b], DT, one, &single), say("granbond_bond_compute, bond %d", b));
-        CHECK(vec_close(out[b].force_i, single.force_i, 1e-15) && vec_close(out[b].torque_i, single.torque_i, 1e-15) &&
-                  vec_close(out[b].torque_j, single.torque_j, 1e-15) &&
-                  memcmp(one, states + b * GRANBOND_BOND_STATE_LEN, sizeof one) == 0,
-              say("batch bond %d = single call", b));
-    }
-
-    /* Bad dt, empty batch, NULL arguments. */
-    failed = 999;
-    EXPECT(granbond_bond_compute_batch(m, N_BATCH, k, -DT, states, out, &failed), GB_STATUS_INVALID_ARGUMENT,
-           "granbond_bond_compute_batch with dt < 0");
-    CHECK(failed == 999, "failed_index not set for a bad dt");
-    EXPECT_OK(granbond_bond_compute_batch(m, 0, NULL, DT, NULL, NULL, NULL),
-              "granbond_bond_compute_batch, count = 0 and NULL arrays");
 
     granbond_bond_model_free(m);
     return 0;

@@ -198,7 +198,7 @@ int test_bond_centre(void)
     bad[1] = -INFINITY;
     EXPECT(granbond_bond_centre(x_i, bad, R_I, R_J, centre), GB_STATUS_NON_FINITE_INPUT, "x_j infinite");
     EXPECT_MESSAGE("x_j");
-    EXPECT(granbond_bond_centre(huge, minus_huge, R_I, R_J, centre), GB_STATUS_NON_FINITE_INPUT,
+    EXPECT(granbond_bond_centre(huge, minus_huge, R_I, R_J, centre), GB_STATUS_NON_FINITE_RESULT,
            "positions whose difference overflows");
     EXPECT(granbond_bond_centre(x_i, wall, 1.0e308, 1.0e308, centre), GB_STATUS_INVALID_ARGUMENT,
            "radii whose sum overflows");

@@ -64,7 +64,6 @@ struct world {
     GbLayout layout;
     GbPairKinematics pair[N_ITEMS];
     GbSphereKinematics sphere;
-    GbPlane plane;
     GbContactFrame frame;
     GbParameterInfo info;
     GbAtomArrays atoms;
@@ -114,11 +113,6 @@ static GbStatus null_bond_model_new(struct world *c, int k)
     return granbond_bond_model_new(ARG(k, 0, &c->bond_params), ARG(k, 1, &c->made_bond));
 }
 
-static GbStatus null_bond_parameter_name(struct world *c, int k)
-{
-    return granbond_bond_parameter_name(0, ARG(k, 0, &c->text[0]), ARG(k, 1, &c->text[1]));
-}
-
 static GbStatus null_bond_parameter_info(struct world *c, int k)
 {
     return granbond_bond_parameter_info(0, ARG(k, 0, &c->info));
@@ -152,12 +146,6 @@ static GbStatus null_bond_compute(struct world *c, int k)
                                  ARG(k, 3, &c->bond_out[0]));
 }
 
-static GbStatus null_bond_compute_batch(struct world *c, int k)
-{
-    return granbond_bond_compute_batch(ARG(k, 0, c->bond), N_ITEMS, ARG(k, 1, c->pair), DT,
-                                       ARG(k, 2, c->bond_states), ARG(k, 3, c->bond_out), &c->index);
-}
-
 static GbStatus null_bond_compute_indexed(struct world *c, int k)
 {
     GbAtomArrays atoms = c->atoms;
@@ -188,22 +176,6 @@ static GbStatus null_wall_bond_compute(struct world *c, int k)
 static GbStatus null_bond_output_store(struct world *c, int k)
 {
     return granbond_bond_output_store(ARG(k, 0, &c->bond_out[0]), ARG(k, 1, c->output_slots));
-}
-
-/* every output intact, so the slots of bond 0 are the first written */
-static GbStatus null_bond_output_store_intact(struct world *c, int k)
-{
-    GbBondOutput outs[N_ITEMS];
-    double *states[N_ITEMS];
-    int b;
-    for (b = 0; b < N_ITEMS; b++) {
-        outs[b] = c->bond_out[b];
-        outs[b].status = GB_BOND_STATUS_INTACT;
-        states[b] = c->bond_state_pointers[b];
-    }
-    if (k == 2)
-        states[0] = NULL;
-    return granbond_bond_output_store_intact(N_ITEMS, ARG(k, 0, outs), ARG(k, 1, states), 0, &c->index);
 }
 
 static GbStatus null_bond_output_load(struct world *c, int k)
@@ -265,11 +237,6 @@ static GbStatus null_voigt_model_new(struct world *c, int k)
     return granbond_voigt_model_new(ARG(k, 0, &c->voigt_params), ARG(k, 1, &c->made_voigt));
 }
 
-static GbStatus null_voigt_parameter_name(struct world *c, int k)
-{
-    return granbond_voigt_parameter_name(0, ARG(k, 0, &c->text[0]), ARG(k, 1, &c->text[1]));
-}
-
 static GbStatus null_voigt_parameter_info(struct world *c, int k)
 {
     return granbond_voigt_parameter_info(0, ARG(k, 0, &c->info));
@@ -291,33 +258,9 @@ static GbStatus null_voigt_compute(struct world *c, int k)
                                   ARG(k, 3, &c->contact_out[0]));
 }
 
-static GbStatus null_voigt_compute_batch(struct world *c, int k)
-{
-    return granbond_voigt_compute_batch(ARG(k, 0, c->voigt), N_ITEMS, ARG(k, 1, c->pair), DT,
-                                        ARG(k, 2, c->contact_states), ARG(k, 3, c->contact_out), &c->index);
-}
-
-static GbStatus null_voigt_compute_plane(struct world *c, int k)
-{
-    return granbond_voigt_compute_plane(ARG(k, 0, c->voigt), ARG(k, 1, &c->sphere), ARG(k, 2, &c->plane), DT,
-                                        ARG(k, 3, c->contact_states), ARG(k, 4, &c->contact_out[0]));
-}
-
 static GbStatus null_voigt_critical_timestep(struct world *c, int k)
 {
     return granbond_voigt_critical_timestep(ARG(k, 0, c->voigt), R_C, R_C, 1.0e-5, 1.0e-5, ARG(k, 1, &c->number));
-}
-
-static GbStatus null_contact_frame_pair(struct world *c, int k)
-{
-    GbContactFrame frame;
-    return granbond_contact_frame_pair(ARG(k, 0, &c->pair[0]), ARG(k, 1, &frame));
-}
-
-static GbStatus null_contact_frame_plane(struct world *c, int k)
-{
-    GbContactFrame frame;
-    return granbond_contact_frame_plane(ARG(k, 0, &c->sphere), ARG(k, 1, &c->plane), ARG(k, 2, &frame));
 }
 
 /* The separation x_i - x_j of the first pair and its square. */
@@ -396,14 +339,12 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_state_slot", null_state_slot, {"name", "flips_on_swap"}},
     {"granbond_bond_params_default", null_bond_params_default, {"params"}},
     {"granbond_bond_model_new", null_bond_model_new, {"params", "model"}},
-    {"granbond_bond_parameter_name", null_bond_parameter_name, {"keyword", "liggghts_name"}},
     {"granbond_bond_parameter_info", null_bond_parameter_info, {"info"}},
     {"granbond_bond_params_set", null_bond_params_set, {"params", "name"}},
     {"granbond_bond_parameter_needed", null_bond_parameter_needed, {"params", "needed"}},
     {"granbond_bond_try_create", null_bond_try_create, {"model", "kinematics", "state", "created"}},
     {"granbond_bond_create_now", null_bond_create_now, {"model", "kinematics", "state", "created"}},
     {"granbond_bond_compute", null_bond_compute, {"model", "kinematics", "state", "out"}},
-    {"granbond_bond_compute_batch", null_bond_compute_batch, {"model", "kinematics", "states", "out"}},
     {"granbond_bond_compute_indexed",
      null_bond_compute_indexed,
      {"model", "atoms", "pairs", "states", "out", "atoms->x", "atoms->v", "atoms->omega", "atoms->radius"}},
@@ -412,7 +353,6 @@ static const struct null_entry NULL_ENTRIES[] = {
      {"model", "sphere", "contact_point", "state", "created"}},
     {"granbond_wall_bond_compute", null_wall_bond_compute, {"model", "sphere", "wall_velocity", "state", "out"}},
     {"granbond_bond_output_store", null_bond_output_store, {"out", "slots"}},
-    {"granbond_bond_output_store_intact", null_bond_output_store_intact, {"out", "states", "states[k]"}},
     {"granbond_bond_output_load", null_bond_output_load, {"slots", "out"}},
     {"granbond_bond_centre", null_bond_centre, {"x_i", "x_j", "centre"}},
     {"granbond_bond_max_distance", null_bond_max_distance, {"model", "out"}},
@@ -424,16 +364,11 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_bond_creation_check", null_bond_creation_check, {"models", "bodies", "units", "style", "out"}},
     {"granbond_voigt_params_default", null_voigt_params_default, {"params"}},
     {"granbond_voigt_model_new", null_voigt_model_new, {"params", "model"}},
-    {"granbond_voigt_parameter_name", null_voigt_parameter_name, {"keyword", "liggghts_name"}},
     {"granbond_voigt_parameter_info", null_voigt_parameter_info, {"info"}},
     {"granbond_voigt_params_set", null_voigt_params_set, {"params", "name"}},
     {"granbond_voigt_parameter_needed", null_voigt_parameter_needed, {"params", "needed"}},
     {"granbond_voigt_compute", null_voigt_compute, {"model", "kinematics", "state", "out"}},
-    {"granbond_voigt_compute_batch", null_voigt_compute_batch, {"model", "kinematics", "states", "out"}},
-    {"granbond_voigt_compute_plane", null_voigt_compute_plane, {"model", "sphere", "plane", "state", "out"}},
     {"granbond_voigt_critical_timestep", null_voigt_critical_timestep, {"model", "out"}},
-    {"granbond_contact_frame_pair", null_contact_frame_pair, {"kinematics", "frame"}},
-    {"granbond_contact_frame_plane", null_contact_frame_plane, {"sphere", "plane", "frame"}},
     {"granbond_contact_frame_separation",
      null_contact_frame_separation,
      {"del", "v_i", "v_j", "w_i", "w_j", "frame"}},
@@ -479,8 +414,13 @@ static int world_new(struct world *c)
     c->atoms.count = 2 * N_ITEMS;
     c->sphere.radius = R_C;
     c->sphere.x[2] = R_C - 1.0e-5;
-    c->plane.normal[2] = 1.0;
-    EXPECT_OK(granbond_contact_frame_pair(&c->pair[0], &c->frame), "granbond_contact_frame_pair");
+    {
+        double del[3], rsq = pair_separation(c, del);
+        const GbPairKinematics *q = &c->pair[0];
+        EXPECT_OK(granbond_contact_frame_separation(del, rsq, q->radius_i, q->radius_j, q->v_i, q->v_j, q->w_i, q->w_j,
+                                                    &c->frame),
+                  "granbond_contact_frame_separation");
+    }
     c->bodies[1].radius_min = c->bodies[1].radius_max = R_C;
     c->bodies[1].mass_min = 1.0e-5;
     c->bond_table[3] = c->bond;

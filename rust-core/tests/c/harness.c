@@ -32,6 +32,10 @@ const char *status_name(GbStatus s)
         return "GB_STATUS_INVALID_ARGUMENT";
     case GB_STATUS_PANIC:
         return "GB_STATUS_PANIC";
+    case GB_STATUS_MISALIGNED:
+        return "GB_STATUS_MISALIGNED";
+    case GB_STATUS_NON_FINITE_RESULT:
+        return "GB_STATUS_NON_FINITE_RESULT";
     }
     return "(unknown status)";
 }

@@ -150,7 +150,6 @@ int test_deck_phrases(void);
 /* bond.c */
 int test_bond_create_and_force(void);
 int test_bond_errors(void);
-int test_bond_batch(void);
 int test_bond_indexed_results(void);
 int test_bond_indexed(void);
 int test_bond_break(void);
@@ -165,8 +164,7 @@ int test_wall_bond(void);
 int test_run_checks(void);
 /* voigt.c */
 int test_voigt_contact(void);
-int test_voigt_batch(void);
-int test_voigt_plane(void);
+int test_voigt_wall(void);
 int test_voigt_timestep(void);
 int test_contact_frames(void);
 int test_voigt_parts(void);

@@ -16,7 +16,6 @@ int test_version_and_layout(void)
         {"sizeof(GbVoigtParams)", offsetof(GbLayout, voigt_params)},
         {"sizeof(GbPairKinematics)", offsetof(GbLayout, pair_kinematics)},
         {"sizeof(GbSphereKinematics)", offsetof(GbLayout, sphere_kinematics)},
-        {"sizeof(GbPlane)", offsetof(GbLayout, plane)},
         {"sizeof(GbBondOutput)", offsetof(GbLayout, bond_output)},
         {"sizeof(GbContactOutput)", offsetof(GbLayout, contact_output)},
         {"sizeof(GbContactFrame)", offsetof(GbLayout, contact_frame)},

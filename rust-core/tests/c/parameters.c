@@ -192,9 +192,22 @@ static int32_t *int32_field(void *params, size_t offset)
     return (int32_t *)(void *)((char *)params + offset);
 }
 
+/* The names of row `id` of a table, from its GbParameterInfo. */
+static GbStatus row_names(GbStatus (*info)(size_t, GbParameterInfo *), size_t id, const char **keyword,
+                          const char **liggghts_name)
+{
+    GbParameterInfo row;
+    GbStatus status = info(id, &row);
+    if (status == GB_STATUS_OK) {
+        *keyword = row.keyword;
+        *liggghts_name = row.liggghts_name;
+    }
+    return status;
+}
+
 /* model_new refuses `p`: INVALID_PARAMETER, *model reset to NULL, the
  * parameter id of `keyword`, its names (and `also`, unless NULL) in the
- * message, and the same names from granbond_bond_parameter_name. */
+ * message, and the same names from granbond_bond_parameter_info. */
 static int expect_bond_refused(const GbBondParams *p, const char *keyword, const char *also, const char *what)
 {
     GbBondModel *m = (GbBondModel *)(void *)sentinel_object;
@@ -212,8 +225,8 @@ static int expect_bond_refused(const GbBondParams *p, const char *keyword, const
     if (also != NULL)
         EXPECT_MESSAGE(also);
     CHECK(reported == (int32_t)id, say("granbond_last_error_parameter() = %d = id of %s", (int)id, keyword));
-    EXPECT_OK(granbond_bond_parameter_name((size_t)reported, &kw, &lg),
-              say("granbond_bond_parameter_name(%d)", (int)reported));
+    EXPECT_OK(row_names(granbond_bond_parameter_info, (size_t)reported, &kw, &lg),
+              say("granbond_bond_parameter_info(%d)", (int)reported));
     CHECK(kw != NULL && strcmp(kw, keyword) == 0, say("parameter %d is keyword \"%s\"", (int)reported, keyword));
     CHECK(lg != NULL && strcmp(lg, BOND_FIELDS[id].liggghts) == 0,
           say("parameter %d is LIGGGHTS \"%s\"", (int)reported, BOND_FIELDS[id].liggghts));
@@ -251,16 +264,16 @@ int test_bond_params(void)
     CHECK(granbond_bond_parameter_count() == N_BOND_FIELDS,
           say("granbond_bond_parameter_count() = %u = fields of GbBondParams", (unsigned)N_BOND_FIELDS));
     for (i = 0; i < N_BOND_FIELDS; i++) {
-        EXPECT_OK(granbond_bond_parameter_name(i, &kw, &lg), say("granbond_bond_parameter_name(%u)", (unsigned)i));
+        EXPECT_OK(row_names(granbond_bond_parameter_info, i, &kw, &lg), say("granbond_bond_parameter_info(%u)", (unsigned)i));
         CHECK(kw != NULL && lg != NULL && strcmp(kw, BOND_FIELDS[i].keyword) == 0 &&
                   strcmp(lg, BOND_FIELDS[i].liggghts) == 0,
               say("parameter %u = %s / %s", (unsigned)i, BOND_FIELDS[i].keyword, BOND_FIELDS[i].liggghts));
     }
-    EXPECT_OK(granbond_bond_parameter_name(bond_field_id("k_fn1"), &kw, &lg), "granbond_bond_parameter_name(k_fn1)");
+    EXPECT_OK(row_names(granbond_bond_parameter_info, bond_field_id("k_fn1"), &kw, &lg), "granbond_bond_parameter_info(k_fn1)");
     CHECK(strcmp(kw, "k_fn1") == 0 && strcmp(lg, "stiffnessPerUnitAreaK_fn1") == 0,
           "k_fn1 <-> stiffnessPerUnitAreaK_fn1");
-    EXPECT(granbond_bond_parameter_name(N_BOND_FIELDS, &kw, &lg), GB_STATUS_INVALID_ARGUMENT,
-           "granbond_bond_parameter_name(count)");
+    EXPECT(row_names(granbond_bond_parameter_info, N_BOND_FIELDS, &kw, &lg), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_bond_parameter_info(count)");
     EXPECT_MESSAGE("out of range");
 
     /* A good parameter set. */
@@ -417,14 +430,14 @@ int test_voigt_params(void)
     CHECK(granbond_voigt_parameter_count() == N_VOIGT_FIELDS, "granbond_voigt_parameter_count = fields");
     for (i = 0; i < N_VOIGT_FIELDS; i++) {
         const char *kw = NULL, *lg = NULL;
-        EXPECT_OK(granbond_voigt_parameter_name(i, &kw, &lg), say("granbond_voigt_parameter_name(%u)", (unsigned)i));
+        EXPECT_OK(row_names(granbond_voigt_parameter_info, i, &kw, &lg), say("granbond_voigt_parameter_info(%u)", (unsigned)i));
         CHECK(strcmp(kw, VOIGT_FIELDS[i].keyword) == 0 && strcmp(lg, VOIGT_FIELDS[i].liggghts) == 0,
               say("voigt parameter %u is %s (%s)", (unsigned)i, VOIGT_FIELDS[i].keyword, VOIGT_FIELDS[i].liggghts));
     }
     {
         const char *kw = NULL, *lg = NULL;
-        EXPECT(granbond_voigt_parameter_name(N_VOIGT_FIELDS, &kw, &lg), GB_STATUS_INVALID_ARGUMENT,
-               "granbond_voigt_parameter_name(count)");
+        EXPECT(row_names(granbond_voigt_parameter_info, N_VOIGT_FIELDS, &kw, &lg), GB_STATUS_INVALID_ARGUMENT,
+               "granbond_voigt_parameter_info(count)");
     }
 
     return 0;

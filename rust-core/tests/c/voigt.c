@@ -1,7 +1,7 @@
 /*
- * The Voigt contact: pairs, batches, planes, time step, contact frames (from
- * the kinematics or from the engine's geometry and the radii) and the parts
- * an engine assembles a contact from.
+ * The Voigt contact: pairs, walls, time step, contact frames (from the
+ * engine's geometry and the radii) and the parts an engine assembles a
+ * contact from.
  */
 
 #include "harness.h"
@@ -82,124 +82,40 @@ int test_voigt_contact(void)
     return 0;
 }
 
-#define N_CONTACTS 3
-
-int test_voigt_batch(void)
+/* The frame of a pair as the LAMMPS adapter builds it: from the separation. */
+static GbStatus pair_frame(const GbPairKinematics *k, GbContactFrame *f)
 {
-    const GbVoigtParams p = voigt_fixture();
-    GbVoigtModel *m = NULL;
-    GbPairKinematics k[N_CONTACTS];
-    GbContactOutput out[N_CONTACTS], single;
-    double states[N_CONTACTS * GRANBOND_CONTACT_STATE_LEN], one[GRANBOND_CONTACT_STATE_LEN];
-    size_t failed = 999;
-    int b;
-
-    if (new_voigt_model(&p, &m))
-        return 1;
-    for (b = 0; b < N_CONTACTS; b++) {
-        contact_at(&k[b], 1.0e-6 * (b + 1), 0.01 * b);
-        k[b].v_i[0] += 1.0e-3; /* some sliding velocity too */
-        k[b].w_i[1] = 0.3;
-    }
-    memset(states, 0, sizeof states);
-
-    k[1].radius_i = 0.0;
-    memset(out, 0, sizeof out);
-    out[2].touching = -7;
-    EXPECT(granbond_voigt_compute_batch(m, N_CONTACTS, k, DT, states, out, &failed), GB_STATUS_NON_POSITIVE_RADIUS,
-           "granbond_voigt_compute_batch with radius 0 in contact 1");
-    CHECK(failed == 1, say("failed_index = 1 (got %u)", (unsigned)failed));
-    EXPECT_MESSAGE("contact 1");
-    CHECK(out[0].touching == 1 && out[2].touching == -7, "contact 0 computed, contact 2 not touched");
-    EXPECT(granbond_voigt_compute_batch(m, N_CONTACTS, k, DT, states, out, NULL), GB_STATUS_NON_POSITIVE_RADIUS,
-           "the same batch with failed_index = NULL");
-    k[1].radius_i = R_C;
-
-    memset(states, 0, sizeof states);
-    failed = 999;
-    EXPECT_OK(granbond_voigt_compute_batch(m, N_CONTACTS, k, DT, states, out, &failed),
-              "granbond_voigt_compute_batch");
-    CHECK(failed == 999, "failed_index left alone on success");
-    for (b = 0; b < N_CONTACTS; b++) {
-        memset(one, 0, sizeof one);
-        EXPECT_OK(granbond_voigt_compute(m, &k[b], DT, one, &single), say("granbond_voigt_compute, contact %d", b));
-        CHECK(vec_close(out[b].force_i, single.force_i, 1e-15) && vec_close(out[b].torque_i, single.torque_i, 1e-15) &&
-                  memcmp(one, states + b * GRANBOND_CONTACT_STATE_LEN, sizeof one) == 0 && out[b].touching == 1,
-              say("batch contact %d = single call", b));
-    }
-
-    EXPECT(granbond_voigt_compute_batch(m, N_CONTACTS, k, INFINITY, states, out, &failed),
-           GB_STATUS_INVALID_ARGUMENT, "granbond_voigt_compute_batch with dt = inf");
-    EXPECT_OK(granbond_voigt_compute_batch(m, 0, NULL, DT, NULL, NULL, NULL),
-              "granbond_voigt_compute_batch, count = 0 and NULL arrays");
-
-    granbond_voigt_model_free(m);
-    return 0;
+    double del[3];
+    int c;
+    for (c = 0; c < 3; c++)
+        del[c] = k->x_i[c] - k->x_j[c];
+    return granbond_contact_frame_separation(del, del[0] * del[0] + del[1] * del[1] + del[2] * del[2], k->radius_i,
+                                             k->radius_j, k->v_i, k->v_j, k->w_i, k->w_j, f);
 }
 
-int test_voigt_plane(void)
+/* A sphere pressed into a wall, handed over as the LIGGGHTS adapter does:
+ * the wall's normal, the centre's distance from it, and radius 0. */
+int test_voigt_wall(void)
 {
     const GbVoigtParams p = voigt_fixture();
     GbVoigtModel *m = NULL;
-    GbSphereKinematics sphere, bad;
-    GbPlane plane, tilted;
     GbContactOutput out;
     double state[GRANBOND_CONTACT_STATE_LEN];
-    const double overlap = 2.0e-5, speed = 0.02;
+    const double overlap = 2.0e-5, speed = 0.02, normal[3] = {0.0, 0.0, 1.0}, gap = R_C - overlap;
+    const double v_i[3] = {0.0, 0.0, -speed}, zero[3] = {0.0, 0.0, 0.0};
     double fn;
 
     if (new_voigt_model(&p, &m))
         return 1;
     memset(state, 0, sizeof state);
-    memset(&plane, 0, sizeof plane);
-    plane.point[0] = 0.3;
-    plane.point[1] = -0.1;
-    plane.normal[2] = 1.0;
-    memset(&sphere, 0, sizeof sphere);
-    sphere.radius = R_C;
-    sphere.x[0] = 0.3;
-    sphere.x[1] = -0.1;
-    sphere.x[2] = R_C - overlap;
-    sphere.v[2] = -speed;
-
-    EXPECT_OK(granbond_voigt_compute_plane(m, &sphere, &plane, DT, state, &out),
-              "granbond_voigt_compute_plane, sphere pressed into the plane");
-    fn = p.k_n * (R_C - sphere.x[2]) + p.gamma_n * speed;
-    CHECK(close_to(out.overlap, R_C - sphere.x[2], 1e-12), "plane overlap = R - gap");
-    CHECK(close_to(out.normal_force, fn, 1e-12), say("plane Fn = k_n overlap - gamma_n v_n = %.17g N", fn));
+    EXPECT_OK(granbond_voigt_compute_normal_unchecked(m, normal, gap, R_C, 0.0, v_i, zero, zero, zero, DT, state, &out),
+              "granbond_voigt_compute_normal_unchecked, sphere pressed into a wall");
+    fn = p.k_n * (R_C - gap) + p.gamma_n * speed;
+    CHECK(close_to(out.overlap, R_C - gap, 1e-12), "wall overlap = R - gap");
+    CHECK(close_to(out.normal_force, fn, 1e-12), say("wall Fn = k_n overlap - gamma_n v_n = %.17g N", fn));
     CHECK(close_to(out.force_i[2], fn, 1e-12) && out.force_i[0] == 0.0 && out.force_i[1] == 0.0,
-          "force along the plane normal, repulsive");
+          "force along the wall normal, repulsive");
     CHECK(out.touching == 1, "touching");
-
-    /* The plane's normal must be a unit vector; any unit direction will do. */
-    tilted = plane;
-    tilted.normal[2] = 2.0;
-    EXPECT(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out), GB_STATUS_INVALID_ARGUMENT,
-           "granbond_voigt_compute_plane, |normal| = 2");
-    EXPECT_MESSAGE("unit");
-    tilted.normal[2] = 0.0;
-    EXPECT(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out), GB_STATUS_INVALID_ARGUMENT,
-           "granbond_voigt_compute_plane, normal = 0");
-    tilted.normal[0] = 0.0;
-    tilted.normal[1] = 0.6;
-    tilted.normal[2] = 0.8;
-    EXPECT_OK(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out),
-              "granbond_voigt_compute_plane, normal (0, 0.6, 0.8)");
-
-    tilted = plane;
-    tilted.point[0] = NAN;
-    EXPECT(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out), GB_STATUS_NON_FINITE_INPUT,
-           "granbond_voigt_compute_plane, NaN plane point");
-    tilted = plane;
-    tilted.velocity[1] = INFINITY;
-    EXPECT(granbond_voigt_compute_plane(m, &sphere, &tilted, DT, state, &out), GB_STATUS_NON_FINITE_INPUT,
-           "granbond_voigt_compute_plane, inf plane velocity");
-    bad = sphere;
-    bad.radius = 0.0;
-    EXPECT(granbond_voigt_compute_plane(m, &bad, &plane, DT, state, &out), GB_STATUS_NON_POSITIVE_RADIUS,
-           "granbond_voigt_compute_plane, radius 0");
-    EXPECT(granbond_voigt_compute_plane(m, &sphere, &plane, -DT, state, &out), GB_STATUS_INVALID_ARGUMENT,
-           "granbond_voigt_compute_plane, dt < 0");
 
     granbond_voigt_model_free(m);
     return 0;
@@ -232,21 +148,23 @@ int test_voigt_timestep(void)
 
 int test_contact_frames(void)
 {
-    GbPairKinematics k, bad;
-    GbSphereKinematics sphere, bad_sphere;
-    GbPlane plane, tilted;
-    GbContactFrame frame;
-    double n[3], r;
+    const GbVoigtParams p = voigt_fixture();
+    GbVoigtModel *m = NULL;
+    GbPairKinematics k;
+    GbContactFrame frame, tilted;
+    double n[3], r, del[3], fn = 0.0;
+    const double wall_normal[3] = {0.0, 0.0, 1.0}, wall_velocity[3] = {0.01, 0.0, 0.0}, zero[3] = {0.0, 0.0, 0.0};
+    const double sphere_v[3] = {0.0, 0.0, -0.02}, sphere_w[3] = {0.0, 1.5, 0.0};
     int c;
 
-    /* Sphere pair. */
+    /* Sphere pair, from its separation. */
     contact_at(&k, 1.0e-5, 0.01);
     k.radius_j = 0.7e-3;
     k.w_i[0] = 0.2;
     k.w_j[1] = -0.3;
     k.v_j[2] = 0.004;
     memset(&frame, 0xAB, sizeof frame);
-    EXPECT_OK(granbond_contact_frame_pair(&k, &frame), "granbond_contact_frame_pair");
+    EXPECT_OK(pair_frame(&k, &frame), "granbond_contact_frame_separation");
     r = distance3(k.x_i, k.x_j);
     for (c = 0; c < 3; c++)
         n[c] = (k.x_i[c] - k.x_j[c]) / r;
@@ -258,50 +176,31 @@ int test_contact_frames(void)
     CHECK(vec_equal(frame.v_i, k.v_i) && vec_equal(frame.v_j, k.v_j) && vec_equal(frame.w_i, k.w_i) &&
               vec_equal(frame.w_j, k.w_j),
           "frame velocities = kinematics");
-    bad = k;
-    memcpy(bad.x_j, bad.x_i, sizeof bad.x_j);
-    EXPECT(granbond_contact_frame_pair(&bad, &frame), GB_STATUS_COINCIDENT_CENTRES,
-           "granbond_contact_frame_pair, coincident centres");
-    bad = k;
-    bad.v_j[0] = NAN;
-    EXPECT(granbond_contact_frame_pair(&bad, &frame), GB_STATUS_NON_FINITE_INPUT,
-           "granbond_contact_frame_pair, NaN v_j");
-    bad = k;
-    bad.radius_i = 0.0;
-    EXPECT(granbond_contact_frame_pair(&bad, &frame), GB_STATUS_NON_POSITIVE_RADIUS,
-           "granbond_contact_frame_pair, radius 0");
+    memset(del, 0, sizeof del);
+    EXPECT(granbond_contact_frame_separation(del, 0.0, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j, &frame),
+           GB_STATUS_COINCIDENT_CENTRES, "granbond_contact_frame_separation, coincident centres");
 
-    /* Sphere on a plane: the wall is the j side, with no lever and no spin. */
-    memset(&plane, 0, sizeof plane);
-    plane.point[2] = 0.5e-3;
-    plane.normal[2] = 1.0;
-    plane.velocity[0] = 0.01;
-    memset(&sphere, 0, sizeof sphere);
-    sphere.radius = R_C;
-    sphere.x[2] = 0.5e-3 + R_C - 3.0e-5;
-    sphere.v[2] = -0.02;
-    sphere.w[1] = 1.5;
+    /* Sphere on a wall: the wall is the j side, radius 0, with no lever. */
     memset(&frame, 0xAB, sizeof frame);
-    EXPECT_OK(granbond_contact_frame_plane(&sphere, &plane, &frame), "granbond_contact_frame_plane");
-    CHECK(vec_equal(frame.n, plane.normal), "frame.n = plane normal");
+    EXPECT_OK(granbond_contact_frame_normal(wall_normal, R_C - 3.0e-5, R_C, 0.0, sphere_v, wall_velocity, sphere_w,
+                                            zero, &frame),
+              "granbond_contact_frame_normal, a wall");
+    CHECK(vec_equal(frame.n, wall_normal), "frame.n = wall normal");
     CHECK(close_to(frame.overlap, 3.0e-5, 1e-9), "frame.overlap = R - gap");
     CHECK(frame.lever_i == R_C && frame.lever_j == 0.0 && frame.r_eff == R_C, "levers R and 0, r_eff = R");
-    CHECK(vec_equal(frame.v_i, sphere.v) && vec_equal(frame.v_j, plane.velocity) && vec_equal(frame.w_i, sphere.w) &&
+    CHECK(vec_equal(frame.v_i, sphere_v) && vec_equal(frame.v_j, wall_velocity) && vec_equal(frame.w_i, sphere_w) &&
               vec_zero(frame.w_j),
           "frame velocities: sphere, wall, no wall spin");
-    tilted = plane;
-    tilted.normal[2] = 0.5;
-    EXPECT(granbond_contact_frame_plane(&sphere, &tilted, &frame), GB_STATUS_INVALID_ARGUMENT,
-           "granbond_contact_frame_plane, |normal| = 0.5");
+
+    /* A frame handed back to the parts must have a unit normal. */
+    if (new_voigt_model(&p, &m))
+        return 1;
+    tilted = frame;
+    tilted.n[2] = 0.5;
+    EXPECT(granbond_voigt_normal_force(m, &tilted, &fn), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_voigt_normal_force, |n| = 0.5");
     EXPECT_MESSAGE("unit");
-    bad_sphere = sphere;
-    bad_sphere.w[2] = INFINITY;
-    EXPECT(granbond_contact_frame_plane(&bad_sphere, &plane, &frame), GB_STATUS_NON_FINITE_INPUT,
-           "granbond_contact_frame_plane, inf spin");
-    bad_sphere = sphere;
-    bad_sphere.radius = 0.0;
-    EXPECT(granbond_contact_frame_plane(&bad_sphere, &plane, &frame), GB_STATUS_NON_POSITIVE_RADIUS,
-           "granbond_contact_frame_plane, radius 0");
+    granbond_voigt_model_free(m);
     return 0;
 }
 
@@ -357,9 +256,8 @@ int test_voigt_parts(void)
     GbContactOutput whole, parts;
     GbTangentialOutput t;
     double state_whole[GRANBOND_CONTACT_STATE_LEN], state_parts[GRANBOND_CONTACT_STATE_LEN];
-    double state_fields[GRANBOND_CONTACT_STATE_LEN];
     double state_sep[GRANBOND_CONTACT_STATE_LEN], state_normal[GRANBOND_CONTACT_STATE_LEN];
-    GbContactOutput fields, sep, normal;
+    GbContactOutput sep, normal;
     GbContactFrame built;
     double del[3], rsq, distance;
     double fn = 0.0, v_rel[3], torque[3], spring[3] = {0.0, 0.0, 0.0}, angle[3] = {0.0, 0.0, 0.0};
@@ -369,11 +267,10 @@ int test_voigt_parts(void)
     if (new_voigt_model(&p, &m))
         return 1;
 
-    /* The parts, and the unchecked whole step on the frame, reproduce
-     * granbond_voigt_compute, step after step. */
+    /* The parts, and the unchecked whole step on the engine's geometry,
+     * reproduce granbond_voigt_compute, step after step. */
     memset(state_whole, 0, sizeof state_whole);
     memset(state_parts, 0, sizeof state_parts);
-    memset(state_fields, 0, sizeof state_fields);
     memset(state_sep, 0, sizeof state_sep);
     memset(state_normal, 0, sizeof state_normal);
     for (step = 0; step < 4; step++) {
@@ -382,54 +279,43 @@ int test_voigt_parts(void)
         k.w_i[1] = 0.4;
         k.w_j[0] = -0.1 * step;
         EXPECT_OK(granbond_voigt_compute(m, &k, DT, state_whole, &whole), say("granbond_voigt_compute, step %d", step));
-        EXPECT_OK(granbond_contact_frame_pair(&k, &frame), say("granbond_contact_frame_pair, step %d", step));
+        EXPECT_OK(pair_frame(&k, &frame), say("granbond_contact_frame_separation, step %d", step));
         if (voigt_by_parts(m, &frame, p.rolling, DT, state_parts, &parts))
             return 1;
         CHECK(same_contact_output(&whole, &parts), say("step %d: normal + tangential + rolling = whole step", step));
         CHECK(vec_close(state_whole, state_parts, 1e-15) && vec_close(state_whole + 3, state_parts + 3, 1e-15),
               say("step %d: same spring and rolling angle", step));
-        EXPECT_OK(granbond_voigt_compute_fields_unchecked(m, frame.n, frame.overlap, frame.lever_i, frame.lever_j,
-                                                          frame.r_eff, frame.v_i, frame.v_j, frame.w_i, frame.w_j, DT,
-                                                          state_fields, &fields),
-                  say("granbond_voigt_compute_fields_unchecked, step %d", step));
-        CHECK(same_contact_output(&fields, &whole) && memcmp(state_fields, state_whole, sizeof state_fields) == 0,
-              say("step %d: unchecked step on the frame's fields = granbond_voigt_compute", step));
         /* From the engine's geometry and the radii: the same frame, the same bits. */
         for (c = 0; c < 3; c++)
             del[c] = k.x_i[c] - k.x_j[c];
         rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
         distance = sqrt(rsq);
-        EXPECT_OK(granbond_contact_frame_separation(del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j,
-                                                    &built),
-                  say("granbond_contact_frame_separation, step %d", step));
-        CHECK(memcmp(&built, &frame, sizeof built) == 0,
-              say("step %d: the frame from the separation = granbond_contact_frame_pair, bit for bit", step));
         EXPECT_OK(granbond_contact_frame_normal(frame.n, distance, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i, k.w_j,
                                                 &built),
                   say("granbond_contact_frame_normal, step %d", step));
         CHECK(memcmp(&built, &frame, sizeof built) == 0,
-              say("step %d: the frame from the normal and distance = granbond_contact_frame_pair", step));
+              say("step %d: the frame from the normal and distance = the frame from the separation", step));
         EXPECT_OK(granbond_voigt_compute_separation_unchecked(m, del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i,
                                                               k.w_j, DT, state_sep, &sep),
                   say("granbond_voigt_compute_separation_unchecked, step %d", step));
-        CHECK(identical_contact_output(&sep, &fields) && memcmp(state_sep, state_fields, sizeof state_fields) == 0,
-              say("step %d: unchecked step on the separation = on the frame's fields, bit for bit", step));
+        CHECK(same_contact_output(&sep, &whole) && memcmp(state_sep, state_whole, sizeof state_sep) == 0,
+              say("step %d: unchecked step on the separation = granbond_voigt_compute", step));
         EXPECT_OK(granbond_voigt_compute_normal_unchecked(m, frame.n, distance, k.radius_i, k.radius_j, k.v_i, k.v_j,
                                                           k.w_i, k.w_j, DT, state_normal, &normal),
                   say("granbond_voigt_compute_normal_unchecked, step %d", step));
-        CHECK(identical_contact_output(&normal, &fields) && memcmp(state_normal, state_fields, sizeof state_fields) == 0,
-              say("step %d: unchecked step on the normal and distance = on the frame's fields, bit for bit", step));
+        CHECK(identical_contact_output(&normal, &sep) && memcmp(state_normal, state_sep, sizeof state_sep) == 0,
+              say("step %d: unchecked step on the normal and distance = on the separation, bit for bit", step));
     }
     bad = frame;
     bad.w_j[2] = NAN;
-    EXPECT(granbond_voigt_compute_fields_unchecked(m, bad.n, bad.overlap, bad.lever_i, bad.lever_j, bad.r_eff, bad.v_i,
-                                                   bad.v_j, bad.w_i, bad.w_j, DT, state_fields, &fields),
-           GB_STATUS_NON_FINITE_INPUT, "granbond_voigt_compute_fields_unchecked, NaN w_j: a non-finite torque is reported");
-    EXPECT_MESSAGE("granbond_voigt_compute_fields_unchecked");
+    EXPECT(granbond_voigt_compute_normal_unchecked(m, bad.n, distance, k.radius_i, k.radius_j, bad.v_i, bad.v_j, bad.w_i,
+                                                   bad.w_j, DT, state_normal, &normal),
+           GB_STATUS_NON_FINITE_RESULT, "granbond_voigt_compute_normal_unchecked, NaN w_j: a non-finite torque is reported");
+    EXPECT_MESSAGE("granbond_voigt_compute_normal_unchecked");
 
     /* The normal part alone: k_n overlap - gamma_n v_n. */
     contact_at(&k, 1.0e-5, 0.01);
-    EXPECT_OK(granbond_contact_frame_pair(&k, &frame), "granbond_contact_frame_pair");
+    EXPECT_OK(pair_frame(&k, &frame), "granbond_contact_frame_separation");
     EXPECT_OK(granbond_voigt_normal_force(m, &frame, &fn), "granbond_voigt_normal_force");
     for (c = 0; c < 3; c++)
         v_rel[c] = frame.v_i[c] - frame.v_j[c];
@@ -438,7 +324,7 @@ int test_voigt_parts(void)
 
     /* Sliding: the tangential force sits on the Coulomb cap mu |Fn|. */
     k.v_i[0] += 10.0;
-    EXPECT_OK(granbond_contact_frame_pair(&k, &frame), "granbond_contact_frame_pair, fast slip");
+    EXPECT_OK(pair_frame(&k, &frame), "granbond_contact_frame_separation, fast slip");
     EXPECT_OK(granbond_voigt_tangential(m, &frame, fn, 1.0e-3, spring, &t), "granbond_voigt_tangential, fast slip");
     CHECK(t.sliding == 1 && close_to(norm3(t.force_i), p.mu * fabs(fn), 1e-12), "sliding: |Ft| = mu |Fn|");
     CHECK(fabs(dot3(t.force_i, frame.n)) <= 1e-12 * norm3(t.force_i), "Ft is tangential");
@@ -469,10 +355,12 @@ int test_voigt_parts(void)
         memcpy(copy, held, sizeof held);
         EXPECT_OK(granbond_voigt_evaluate_frame(m, &frame, held, &ev), "granbond_voigt_evaluate_frame");
         CHECK(memcmp(copy, held, sizeof held) == 0, "granbond_voigt_evaluate_frame leaves the state alone");
-        EXPECT_OK(granbond_voigt_compute_fields_unchecked(m, frame.n, frame.overlap, frame.lever_i, frame.lever_j,
-                                                          frame.r_eff, frame.v_i, frame.v_j, frame.w_i, frame.w_j, 0.0,
-                                                          copy, &st),
-                  "granbond_voigt_compute_fields_unchecked, dt = 0");
+        for (c = 0; c < 3; c++)
+            del[c] = k.x_i[c] - k.x_j[c];
+        rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+        EXPECT_OK(granbond_voigt_compute_separation_unchecked(m, del, rsq, k.radius_i, k.radius_j, k.v_i, k.v_j, k.w_i,
+                                                              k.w_j, 0.0, copy, &st),
+                  "granbond_voigt_compute_separation_unchecked, dt = 0");
         CHECK(close_to(ev.force_i[0], st.force_i[0], 1e-15) && close_to(ev.force_i[1], st.force_i[1], 1e-15) &&
                   close_to(ev.torque_i[2], st.torque_i[2], 1e-15),
               "evaluation = a step of zero length");

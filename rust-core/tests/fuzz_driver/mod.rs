@@ -59,25 +59,22 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 68] = [
+pub const ENTRY_POINTS: [&str; 59] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
     "granbond_bond_model_new",
     "granbond_bond_model_free",
     "granbond_bond_parameter_count",
-    "granbond_bond_parameter_name",
     "granbond_bond_try_create",
     "granbond_bond_may_create",
     "granbond_bond_creates_at",
     "granbond_bond_create_now",
     "granbond_bond_compute",
-    "granbond_bond_compute_batch",
     "granbond_bond_compute_indexed",
     "granbond_wall_bond_try_create",
     "granbond_wall_bond_compute",
     "granbond_bond_output_store",
-    "granbond_bond_output_store_intact",
     "granbond_bond_output_load",
     "granbond_bond_centre",
     "granbond_bond_max_distance",
@@ -91,15 +88,10 @@ pub const ENTRY_POINTS: [&str; 68] = [
     "granbond_voigt_model_new",
     "granbond_voigt_model_free",
     "granbond_voigt_compute",
-    "granbond_voigt_compute_batch",
-    "granbond_voigt_compute_plane",
-    "granbond_voigt_compute_fields_unchecked",
-    "granbond_contact_frame_pair",
     "granbond_voigt_compute_separation_unchecked",
     "granbond_voigt_compute_normal_unchecked",
     "granbond_contact_frame_separation",
     "granbond_contact_frame_normal",
-    "granbond_contact_frame_plane",
     "granbond_voigt_normal_force",
     "granbond_voigt_tangential",
     "granbond_voigt_rolling",
@@ -108,7 +100,6 @@ pub const ENTRY_POINTS: [&str; 68] = [
     "granbond_voigt_rolling_evaluate",
     "granbond_voigt_critical_timestep",
     "granbond_voigt_parameter_count",
-    "granbond_voigt_parameter_name",
     "granbond_bond_parameter_info",
     "granbond_voigt_parameter_info",
     "granbond_bond_params_set",
@@ -163,7 +154,7 @@ const VOIGT_TABLE: TableEntries<VoigtParams> = TableEntries {
 const NOT_STATUS: i32 = 0;
 
 /// Status values, in `GbStatus` order, for the summary.
-pub const STATUS_NAMES: [&str; 9] = [
+pub const STATUS_NAMES: [&str; STATUSES] = [
     "OK",
     "NULL_POINTER",
     "INVALID_PARAMETER",
@@ -173,12 +164,17 @@ pub const STATUS_NAMES: [&str; 9] = [
     "LAYOUT_MISMATCH",
     "INVALID_ARGUMENT",
     "PANIC",
+    "MISALIGNED",
+    "NON_FINITE_RESULT",
 ];
+
+/// How many `GbStatus` values there are.
+pub const STATUSES: usize = 11;
 
 /// How often each entry answered with each status.
 #[derive(Clone, Debug, Default)]
 pub struct Tally {
-    pub answers: BTreeMap<&'static str, [u64; 9]>,
+    pub answers: BTreeMap<&'static str, [u64; STATUSES]>,
     pub inputs: u64,
 }
 
@@ -198,8 +194,8 @@ impl Tally {
     }
 
     /// Total answers per status over all entries.
-    pub fn by_status(&self) -> [u64; 9] {
-        let mut total = [0; 9];
+    pub fn by_status(&self) -> [u64; STATUSES] {
+        let mut total = [0; STATUSES];
         for counts in self.answers.values() {
             for (t, c) in total.iter_mut().zip(counts) {
                 *t += c;
@@ -602,8 +598,6 @@ struct Session<'t> {
     /// States of every kind, in one pool: any entry may be handed to any
     /// model, so a state written by one model is read by another.
     pool: Vec<Entry>,
-    /// Contiguous states of the batch calls, as many of the largest kind.
-    flat: Vec<f64>,
     pair: PairKinematics,
     frame: ContactFrame,
 }
@@ -628,7 +622,6 @@ impl<'t> Session<'t> {
             bond_models: Vec::new(),
             voigt_models: Vec::new(),
             pool: vec![[0.0; ENTRY]; POOL],
-            flat: vec![0.0; MAX_BATCH * MAX_STATE + 1],
             pair: realistic_pair(&mut Input::new(&[])),
             frame: ContactFrame {
                 n: [1.0, 0.0, 0.0],
@@ -685,7 +678,7 @@ impl<'t> Session<'t> {
         self.tally.count(function, status as i32);
         match status {
             Status::Ok => true,
-            Status::NonFiniteInput => {
+            Status::NonFiniteResult => {
                 let text = message();
                 assert!(text.starts_with(function), "{function}: message \"{text}\"");
                 false
@@ -891,13 +884,12 @@ impl<'t> Session<'t> {
                 // SAFETY: null is allowed.
                 unsafe { fb::granbond_bond_model_free(null_mut()) };
             }
-            3 => self.parameter_names(input, true),
+            3 => self.parameter_count(input, true),
             4 => self.bond_create(input, false),
             5 => self.bond_may_create(input),
             6 => self.bond_create(input, true),
             7 => self.bond_compute(input),
-            8 => self.bond_batch(input),
-            9 => self.bond_indexed(input),
+            8 | 9 => self.bond_indexed(input),
             10 => self.bond_sweep(input),
             11 => self.wall_try_create(input),
             12 => self.wall_compute(input),
@@ -923,18 +915,16 @@ impl<'t> Session<'t> {
                 // SAFETY: null is allowed.
                 unsafe { fc::granbond_voigt_model_free(null_mut()) };
             }
-            20 => self.voigt_compute(input),
-            21 => self.voigt_batch(input),
-            22 => self.voigt_plane(input),
+            20 | 21 => self.voigt_compute(input),
+            22 => self.voigt_evaluate_then_step(input),
             23 => self.voigt_evaluate_then_step(input),
-            24 => self.voigt_fields_unchecked(input),
-            25 => self.frame_pair(input),
-            26 => self.frame_plane(input),
+            24 => self.voigt_unchecked(input),
+            25 | 26 => self.frames(input),
             27 => self.voigt_normal_force(input),
             28 => self.voigt_tangential(input),
             29 => self.voigt_rolling(input),
             30 => self.timestep(input),
-            31 => self.parameter_names(input, false),
+            31 => self.parameter_count(input, false),
             32 => self.layout(input),
             33 => self.state_layout(input),
             34 => {
@@ -1009,49 +999,22 @@ impl<'t> Session<'t> {
         }
     }
 
-    fn parameter_names(&mut self, input: &mut Input, bond: bool) {
-        let (count, function) = if bond {
+    fn parameter_count(&mut self, input: &mut Input, bond: bool) {
+        let (count, rows, function) = if bond {
             (
                 fb::granbond_bond_parameter_count(),
-                "granbond_bond_parameter_name",
+                PARAMETERS.len(),
+                "granbond_bond_parameter_count",
             )
         } else {
             (
                 fc::granbond_voigt_parameter_count(),
-                "granbond_voigt_parameter_name",
+                VOIGT_PARAMETERS.len(),
+                "granbond_voigt_parameter_count",
             )
         };
-        let rows = if bond {
-            PARAMETERS.len()
-        } else {
-            VOIGT_PARAMETERS.len()
-        };
         assert_eq!(count, rows, "parameter count");
-        self.answer_value(if bond {
-            "granbond_bond_parameter_count"
-        } else {
-            "granbond_voigt_parameter_count"
-        });
-        let id = input.usize();
-        let mut keyword = Place::new(null::<c_char>());
-        let mut liggghts = Place::new(null::<c_char>());
-        let (hk, hl) = (input.pointer(), input.pointer());
-        // SAFETY: null, misaligned or valid.
-        let status = unsafe {
-            if bond {
-                fb::granbond_bond_parameter_name(id, keyword.ptr(hk), liggghts.ptr(hl))
-            } else {
-                fc::granbond_voigt_parameter_name(id, keyword.ptr(hk), liggghts.ptr(hl))
-            }
-        };
-        if self.answer(function, status) {
-            assert!(id < count, "{function}: OK for id {id} of {count}");
-            for p in [keyword.get(), liggghts.get()] {
-                assert!(!p.is_null());
-                // SAFETY: static NUL-terminated storage of the library.
-                assert!(!unsafe { CStr::from_ptr(p) }.to_bytes().is_empty());
-            }
-        }
+        self.answer_value(function);
         self.parameter_rows(input, bond, count);
     }
 
@@ -1255,40 +1218,6 @@ impl<'t> Session<'t> {
         self.bond_centre(input, &k.get());
     }
 
-    /// The batch store of one bond whose output is kept `offset` doubles
-    /// after its state: `o` there if it is intact, nothing written if not.
-    fn bond_output_slots_intact(&mut self, input: &mut Input, o: &BondOutput) {
-        let offset = input.below(3);
-        let mut record = Place::new([0.0f64; 2 + BOND_OUTPUT_LEN]);
-        let states = [record.ptr(input.pointer()) as *mut f64];
-        let mut out = Place::new(*o);
-        let (ho, hs) = (input.pointer(), input.pointer());
-        let states_ptr = if hs == Pointer::Null {
-            null_mut()
-        } else {
-            states.as_ptr() as *mut *mut f64
-        };
-        let mut failed = usize::MAX;
-        // SAFETY: null, misaligned or valid for their sizes; a valid state
-        // has room for the slots at `offset`.
-        let status =
-            unsafe { fb::granbond_bond_output_store_intact(1, out.ptr(ho), states_ptr, offset, &mut failed) };
-        let function = "granbond_bond_output_store_intact";
-        if self.answer(function, status) {
-            let kept = &record.get()[offset..offset + BOND_OUTPUT_LEN];
-            let want = if o.status == BondStatus::Intact as i32 {
-                store_output(o)
-            } else {
-                [0.0; BOND_OUTPUT_LEN]
-            };
-            assert!(
-                kept.iter().zip(&want).all(|(a, b)| a.to_bits() == b.to_bits()),
-                "{function}: {kept:?} for {o:?} at offset {offset}"
-            );
-            self.note_finite(function, all_finite(kept));
-        }
-    }
-
     /// Stores `o` in history slots and loads it back.
     fn bond_output_slots(&mut self, input: &mut Input, mut o: BondOutput) {
         if input.below(4) == 0 {
@@ -1308,7 +1237,6 @@ impl<'t> Session<'t> {
             );
             self.note_finite("granbond_bond_output_store", all_finite(&stored));
         }
-        self.bond_output_slots_intact(input, &o);
         if input.below(4) == 0 {
             let mut s = slots.get();
             input.mutate(&mut s);
@@ -1411,63 +1339,6 @@ impl<'t> Session<'t> {
             Pointer::Null => null_mut(),
             Pointer::Misaligned => (v.as_mut_ptr() as *mut u8).wrapping_add(1) as *mut T,
             Pointer::Valid => v.as_mut_ptr(),
-        }
-    }
-
-    fn bond_batch(&mut self, input: &mut Input) {
-        let m = self.bond_model(input);
-        self.contiguous_batch(
-            input,
-            "granbond_bond_compute_batch",
-            BOND_STATE_LEN,
-            // SAFETY: buffers of at least `count` elements (null or
-            // misaligned pointers are checked); `failed` may be null.
-            |count, k, dt, s, o, failed| unsafe {
-                fb::granbond_bond_compute_batch(m, count, k, dt, s, o, failed)
-            },
-            Self::check_bond_output,
-        );
-    }
-
-    /// The batch calls over contiguous states: `call(count, kinematics,
-    /// dt, states, out, failed_index)`, each output checked by `check`.
-    fn contiguous_batch<O: Copy + Default>(
-        &mut self,
-        input: &mut Input,
-        function: &'static str,
-        state_len: usize,
-        call: impl FnOnce(usize, *const PairKinematics, f64, *mut f64, *mut O, *mut usize) -> Status,
-        check: fn(&mut Self, &'static str, &O),
-    ) {
-        let count = self.count(input);
-        // one more than `count`, so a misaligned pointer stays inside
-        let mut k = self.pairs(input, count + 1);
-        let dt = self.dt(input);
-        let mut out = vec![O::default(); count + 1];
-        let mut failed = Place::new(usize::MAX);
-        let (hk, hs, ho, hf) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
-        let before = self.flat.clone();
-        let s = Self::batch_ptr(&mut self.flat, hs);
-        let status = call(
-            count,
-            Self::batch_ptr(&mut k, hk),
-            dt,
-            s,
-            Self::batch_ptr(&mut out, ho),
-            failed.ptr(hf),
-        );
-        if self.answer(function, status) {
-            if all_finite(&before[..count * state_len]) {
-                for o in &out[..count] {
-                    check(self, function, o);
-                }
-            }
-        } else if hf == Pointer::Valid && failed.get() != usize::MAX {
-            assert!(
-                failed.get() < count,
-                "{function}: failed_index {} of {count}",
-                failed.get()
-            );
         }
     }
 
@@ -1727,7 +1598,8 @@ impl<'t> Session<'t> {
                 .iter()
                 .position(|&r| r.is_null() || !(r as usize).is_multiple_of(align_of::<f64>()));
             let first = match bad_record {
-                Some(k) => Some((Status::NullPointer, k)),
+                Some(k) if records[k].is_null() => Some((Status::NullPointer, k)),
+                Some(k) => Some((Status::Misaligned, k)),
                 None => b.first_bad_pair().map(|k| (Status::InvalidArgument, k)),
             };
             if let (true, Some((want, k))) = (valid, first) {
@@ -2258,42 +2130,6 @@ impl<'t> Session<'t> {
         }
     }
 
-    fn voigt_batch(&mut self, input: &mut Input) {
-        let m = self.voigt_model(input);
-        self.contiguous_batch(
-            input,
-            "granbond_voigt_compute_batch",
-            CONTACT_STATE_LEN,
-            // SAFETY: as in bond_batch.
-            |count, k, dt, s, o, failed| unsafe {
-                fc::granbond_voigt_compute_batch(m, count, k, dt, s, o, failed)
-            },
-            Self::check_contact_output,
-        );
-    }
-
-    fn voigt_plane(&mut self, input: &mut Input) {
-        let m = self.voigt_model(input);
-        let mut sp = Place::new(self.sphere(input));
-        let mut pl = Place::new(self.plane(input));
-        let dt = self.dt(input);
-        let i = self.state(input);
-        let mut out = Place::new(ContactOutput::default());
-        let (h1, h2, h3, h4) = (input.pointer(), input.pointer(), input.pointer(), input.pointer());
-        let before = self.pool[i];
-        let s = self.state_ptr(i, h3);
-        // SAFETY: null, misaligned or valid.
-        let status =
-            unsafe { fc::granbond_voigt_compute_plane(m, sp.ptr(h1), pl.ptr(h2), dt, s, out.ptr(h4)) };
-        let function = "granbond_voigt_compute_plane";
-        if self.answer(function, status) {
-            if all_finite(&before[..CONTACT_STATE_LEN]) {
-                self.check_contact_output(function, &out.get());
-            }
-            self.check_state_finite(function, i, CONTACT_STATE_LEN, &before);
-        }
-    }
-
     /// The checked evaluation of a stored state, then an unchecked step of it.
     fn voigt_evaluate_then_step(&mut self, input: &mut Input) {
         let Some(m) = self.live_voigt_model(input) else {
@@ -2315,10 +2151,10 @@ impl<'t> Session<'t> {
                 "evaluate wrote the state"
             );
         }
-        self.fields_unchecked(m, &f, dt, s);
+        self.unchecked(m, &f, dt, s);
     }
 
-    fn voigt_fields_unchecked(&mut self, input: &mut Input) {
+    fn voigt_unchecked(&mut self, input: &mut Input) {
         let Some(m) = self.live_voigt_model(input) else {
             return;
         };
@@ -2326,35 +2162,13 @@ impl<'t> Session<'t> {
         let dt = self.dt(input);
         let i = self.state(input);
         let s = self.pool[i].as_mut_ptr();
-        self.fields_unchecked(m, &f, dt, s);
+        self.unchecked(m, &f, dt, s);
     }
 
-    fn fields_unchecked(&mut self, m: *const VoigtModel, f: &ContactFrame, dt: f64, s: *mut f64) {
+    /// The contact of `f` as the engines hand it over: separation or normal
+    /// and distance, with the radii (a wall as radius 0).
+    fn unchecked(&mut self, m: *const VoigtModel, f: &ContactFrame, dt: f64, s: *mut f64) {
         let mut out = ContactOutput::default();
-        // SAFETY: every pointer valid (the entry's contract); the numbers
-        // are arbitrary, which it must answer with a status.
-        let status = unsafe {
-            fc::granbond_voigt_compute_fields_unchecked(
-                m,
-                f.n.as_ptr(),
-                f.overlap,
-                f.lever_i,
-                f.lever_j,
-                f.r_eff,
-                f.v_i.as_ptr(),
-                f.v_j.as_ptr(),
-                f.w_i.as_ptr(),
-                f.w_j.as_ptr(),
-                dt,
-                s,
-                &mut out,
-            )
-        };
-        if self.answer_unchecked("granbond_voigt_compute_fields_unchecked", status) {
-            self.check_unchecked_flags(&out);
-        }
-        // the same contact as the engines hand it over: separation or
-        // normal and distance, with the radii (a wall as radius 0)
         let distance = f.lever_i + f.lever_j - f.overlap;
         let del = [f.n[0] * distance, f.n[1] * distance, f.n[2] * distance];
         let rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
@@ -2380,8 +2194,8 @@ impl<'t> Session<'t> {
         if rsq > 0.0 && self.answer_unchecked("granbond_voigt_compute_separation_unchecked", status) {
             self.check_unchecked_flags(&out);
         }
-        // SAFETY: as above.
-        let mut copy = unsafe { *(s as *const Entry) };
+        // the pool's state itself is advanced by this one
+        // SAFETY: every pointer valid (the entry's contract); `s` a whole state.
         let status = unsafe {
             fcg::granbond_voigt_compute_normal_unchecked(
                 m,
@@ -2394,7 +2208,7 @@ impl<'t> Session<'t> {
                 f.w_i.as_ptr(),
                 f.w_j.as_ptr(),
                 dt,
-                copy.as_mut_ptr(),
+                s,
                 &mut out,
             )
         };
@@ -2420,16 +2234,11 @@ impl<'t> Session<'t> {
         assert!(all_finite(&loads), "unchecked Voigt entry: OK with loads {o:?}");
     }
 
-    fn frame_pair(&mut self, input: &mut Input) {
-        let mut k = Place::new(self.kinematics(input));
+    /// The frames the engines' geometry entries build: from the separation
+    /// of a pair or from a normal and a distance (a wall as radius 0).
+    fn frames(&mut self, input: &mut Input) {
+        let k = Place::new(self.kinematics(input));
         let mut f = Place::new(ContactFrame::default());
-        let (hk, hf) = (input.pointer(), input.pointer());
-        // SAFETY: null, misaligned or valid.
-        let status = unsafe { fc::granbond_contact_frame_pair(k.ptr(hk), f.ptr(hf)) };
-        if self.answer("granbond_contact_frame_pair", status) {
-            self.frame = f.get();
-            self.check_frame("granbond_contact_frame_pair", &(k.get()));
-        }
         // the frame from the separation or from a normal and a distance
         let kin = k.get();
         let mut del = Place::new([
@@ -2455,7 +2264,10 @@ impl<'t> Session<'t> {
                 f.ptr(hf),
             )
         };
-        self.answer("granbond_contact_frame_separation", status);
+        if self.answer("granbond_contact_frame_separation", status) {
+            // not a checked frame: a seed for the frames drawn next
+            self.frame = f.get();
+        }
         let n = self.frame.n;
         let (hv, hf) = (input.pointer(), input.pointer());
         // SAFETY: null, misaligned or valid.
@@ -2473,42 +2285,6 @@ impl<'t> Session<'t> {
             )
         };
         self.answer("granbond_contact_frame_normal", status);
-    }
-
-    fn frame_plane(&mut self, input: &mut Input) {
-        let mut sp = Place::new(self.sphere(input));
-        let mut pl = Place::new(self.plane(input));
-        let mut f = Place::new(ContactFrame::default());
-        let (h1, h2, h3) = (input.pointer(), input.pointer(), input.pointer());
-        // SAFETY: null, misaligned or valid.
-        let status = unsafe { fc::granbond_contact_frame_plane(sp.ptr(h1), pl.ptr(h2), f.ptr(h3)) };
-        if self.answer("granbond_contact_frame_plane", status) {
-            self.frame = f.get();
-            self.check_frame("granbond_contact_frame_plane", &(sp.get(), pl.get()));
-        }
-    }
-
-    /// A frame the ABI built from accepted input: finite, with a unit normal.
-    fn check_frame(&self, function: &str, context: &dyn std::fmt::Debug) {
-        let f = &self.frame;
-        let numbers: Vec<f64> =
-            f.n.iter()
-                .chain(&f.v_i)
-                .chain(&f.v_j)
-                .chain(&f.w_i)
-                .chain(&f.w_j)
-                .chain(&[f.overlap, f.lever_i, f.lever_j, f.r_eff])
-                .copied()
-                .collect();
-        assert!(
-            all_finite(&numbers),
-            "{function}: OK with the frame {f:?} for {context:?}"
-        );
-        let len = f.n.iter().map(|c| c * c).sum::<f64>().sqrt();
-        assert!(
-            (len - 1.0).abs() < 1e-9,
-            "{function}: |n| = {len} in {f:?} for {context:?}"
-        );
     }
 
     fn voigt_normal_force(&mut self, input: &mut Input) {
