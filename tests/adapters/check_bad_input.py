@@ -13,7 +13,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from liggghts_run import Failure, judge_refusal, main, run_deck  # noqa: E402
+from deck_runner import Failure, judge_refusal, main, run_deck  # noqa: E402
 
 CASES = [
     # (label, overridden variables, text the ERROR line must contain)

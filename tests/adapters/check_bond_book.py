@@ -21,7 +21,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from liggghts_run import Failure, main, read_table, run_deck, run_ok  # noqa: E402
+from deck_runner import Failure, main, read_table, run_deck, run_ok  # noqa: E402
 
 DIAMETER = 2e-3
 RADIUS = DIAMETER / 2

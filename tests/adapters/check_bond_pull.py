@@ -28,7 +28,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from liggghts_run import Failure, main, read_table, run_ok  # noqa: E402
+from deck_runner import Failure, main, read_table, run_ok  # noqa: E402
 
 RELATIVE_TOLERANCE = 1e-6
 

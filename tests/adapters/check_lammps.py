@@ -81,8 +81,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
-import liggghts_run  # noqa: E402
-from liggghts_run import Failure, judge_refusal, main, read_table, run_deck  # noqa: E402
+import deck_runner  # noqa: E402
+from deck_runner import Failure, judge_refusal, main, read_table, run_deck  # noqa: E402
 from check_bond_pull import MODES as PULL_MODES, PARAMS, pair_samples, verify  # noqa: E402
 
 DECKS = os.path.join(HERE, "decks")
@@ -117,7 +117,7 @@ def bond_model(workdir, brk="distance", extra=""):
 
 def run_lammps(command, deck, workdir, variables):
     """Runs a deck of tests/adapters/decks; (exit code, text)."""
-    liggghts_run.DECKS = DECKS
+    deck_runner.DECKS = DECKS
     return run_deck(command, deck, workdir, dict(variables, decks=DECKS))
 
 
@@ -130,7 +130,7 @@ def run_lammps_ok(command, deck, workdir, variables):
 
 def run_liggghts(engine, deck_path, workdir, variables):
     os.makedirs(workdir, exist_ok=True)
-    liggghts_run.DECKS = LIGGGHTS_DECKS
+    deck_runner.DECKS = LIGGGHTS_DECKS
     rc, text = run_deck([engine], deck_path, workdir, dict(variables, decks=LIGGGHTS_DECKS))
     if rc != 0:
         raise Failure(f"LIGGGHTS {deck_path} exited with {rc}:\n{text[-3000:]}")

@@ -16,7 +16,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from liggghts_run import Failure, judge_refusal, main, run_deck, run_ok  # noqa: E402
+from deck_runner import Failure, judge_refusal, main, run_deck, run_ok  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "..", "examples", "flicked_chain")

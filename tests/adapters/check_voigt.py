@@ -4,7 +4,7 @@
     check_voigt.py --engine <liggghts launcher> --workdir <dir> --check <name> [--mpiexec MPIEXEC]
 
 Each check is one claim; it prints PASS or FAIL: <why> and exits non-zero on
-failure. Decks: decks/ here; runs go through tests/support/liggghts_run.py.
+failure. Decks: decks/ here; runs go through tests/support/deck_runner.py.
 """
 
 import argparse
@@ -14,12 +14,12 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-import liggghts_run  # noqa: E402
-from liggghts_run import Failure, names_a_core_entry, read_table  # noqa: E402
+import deck_runner  # noqa: E402
+from deck_runner import Failure, names_a_core_entry, read_table  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DECKS = os.path.join(HERE, "decks")
-PLANE_STL = os.path.join(liggghts_run.DECKS, "plane.stl")
+PLANE_STL = os.path.join(deck_runner.DECKS, "plane.stl")
 
 R = 1.0e-3                                  # radius of sphere 1 (m)
 MASS = 2500.0 * 4.0 / 3.0 * math.pi * R**3  # seed Table 1 sphere
@@ -32,7 +32,7 @@ TANGENTIAL = ["y1", "y2", "vy1", "vy2", "wz1", "wz2", "fy1", "fy2", "tz1", "tz2"
 
 def run(args, deck, variables, tag, command=None):
     """Runs decks/<deck> in the work directory; returns (exit code, output)."""
-    return liggghts_run.run_deck(command or [args.engine], os.path.join(DECKS, deck), args.workdir,
+    return deck_runner.run_deck(command or [args.engine], os.path.join(DECKS, deck), args.workdir,
                                  variables, log=f"log.{tag}")
 
 
@@ -213,7 +213,7 @@ COMBINATIONS = {  # voigt with a stock or granbond model in another slot
     "no_history": ("model voigt tangential no_history", "none.in"),
     "epsd2": ("model voigt tangential voigt rolling_friction epsd2", "none.in"),
     "bond_nonlinear": ("model voigt tangential voigt cohesion bond/nonlinear rolling_friction voigt",
-                       os.path.join(liggghts_run.DECKS, "bond_properties.in")),
+                       os.path.join(deck_runner.DECKS, "bond_properties.in")),
 }
 
 

@@ -36,7 +36,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 from check_runtime import last_snapshot, run_ok, thermo_column, warnings_in_log  # noqa: E402
-from liggghts_run import Failure, main, run_deck  # noqa: E402
+from deck_runner import Failure, main, run_deck  # noqa: E402
 
 N1, N2 = 20, 40
 VACANCIES = {1: "the highest ID", 2: "an inner atom", 3: "the top layer"}

@@ -47,10 +47,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 sys.path.insert(0, HERE)
 
-import liggghts_run  # noqa: E402
-from liggghts_run import Failure, main, read_table, run_deck  # noqa: E402
+import deck_runner  # noqa: E402
+from deck_runner import Failure, main, read_table, run_deck  # noqa: E402
 
-liggghts_run.DECKS = os.path.join(HERE, "decks")
+deck_runner.DECKS = os.path.join(HERE, "decks")
 CHECK = {"GRANBOND_CHECK_INDEX": "1"}
 ANNOUNCED = "checking the index of bonds after every pass"
 
@@ -133,7 +133,7 @@ def check_index(a, workdir):
 
 
 def tangential_force_after_break(a, workdir, under):
-    liggghts_run.run_ok([a.engine], f"under_{a.kind}.in", workdir, {"under": under})
+    deck_runner.run_ok([a.engine], f"under_{a.kind}.in", workdir, {"under": under})
     rows = thermo_rows(workdir)
     broke = [k for k, r in enumerate(rows) if r[1] > 0]
     if not broke or broke[0] == 0:
@@ -165,7 +165,7 @@ def check_under(a, workdir):
 
 
 def check_reform(a, workdir):
-    liggghts_run.run_ok([a.engine], f"reform_{a.kind}.in", workdir, {})
+    deck_runner.run_ok([a.engine], f"reform_{a.kind}.in", workdir, {})
     rows = thermo_rows(workdir)
     created = {int(r[0]): r[1] for r in rows}
     broken = {int(r[0]): r[2] for r in rows}

@@ -31,10 +31,10 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
-import liggghts_run  # noqa: E402
-from liggghts_run import Failure, main, run_deck  # noqa: E402
+import deck_runner  # noqa: E402
+from deck_runner import Failure, main, run_deck  # noqa: E402
 
-liggghts_run.DECKS = os.path.join(HERE, "decks")
+deck_runner.DECKS = os.path.join(HERE, "decks")
 
 # (spheres per edge, k_fn1 N/m^2.5 (the other stiffnesses scale with it), maxSigma Pa)
 BLOCKS = [(5, 2.0e10, 1.0e6), (4, 8.0e10, 3.0e6), (6, 5.0e9, 3.0e5)]

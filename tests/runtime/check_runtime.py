@@ -51,10 +51,10 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
-import liggghts_run  # noqa: E402
-from liggghts_run import Failure, main, run_deck  # noqa: E402
+import deck_runner  # noqa: E402
+from deck_runner import Failure, main, run_deck  # noqa: E402
 
-liggghts_run.DECKS = os.path.join(HERE, "decks")
+deck_runner.DECKS = os.path.join(HERE, "decks")
 
 
 def mpi_prefix(mpiexec):

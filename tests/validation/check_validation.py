@@ -53,8 +53,8 @@ sys.path.insert(0, os.path.join(HERE, "..", "support"))
 sys.path.insert(0, HERE)
 
 import closed_forms as cf  # noqa: E402
-import liggghts_run  # noqa: E402
-from liggghts_run import Failure, read_table  # noqa: E402
+import deck_runner  # noqa: E402
+from deck_runner import Failure, read_table  # noqa: E402
 
 DECKS = os.path.join(HERE, "decks")
 
@@ -99,8 +99,8 @@ class Case:
 
 def run(command, deck, workdir, variables, tag, columns):
     variables = dict(variables, out=f"{tag}.txt")
-    liggghts_run.DECKS = DECKS
-    rc, text = liggghts_run.run_deck([command], deck, workdir, variables, log=f"log.{tag}")
+    deck_runner.DECKS = DECKS
+    rc, text = deck_runner.run_deck([command], deck, workdir, variables, log=f"log.{tag}")
     if rc != 0:
         raise Failure(f"{deck} ({tag}) exited with {rc}:\n{text[-3000:]}")
     return [dict(zip(columns, r)) for r in read_table(os.path.join(workdir, f"{tag}.txt"))]

@@ -38,7 +38,7 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tests", "support"))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 
-from liggghts_run import Failure, main  # noqa: E402
+from deck_runner import Failure, main  # noqa: E402
 import bonds_to_vtk  # noqa: E402
 
 NSPHERES = 8

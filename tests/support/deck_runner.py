@@ -1,4 +1,4 @@
-"""Runs a LIGGGHTS deck for the engine-level tests (Python 3 stdlib only)."""
+"""Runs a LIGGGHTS or LAMMPS deck for the engine-level tests (Python 3 stdlib only)."""
 
 import os
 import re
