@@ -20,6 +20,8 @@ pub enum Range {
 }
 
 impl Range {
+    /// The allowed values in words, for messages and the parameter rows of
+    /// the C ABI.
     pub fn describe(self) -> &'static str {
         match self {
             Range::Positive => "finite and > 0",
@@ -31,6 +33,7 @@ impl Range {
         }
     }
 
+    /// Whether `x` is an allowed value.
     pub fn admits(self, x: f64) -> bool {
         match self {
             Range::Positive => x.is_finite() && x > 0.0,
@@ -79,6 +82,8 @@ pub enum LiggghtsSource {
 pub struct Need<T> {
     /// For messages and documentation ("always", "damping on", ...).
     pub when: &'static str,
+    /// Whether the model reads the parameter under the switches of a
+    /// parameter set.
     pub applies: fn(&T) -> bool,
 }
 
@@ -88,11 +93,15 @@ pub struct ParameterInfo<T> {
     pub name: &'static str,
     /// The name LIGGGHTS decks use (`fix property/global` or switch).
     pub liggghts_name: &'static str,
+    /// Where a LIGGGHTS deck gives the value.
     pub source: LiggghtsSource,
     /// SI unit ("-" for dimensionless, "switch", "step").
     pub unit: &'static str,
+    /// The allowed values.
     pub range: Range,
+    /// When the model reads the value.
     pub need: Need<T>,
+    /// Reads the field as a double.
     pub get: fn(&T) -> f64,
     /// Stores a value [`Range::admits`]; integers and switches arrive as
     /// exact doubles.
@@ -100,6 +109,7 @@ pub struct ParameterInfo<T> {
 }
 
 impl<T> ParameterInfo<T> {
+    /// How a deck writes the value, by its range.
     pub fn kind(&self) -> ParameterKind {
         match self.range {
             Range::Switch => ParameterKind::Switch,
@@ -116,6 +126,7 @@ impl<T> ParameterInfo<T> {
         (self.get)(&T::default())
     }
 
+    /// Whether the model reads this parameter under the switches of `params`.
     pub fn needed(&self, params: &T) -> bool {
         (self.need.applies)(params)
     }
@@ -175,7 +186,9 @@ pub enum SetError {
 /// naming it, the allowed range and the value given.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ParameterError {
+    /// The refused parameter's row in its model's table.
     pub parameter: usize,
+    /// The message: the parameter, its allowed values and the value given.
     pub message: String,
 }
 
@@ -240,10 +253,12 @@ pub struct Phrase {
 
 /// `parameter_table!(NAME: Type { field, "liggghts name", Source, "unit", Range, NEED; ... })`
 /// defines the table `NAME` for the struct `Type`; `NEED` is a
-/// [`Need<Type>`](Need) constant in scope.
+/// [`Need<Type>`](Need) constant in scope. Doc comments written before
+/// `NAME` become the table's.
 #[macro_export]
 macro_rules! parameter_table {
-    ($table:ident : $ty:ty { $( $field:ident, $liggghts:literal, $source:ident, $unit:literal, $range:ident, $need:ident; )* }) => {
+    ($(#[$attr:meta])* $table:ident : $ty:ty { $( $field:ident, $liggghts:literal, $source:ident, $unit:literal, $range:ident, $need:ident; )* }) => {
+        $(#[$attr])*
         pub const $table: &[$crate::parameters::ParameterInfo<$ty>] = &[
             $( $crate::parameters::ParameterInfo {
                 name: stringify!($field),
