@@ -19,6 +19,9 @@
  */
 #define GRANBOND_BOND_OUTPUT_LEN 12
 
+/**
+ * The number of `f64` slots of [`BondState`].
+ */
 #define GRANBOND_BOND_STATE_LEN 19
 
 /**
@@ -42,6 +45,9 @@
  */
 #define RATTLE_MARGIN 16.0
 
+/**
+ * The number of `f64` slots of [`WallBondState`].
+ */
 #define GRANBOND_WALL_BOND_STATE_LEN (GRANBOND_BOND_STATE_LEN + 3)
 
 #define GRANBOND_CONTACT_STATE_LEN 6
@@ -87,7 +93,14 @@ enum GbBondStatus
    * Never bonded (fresh, all-zero history).
    */
   GB_BOND_STATUS_UNBONDED = 0,
+  /**
+   * Bonded: the bond carries the loads of the pair.
+   */
   GB_BOND_STATUS_INTACT = 1,
+  /**
+   * Broken: the bond exerts nothing, and is created again only under
+   * `create_always`.
+   */
   GB_BOND_STATUS_BROKEN = 2,
 };
 #ifndef __cplusplus
@@ -102,6 +115,9 @@ enum GbBreakMode
   : int32_t
 #endif // __cplusplus
  {
+  /**
+   * Intact, or broken in an earlier step.
+   */
   GB_BREAK_MODE_NONE = 0,
   /**
    * Centre distance above `max_distance`.
@@ -255,6 +271,11 @@ typedef enum GbStatus {
   GB_STATUS_NON_FINITE_RESULT = 10,
 } GbStatus;
 
+/**
+ * A bond type as engines use it (`GbBondModel` in the C ABI): its
+ * [`BondLaws`], read through `Deref`, and the compiled steps chosen for
+ * its switches on this CPU.
+ */
 typedef struct GbBondModel GbBondModel;
 
 typedef struct GbVoigtModel GbVoigtModel;
@@ -290,50 +311,113 @@ typedef struct GbLayout {
 } GbLayout;
 
 /**
- * Parameters of `bond/nonlinear` (docs/models/bond-nonlinear.md). Stiffnesses are
- * per unit area (N/m^3); switches are 0 (off) or 1 (on).
+ * Parameters of `bond/nonlinear` (docs/models/bond-nonlinear.md, whose
+ * equations the fields cite). Stiffnesses are per unit area of the bond
+ * section; switches are 0 (off) or 1 (on).
  */
 typedef struct GbBondParams {
   /**
    * Radius multiplier: `rb = lambda min(R_i, R_j)`.
    */
   double lambda;
+  /**
+   * Compression, loading: `k_fn1` (N/m^2.5; force `k_fn1 A sqrt(d)`, eq. 6).
+   */
   double k_fn1;
+  /**
+   * Compression, unloading: `ku_fn1` (N/m^2.5, `>= k_fn1`; eq. 6).
+   */
   double ku_fn1;
+  /**
+   * Compression, reverse: `kc_fn1` (N/m^2.5; eq. 6).
+   */
   double kc_fn1;
+  /**
+   * Tension, loading: `k_fn2` (N/m^3; force `k_fn2 A d`, eq. 6).
+   */
   double k_fn2;
+  /**
+   * Tension, unloading: `ku_fn2` (N/m^3, `>= k_fn2`; eq. 6).
+   */
   double ku_fn2;
+  /**
+   * Tension, reverse: `kc_fn2` (N/m^3; eq. 6).
+   */
   double kc_fn2;
+  /**
+   * Shear: `k_ft` (N/m^3; eq. 8).
+   */
   double k_ft;
+  /**
+   * Twisting, loading: `k_tn` (N/m^3; torque `k_tn J phi`, eq. 9).
+   */
   double k_tn;
+  /**
+   * Twisting, unloading: `ku_tn` (N/m^3, `>= k_tn`; eq. 9).
+   */
   double ku_tn;
+  /**
+   * Twisting, reverse: `kc_tn` (N/m^3; eq. 9).
+   */
   double kc_tn;
+  /**
+   * Bending, loading: `k_tt` (N/m^3; torque `k_tt I x`, eq. 10).
+   */
   double k_tt;
+  /**
+   * Bending, unloading: `ku_tt` (N/m^3, `>= k_tt`; eq. 10).
+   */
   double ku_tt;
+  /**
+   * Bending, reverse: `kc_tt` (N/m^3; eq. 10).
+   */
   double kc_tt;
+  /**
+   * Percentage damping of the normal force, in `[0, 1)` (eq. 11).
+   */
   double eta_fn;
+  /**
+   * Percentage damping of the shear force, in `[0, 1)` (eq. 12).
+   */
   double eta_ft;
+  /**
+   * Percentage damping of the twisting torque, in `[0, 1)` (eq. 12).
+   */
   double eta_tn;
+  /**
+   * Percentage damping of the bending torque, in `[0, 1)` (eq. 12).
+   */
   double eta_tt;
   /**
-   * Distance mode: the bond breaks when the centre distance exceeds this.
+   * Distance mode: the bond breaks when the centre distance exceeds this
+   * (m; `inf` = never).
    */
   double max_distance;
+  /**
+   * Stress mode: normal strength `sigma_max` (Pa; eq. 15); `inf` = never.
+   */
   double max_sigma;
+  /**
+   * Stress mode: shear strength `tau_max` (Pa; eq. 15); `inf` = never.
+   */
   double max_tau;
   /**
    * gamma: tensile strength is `gamma * max_sigma` when `use_ratio` is on.
    */
   double tension_compression_ratio;
   /**
-   * Bonds form between centres closer than this.
+   * Bonds form between centres closer than this (m).
    */
   double create_distance;
   /**
-   * Below `smooth_velocity` (m/s) / `smooth_angular_velocity` (rad/s) the
-   * smooth damping option scales the damping down linearly.
+   * `v_eps` of smooth damping for the forces (m/s): below it the damping
+   * is scaled down linearly.
    */
   double smooth_velocity;
+  /**
+   * `v_eps` of smooth damping for the torques (rad/s): below it the
+   * damping is scaled down linearly.
+   */
   double smooth_angular_velocity;
   /**
    * `delta_eps` (m): the square-root compression law is continued linearly
@@ -348,15 +432,49 @@ typedef struct GbBondParams {
    * 0 = distance mode, 1 = stress mode.
    */
   int32_t stress_break;
+  /**
+   * Applies `tension_compression_ratio` to `max_sigma` while the bond is
+   * stretched.
+   */
   int32_t use_ratio;
+  /**
+   * Creates bonds at every step, between every pair closer than
+   * `create_distance` that has no intact bond (a broken one included).
+   */
   int32_t create_always;
+  /**
+   * LIGGGHTS-INL's history rule: being on one side of a law forgets the
+   * other side's extreme; off, the extremes last the bond's life.
+   */
   int32_t history_reset;
+  /**
+   * Percentage damping (eq. 11-12).
+   */
   int32_t damping;
+  /**
+   * Smooth percentage damping: `sgn(v)` and `v/|v|` scaled down below
+   * `smooth_velocity` / `smooth_angular_velocity`; implies `damping`.
+   */
   int32_t damping_smooth;
+  /**
+   * The tension half of the normal law.
+   */
   int32_t tension;
+  /**
+   * The compression half of the normal law.
+   */
   int32_t compression;
+  /**
+   * The shear force.
+   */
   int32_t shear;
+  /**
+   * The twisting torque.
+   */
   int32_t twist;
+  /**
+   * The bending torque.
+   */
   int32_t bend;
 } GbBondParams;
 
@@ -379,17 +497,31 @@ typedef struct GbPairKinematics {
  * What one bond step produced. `force_j = -force_i`.
  */
 typedef struct GbBondOutput {
+  /**
+   * Force on `i` (N; eq. 13), damped.
+   */
   double force_i[3];
+  /**
+   * Torque on `i` (N m; eq. 13), damped.
+   */
   double torque_i[3];
+  /**
+   * Torque on `j` (N m; eq. 13), damped.
+   */
   double torque_j[3];
   /**
    * Undamped normal force, positive = repulsive.
    */
   double normal_force;
   /**
-   * Section stresses of the undamped loads (docs/models/bond-nonlinear.md, eq. 14).
+   * Normal stress `sigma` of the section from the undamped loads (Pa;
+   * docs/models/bond-nonlinear.md eq. 14).
    */
   double sigma;
+  /**
+   * Shear stress `tau` of the section from the undamped loads (Pa;
+   * docs/models/bond-nonlinear.md eq. 14).
+   */
   double tau;
   /**
    * `delta = r0 - r` (compression positive).

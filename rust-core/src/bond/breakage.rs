@@ -6,6 +6,7 @@ use crate::real::Real;
 #[repr(i32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BreakMode {
+    /// Intact, or broken in an earlier step.
     None = 0,
     /// Centre distance above `max_distance`.
     Distance = 1,
@@ -41,7 +42,9 @@ pub fn section_stresses<R: Real>(
 /// Limits of the stress mode.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StressLimits {
+    /// Normal strength `sigma_max` (Pa; docs/models/bond-nonlinear.md eq. 15).
     pub max_sigma: f64,
+    /// Shear strength `tau_max` (Pa; docs/models/bond-nonlinear.md eq. 15).
     pub max_tau: f64,
     /// Factor on `max_sigma` while stretched (`gamma`, or 1).
     pub tension_factor: f64,

@@ -21,9 +21,12 @@ pub enum Naming {
 pub enum Finding {
     /// Distance mode, `create_distance > max_distance`: a pair between the
     /// two distances is bonded and broken in the same step (every step under
-    /// `create_always`). `touching_breaks`: `max_distance` is below the
-    /// contact distance of the smallest spheres too.
-    CreatedBroken { touching_breaks: bool },
+    /// `create_always`).
+    CreatedBroken {
+        /// `max_distance` is below the contact distance of the smallest
+        /// spheres too.
+        touching_breaks: bool,
+    },
     /// `create_distance` below the contact distance of the smallest spheres:
     /// only pairs overlapping by the difference bond.
     CreateBelowContact,

@@ -54,13 +54,18 @@ pub fn spring_energy_from_force(force: f64, stiffness: f64) -> f64 {
 /// The parts of a bond's elastic energy (J).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct BondEnergy {
+    /// Normal law: tension or compression (J).
     pub normal: f64,
+    /// Shear spring (J).
     pub shear: f64,
+    /// Twisting (J).
     pub twist: f64,
+    /// Bending (J).
     pub bend: f64,
 }
 
 impl BondEnergy {
+    /// The sum of the four parts (J).
     pub fn total(&self) -> f64 {
         self.normal + self.shear + self.twist + self.bend
     }

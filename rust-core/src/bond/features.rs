@@ -3,13 +3,22 @@
 
 use super::params::BondParams;
 
+/// The tension half of the normal law (docs/models/bond-nonlinear.md eq. 6, `d < 0`).
 pub const TENSION: u32 = 1;
+/// The compression half of the normal law (docs/models/bond-nonlinear.md eq. 6, `d >= 0`).
 pub const COMPRESSION: u32 = 2;
+/// The shear force (docs/models/bond-nonlinear.md eq. 7-8).
 pub const SHEAR: u32 = 4;
+/// The twisting torque (docs/models/bond-nonlinear.md eq. 9).
 pub const TWIST: u32 = 8;
+/// The bending torque (docs/models/bond-nonlinear.md eq. 10).
 pub const BEND: u32 = 16;
+/// Percentage damping (docs/models/bond-nonlinear.md eq. 11-12).
 pub const DAMPING: u32 = 32;
+/// Smooth percentage damping: `sgn(v)` and `v/|v|` of eq. 11-12 scaled
+/// down below the smooth velocities (set only with [`DAMPING`]).
 pub const SMOOTH: u32 = 64;
+/// The number of values the seven bits above can take together.
 pub const FEATURE_COMBINATIONS: usize = 128;
 
 /// Every law of the bond, without damping.

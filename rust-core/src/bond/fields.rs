@@ -14,8 +14,11 @@ use super::state::BondState;
 /// One field: its keyword, SI unit and meaning.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BondField {
+    /// The keyword of the engines' outputs (a column name).
     pub name: &'static str,
+    /// SI unit, `-` when dimensionless.
     pub unit: &'static str,
+    /// What the value means, in words.
     pub description: &'static str,
 }
 

@@ -23,13 +23,20 @@ use crate::real::Real;
 /// ratio `c` precomputed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Loop {
+    /// `k`: the slope of the virgin-loading branch.
     pub k: f64,
+    /// `ku`: the slope of the unloading branch (`ku >= k`).
     pub ku: f64,
+    /// `kc`: the slope of the reverse branch.
     pub kc: f64,
+    /// `c = (ku - k)/(ku + kc)`: where unloading meets reverse, as a fraction
+    /// of `x_max` (`dc1`, `dc2` of docs/models/bond-nonlinear.md eq. 5).
     pub c: f64,
 }
 
 impl Loop {
+    /// The loop of the three stiffnesses, with its `c` (0 for a law that is
+    /// zero everywhere, `ku + kc = 0`).
     pub fn new(k: f64, ku: f64, kc: f64) -> Self {
         // ku + kc = 0 only when all three are zero: the law is identically
         // zero and any ratio will do.

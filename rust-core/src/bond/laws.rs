@@ -8,19 +8,31 @@ use super::normal_law::NormalLaw;
 use super::params::{BondParams, ParameterError};
 use super::twist_bend::TorqueLaw;
 
+/// A validated bond type: the laws of docs/models/bond-nonlinear.md with
+/// their stiffnesses, history rule and break limits, built once from
+/// [`BondParams`].
 #[derive(Clone, Debug)]
 pub struct BondLaws {
+    /// The parameters the laws were built from, validated.
     pub params: BondParams,
+    /// The normal force (eq. 4-6).
     pub normal: NormalLaw,
+    /// The twisting torque (eq. 9).
     pub twist: TorqueLaw,
+    /// The bending torque (eq. 10).
     pub bend: TorqueLaw,
+    /// Stress mode: the bond breaks on its section stresses (eq. 14-15);
+    /// otherwise on its centre distance (`max_distance`).
     pub stress_break: bool,
+    /// The strengths of the stress mode (eq. 15).
     pub limits: StressLimits,
     /// Bits of [`super::features`] (`TENSION`, `SHEAR`, ...) compiled in.
     pub features: u32,
 }
 
 impl BondLaws {
+    /// Validates `params` ([`BondParams::validate`]) and builds the laws; the
+    /// error names the first parameter refused.
     pub fn new(params: BondParams) -> Result<Self, ParameterError> {
         params.validate()?;
         let on = BondParams::switch;

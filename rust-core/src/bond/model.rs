@@ -11,6 +11,9 @@ use crate::pair_source::IndexedPairs;
 use crate::simd::Simd;
 use std::ops::Deref;
 
+/// A bond type as engines use it (`GbBondModel` in the C ABI): its
+/// [`BondLaws`], read through `Deref`, and the compiled steps chosen for
+/// its switches on this CPU.
 #[derive(Clone, Debug)]
 pub struct BondModel {
     laws: BondLaws,
@@ -29,6 +32,8 @@ impl Deref for BondModel {
 }
 
 impl BondModel {
+    /// Validates `params` and builds the bond type, with its steps on the
+    /// instruction set [`Simd::chosen`] picks.
     pub fn new(params: BondParams) -> Result<Self, ParameterError> {
         let laws = BondLaws::new(params)?;
         let kernels = kernels(laws.features, Simd::chosen(), true);

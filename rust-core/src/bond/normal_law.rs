@@ -7,16 +7,23 @@ use crate::real::Real;
 /// The six-branch normal law of one bond type.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NormalLaw {
+    /// The loop of the compression side, on `s(delta)` (`k_fn1`, `ku_fn1`,
+    /// `kc_fn1`).
     pub compression: Loop,
+    /// The loop of the tension side, on `-delta` (`k_fn2`, `ku_fn2`, `kc_fn2`).
     pub tension: Loop,
     /// `delta_eps`: below it the square root is continued linearly (0 = off).
     pub linear_below: f64,
     /// `1 / sqrt(delta_eps)`, the slope of that linear continuation.
     inv_sqrt_eps: f64,
+    /// LIGGGHTS-INL's history rule (`historyReset`): `delta_max` is zeroed in
+    /// tension and `delta_min` in compression; off, both last the bond's life.
     pub history_reset: bool,
 }
 
 impl NormalLaw {
+    /// The law of the two loops, continued linearly below `linear_below`
+    /// (`delta_eps`, m; 0 = off).
     pub fn new(compression: Loop, tension: Loop, linear_below: f64, history_reset: bool) -> Self {
         let inv_sqrt_eps = if linear_below > 0.0 {
             1.0 / linear_below.sqrt()

@@ -4,41 +4,64 @@
 //! [`PARAMETERS`] also gives the LIGGGHTS `fix property/global` name so an
 //! error can name what the user actually wrote.
 
-/// Parameters of `bond/nonlinear` (docs/models/bond-nonlinear.md). Stiffnesses are
-/// per unit area (N/m^3); switches are 0 (off) or 1 (on).
+/// Parameters of `bond/nonlinear` (docs/models/bond-nonlinear.md, whose
+/// equations the fields cite). Stiffnesses are per unit area of the bond
+/// section; switches are 0 (off) or 1 (on).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BondParams {
     /// Radius multiplier: `rb = lambda min(R_i, R_j)`.
     pub lambda: f64,
+    /// Compression, loading: `k_fn1` (N/m^2.5; force `k_fn1 A sqrt(d)`, eq. 6).
     pub k_fn1: f64,
+    /// Compression, unloading: `ku_fn1` (N/m^2.5, `>= k_fn1`; eq. 6).
     pub ku_fn1: f64,
+    /// Compression, reverse: `kc_fn1` (N/m^2.5; eq. 6).
     pub kc_fn1: f64,
+    /// Tension, loading: `k_fn2` (N/m^3; force `k_fn2 A d`, eq. 6).
     pub k_fn2: f64,
+    /// Tension, unloading: `ku_fn2` (N/m^3, `>= k_fn2`; eq. 6).
     pub ku_fn2: f64,
+    /// Tension, reverse: `kc_fn2` (N/m^3; eq. 6).
     pub kc_fn2: f64,
+    /// Shear: `k_ft` (N/m^3; eq. 8).
     pub k_ft: f64,
+    /// Twisting, loading: `k_tn` (N/m^3; torque `k_tn J phi`, eq. 9).
     pub k_tn: f64,
+    /// Twisting, unloading: `ku_tn` (N/m^3, `>= k_tn`; eq. 9).
     pub ku_tn: f64,
+    /// Twisting, reverse: `kc_tn` (N/m^3; eq. 9).
     pub kc_tn: f64,
+    /// Bending, loading: `k_tt` (N/m^3; torque `k_tt I x`, eq. 10).
     pub k_tt: f64,
+    /// Bending, unloading: `ku_tt` (N/m^3, `>= k_tt`; eq. 10).
     pub ku_tt: f64,
+    /// Bending, reverse: `kc_tt` (N/m^3; eq. 10).
     pub kc_tt: f64,
+    /// Percentage damping of the normal force, in `[0, 1)` (eq. 11).
     pub eta_fn: f64,
+    /// Percentage damping of the shear force, in `[0, 1)` (eq. 12).
     pub eta_ft: f64,
+    /// Percentage damping of the twisting torque, in `[0, 1)` (eq. 12).
     pub eta_tn: f64,
+    /// Percentage damping of the bending torque, in `[0, 1)` (eq. 12).
     pub eta_tt: f64,
-    /// Distance mode: the bond breaks when the centre distance exceeds this.
+    /// Distance mode: the bond breaks when the centre distance exceeds this
+    /// (m; `inf` = never).
     pub max_distance: f64,
+    /// Stress mode: normal strength `sigma_max` (Pa; eq. 15); `inf` = never.
     pub max_sigma: f64,
+    /// Stress mode: shear strength `tau_max` (Pa; eq. 15); `inf` = never.
     pub max_tau: f64,
     /// gamma: tensile strength is `gamma * max_sigma` when `use_ratio` is on.
     pub tension_compression_ratio: f64,
-    /// Bonds form between centres closer than this.
+    /// Bonds form between centres closer than this (m).
     pub create_distance: f64,
-    /// Below `smooth_velocity` (m/s) / `smooth_angular_velocity` (rad/s) the
-    /// smooth damping option scales the damping down linearly.
+    /// `v_eps` of smooth damping for the forces (m/s): below it the damping
+    /// is scaled down linearly.
     pub smooth_velocity: f64,
+    /// `v_eps` of smooth damping for the torques (rad/s): below it the
+    /// damping is scaled down linearly.
     pub smooth_angular_velocity: f64,
     /// `delta_eps` (m): the square-root compression law is continued linearly
     /// below this compression, bounding its stiffness. 0 = off (the law of docs/models/bond-nonlinear.md).
@@ -47,15 +70,29 @@ pub struct BondParams {
     pub create_step: i64,
     /// 0 = distance mode, 1 = stress mode.
     pub stress_break: i32,
+    /// Applies `tension_compression_ratio` to `max_sigma` while the bond is
+    /// stretched.
     pub use_ratio: i32,
+    /// Creates bonds at every step, between every pair closer than
+    /// `create_distance` that has no intact bond (a broken one included).
     pub create_always: i32,
+    /// LIGGGHTS-INL's history rule: being on one side of a law forgets the
+    /// other side's extreme; off, the extremes last the bond's life.
     pub history_reset: i32,
+    /// Percentage damping (eq. 11-12).
     pub damping: i32,
+    /// Smooth percentage damping: `sgn(v)` and `v/|v|` scaled down below
+    /// `smooth_velocity` / `smooth_angular_velocity`; implies `damping`.
     pub damping_smooth: i32,
+    /// The tension half of the normal law.
     pub tension: i32,
+    /// The compression half of the normal law.
     pub compression: i32,
+    /// The shear force.
     pub shear: i32,
+    /// The twisting torque.
     pub twist: i32,
+    /// The bending torque.
     pub bend: i32,
 }
 
@@ -142,50 +179,54 @@ const AT_STEP: Need<BondParams> = Need {
 
 // name (= LAMMPS keyword), LIGGGHTS name, where LIGGGHTS decks give it, unit,
 // allowed values, when the model reads it. Defaults: `BondParams::default`.
-crate::parameter_table!(PARAMETERS: BondParams {
-    lambda, "radiusMultiplierBondnonlinear", PerTypePair, "-", Positive, ALWAYS;
-    k_fn1, "stiffnessPerUnitAreaK_fn1", PerTypePair, "N/m^2.5", NonNegative, ALWAYS;
-    ku_fn1, "stiffnessPerUnitAreaKu_fn1", PerTypePair, "N/m^2.5", NonNegative, ALWAYS;
-    kc_fn1, "stiffnessPerUnitAreaKc_fn1", PerTypePair, "N/m^2.5", NonNegative, ALWAYS;
-    k_fn2, "stiffnessPerUnitAreaK_fn2", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    ku_fn2, "stiffnessPerUnitAreaKu_fn2", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    kc_fn2, "stiffnessPerUnitAreaKc_fn2", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    k_ft, "stiffnessPerUnitAreaK_ft", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    k_tn, "stiffnessPerUnitAreaK_tn", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    ku_tn, "stiffnessPerUnitAreaKu_tn", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    kc_tn, "stiffnessPerUnitAreaKc_tn", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    k_tt, "stiffnessPerUnitAreaK_tt", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    ku_tt, "stiffnessPerUnitAreaKu_tt", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    kc_tt, "stiffnessPerUnitAreaKc_tt", PerTypePair, "N/m^3", NonNegative, ALWAYS;
-    eta_fn, "dampingNormalForceBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
-    eta_ft, "dampingTangentialForceBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
-    eta_tn, "dampingNormalTorqueBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
-    eta_tt, "dampingTangentialTorqueBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
-    max_distance, "maxDistanceBondnonlinear", PerTypePair, "m", PositiveOrInfinite, DISTANCE_MODE;
-    max_sigma, "maxSigmaBondnonlinear", PerTypePair, "Pa", PositiveOrInfinite, STRESS_MODE;
-    max_tau, "maxTauBondnonlinear", PerTypePair, "Pa", PositiveOrInfinite, STRESS_MODE;
-    tension_compression_ratio, "ratioTensionCompressionBondnonlinear", PerTypePair, "-", Positive, STRESS_RATIO;
-    create_distance, "createDistanceBondnonlinear", PerTypePair, "m", NonNegative, ALWAYS;
-    smooth_velocity, "dampingBondSmooth velocity", Fixed, "m/s", Positive, SMOOTH_DAMPING;
-    smooth_angular_velocity, "dampingBondSmooth angular velocity", Fixed, "rad/s", Positive, SMOOTH_DAMPING;
-    compression_linear_below, "compressionLinearBelowBondnonlinear", OptionalPerTypePair, "m", NonNegative, ALWAYS;
-    create_step, "tsCreateBondnonlinear", Scalar, "step", Step, AT_STEP;
-    stress_break, "stressBreak", Switch, "switch", Switch, ALWAYS;
-    use_ratio, "ratioTensionCompressionBond", Switch, "switch", Switch, ALWAYS;
-    create_always, "createBondAlways", Switch, "switch", Switch, ALWAYS;
-    history_reset, "historyReset", Switch, "switch", Switch, ALWAYS;
-    damping, "dampingBond", Switch, "switch", Switch, ALWAYS;
-    damping_smooth, "dampingBondSmooth", Switch, "switch", Switch, ALWAYS;
-    tension, "tensionStress", Switch, "switch", Switch, ALWAYS;
-    compression, "compressionStress", Switch, "switch", Switch, ALWAYS;
-    shear, "shearStress", Switch, "switch", Switch, ALWAYS;
-    twist, "normalTorqueStress", Switch, "switch", Switch, ALWAYS;
-    bend, "shearTorqueStress", Switch, "switch", Switch, ALWAYS;
-});
+crate::parameter_table!(
+    /// The rows of [`BondParams`], one per field in its order: the table
+    /// of docs/models/bond-nonlinear.md, "Parameters".
+    PARAMETERS: BondParams {
+        lambda, "radiusMultiplierBondnonlinear", PerTypePair, "-", Positive, ALWAYS;
+        k_fn1, "stiffnessPerUnitAreaK_fn1", PerTypePair, "N/m^2.5", NonNegative, ALWAYS;
+        ku_fn1, "stiffnessPerUnitAreaKu_fn1", PerTypePair, "N/m^2.5", NonNegative, ALWAYS;
+        kc_fn1, "stiffnessPerUnitAreaKc_fn1", PerTypePair, "N/m^2.5", NonNegative, ALWAYS;
+        k_fn2, "stiffnessPerUnitAreaK_fn2", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        ku_fn2, "stiffnessPerUnitAreaKu_fn2", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        kc_fn2, "stiffnessPerUnitAreaKc_fn2", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        k_ft, "stiffnessPerUnitAreaK_ft", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        k_tn, "stiffnessPerUnitAreaK_tn", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        ku_tn, "stiffnessPerUnitAreaKu_tn", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        kc_tn, "stiffnessPerUnitAreaKc_tn", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        k_tt, "stiffnessPerUnitAreaK_tt", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        ku_tt, "stiffnessPerUnitAreaKu_tt", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        kc_tt, "stiffnessPerUnitAreaKc_tt", PerTypePair, "N/m^3", NonNegative, ALWAYS;
+        eta_fn, "dampingNormalForceBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
+        eta_ft, "dampingTangentialForceBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
+        eta_tn, "dampingNormalTorqueBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
+        eta_tt, "dampingTangentialTorqueBondnonlinear", PerTypePair, "-", Fraction, DAMPING;
+        max_distance, "maxDistanceBondnonlinear", PerTypePair, "m", PositiveOrInfinite, DISTANCE_MODE;
+        max_sigma, "maxSigmaBondnonlinear", PerTypePair, "Pa", PositiveOrInfinite, STRESS_MODE;
+        max_tau, "maxTauBondnonlinear", PerTypePair, "Pa", PositiveOrInfinite, STRESS_MODE;
+        tension_compression_ratio, "ratioTensionCompressionBondnonlinear", PerTypePair, "-", Positive, STRESS_RATIO;
+        create_distance, "createDistanceBondnonlinear", PerTypePair, "m", NonNegative, ALWAYS;
+        smooth_velocity, "dampingBondSmooth velocity", Fixed, "m/s", Positive, SMOOTH_DAMPING;
+        smooth_angular_velocity, "dampingBondSmooth angular velocity", Fixed, "rad/s", Positive, SMOOTH_DAMPING;
+        compression_linear_below, "compressionLinearBelowBondnonlinear", OptionalPerTypePair, "m", NonNegative, ALWAYS;
+        create_step, "tsCreateBondnonlinear", Scalar, "step", Step, AT_STEP;
+        stress_break, "stressBreak", Switch, "switch", Switch, ALWAYS;
+        use_ratio, "ratioTensionCompressionBond", Switch, "switch", Switch, ALWAYS;
+        create_always, "createBondAlways", Switch, "switch", Switch, ALWAYS;
+        history_reset, "historyReset", Switch, "switch", Switch, ALWAYS;
+        damping, "dampingBond", Switch, "switch", Switch, ALWAYS;
+        damping_smooth, "dampingBondSmooth", Switch, "switch", Switch, ALWAYS;
+        tension, "tensionStress", Switch, "switch", Switch, ALWAYS;
+        compression, "compressionStress", Switch, "switch", Switch, ALWAYS;
+        shear, "shearStress", Switch, "switch", Switch, ALWAYS;
+        twist, "normalTorqueStress", Switch, "switch", Switch, ALWAYS;
+        bend, "shearTorqueStress", Switch, "switch", Switch, ALWAYS;
+    }
+);
 
-// The `bond/nonlinear` phrases of `pair_coeff` (docs/reference/pair_granbond.md):
-// a break mode is the stress switch, a tension ratio switches the ratio on,
-// a creation step means creation at that step only.
+/// The `bond/nonlinear` phrases of `pair_coeff` (docs/reference/pair_granbond.md):
+/// a break mode is the stress switch, a tension ratio switches the ratio on,
+/// a creation step means creation at that step only.
 pub const PHRASES: &[Phrase] = &[
     Phrase {
         words: "break distance",
@@ -220,6 +261,7 @@ pub const PHRASES: &[Phrase] = &[
 ];
 
 impl BondParams {
+    /// Whether a switch field is on (any non-zero value).
     pub fn switch(v: i32) -> bool {
         v != 0
     }

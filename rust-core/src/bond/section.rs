@@ -6,12 +6,18 @@ use crate::real::Real;
 /// `rb = lambda min(R_i, R_j)`, `A = pi rb^2`, `J = A rb^2 / 2`, `I = J / 2`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Section<R = f64> {
+    /// Bond radius `rb = lambda min(R_i, R_j)` (m; eq. 2).
     pub rb: R,
+    /// Area `A = pi rb^2` (m^2; eq. 3).
     pub area: R,
+    /// Polar moment `J = A rb^2 / 2` (m^4; eq. 3), of twisting.
     pub polar: R,
+    /// Moment of inertia `I = J / 2` (m^4; eq. 3), of bending.
     pub inertia: R,
 }
 
+/// The section of a bond with radius multiplier `lambda` between spheres of
+/// radii `radius_i` and `radius_j` (docs/models/bond-nonlinear.md eq. 2-3).
 #[inline(always)]
 pub fn section<R: Real>(lambda: f64, radius_i: R, radius_j: R) -> Section<R> {
     let half = R::splat(0.5);

@@ -9,11 +9,16 @@ use crate::state_layout::{slot, StateSlot};
 pub enum BondStatus {
     /// Never bonded (fresh, all-zero history).
     Unbonded = 0,
+    /// Bonded: the bond carries the loads of the pair.
     Intact = 1,
+    /// Broken: the bond exerts nothing, and is created again only under
+    /// `create_always`.
     Broken = 2,
 }
 
 impl BondStatus {
+    /// The status a slot holds: 1 and 2 as numbered, anything else
+    /// [`BondStatus::Unbonded`].
     #[inline(always)]
     pub fn from_slot(v: f64) -> Self {
         if v == 1.0 {
@@ -26,6 +31,9 @@ impl BondStatus {
     }
 }
 
+/// The history of one bond between two spheres (docs/models/bond-nonlinear.md,
+/// "Bond state"), as [`BOND_STATE_LEN`] doubles in the order of
+/// [`BOND_SLOTS`]. Vectors are seen from sphere `i`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct BondState {
@@ -33,7 +41,9 @@ pub struct BondState {
     pub status: f64,
     /// Centre distance at creation.
     pub r0: f64,
+    /// `dmax`: the largest compression `delta` reached (m; eq. 4).
     pub delta_max: f64,
+    /// `dmin`: the smallest `delta` reached, the largest stretch (m; eq. 4).
     pub delta_min: f64,
     /// Undamped shear spring force on `i`.
     pub shear_force: [f64; 3],
@@ -52,6 +62,7 @@ pub struct BondState {
     pub bend_opposite: f64,
 }
 
+/// The number of `f64` slots of [`BondState`].
 pub const BOND_STATE_LEN: usize = 19;
 
 /// Names and swap rules of the slots of [`BondState`], in memory order.
@@ -80,6 +91,7 @@ pub const BOND_SLOTS: [StateSlot; BOND_STATE_LEN] = [
 const _: () = assert!(std::mem::size_of::<BondState>() == BOND_STATE_LEN * 8);
 
 impl BondState {
+    /// The bond's [`BondStatus`].
     pub fn status(&self) -> BondStatus {
         BondStatus::from_slot(self.status)
     }
@@ -93,16 +105,19 @@ impl BondState {
         }
     }
 
+    /// The state as the flat array engines store.
     pub fn as_slots(&self) -> &[f64; BOND_STATE_LEN] {
         // SAFETY: repr(C) struct of exactly BOND_STATE_LEN f64 (checked above).
         unsafe { &*(self as *const Self as *const [f64; BOND_STATE_LEN]) }
     }
 
+    /// The state as the flat array engines store, writable.
     pub fn as_slots_mut(&mut self) -> &mut [f64; BOND_STATE_LEN] {
         // SAFETY: as above.
         unsafe { &mut *(self as *mut Self as *mut [f64; BOND_STATE_LEN]) }
     }
 
+    /// A flat array as stored by an engine, read as the state it holds.
     pub fn from_slots_mut(slots: &mut [f64; BOND_STATE_LEN]) -> &mut Self {
         // SAFETY: same layout, f64 alignment.
         unsafe { &mut *(slots as *mut [f64; BOND_STATE_LEN] as *mut Self) }
@@ -113,13 +128,19 @@ impl BondState {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct BondOutput {
+    /// Force on `i` (N; eq. 13), damped.
     pub force_i: [f64; 3],
+    /// Torque on `i` (N m; eq. 13), damped.
     pub torque_i: [f64; 3],
+    /// Torque on `j` (N m; eq. 13), damped.
     pub torque_j: [f64; 3],
     /// Undamped normal force, positive = repulsive.
     pub normal_force: f64,
-    /// Section stresses of the undamped loads (docs/models/bond-nonlinear.md, eq. 14).
+    /// Normal stress `sigma` of the section from the undamped loads (Pa;
+    /// docs/models/bond-nonlinear.md eq. 14).
     pub sigma: f64,
+    /// Shear stress `tau` of the section from the undamped loads (Pa;
+    /// docs/models/bond-nonlinear.md eq. 14).
     pub tau: f64,
     /// `delta = r0 - r` (compression positive).
     pub delta: f64,

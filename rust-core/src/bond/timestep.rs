@@ -134,9 +134,14 @@ impl BondModel {
 /// The step limit `2/omega` of each mode of one bond between two spheres.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ModeLimits {
+    /// Axial mode, tension and compression on the reduced mass (s).
     pub axial: f64,
+    /// Shear mode, on the reduced mass with each sphere's rotation about its
+    /// centre (s).
     pub shear: f64,
+    /// Twisting mode, on the reduced moment of inertia (s).
     pub twist: f64,
+    /// Bending mode, on the reduced moment of inertia (s).
     pub bend: f64,
 }
 

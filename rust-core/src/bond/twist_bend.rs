@@ -41,6 +41,8 @@ pub fn advance_bend<R: Real, V: Vector<R>>(theta: V, w_across: V, n: V, dt: R) -
 /// Hysteresis loop of one torque and its history rule.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TorqueLaw {
+    /// The loop `h` of the torque: `k_tn`, `ku_tn`, `kc_tn` for twisting,
+    /// `k_tt`, `ku_tt`, `kc_tt` for bending.
     pub hysteresis: Loop,
     /// The history rule of docs/models/bond-nonlinear.md: on
     /// (`historyReset`, LIGGGHTS-INL's code), being on one side forgets the
@@ -52,14 +54,18 @@ pub struct TorqueLaw {
 /// root needed for the stresses and the damping).
 #[derive(Clone, Copy, Debug)]
 pub struct Torque<R, V> {
+    /// The torque on `i` (N m).
     pub torque: V,
+    /// Its magnitude (N m).
     pub magnitude: R,
 }
 
 /// The twisting history after a step: `phi_max >= 0`, `phi_min <= 0`.
 #[derive(Clone, Copy, Debug)]
 pub struct TwistHistory<R> {
+    /// `phi_max`: the largest twisting angle reached (rad).
     pub max: R,
+    /// `phi_min`: the smallest twisting angle reached (rad).
     pub min: R,
 }
 
@@ -67,7 +73,10 @@ pub struct TwistHistory<R> {
 /// plane) and `beta_opp >= 0` (opposite side).
 #[derive(Clone, Copy, Debug)]
 pub struct BendHistory<R, V> {
+    /// `beta`: the extreme bending angle of the leading side, whose
+    /// direction marks that side (rad).
     pub leading: V,
+    /// `beta_opp`: the extreme `|theta_t|` reached on the opposite side (rad).
     pub opposite: R,
 }
 

@@ -13,14 +13,18 @@ use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
 use crate::state_layout::{slot, StateSlot};
 use crate::vector::{direction_or_zero, v3};
 
+/// The state of a bond between a sphere and a wall: a pair bond's state,
+/// then the centre of the wall's stand-in sphere ([`WALL_BOND_SLOTS`]).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct WallBondState {
+    /// The bond's state, as between two spheres.
     pub bond: BondState,
     /// Centre of the wall's stand-in sphere.
     pub partner: [f64; 3],
 }
 
+/// The number of `f64` slots of [`WallBondState`].
 pub const WALL_BOND_STATE_LEN: usize = BOND_STATE_LEN + 3;
 
 const _: () = assert!(std::mem::size_of::<WallBondState>() == WALL_BOND_STATE_LEN * 8);
