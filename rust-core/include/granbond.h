@@ -50,6 +50,9 @@
  */
 #define GRANBOND_WALL_BOND_STATE_LEN (GRANBOND_BOND_STATE_LEN + 3)
 
+/**
+ * The number of `f64` slots of [`ContactState`].
+ */
 #define GRANBOND_CONTACT_STATE_LEN 6
 
 /**
@@ -146,8 +149,17 @@ typedef int32_t GbBreakMode;
  * sub-models (LIGGGHTS) hands each part its own values.
  */
 typedef enum GbContactPart {
+  /**
+   * The normal spring and dashpot, and the no-attraction clamp.
+   */
   GB_CONTACT_PART_NORMAL = 0,
+  /**
+   * The Cundall-Strack tangential spring, its dashpot and Coulomb friction.
+   */
   GB_CONTACT_PART_TANGENTIAL = 1,
+  /**
+   * Iwashita-Oda rolling resistance.
+   */
   GB_CONTACT_PART_ROLLING = 2,
 } GbContactPart;
 
@@ -278,6 +290,10 @@ typedef enum GbStatus {
  */
 typedef struct GbBondModel GbBondModel;
 
+/**
+ * A validated Voigt contact type (docs/models/voigt.md) and its step;
+ * `GbVoigtModel` in the C ABI.
+ */
 typedef struct GbVoigtModel GbVoigtModel;
 
 /**
@@ -596,26 +612,42 @@ typedef struct GbCheckReport {
  */
 typedef struct GbVoigtParams {
   /**
-   * Normal spring (N/m) and dashpot (kg/s).
+   * Normal spring `k_n` (N/m).
    */
   double k_n;
+  /**
+   * Normal dashpot `gamma_n` (kg/s).
+   */
   double gamma_n;
   /**
-   * Tangential spring (N/m) and dashpot (kg/s).
+   * Tangential spring `k_t` (N/m).
    */
   double k_t;
+  /**
+   * Tangential dashpot `gamma_t` (kg/s).
+   */
   double gamma_t;
   /**
-   * Coulomb friction coefficient.
+   * Coulomb friction coefficient `mu`: the tangential force is capped at
+   * `mu |Fn|`.
    */
   double mu;
   /**
-   * Rolling spring (N m/rad), dashpot (N m s/rad), friction coefficient
-   * and viscous rolling resistance (N m s).
+   * Rolling spring `k_r` (N m/rad).
    */
   double k_r;
+  /**
+   * Rolling dashpot `gamma_r` (N m s/rad).
+   */
   double gamma_r;
+  /**
+   * Rolling friction coefficient `mu_r`: the rolling torque is capped at
+   * `mu_r |Fn| R*`.
+   */
   double mu_r;
+  /**
+   * Viscous rolling resistance `eta_r` (N m s), not capped.
+   */
   double eta_r;
   /**
    * Clamp the normal force at zero (no attraction on separation).
@@ -631,13 +663,25 @@ typedef struct GbVoigtParams {
  * What one contact step produced. `force_j = -force_i`.
  */
 typedef struct GbContactOutput {
+  /**
+   * Force on `i` (N): normal and tangential.
+   */
   double force_i[3];
+  /**
+   * Torque on `i` (N m): the tangential couple plus the rolling torque.
+   */
   double torque_i[3];
+  /**
+   * Torque on `j` (N m): the tangential couple minus the rolling torque.
+   */
   double torque_j[3];
   /**
    * Normal force (after the no-attraction clamp), positive = repulsive.
    */
   double normal_force;
+  /**
+   * Overlap `delta_n` (m): positive while the bodies touch.
+   */
   double overlap;
   /**
    * 1 if the spheres touch this step.

@@ -16,20 +16,30 @@ use crate::vector::{tangential_part, v3, Vec3};
 /// puts on both bodies.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TangentialLoad {
+    /// Tangential force on `i` (N), at most `mu |Fn|`.
     pub force: Vec3,
+    /// Torque of that force on `i` (N m).
     pub torque_i: Vec3,
+    /// Torque of that force on `j` (N m).
     pub torque_j: Vec3,
+    /// The force sits on the Coulomb cap.
     pub sliding: bool,
 }
 
+/// A validated Voigt contact type (docs/models/voigt.md) and its step;
+/// `GbVoigtModel` in the C ABI.
 #[derive(Clone, Debug)]
 pub struct VoigtModel {
+    /// The parameters, validated. The switches `no_attraction` and `rolling`
+    /// are read once, by [`Self::new`].
     pub params: VoigtParams,
     no_attraction: bool,
     rolling: bool,
 }
 
 impl VoigtModel {
+    /// Validates `params` and builds the contact type; the error names the
+    /// first parameter refused.
     pub fn new(params: VoigtParams) -> Result<Self, ParameterError> {
         params.validate()?;
         Ok(Self {
@@ -39,6 +49,7 @@ impl VoigtModel {
         })
     }
 
+    /// Whether rolling resistance is on.
     pub fn rolling(&self) -> bool {
         self.rolling
     }

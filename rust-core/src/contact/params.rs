@@ -10,19 +10,25 @@ const MODEL: &str = "voigt";
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VoigtParams {
-    /// Normal spring (N/m) and dashpot (kg/s).
+    /// Normal spring `k_n` (N/m).
     pub k_n: f64,
+    /// Normal dashpot `gamma_n` (kg/s).
     pub gamma_n: f64,
-    /// Tangential spring (N/m) and dashpot (kg/s).
+    /// Tangential spring `k_t` (N/m).
     pub k_t: f64,
+    /// Tangential dashpot `gamma_t` (kg/s).
     pub gamma_t: f64,
-    /// Coulomb friction coefficient.
+    /// Coulomb friction coefficient `mu`: the tangential force is capped at
+    /// `mu |Fn|`.
     pub mu: f64,
-    /// Rolling spring (N m/rad), dashpot (N m s/rad), friction coefficient
-    /// and viscous rolling resistance (N m s).
+    /// Rolling spring `k_r` (N m/rad).
     pub k_r: f64,
+    /// Rolling dashpot `gamma_r` (N m s/rad).
     pub gamma_r: f64,
+    /// Rolling friction coefficient `mu_r`: the rolling torque is capped at
+    /// `mu_r |Fn| R*`.
     pub mu_r: f64,
+    /// Viscous rolling resistance `eta_r` (N m s), not capped.
     pub eta_r: f64,
     /// Clamp the normal force at zero (no attraction on separation).
     pub no_attraction: i32,
@@ -60,19 +66,23 @@ const ROLLING: Need<VoigtParams> = Need {
 
 // name (= field), LIGGGHTS name, where LIGGGHTS decks give it, unit, allowed
 // values, when the model reads it. Defaults: `VoigtParams::default`.
-crate::parameter_table!(VOIGT_PARAMETERS: VoigtParams {
-    k_n, "kn", PerTypePair, "N/m", Positive, ALWAYS;
-    gamma_n, "gamman_abs", PerTypePair, "kg/s", NonNegative, ALWAYS;
-    k_t, "kt", PerTypePair, "N/m", NonNegative, ALWAYS;
-    gamma_t, "gammat_abs", PerTypePair, "kg/s", NonNegative, ALWAYS;
-    mu, "coefficientFriction", PerTypePair, "-", NonNegative, ALWAYS;
-    k_r, "rollingStiffness", PerTypePair, "N m/rad", NonNegative, ROLLING;
-    gamma_r, "rollingDamping", PerTypePair, "N m s/rad", NonNegative, ROLLING;
-    mu_r, "coefficientRollingFriction", PerTypePair, "-", NonNegative, ROLLING;
-    eta_r, "rollingViscousDamping", PerTypePair, "N m s", NonNegative, ROLLING;
-    no_attraction, "noAttraction", Switch, "switch", Switch, ALWAYS;
-    rolling, "rolling_friction voigt", Fixed, "switch", Switch, ALWAYS;
-});
+crate::parameter_table!(
+    /// The rows of [`VoigtParams`], one per field in its order: the table
+    /// of docs/models/voigt.md, "Parameters".
+    VOIGT_PARAMETERS: VoigtParams {
+        k_n, "kn", PerTypePair, "N/m", Positive, ALWAYS;
+        gamma_n, "gamman_abs", PerTypePair, "kg/s", NonNegative, ALWAYS;
+        k_t, "kt", PerTypePair, "N/m", NonNegative, ALWAYS;
+        gamma_t, "gammat_abs", PerTypePair, "kg/s", NonNegative, ALWAYS;
+        mu, "coefficientFriction", PerTypePair, "-", NonNegative, ALWAYS;
+        k_r, "rollingStiffness", PerTypePair, "N m/rad", NonNegative, ROLLING;
+        gamma_r, "rollingDamping", PerTypePair, "N m s/rad", NonNegative, ROLLING;
+        mu_r, "coefficientRollingFriction", PerTypePair, "-", NonNegative, ROLLING;
+        eta_r, "rollingViscousDamping", PerTypePair, "N m s", NonNegative, ROLLING;
+        no_attraction, "noAttraction", Switch, "switch", Switch, ALWAYS;
+        rolling, "rolling_friction voigt", Fixed, "switch", Switch, ALWAYS;
+    }
+);
 
 /// The part of the contact whose law reads a parameter (the sections of
 /// docs/models/voigt.md): an engine that composes the contact from
@@ -80,8 +90,11 @@ crate::parameter_table!(VOIGT_PARAMETERS: VoigtParams {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ContactPart {
+    /// The normal spring and dashpot, and the no-attraction clamp.
     Normal = 0,
+    /// The Cundall-Strack tangential spring, its dashpot and Coulomb friction.
     Tangential = 1,
+    /// Iwashita-Oda rolling resistance.
     Rolling = 2,
 }
 
@@ -100,9 +113,9 @@ pub const VOIGT_PARTS: &[(&str, ContactPart)] = &[
     ("rolling", ContactPart::Rolling),
 ];
 
-// The `voigt` phrases of `pair_coeff` (docs/reference/pair_granbond.md): the
-// five values after the model's name, rolling resistance with its four, the
-// attraction switch.
+/// The `voigt` phrases of `pair_coeff` (docs/reference/pair_granbond.md): the
+/// five values after the model's name, rolling resistance with its four, the
+/// attraction switch.
 pub const VOIGT_PHRASES: &[Phrase] = &[
     Phrase {
         words: "",
@@ -125,6 +138,8 @@ pub const VOIGT_PHRASES: &[Phrase] = &[
 ];
 
 impl VoigtParams {
+    /// Checks every value against its row's range; the error names the first
+    /// parameter refused.
     pub fn validate(&self) -> Result<(), ParameterError> {
         check_ranges(MODEL, VOIGT_PARAMETERS, self)
     }
