@@ -213,8 +213,17 @@ typedef enum GbParameterKind {
  * Which state array.
  */
 typedef enum GbStateKind {
+  /**
+   * A bond between two spheres (`GRANBOND_BOND_STATE_LEN` slots).
+   */
   GB_STATE_KIND_BOND = 0,
+  /**
+   * A bond to a wall (`GRANBOND_WALL_BOND_STATE_LEN` slots).
+   */
   GB_STATE_KIND_WALL_BOND = 1,
+  /**
+   * A Voigt contact (`GRANBOND_CONTACT_STATE_LEN` slots).
+   */
   GB_STATE_KIND_CONTACT = 2,
   /**
    * A bond step's output as an engine keeps it in the pair's history
@@ -236,6 +245,9 @@ typedef enum GbStateKind {
  * Result of every fallible ABI call.
  */
 typedef enum GbStatus {
+  /**
+   * The call succeeded.
+   */
   GB_STATUS_OK = 0,
   /**
    * A required pointer argument was null.
@@ -301,28 +313,82 @@ typedef struct GbVoigtModel GbVoigtModel;
  * and `sizeof` of each struct, and pass it to `granbond_check_layout`.
  */
 typedef struct GbLayout {
+  /**
+   * `GRANBOND_ABI_VERSION` of the header the caller was compiled with.
+   */
   uint32_t abi_version;
   /**
    * `sizeof(GbLayout)`: read before anything else, so a caller with a
    * shorter or longer struct is refused without reading past its end.
    */
   size_t layout_size;
+  /**
+   * `sizeof(GbBondParams)`.
+   */
   size_t bond_params;
+  /**
+   * `sizeof(GbVoigtParams)`.
+   */
   size_t voigt_params;
+  /**
+   * `sizeof(GbPairKinematics)`.
+   */
   size_t pair_kinematics;
+  /**
+   * `sizeof(GbSphereKinematics)`.
+   */
   size_t sphere_kinematics;
+  /**
+   * `sizeof(GbBondOutput)`.
+   */
   size_t bond_output;
+  /**
+   * `sizeof(GbAtomArrays)`.
+   */
   size_t atom_arrays;
+  /**
+   * `sizeof(GbContactOutput)`.
+   */
   size_t contact_output;
+  /**
+   * `sizeof(GbContactFrame)`.
+   */
   size_t contact_frame;
+  /**
+   * `sizeof(GbTangentialOutput)`.
+   */
   size_t tangential_output;
+  /**
+   * `sizeof(GbTypeBodies)`.
+   */
   size_t type_bodies;
+  /**
+   * `sizeof(GbCheckReport)`.
+   */
   size_t check_report;
+  /**
+   * `sizeof(GbRecordLayout)`.
+   */
   size_t record_layout;
+  /**
+   * `sizeof(GbSweepPass)`.
+   */
   size_t sweep_pass;
+  /**
+   * `sizeof(GbSweepTally)`.
+   */
   size_t sweep_tally;
+  /**
+   * `GRANBOND_BOND_STATE_LEN`.
+   */
   size_t bond_state_len;
+  /**
+   * `GRANBOND_WALL_BOND_STATE_LEN`.
+   */
   size_t wall_bond_state_len;
+  /**
+   * `GRANBOND_CONTACT_STATE_LEN`.
+   */
   size_t contact_state_len;
 } GbLayout;
 
@@ -555,13 +621,25 @@ typedef struct GbBondOutput {
 
 /**
  * The per-atom arrays of an engine (local and ghost atoms), as
- * `granbond_bond_compute_indexed` reads them: `x`, `v` and `omega` hold 3
- * doubles per atom (LAMMPS/LIGGGHTS: `atom->x[0]`, one block), `radius` one.
+ * `granbond_bond_compute_indexed` reads them: vectors as one block of 3
+ * doubles per atom (LAMMPS/LIGGGHTS: `atom->x[0]`).
  */
 typedef struct GbAtomArrays {
+  /**
+   * Positions, 3 doubles per atom.
+   */
   const double *x;
+  /**
+   * Velocities, 3 doubles per atom.
+   */
   const double *v;
+  /**
+   * Angular velocities, 3 doubles per atom.
+   */
   const double *omega;
+  /**
+   * Radii, one double per atom.
+   */
   const double *radius;
   /**
    * The number of atoms each array holds at least.
@@ -590,19 +668,38 @@ typedef struct GbTypeBodies {
 } GbTypeBodies;
 
 /**
- * What a check found. `level`: 0 nothing to say; for the time-step checks
- * 1 above the recommended step, 2 above the critical step; for the
- * creation check the number of findings. `message`: the warning (NUL
- * terminated, several findings separated by newlines; empty at level 0).
- * The time-step checks also give the limiting type pair and its steps
- * (`type_a = 0` and infinite steps when nothing limits).
+ * What a check found: a level and the warning the adapter prints; the
+ * time-step checks also give the limiting type pair and its steps.
  */
 typedef struct GbCheckReport {
+  /**
+   * 0: nothing to say. Time-step checks: 1 above the recommended step, 2
+   * above the critical step. Creation check: the number of findings.
+   */
   int32_t level;
+  /**
+   * Time-step checks: the first atom type of the limiting pair (0 when
+   * nothing limits).
+   */
   int32_t type_a;
+  /**
+   * Time-step checks: the second atom type of the limiting pair.
+   */
   int32_t type_b;
+  /**
+   * Time-step checks: the critical step of the limiting pair (infinite when
+   * nothing limits).
+   */
   double critical;
+  /**
+   * Time-step checks: the recommended step of the limiting pair (infinite
+   * when nothing limits).
+   */
   double recommended;
+  /**
+   * The warning, NUL terminated; several findings are separated by
+   * newlines. Empty at level 0.
+   */
   char message[GRANBOND_CHECK_MESSAGE_LEN];
 } GbCheckReport;
 
@@ -747,9 +844,21 @@ typedef struct GbContactFrame {
  * Tangential part of one Voigt step.
  */
 typedef struct GbTangentialOutput {
+  /**
+   * Tangential force on `i` (N).
+   */
   double force_i[3];
+  /**
+   * Torque of that force on `i` (N m).
+   */
   double torque_i[3];
+  /**
+   * Torque of that force on `j` (N m).
+   */
   double torque_j[3];
+  /**
+   * 1 when the force sits on the Coulomb cap, else 0.
+   */
   int32_t sliding;
 } GbTangentialOutput;
 
@@ -790,7 +899,13 @@ typedef struct GbParameterInfo {
    * The LIGGGHTS property or switch name.
    */
   const char *liggghts_name;
+  /**
+   * How a deck writes the value.
+   */
   enum GbParameterKind kind;
+  /**
+   * Where a LIGGGHTS deck gives the value.
+   */
   enum GbLiggghtsSource liggghts_source;
   /**
    * SI unit, "-" when dimensionless.
@@ -804,6 +919,9 @@ typedef struct GbParameterInfo {
    * When the model reads it, in words (see `granbond_*_parameter_needed`).
    */
   const char *needed_when;
+  /**
+   * The value a deck that does not set it gets.
+   */
   double default_value;
 } GbParameterInfo;
 

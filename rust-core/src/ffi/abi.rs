@@ -27,26 +27,44 @@ pub const GRANBOND_STATE_LAYOUT_VERSION: u32 = 3;
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Layout {
+    /// `GRANBOND_ABI_VERSION` of the header the caller was compiled with.
     pub abi_version: u32,
     /// `sizeof(GbLayout)`: read before anything else, so a caller with a
     /// shorter or longer struct is refused without reading past its end.
     pub layout_size: usize,
+    /// `sizeof(GbBondParams)`.
     pub bond_params: usize,
+    /// `sizeof(GbVoigtParams)`.
     pub voigt_params: usize,
+    /// `sizeof(GbPairKinematics)`.
     pub pair_kinematics: usize,
+    /// `sizeof(GbSphereKinematics)`.
     pub sphere_kinematics: usize,
+    /// `sizeof(GbBondOutput)`.
     pub bond_output: usize,
+    /// `sizeof(GbAtomArrays)`.
     pub atom_arrays: usize,
+    /// `sizeof(GbContactOutput)`.
     pub contact_output: usize,
+    /// `sizeof(GbContactFrame)`.
     pub contact_frame: usize,
+    /// `sizeof(GbTangentialOutput)`.
     pub tangential_output: usize,
+    /// `sizeof(GbTypeBodies)`.
     pub type_bodies: usize,
+    /// `sizeof(GbCheckReport)`.
     pub check_report: usize,
+    /// `sizeof(GbRecordLayout)`.
     pub record_layout: usize,
+    /// `sizeof(GbSweepPass)`.
     pub sweep_pass: usize,
+    /// `sizeof(GbSweepTally)`.
     pub sweep_tally: usize,
+    /// `GRANBOND_BOND_STATE_LEN`.
     pub bond_state_len: usize,
+    /// `GRANBOND_WALL_BOND_STATE_LEN`.
     pub wall_bond_state_len: usize,
+    /// `GRANBOND_CONTACT_STATE_LEN`.
     pub contact_state_len: usize,
 }
 

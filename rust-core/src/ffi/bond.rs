@@ -173,14 +173,18 @@ pub unsafe extern "C" fn granbond_bond_compute(
 }
 
 /// The per-atom arrays of an engine (local and ghost atoms), as
-/// `granbond_bond_compute_indexed` reads them: `x`, `v` and `omega` hold 3
-/// doubles per atom (LAMMPS/LIGGGHTS: `atom->x[0]`, one block), `radius` one.
+/// `granbond_bond_compute_indexed` reads them: vectors as one block of 3
+/// doubles per atom (LAMMPS/LIGGGHTS: `atom->x[0]`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct AtomArrayPointers {
+    /// Positions, 3 doubles per atom.
     pub x: *const f64,
+    /// Velocities, 3 doubles per atom.
     pub v: *const f64,
+    /// Angular velocities, 3 doubles per atom.
     pub omega: *const f64,
+    /// Radii, one double per atom.
     pub radius: *const f64,
     /// The number of atoms each array holds at least.
     pub count: usize,

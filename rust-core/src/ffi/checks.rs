@@ -16,20 +16,27 @@ use std::ffi::{c_char, CStr};
 /// Capacity of [`CheckReport::message`], terminating NUL included.
 pub const GRANBOND_CHECK_MESSAGE_LEN: usize = 2048;
 
-/// What a check found. `level`: 0 nothing to say; for the time-step checks
-/// 1 above the recommended step, 2 above the critical step; for the
-/// creation check the number of findings. `message`: the warning (NUL
-/// terminated, several findings separated by newlines; empty at level 0).
-/// The time-step checks also give the limiting type pair and its steps
-/// (`type_a = 0` and infinite steps when nothing limits).
+/// What a check found: a level and the warning the adapter prints; the
+/// time-step checks also give the limiting type pair and its steps.
 #[repr(C)]
 #[derive(Clone, Copy)]
 pub struct CheckReport {
+    /// 0: nothing to say. Time-step checks: 1 above the recommended step, 2
+    /// above the critical step. Creation check: the number of findings.
     pub level: i32,
+    /// Time-step checks: the first atom type of the limiting pair (0 when
+    /// nothing limits).
     pub type_a: i32,
+    /// Time-step checks: the second atom type of the limiting pair.
     pub type_b: i32,
+    /// Time-step checks: the critical step of the limiting pair (infinite when
+    /// nothing limits).
     pub critical: f64,
+    /// Time-step checks: the recommended step of the limiting pair (infinite
+    /// when nothing limits).
     pub recommended: f64,
+    /// The warning, NUL terminated; several findings are separated by
+    /// newlines. Empty at level 0.
     pub message: [c_char; GRANBOND_CHECK_MESSAGE_LEN],
 }
 

@@ -117,9 +117,13 @@ pub unsafe extern "C" fn granbond_voigt_normal_force(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct TangentialOutput {
+    /// Tangential force on `i` (N).
     pub force_i: [f64; 3],
+    /// Torque of that force on `i` (N m).
     pub torque_i: [f64; 3],
+    /// Torque of that force on `j` (N m).
     pub torque_j: [f64; 3],
+    /// 1 when the force sits on the Coulomb cap, else 0.
     pub sliding: i32,
 }
 

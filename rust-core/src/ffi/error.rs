@@ -13,6 +13,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Status {
+    /// The call succeeded.
     Ok = 0,
     /// A required pointer argument was null.
     NullPointer = 1,
@@ -43,12 +44,17 @@ pub enum Status {
 /// A failure on its way to the caller.
 #[derive(Debug)]
 pub struct Failure {
+    /// What the call returns.
     pub status: Status,
+    /// What `granbond_last_error_message` returns.
     pub message: String,
+    /// The refused parameter's row in its model's table
+    /// (`granbond_last_error_parameter`), or -1.
     pub parameter: i32,
 }
 
 impl Failure {
+    /// A failure that names no parameter.
     pub fn new(status: Status, message: impl Into<String>) -> Self {
         Self {
             status,

@@ -106,6 +106,8 @@ impl FailedIndex {
         Ok(Self(ptr))
     }
 
+    /// Writes `index` where the caller asked for it (nowhere when it passed
+    /// null).
     pub fn report(self, index: usize) {
         if !self.0.is_null() {
             // SAFETY: non-null, aligned and valid for writes (`new`).

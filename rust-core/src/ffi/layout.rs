@@ -17,8 +17,11 @@ use std::sync::OnceLock;
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum StateKind {
+    /// A bond between two spheres (`GRANBOND_BOND_STATE_LEN` slots).
     Bond = 0,
+    /// A bond to a wall (`GRANBOND_WALL_BOND_STATE_LEN` slots).
     WallBond = 1,
+    /// A Voigt contact (`GRANBOND_CONTACT_STATE_LEN` slots).
     Contact = 2,
     /// A bond step's output as an engine keeps it in the pair's history
     /// (`granbond_bond_output_store`).

@@ -20,7 +20,9 @@ pub struct ParameterRow {
     pub keyword: *const c_char,
     /// The LIGGGHTS property or switch name.
     pub liggghts_name: *const c_char,
+    /// How a deck writes the value.
     pub kind: ParameterKind,
+    /// Where a LIGGGHTS deck gives the value.
     pub liggghts_source: LiggghtsSource,
     /// SI unit, "-" when dimensionless.
     pub unit: *const c_char,
@@ -28,6 +30,7 @@ pub struct ParameterRow {
     pub range: *const c_char,
     /// When the model reads it, in words (see `granbond_*_parameter_needed`).
     pub needed_when: *const c_char,
+    /// The value a deck that does not set it gets.
     pub default_value: f64,
 }
 

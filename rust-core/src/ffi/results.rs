@@ -20,6 +20,7 @@ fn finite(values: &[f64]) -> bool {
     values.iter().sum::<f64>().is_finite()
 }
 
+/// The `NonFiniteResult` failure, naming `what` went non-finite.
 pub fn refused(what: &str) -> Failure {
     Failure::new(
         Status::NonFiniteResult,
