@@ -565,13 +565,37 @@ typedef struct GbBondParams {
  * A wall partner is a sphere too (see `bond::wall`).
  */
 typedef struct GbPairKinematics {
+  /**
+   * Centre of `i` (m).
+   */
   double x_i[3];
+  /**
+   * Centre of `j` (m).
+   */
   double x_j[3];
+  /**
+   * Velocity of `i` (m/s).
+   */
   double v_i[3];
+  /**
+   * Velocity of `j` (m/s).
+   */
   double v_j[3];
+  /**
+   * Angular velocity of `i` (rad/s).
+   */
   double w_i[3];
+  /**
+   * Angular velocity of `j` (rad/s).
+   */
   double w_j[3];
+  /**
+   * Radius of `i` (m).
+   */
   double radius_i;
+  /**
+   * Radius of `j` (m).
+   */
   double radius_j;
 } GbPairKinematics;
 
@@ -651,9 +675,21 @@ typedef struct GbAtomArrays {
  * One sphere against a wall.
  */
 typedef struct GbSphereKinematics {
+  /**
+   * Centre (m).
+   */
   double x[3];
+  /**
+   * Velocity (m/s).
+   */
   double v[3];
+  /**
+   * Angular velocity (rad/s).
+   */
   double w[3];
+  /**
+   * Radius (m).
+   */
   double radius;
 } GbSphereKinematics;
 
@@ -662,8 +698,17 @@ typedef struct GbSphereKinematics {
  * A type with no atom has infinite `radius_min` and `mass_min`.
  */
 typedef struct GbTypeBodies {
+  /**
+   * The smallest radius.
+   */
   double radius_min;
+  /**
+   * The largest radius.
+   */
   double radius_max;
+  /**
+   * The smallest mass.
+   */
   double mass_min;
 } GbTypeBodies;
 
@@ -988,11 +1033,20 @@ typedef struct GbSweepTally {
    */
   int64_t intact;
   /**
-   * Broken in this pass, by [`BreakMode`].
+   * Broken in this pass by distance ([`BreakMode::Distance`]).
    */
   int64_t broken_distance;
+  /**
+   * Broken in this pass by tension ([`BreakMode::Tension`]).
+   */
   int64_t broken_tension;
+  /**
+   * Broken in this pass by compression ([`BreakMode::Compression`]).
+   */
   int64_t broken_compression;
+  /**
+   * Broken in this pass by shear ([`BreakMode::Shear`]).
+   */
   int64_t broken_shear;
 } GbSweepTally;
 

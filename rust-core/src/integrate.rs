@@ -8,11 +8,17 @@ use crate::vector::Vec3;
 /// `dt w` (a rotation vector for small angles; for output only).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Body {
+    /// Centre (m).
     pub x: Vec3,
+    /// Velocity (m/s).
     pub v: Vec3,
+    /// Angular velocity (rad/s).
     pub w: Vec3,
+    /// Accumulated `dt w` (rad).
     pub rotation: Vec3,
+    /// Mass (kg).
     pub mass: f64,
+    /// Moment of inertia (kg m^2).
     pub inertia: f64,
 }
 

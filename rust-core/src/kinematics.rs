@@ -9,13 +9,21 @@ use crate::vector::{v3, Vec3, Vector};
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PairKinematics {
+    /// Centre of `i` (m).
     pub x_i: [f64; 3],
+    /// Centre of `j` (m).
     pub x_j: [f64; 3],
+    /// Velocity of `i` (m/s).
     pub v_i: [f64; 3],
+    /// Velocity of `j` (m/s).
     pub v_j: [f64; 3],
+    /// Angular velocity of `i` (rad/s).
     pub w_i: [f64; 3],
+    /// Angular velocity of `j` (rad/s).
     pub w_j: [f64; 3],
+    /// Radius of `i` (m).
     pub radius_i: f64,
+    /// Radius of `j` (m).
     pub radius_j: f64,
 }
 
@@ -23,9 +31,13 @@ pub struct PairKinematics {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct SphereKinematics {
+    /// Centre (m).
     pub x: [f64; 3],
+    /// Velocity (m/s).
     pub v: [f64; 3],
+    /// Angular velocity (rad/s).
     pub w: [f64; 3],
+    /// Radius (m).
     pub radius: f64,
 }
 
@@ -101,10 +113,14 @@ pub fn usable<R: Real>(vectors: [[R; 3]; 6], radius_i: R, radius_j: R) -> (R::Ma
 /// Centre line of a pair: `n` points from `j` to `i`.
 #[derive(Clone, Copy, Debug)]
 pub struct CentreLine<R = f64, V = Vec3> {
+    /// Centre distance `r = |x_i - x_j|` (m).
     pub r: R,
+    /// Unit normal `n = (x_i - x_j) / r`.
     pub n: V,
 }
 
+/// The centre line of a pair (docs/models/bond-nonlinear.md, "Geometry");
+/// `CoincidentCentres` when the centres are not [`separated`].
 #[inline(always)]
 pub fn centre_line(k: &PairKinematics) -> Result<CentreLine, KinematicsError> {
     let d = v3(k.x_i) - v3(k.x_j);

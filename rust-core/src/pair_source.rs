@@ -11,6 +11,7 @@ pub trait PairSource {
     /// The number of bonds.
     fn len(&self) -> usize;
 
+    /// Whether the batch holds no bond.
     fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -37,9 +38,13 @@ impl PairSource for [PairKinematics] {
 /// `3 * nmax` doubles).
 #[derive(Clone, Copy, Debug)]
 pub struct AtomArrays<'a> {
+    /// Positions, 3 numbers per atom.
     pub x: &'a [f64],
+    /// Velocities, 3 numbers per atom.
     pub v: &'a [f64],
+    /// Angular velocities, 3 numbers per atom.
     pub omega: &'a [f64],
+    /// Radii, one per atom.
     pub radius: &'a [f64],
 }
 
@@ -66,12 +71,15 @@ pub struct IndexedPairs<'a> {
 pub struct IndexOutOfRange {
     /// The bond (position in `pairs`).
     pub bond: usize,
-    /// Its offending index, and the number of atoms the arrays hold.
+    /// The offending index.
     pub index: i32,
+    /// The number of atoms the arrays hold.
     pub atoms: usize,
 }
 
 impl<'a> IndexedPairs<'a> {
+    /// The bonds `pairs` over `atoms`, every index checked against
+    /// [`AtomArrays::count`]; the error names the first out of range.
     pub fn new(atoms: AtomArrays<'a>, pairs: &'a [[i32; 2]]) -> Result<Self, IndexOutOfRange> {
         let count = atoms.count();
         for (bond, p) in pairs.iter().enumerate() {

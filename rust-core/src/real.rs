@@ -23,6 +23,8 @@ use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 pub(crate) mod packed;
 pub mod paired;
 
+/// A number the laws compute with: one bond's `f64`, or packed lanes of
+/// several bonds, each lane computed as `f64` would compute it.
 pub trait Real:
     Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self>
 {
@@ -33,7 +35,9 @@ pub trait Real:
     fn splat(x: f64) -> Self;
     /// `b` in every lane.
     fn mask(b: bool) -> Self::Mask;
+    /// Square root, per lane.
     fn sqrt(self) -> Self;
+    /// Absolute value, per lane.
     fn abs(self) -> Self;
     /// The larger of the two; `other` only if it is larger or `self` is NaN
     /// (so NaN loses, as in `f64::max`, and of `+0` and `-0` it is `self`:
@@ -56,14 +60,19 @@ pub trait Real:
         let x = Self::select(self.lt(lo), lo, self);
         Self::select(x.gt(hi), hi, x)
     }
+    /// Per lane, whether the value is NaN.
     fn is_nan(self) -> Self::Mask;
+    /// Per lane, `self < other`.
     fn lt(self, other: Self) -> Self::Mask;
+    /// Per lane, `self > other`.
     fn gt(self, other: Self) -> Self::Mask;
+    /// Per lane, `self >= other`.
     fn ge(self, other: Self) -> Self::Mask;
     /// `if m { a } else { b }` per lane, bit for bit.
     fn select(m: Self::Mask, a: Self, b: Self) -> Self;
-    /// Whether `m` holds in any lane / in every lane.
+    /// Whether `m` holds in any lane.
     fn any(m: Self::Mask) -> bool;
+    /// Whether `m` holds in every lane.
     fn all(m: Self::Mask) -> bool;
 
     /// `(a.sqrt(), b.sqrt())`. Lanes are wide already; `f64` pairs the two

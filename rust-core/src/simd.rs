@@ -9,8 +9,11 @@ use std::sync::atomic::{AtomicU8, Ordering};
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(u8)]
 pub enum Simd {
+    /// One bond at a time; the contact entries' baseline.
     Scalar = 0,
+    /// Chunks of 4 bonds in AVX2 lanes; the contact entries' AVX2 copy.
     Avx2 = 1,
+    /// Chunks of 8 bonds in AVX-512 lanes.
     Avx512 = 2,
 }
 

@@ -40,10 +40,13 @@ pub struct SweepPass {
 pub struct SweepTally {
     /// Intact after the pass.
     pub intact: i64,
-    /// Broken in this pass, by [`BreakMode`].
+    /// Broken in this pass by distance ([`BreakMode::Distance`]).
     pub broken_distance: i64,
+    /// Broken in this pass by tension ([`BreakMode::Tension`]).
     pub broken_tension: i64,
+    /// Broken in this pass by compression ([`BreakMode::Compression`]).
     pub broken_compression: i64,
+    /// Broken in this pass by shear ([`BreakMode::Shear`]).
     pub broken_shear: i64,
 }
 

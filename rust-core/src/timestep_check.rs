@@ -11,8 +11,11 @@ use crate::stability::RECOMMENDED_FRACTION;
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TypeBodies {
+    /// The smallest radius.
     pub radius_min: f64,
+    /// The largest radius.
     pub radius_max: f64,
+    /// The smallest mass.
     pub mass_min: f64,
 }
 
@@ -38,13 +41,18 @@ impl TypeBodies {
 /// system; only the names change.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct UnitNames {
+    /// Unit of length.
     pub length: &'static str,
+    /// Unit of mass.
     pub mass: &'static str,
+    /// Unit of time.
     pub time: &'static str,
+    /// Unit of stress.
     pub stress: &'static str,
 }
 
 impl UnitNames {
+    /// The SI names: m, kg, s, Pa.
     pub const SI: UnitNames = UnitNames {
         length: "m",
         mass: "kg",
@@ -108,7 +116,9 @@ pub struct Rattle {
     /// The longest step that keeps the floor `RATTLE_MARGIN` below the
     /// threshold.
     pub step: f64,
+    /// The bond type's `max_sigma`.
     pub max_sigma: f64,
+    /// The bond type's `k_fn1`.
     pub k_fn1: f64,
     /// Bond radius (the regularisation suggested is a fraction of it).
     pub rb: f64,
@@ -143,12 +153,19 @@ impl StepLimits {
 /// The type pair that limits the step, and how `dt` compares with it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TimestepVerdict {
+    /// How `dt` compares with the pair's steps.
     pub level: TimestepLevel,
+    /// The first atom type of the pair (`type_a <= type_b`).
     pub type_a: usize,
+    /// The second atom type of the pair.
     pub type_b: usize,
+    /// The pair's critical step.
     pub critical: f64,
+    /// The pair's recommended step.
     pub recommended: f64,
+    /// The time step judged.
     pub dt: f64,
+    /// The pair's estimates.
     pub limits: StepLimits,
 }
 
@@ -207,8 +224,11 @@ pub fn scan<M>(
 /// How a message names the parameters it cites.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct CitedNames {
+    /// The deck's name of `max_sigma`.
     pub max_sigma: &'static str,
+    /// The deck's name of `k_fn1`.
     pub k_fn1: &'static str,
+    /// The deck's name of `compression_linear_below`.
     pub compression_linear_below: &'static str,
 }
 

@@ -10,8 +10,10 @@
 use crate::real::Real;
 use std::ops::{Add, Mul, Neg, Sub, SubAssign};
 
+/// The 3-vector of one bond or contact: nalgebra's, of `f64`.
 pub type Vec3 = nalgebra::Vector3<f64>;
 
+/// The [`Vec3`] of an array (how states and the C ABI hold vectors).
 #[inline(always)]
 pub fn v3(a: [f64; 3]) -> Vec3 {
     Vec3::new(a[0], a[1], a[2])
@@ -22,10 +24,15 @@ pub fn v3(a: [f64; 3]) -> Vec3 {
 pub trait Vector<R: Real>:
     Copy + Add<Output = Self> + Sub<Output = Self> + Neg<Output = Self> + Mul<R, Output = Self> + SubAssign
 {
+    /// The zero vector.
     fn zeros() -> Self;
+    /// Dot product.
     fn dot(&self, rhs: &Self) -> R;
+    /// Cross product `self x rhs`.
     fn cross(&self, rhs: &Self) -> Self;
+    /// Squared length.
     fn norm_squared(&self) -> R;
+    /// Length.
     #[inline(always)]
     fn norm(&self) -> R {
         self.norm_squared().sqrt()
@@ -68,12 +75,16 @@ impl Vector<f64> for Vec3 {
 /// A 3-vector of any [`Real`]; the wide kernel's vector.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct V3<R> {
+    /// The x component.
     pub x: R,
+    /// The y component.
     pub y: R,
+    /// The z component.
     pub z: R,
 }
 
 impl<R: Real> V3<R> {
+    /// The vector `(x, y, z)`.
     #[inline(always)]
     pub fn new(x: R, y: R, z: R) -> Self {
         Self { x, y, z }
