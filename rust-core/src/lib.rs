@@ -6,6 +6,9 @@
 //! module of [`bond`] or [`contact`]; the engine adapters and the scene runner
 //! (crate `granbond-scene`) only call them.
 
+// Every public item carries a doc comment, so `cargo doc` is the Rust API
+// reference.
+#![deny(missing_docs)]
 // `!(x > 0.0)` is how the models reject NaN along with the non-positive
 // values: `x <= 0.0` would let NaN through.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
