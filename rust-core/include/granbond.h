@@ -1397,7 +1397,8 @@ enum GbStatus granbond_bond_creation_check(const struct GbBondModel *const *mode
                                            struct GbCheckReport *out);
 
 /**
- * Fills `params` with Table 1 of the seed.
+ * Fills `params` with the defaults of docs/models/voigt.md's parameter
+ * table (the write-up's values).
  *
  * # Safety
  * `params` must be null or valid for writes.

@@ -2,8 +2,8 @@
 //!
 //! In terms of a non-negative loading measure `x` with history maximum
 //! `x_max >= x` (compression: `s(delta)`; tension: `-delta`; each side of
-//! the twisting and bending laws: the angle on that side), seed eq. 6 and
-//! its torque analogues all read
+//! the twisting and bending laws: the angle on that side),
+//! docs/models/bond-nonlinear.md eq. 6 and its torque analogues all read
 //!
 //! ```text
 //! h(x) = k x                        x >= x_max            (virgin loading)

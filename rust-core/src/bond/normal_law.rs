@@ -56,8 +56,8 @@ impl NormalLaw {
         )
     }
 
-    /// Seed eq. 4, applied before the law so `delta_min <= delta <= delta_max`
-    /// (see [`update_extremes`]).
+    /// docs/models/bond-nonlinear.md eq. 4, applied before the law so
+    /// `delta_min <= delta <= delta_max` (see [`update_extremes`]).
     #[inline(always)]
     pub fn update_history<R: Real>(&self, delta: R, delta_max: R, delta_min: R) -> (R, R) {
         update_extremes(delta, delta_max, delta_min, self.history_reset)

@@ -11,7 +11,8 @@ use crate::contact::{
 };
 use crate::kinematics::PairKinematics;
 
-/// Fills `params` with Table 1 of the seed.
+/// Fills `params` with the defaults of docs/models/voigt.md's parameter
+/// table (the write-up's values).
 ///
 /// # Safety
 /// `params` must be null or valid for writes.
