@@ -98,7 +98,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
         outputOffset_ = offset_ + static_cast<int>(layout.loads);
         status_ = layout.status;
     }
-    // the name the reference publishes, so per-contact tools can find the slots
+    // the name LIGGGHTS-INL publishes, so per-contact tools can find the slots
     cmb->add_history_offset("bondnonlinear_contactflag", offset_);
     cmb->add_history_offset("bondnonlinear_output", outputOffset_);
     // where contact models find whether the pair's bond is intact

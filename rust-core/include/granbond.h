@@ -76,11 +76,12 @@
  * The recommended step as a fraction of the critical step, for bonds and
  * contacts alike (docs/speed-accuracy.md). The estimates are the limit of
  * one bond or contact between two spheres; a sphere bonded to six
- * neighbours (a cubic packing) was measured unstable from 0.65-0.75 of it
- * (hysteretic and elastic bonds), and the square root's rattle amplitude
- * shrinks as the fourth power of the step. At 0.2 the margin to the
- * coordinated limit is 3x, the periods of the reference oscillators are
- * within 2e-3, and the cantilever's first frequency within 1e-7.
+ * neighbours (a cubic packing) goes unstable below that limit, and the
+ * square root's rattle amplitude shrinks as the fourth power of the step.
+ * The fraction leaves a margin to the coordinated limit and keeps the
+ * reference oscillators' periods and the cantilever's first frequency
+ * close to their analytic values; docs/speed-accuracy.md gives the
+ * measured margins and errors.
  */
 #define RECOMMENDED_FRACTION 0.2
 
@@ -1069,7 +1070,7 @@ uint32_t granbond_abi_version(void);
 enum GbStatus granbond_check_layout(const struct GbLayout *expected);
 
 /**
- * Fills `params` with the defaults (switches as in the reference, no
+ * Fills `params` with the defaults (switches as in LIGGGHTS-INL, no
  * stiffness, no breakage).
  *
  * # Safety
@@ -1316,8 +1317,8 @@ enum GbStatus granbond_bond_critical_timestep(const struct GbBondModel *model,
 
 /**
  * Recommended time step of a bond of this type between spheres of the
- * given radii and masses: the core's safety fraction (0.2, measured in
- * docs/speed-accuracy.md) of `granbond_bond_critical_timestep`. Engines warn
+ * given radii and masses: the core's safety fraction
+ * (`RECOMMENDED_FRACTION`, chosen in docs/speed-accuracy.md) of `granbond_bond_critical_timestep`. Engines warn
  * above it.
  *
  * # Safety

@@ -20,8 +20,8 @@ pub enum Simd {
 impl Simd {
     /// What the models use: AVX2 where the CPU has it. AVX-512 is not
     /// chosen by itself: twice the lanes, but twice the transposing per
-    /// chunk too, which made it slower than AVX2 where it was measured
-    /// (`benches/kernels.rs`, `scattered_*`; docs/performance.md).
+    /// chunk too, which makes it slower than AVX2 in the `scattered_*`
+    /// benchmarks of `benches/kernels.rs` (docs/performance.md).
     pub fn detect() -> Self {
         #[cfg(target_arch = "x86_64")]
         {

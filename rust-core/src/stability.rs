@@ -4,11 +4,12 @@
 /// The recommended step as a fraction of the critical step, for bonds and
 /// contacts alike (docs/speed-accuracy.md). The estimates are the limit of
 /// one bond or contact between two spheres; a sphere bonded to six
-/// neighbours (a cubic packing) was measured unstable from 0.65-0.75 of it
-/// (hysteretic and elastic bonds), and the square root's rattle amplitude
-/// shrinks as the fourth power of the step. At 0.2 the margin to the
-/// coordinated limit is 3x, the periods of the reference oscillators are
-/// within 2e-3, and the cantilever's first frequency within 1e-7.
+/// neighbours (a cubic packing) goes unstable below that limit, and the
+/// square root's rattle amplitude shrinks as the fourth power of the step.
+/// The fraction leaves a margin to the coordinated limit and keeps the
+/// reference oscillators' periods and the cantilever's first frequency
+/// close to their analytic values; docs/speed-accuracy.md gives the
+/// measured margins and errors.
 pub const RECOMMENDED_FRACTION: f64 = 0.2;
 
 /// Moment of inertia of a solid sphere.

@@ -1,6 +1,6 @@
 //! Whether the creation and break rules of a bond type contradict each other
-//! or the spheres present: checked by the engines at every `run`. Decks of
-//! the reference implementation accept every such combination, so each
+//! or the spheres present: checked by the engines at every `run`.
+//! LIGGGHTS-INL runs a deck with any such combination, so each
 //! finding is a warning that names the parameters as the deck spells them.
 
 use super::params::{BondParams, PARAMETERS};

@@ -70,7 +70,7 @@ impl Loop {
 
 /// The history extremes of a signed measure `x` after a step, updated
 /// before the law so `min <= x <= max` (`max >= 0 >= min` when they start
-/// there). With `reset` (the reference code's rule) being on one side
+/// there). With `reset` (LIGGGHTS-INL's rule) being on one side
 /// forgets the other side's extreme.
 #[inline(always)]
 pub fn update_extremes<R: Real>(x: R, max: R, min: R, reset: bool) -> (R, R) {

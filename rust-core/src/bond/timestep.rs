@@ -116,8 +116,8 @@ impl BondModel {
     /// about it) except shear and bending, which share the rotations
     /// across the axis, so `lambda_b <= max(w_axial^2, w_twist^2,
     /// w_shear^2 + w_bend^2)`. The estimate is a bound: lattices measure
-    /// above it (the simple-cubic packing at 0.65-0.70 of the one-bond
-    /// critical step, docs/speed-accuracy.md), never below.
+    /// above it (the simple-cubic packing, docs/speed-accuracy.md), never
+    /// below.
     pub fn coordinated_timestep(
         &self,
         radius_i: f64,
@@ -220,7 +220,7 @@ impl BondModel {
     /// rattles. Its local stiffness `k_n1 A / (2 sqrt d)` reaches the limit
     /// `4 m_eff / dt^2` at `d_c = (k A dt^2 / (8 m_eff))^2` (`k` the stiffest
     /// compression slope); a bond left below `d_c` gains energy from round-off
-    /// until it rattles with an amplitude of 2-4 `d_c` (measured, elastic and
+    /// until it rattles with an amplitude of a few `d_c` (elastic and
     /// hysteretic, docs/speed-accuracy.md), then stays bounded. This returns
     /// `16 d_c`, where the local step is half the local limit: compressions
     /// above it are resolved, below it they are noise of at most this size.

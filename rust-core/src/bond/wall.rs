@@ -1,6 +1,6 @@
 //! Bonds to walls. The wall plays sphere `j`: a sphere of the particle's
 //! radius behind the wall, touching it at the contact point of the bond's
-//! creation. As in the reference, that point is fixed to the wall: it moves
+//! creation. As in LIGGGHTS-INL, that point is fixed to the wall: it moves
 //! with the wall's velocity and does not spin. Its centre is kept in three
 //! extra state slots, after the pair slots. (The reference measures `r` to
 //! the contact point itself and doubles it only for creation; the mirror

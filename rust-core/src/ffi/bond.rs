@@ -17,7 +17,7 @@ pub use crate::kinematics::SphereKinematics;
 use crate::kinematics::{bond_centre, PairKinematics};
 use crate::pair_source::{AtomArrays, IndexedPairs};
 
-/// Fills `params` with the defaults (switches as in the reference, no
+/// Fills `params` with the defaults (switches as in LIGGGHTS-INL, no
 /// stiffness, no breakage).
 ///
 /// # Safety
@@ -487,8 +487,8 @@ pub unsafe extern "C" fn granbond_bond_critical_timestep(
 }
 
 /// Recommended time step of a bond of this type between spheres of the
-/// given radii and masses: the core's safety fraction (0.2, measured in
-/// docs/speed-accuracy.md) of `granbond_bond_critical_timestep`. Engines warn
+/// given radii and masses: the core's safety fraction
+/// (`RECOMMENDED_FRACTION`, chosen in docs/speed-accuracy.md) of `granbond_bond_critical_timestep`. Engines warn
 /// above it.
 ///
 /// # Safety
