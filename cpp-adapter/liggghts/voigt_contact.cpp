@@ -440,7 +440,29 @@ void VoigtNormal::normalPart(SurfacesIntersectData &sidata, ForceData &i_forces,
 // and the core's unchecked entry (the models were validated when built, dt by the
 // engine; a non-finite result is still caught). The tangential and rolling
 // voigt models then add nothing themselves.
+//
+// The common case (rolling voigt too, a real force step, no bond holding
+// the contact) steps the stored state in place; every other case is
+// wholeContactAside's, out of line, so this path copies nothing and keeps
+// few registers.
 void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+{
+    if (!fusedRolling_ || !(sidata.computeflag && sidata.shearupdate) || share_->heldByBond(sidata.contact_history)) {
+        wholeContactAside(sidata, i_forces, j_forces);
+        return;
+    }
+    GbContactOutput out;
+    const EngineContact c = engineContact(sidata);
+    if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
+                                                c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt,
+                                                &sidata.contact_history[share_->tangential_offset],
+                                                &out) != GB_STATUS_OK)
+        voigtFailed(lmp, sidata, "model voigt");
+    sidata.Fn = fresh(out.normal_force);
+    addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
+}
+
+void VoigtNormal::wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
     // stock rolling models after voigt x voigt read kn, kt, ... (epsd2: kt)
     if (!fusedRolling_) handOn(sidata);
