@@ -152,10 +152,13 @@ unsafe fn step_stored<V: StepVector, const ROLLING: bool>(
     } else {
         spring.write(state);
     }
+    // force_i last, joined to torque_i's first component: each 16-byte
+    // pair of the loads (an engine may read them so, LIGGGHTS's adapter
+    // does) then lies within one store, which serves it while in flight
     let loads = out as *mut f64;
-    l.force_i.write_over(loads);
     l.torque_i.write_over(loads.add(3));
     l.torque_j.write_over(loads.add(6));
+    l.force_i.write_joined(l.torque_i, loads);
     (*out).normal_force = l.normal_force;
     (*out).overlap = frame.overlap;
     (*out).touching = 1;

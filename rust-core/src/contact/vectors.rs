@@ -15,7 +15,8 @@ impl<V: Vector<f64> + Div<f64, Output = V>> ContactVector for V {}
 /// memory and the laws.
 ///
 /// # Safety
-/// Each pointer must be valid for three doubles (`write_over`: four).
+/// Each pointer must be valid for three doubles (`write_over`,
+/// `write_joined`: four).
 pub(crate) trait StepVector: ContactVector {
     /// Three doubles the engine wrote long before the call, read as the
     /// compiler likes.
@@ -28,6 +29,9 @@ pub(crate) trait StepVector: ContactVector {
     /// The three components to `p[0..3]`, and anything to `p[3]`, which the
     /// caller writes afterwards.
     unsafe fn write_over(self, p: *mut f64);
+    /// The three components to `p[0..3]` and the first of `next` to `p[3]`
+    /// (in one store where the vector is one register).
+    unsafe fn write_joined(self, next: Self, p: *mut f64);
     /// Whether every component of `a`, `b` and `c` is finite.
     fn finite3(a: Self, b: Self, c: Self) -> bool;
 }
@@ -48,6 +52,11 @@ impl StepVector for Vec3 {
     #[inline(always)]
     unsafe fn write_over(self, p: *mut f64) {
         self.write(p)
+    }
+    #[inline(always)]
+    unsafe fn write_joined(self, next: Self, p: *mut f64) {
+        self.write(p);
+        *p.add(3) = next.x;
     }
     #[inline(always)]
     fn finite3(a: Self, b: Self, c: Self) -> bool {

@@ -159,6 +159,11 @@ impl StepVector for Y3 {
         _mm256_storeu_pd(p, self.0);
     }
     #[inline(always)]
+    unsafe fn write_joined(self, next: Self, p: *mut f64) {
+        let first = _mm256_broadcastsd_pd(_mm256_castpd256_pd128(next.0));
+        _mm256_storeu_pd(p, _mm256_blend_pd::<0b1000>(self.0, first));
+    }
+    #[inline(always)]
     fn finite3(a: Self, b: Self, c: Self) -> bool {
         // x * 0 is 0 for every finite x and NaN otherwise; a sum of such
         // terms is NaN if any of them is
