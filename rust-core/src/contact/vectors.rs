@@ -84,3 +84,9 @@ unsafe fn load(p: *const f64) -> f64 {
 pub(crate) unsafe fn read_fresh3(p: *const f64) -> [f64; 3] {
     [load(p), load(p.add(1)), load(p.add(2))]
 }
+
+/// The first two of [`read_fresh3`].
+#[inline(always)]
+pub(crate) unsafe fn read_fresh2(p: *const f64) -> [f64; 2] {
+    [load(p), load(p.add(1))]
+}

@@ -145,8 +145,14 @@ impl StepVector for Y3 {
     }
     #[inline(always)]
     unsafe fn read_fresh(p: *const f64) -> Self {
-        let [x, y, z] = super::vectors::read_fresh3(p);
-        Y3(_mm256_set_pd(0.0, z, y, x))
+        let [x, y] = super::vectors::read_fresh2(p);
+        // z one double wide too: a load of its own that cannot be merged
+        // with the volatile ones, and it zeroes lane 3 as it loads
+        let z = _mm_load_sd(p.add(2));
+        Y3(_mm256_insertf128_pd::<1>(
+            _mm256_castpd128_pd256(_mm_set_pd(y, x)),
+            z,
+        ))
     }
     #[inline(always)]
     unsafe fn write(self, p: *mut f64) {
