@@ -342,15 +342,21 @@ inline void PairGranbond::apply(double *f, double *torque, int i, int j, const d
 // just written one double at a time, so no load waits for stores in flight,
 // and nothing is copied; it still checks the result (non-finite force or
 // torque).
-inline void PairGranbond::voigtStep(size_t tp, int i, int j, const double *del, double rsq, double *state,
-                                    GbContactOutput &cout)
+inline void PairGranbond::voigtStep(const ContactReads &r, size_t tp, int i, int j, const double *del, double rsq,
+                                    double *state, GbContactOutput &cout)
 {
-    const double *v0 = atom->v[0], *w0 = atom->omega[0];
     const size_t I = 3 * static_cast<size_t>(i), J = 3 * static_cast<size_t>(j);
-    if (granbond_voigt_compute_separation_unchecked(voigt_[tp], del, rsq, atom->radius[i], atom->radius[j], v0 + I,
-                                                    v0 + J, w0 + I, w0 + J, update->dt, state,
+    if (granbond_voigt_compute_separation_unchecked(r.voigt[tp], del, rsq, r.radius[i], r.radius[j], r.v + I, r.v + J,
+                                                    r.omega + I, r.omega + J, r.dt, state,
                                                     &cout) != GB_STATUS_OK)
         failPair(i, j, "the voigt contact");
+}
+
+PairGranbond::ContactReads PairGranbond::contactReads() const
+{
+    const bool any = atom->nmax > 0;
+    return ContactReads{voigt_.data(), atom->radius, any ? atom->v[0] : nullptr, any ? atom->omega[0] : nullptr,
+                        update->dt};
 }
 
 // The setup pass: the loads of the stored state, not advanced, in the frame
@@ -436,6 +442,11 @@ void PairGranbond::compute(int eflag, int vflag)
     const size_t contactLen = layout_.contact_len;
     double *const f0 = atom->f[0], *const t0 = atom->torque[0];
     const int newtonPair = force->newton_pair;
+    // per type pair, fetched once for the same reason as `reads`
+    const ContactReads reads = contactReads();
+    const TypePair *const pairs = pairs_.data();
+    const GbBondModel *const *const bonds = bond_.data();
+    const char *const createsNow = createsNow_.data();
     for (int ii = 0; ii < inum; ii++) {
         // the next atom's records, requested while this atom's pairs are
         // computed (history_prefetch.h)
@@ -459,7 +470,7 @@ void PairGranbond::compute(int eflag, int vflag)
                                              : static_cast<size_t>(jtype) * ntypes1 + itype;
             // an intact bond: swept above. Its contact's state goes on
             // under it only where the deck asks for it.
-            if (touch[jj] == kSweptMark && !(advance && pairs_[tp].contactUnderBond)) continue;
+            if (touch[jj] == kSweptMark && !(advance && pairs[tp].contactUnderBond)) continue;
             const double *const xj = x0 + 3 * static_cast<size_t>(j);
             const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
@@ -469,17 +480,17 @@ void PairGranbond::compute(int eflag, int vflag)
             if (touch[jj] == kSweptMark) {
                 if (touching) {
                     GbContactOutput unused;
-                    voigtStep(tp, i, j, del, rsq, history, unused);
+                    voigtStep(reads, tp, i, j, del, rsq, history, unused);
                 } else {
                     std::fill(history, history + contactLen, 0.0);
                 }
                 continue;
             }
-            const GbBondModel *bondModel = bond_[tp];
+            const GbBondModel *bondModel = bonds[tp];
             // apart, and no bond can form: a pair not marked touching has an
             // all-zero record (every path that clears the mark zeroes it),
             // so it is not read
-            if (!touching && !(bondModel && createsNow_[tp])) {
+            if (!touching && !(bondModel && createsNow[tp])) {
                 if (touch[jj]) {
                     touch[jj] = 0;
                     std::fill(history, history + size, 0.0);
@@ -489,11 +500,11 @@ void PairGranbond::compute(int eflag, int vflag)
             if (!bondModel && advance) {   // a plain contact, touching: inline, the loads applied here
                 touch[jj] = 1;
                 GbContactOutput cout;
-                voigtStep(tp, i, j, del, rsq, history, cout);
+                voigtStep(reads, tp, i, j, del, rsq, history, cout);
                 apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newtonPair);
                 continue;
             }
-            if (bondModel && createsNow_[tp] && touch[jj] != kBrokeMark &&
+            if (bondModel && createsNow[tp] && touch[jj] != kBrokeMark &&
                 granbond_bond_may_create(bondModel, history + layout_.bond, step)) {
                 GbPairKinematics k;
                 pairKinematics(i, j, k);
@@ -584,7 +595,7 @@ void PairGranbond::contactOf(size_t tp, int i, int j, int *touch, double *histor
     *touch = 1;
     GbContactOutput cout;
     if (advance)
-        voigtStep(tp, i, j, del, rsq, history, cout);
+        voigtStep(contactReads(), tp, i, j, del, rsq, history, cout);
     else
         voigtEvaluate(tp, i, j, del, rsq, history, cout);
     apply(atom->f[0], atom->torque[0], i, j, cout.force_i, cout.torque_i, cout.torque_j, del, atom->nlocal,

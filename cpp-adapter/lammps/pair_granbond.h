@@ -87,7 +87,17 @@ private:
     void countVanished(long long intact);
     bool bondsExist() const;
 
-    void voigtStep(size_t tp, int i, int j, const double *del, double rsq, double *state, GbContactOutput &cout);
+    // What the Voigt steps of a pass read, fetched once per pass: with a
+    // core call between two steps, the compiler would fetch each of them
+    // again through the objects for every contact.
+    struct ContactReads {
+        const GbVoigtModel *const *voigt;   // per type pair
+        const double *radius, *v, *omega;    // atom->radius, v[0], omega[0]
+        double dt;
+    };
+    ContactReads contactReads() const;
+    void voigtStep(const ContactReads &r, size_t tp, int i, int j, const double *del, double rsq, double *state,
+                   GbContactOutput &cout);
     void voigtEvaluate(size_t tp, int i, int j, const double *del, double rsq, const double *state,
                        GbContactOutput &cout);
     void pairKinematics(int i, int j, GbPairKinematics &k) const;

@@ -5,11 +5,15 @@
 #include "core_message.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <string>
 #include <utility>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 using namespace LIGGGHTS::ContactModels;
 
@@ -252,7 +256,8 @@ void VoigtContactShare::rebuild(LAMMPS_NS::Error *error)
 // 0, 16, 32: a paired load of delta_torque[0..1] at 24 spans two of them).
 // So this code reads such records one double at a time, as the core reads
 // the frame: each load is served by the store that wrote it, whatever
-// widths either compiler chose.
+// widths either compiler chose; only where both layouts are known does it
+// read pairs (addPairLoads).
 static inline double fresh(const double &x) { return *static_cast<const volatile double *>(&x); }
 static inline void addTo(double &x, double d)
 {
@@ -309,6 +314,31 @@ static inline void engineFrame(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectDa
         GB_STATUS_OK)
         voigtFailed(lmp, d, "model voigt");
 }
+
+// The loads of a pair added to the engine's accumulators of i and j, as
+// addLoads does, in 16-byte pairs of doubles: ForceData is delta_F and
+// delta_torque side by side, reset by the engine in 16-byte stores at
+// offsets 0, 16 and 32, and the core's output is force_i, torque_i and
+// torque_j side by side, written so that each pair read below (offsets 0,
+// 16, 32 and 56) lies within one of its stores. Each load is
+// then served by one store, and each lane is the scalar operation of
+// addLoads: delta_F[2] - force_i[2] as delta_F[2] + (-force_i[2]), the same
+// IEEE operation.
+#if defined(__SSE2__)
+static inline void addPairLoads(ForceData &i_forces, ForceData &j_forces, const GbContactOutput &out)
+{
+    static_assert(offsetof(ForceData, delta_torque) == 3 * sizeof(double), "ForceData: delta_F, delta_torque");
+    static_assert(offsetof(GbContactOutput, torque_i) == 3 * sizeof(double) &&
+                      offsetof(GbContactOutput, torque_j) == 6 * sizeof(double),
+                  "GbContactOutput: force_i, torque_i, torque_j");
+    const double *const o = out.force_i;
+    double *const fi = i_forces.delta_F, *const fj = j_forces.delta_F;
+    for (int k = 0; k < 6; k += 2) _mm_storeu_pd(fi + k, _mm_add_pd(_mm_loadu_pd(fi + k), _mm_loadu_pd(o + k)));
+    _mm_storeu_pd(fj, _mm_sub_pd(_mm_loadu_pd(fj), _mm_loadu_pd(o)));
+    _mm_storeu_pd(fj + 2, _mm_add_pd(_mm_loadu_pd(fj + 2), _mm_set_pd(o[6], -o[2])));
+    _mm_storeu_pd(fj + 4, _mm_add_pd(_mm_loadu_pd(fj + 4), _mm_loadu_pd(o + 7)));
+}
+#endif
 
 // Adds a force on i (and its opposite on j for a pair) and the torques.
 static inline void addLoads(const SurfacesIntersectData &d, ForceData &i_forces, ForceData &j_forces,
@@ -440,7 +470,35 @@ void VoigtNormal::normalPart(SurfacesIntersectData &sidata, ForceData &i_forces,
 // and the core's unchecked entry (the models were validated when built, dt by the
 // engine; a non-finite result is still caught). The tangential and rolling
 // voigt models then add nothing themselves.
+//
+// The common case (rolling voigt too, a real force step, no bond holding
+// the contact) steps the stored state in place; every other case is
+// wholeContactAside's, out of line, so this path copies nothing and keeps
+// few registers.
 void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+{
+    if (!fusedRolling_ || !(sidata.computeflag && sidata.shearupdate) || share_->heldByBond(sidata.contact_history)) {
+        wholeContactAside(sidata, i_forces, j_forces);
+        return;
+    }
+    GbContactOutput out;
+    const EngineContact c = engineContact(sidata);
+    if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
+                                                c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt,
+                                                &sidata.contact_history[share_->tangential_offset],
+                                                &out) != GB_STATUS_OK)
+        voigtFailed(lmp, sidata, "model voigt");
+    sidata.Fn = fresh(out.normal_force);
+#if defined(__SSE2__)
+    if (!sidata.is_wall) {
+        addPairLoads(i_forces, j_forces, out);
+        return;
+    }
+#endif
+    addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
+}
+
+void VoigtNormal::wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
     // stock rolling models after voigt x voigt read kn, kt, ... (epsd2: kt)
     if (!fusedRolling_) handOn(sidata);

@@ -192,6 +192,10 @@ private:
     void handOn(SurfacesIntersectData &sidata);
     void normalPart(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
     void wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    // the cases wholeContact leaves aside: without rolling voigt, setup and
+    // output passes, a contact held by a bond
+    __attribute__((noinline)) void wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_forces,
+                                                     ForceData &j_forces);
 
     const void *owner_;
     VoigtContactShare *share_;

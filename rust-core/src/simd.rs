@@ -36,11 +36,19 @@ impl Simd {
     /// entries ask at every call).
     #[inline]
     pub fn chosen() -> Self {
+        Self::known().unwrap_or_else(Self::detect_and_keep)
+    }
+
+    /// [`Self::chosen`] once it has been found, else `None`: a caller that
+    /// only jumps on to one copy or another keeps the finding (a call) off
+    /// its own path.
+    #[inline(always)]
+    pub fn known() -> Option<Self> {
         match CHOSEN.load(Ordering::Relaxed) {
-            UNKNOWN => Self::detect_and_keep(),
-            1 => Simd::Avx2,
-            2 => Simd::Avx512,
-            _ => Simd::Scalar,
+            UNKNOWN => None,
+            1 => Some(Simd::Avx2),
+            2 => Some(Simd::Avx512),
+            _ => Some(Simd::Scalar),
         }
     }
 

@@ -6,7 +6,7 @@
 
 use super::rolling::effective_radius;
 use crate::kinematics::{centre_line, KinematicsError, PairKinematics, SphereKinematics};
-use crate::vector::v3;
+use crate::vector::{v3, Vec3, Vector};
 
 /// Where and how deep two bodies touch, how far from each centre the
 /// contact point lies, and how the bodies move: everything a contact law
@@ -37,17 +37,42 @@ pub struct ContactFrame {
 }
 
 /// How the two bodies of a contact move: the frame's velocities, taken as
-/// the engine has them.
+/// the engine has them (as arrays, or as the laws' vectors `V`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Motion {
+pub struct Motion<V = [f64; 3]> {
     /// Velocity of the centre of `i`.
-    pub v_i: [f64; 3],
+    pub v_i: V,
     /// Velocity of the centre of `j` (of a wall, its velocity).
-    pub v_j: [f64; 3],
+    pub v_j: V,
     /// Angular velocity of `i`.
-    pub w_i: [f64; 3],
+    pub w_i: V,
     /// Angular velocity of `j` (zero for a wall).
-    pub w_j: [f64; 3],
+    pub w_j: V,
+}
+
+/// [`ContactFrame`] with its vectors as the laws' vectors `V` (`Vec3`, or
+/// one register each in the AVX2 step, `contact::dispatch`): what the
+/// laws read.
+#[derive(Clone, Copy, Debug)]
+pub struct FrameIn<V> {
+    /// [`ContactFrame::n`].
+    pub n: V,
+    /// [`ContactFrame::overlap`].
+    pub overlap: f64,
+    /// [`ContactFrame::lever_i`].
+    pub lever_i: f64,
+    /// [`ContactFrame::lever_j`].
+    pub lever_j: f64,
+    /// [`ContactFrame::r_eff`].
+    pub r_eff: f64,
+    /// [`ContactFrame::v_i`].
+    pub v_i: V,
+    /// [`ContactFrame::v_j`].
+    pub v_j: V,
+    /// [`ContactFrame::w_i`].
+    pub w_i: V,
+    /// [`ContactFrame::w_j`].
+    pub w_j: V,
 }
 
 /// A plane wall: a point on it, its unit normal towards the particles, and
@@ -72,19 +97,19 @@ pub enum FrameError {
     NotUnitNormal(f64),
 }
 
-impl ContactFrame {
+impl<V: Copy> FrameIn<V> {
     /// The frame of a contact whose unit normal `n` (from `j` to `i`) is
     /// known, with the centre distance `distance` along it; for a wall
     /// `radius_j = 0` and `distance` is the centre's distance from the
     /// wall. Every other constructor ends here.
     #[inline(always)]
     pub fn from_normal(
-        n: [f64; 3],
+        n: V,
         distance: f64,
         radius_i: f64,
         radius_j: f64,
         rolling: bool,
-        m: Motion,
+        m: Motion<V>,
     ) -> Self {
         let r_eff = if !rolling {
             0.0
@@ -105,10 +130,72 @@ impl ContactFrame {
             w_j: m.w_j,
         }
     }
+}
 
+impl<V: Vector<f64>> FrameIn<V> {
     /// A pair from its separation `del = x_i - x_j` and `rsq = |del|^2`:
     /// one square root, one reciprocal for the three normal components, the
     /// operations of [`centre_line`], so the frame of [`sphere_sphere`].
+    #[inline(always)]
+    pub fn from_separation(
+        del: V,
+        rsq: f64,
+        radius_i: f64,
+        radius_j: f64,
+        rolling: bool,
+        m: Motion<V>,
+    ) -> Self {
+        let r = rsq.sqrt();
+        let rinv = 1.0 / r;
+        Self::from_normal(del * rinv, r, radius_i, radius_j, rolling, m)
+    }
+}
+
+impl From<FrameIn<Vec3>> for ContactFrame {
+    #[inline(always)]
+    fn from(f: FrameIn<Vec3>) -> Self {
+        Self {
+            n: f.n.into(),
+            overlap: f.overlap,
+            lever_i: f.lever_i,
+            lever_j: f.lever_j,
+            r_eff: f.r_eff,
+            v_i: f.v_i.into(),
+            v_j: f.v_j.into(),
+            w_i: f.w_i.into(),
+            w_j: f.w_j.into(),
+        }
+    }
+}
+
+impl<V> Motion<V> {
+    /// Each velocity as `f` makes it.
+    #[inline(always)]
+    pub fn map<W>(self, f: impl Fn(V) -> W) -> Motion<W> {
+        Motion {
+            v_i: f(self.v_i),
+            v_j: f(self.v_j),
+            w_i: f(self.w_i),
+            w_j: f(self.w_j),
+        }
+    }
+}
+
+impl ContactFrame {
+    /// [`FrameIn::from_normal`] with the vectors as arrays.
+    #[inline(always)]
+    pub fn from_normal(
+        n: [f64; 3],
+        distance: f64,
+        radius_i: f64,
+        radius_j: f64,
+        rolling: bool,
+        m: Motion,
+    ) -> Self {
+        FrameIn::from_normal(v3(n), distance, radius_i, radius_j, rolling, m.map(v3)).into()
+    }
+
+    /// [`FrameIn::from_separation`] with the vectors as arrays.
     #[inline(always)]
     pub fn from_separation(
         del: [f64; 3],
@@ -118,10 +205,23 @@ impl ContactFrame {
         rolling: bool,
         m: Motion,
     ) -> Self {
-        let r = rsq.sqrt();
-        let rinv = 1.0 / r;
-        let n = [del[0] * rinv, del[1] * rinv, del[2] * rinv];
-        Self::from_normal(n, r, radius_i, radius_j, rolling, m)
+        FrameIn::from_separation(v3(del), rsq, radius_i, radius_j, rolling, m.map(v3)).into()
+    }
+
+    /// The frame with its vectors as `Vec3`, as the laws take it.
+    #[inline(always)]
+    pub fn vectors(&self) -> FrameIn<Vec3> {
+        FrameIn {
+            n: v3(self.n),
+            overlap: self.overlap,
+            lever_i: self.lever_i,
+            lever_j: self.lever_j,
+            r_eff: self.r_eff,
+            v_i: v3(self.v_i),
+            v_j: v3(self.v_j),
+            w_i: v3(self.w_i),
+            w_j: v3(self.w_j),
+        }
     }
 
     /// Refuses a frame a caller built itself: every number finite, and a

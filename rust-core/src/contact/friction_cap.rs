@@ -3,12 +3,18 @@
 //! keeping its direction, and the spring is reset to be consistent with the
 //! capped load so it cannot grow without bound while slipping.
 
-use crate::vector::Vec3;
+use super::vectors::ContactVector;
 
 /// Returns the (possibly capped) load, the spring elongation to store and
 /// whether the cap was hit.
 #[inline(always)]
-pub fn capped_spring(elongation: Vec3, rate: Vec3, k: f64, gamma: f64, limit: f64) -> (Vec3, Vec3, bool) {
+pub fn capped_spring<V: ContactVector>(
+    elongation: V,
+    rate: V,
+    k: f64,
+    gamma: f64,
+    limit: f64,
+) -> (V, V, bool) {
     let trial = -(elongation * k) - rate * gamma;
     // squares compared (limit >= 0): a load within the cap, the common
     // case, waits for no square root

@@ -11,8 +11,11 @@ pub mod params;
 pub mod rolling;
 pub mod state;
 pub mod tangential;
+pub mod vectors;
+#[cfg(target_arch = "x86_64")]
+pub(crate) mod wide;
 
-pub use frame::{sphere_plane, sphere_sphere, ContactFrame, FrameError, Motion, Plane};
+pub use frame::{sphere_plane, sphere_sphere, ContactFrame, FrameError, FrameIn, Motion, Plane};
 pub use model::{TangentialLoad, VoigtModel};
 pub use params::{ContactPart, VoigtParams, VOIGT_PARAMETERS, VOIGT_PARTS, VOIGT_PHRASES};
 pub use state::{ContactOutput, ContactState, CONTACT_SLOTS, CONTACT_STATE_LEN};

@@ -1,12 +1,13 @@
 //! A validated Voigt contact type and its step.
 
-use super::frame::{sphere_sphere, ContactFrame};
+use super::frame::{sphere_sphere, ContactFrame, FrameIn};
 use super::friction_cap::capped_spring;
 use super::normal::normal_force;
 use super::params::VoigtParams;
 use super::rolling::rolling_spin;
 use super::state::{ContactOutput, ContactState};
 use super::tangential::carry_spring;
+use super::vectors::ContactVector;
 use crate::kinematics::{slip_velocity, KinematicsError, PairKinematics};
 use crate::parameters::ParameterError;
 use crate::stability::{oscillator_limit, sphere_inertia, RECOMMENDED_FRACTION};
@@ -15,15 +16,26 @@ use crate::vector::{tangential_part, v3, Vec3};
 /// Tangential load of one step: the force on `i` and the torques its couple
 /// puts on both bodies.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TangentialLoad {
+pub struct TangentialLoad<V = Vec3> {
     /// Tangential force on `i` (N), at most `mu |Fn|`.
-    pub force: Vec3,
+    pub force: V,
     /// Torque of that force on `i` (N m).
-    pub torque_i: Vec3,
+    pub torque_i: V,
     /// Torque of that force on `j` (N m).
-    pub torque_j: Vec3,
+    pub torque_j: V,
     /// The force sits on the Coulomb cap.
     pub sliding: bool,
+}
+
+/// The loads of one step of touching bodies, as the laws' vectors `V`.
+#[derive(Clone, Copy)]
+pub(crate) struct Loads<V> {
+    pub force_i: V,
+    pub torque_i: V,
+    pub torque_j: V,
+    pub normal_force: f64,
+    pub sliding: bool,
+    pub rolling_slip: bool,
 }
 
 /// A validated Voigt contact type (docs/models/voigt.md) and its step;
@@ -115,9 +127,9 @@ impl VoigtModel {
     }
 
     /// One step of any contact. Bodies apart exert nothing and forget their
-    /// history. Always inlined: it is the body of the engines' per-contact
-    /// calls (`contact::dispatch`). Dispatches once on
-    /// the rolling switch to [`Self::step_frame_kernel`].
+    /// history. The engines' per-contact calls (`contact::dispatch`) run the
+    /// same laws (`VoigtModel::touching`) on their own vectors. Dispatches once
+    /// on the rolling switch to [`Self::step_frame_kernel`].
     #[inline(always)]
     pub fn step_frame(&self, f: &ContactFrame, dt: f64, state: &mut ContactState, out: &mut ContactOutput) {
         if self.rolling {
@@ -172,31 +184,69 @@ impl VoigtModel {
             overlap: f.overlap,
             ..ContactOutput::default()
         };
-        if !(f.overlap > 0.0) {
+        let (mut spring, mut angle) = (v3(state.tangential_spring), v3(state.rolling_angle));
+        let Some(l) = self.touching::<Vec3, ROLLING, ADVANCE>(&f.vectors(), dt, &mut spring, &mut angle)
+        else {
             *state = ContactState::default();
             return;
-        }
-        let f_n = self.normal_force(f);
-        let t = self.tangential_kernel::<ADVANCE>(f, f_n, dt, &mut state.tangential_spring);
-        let (mut torque_i, mut torque_j) = (t.torque_i, t.torque_j);
+        };
+        state.tangential_spring = spring.into();
         if ROLLING {
-            let (t_r, slip) = self.rolling_kernel::<ADVANCE>(f, f_n, dt, &mut state.rolling_angle);
-            torque_i += t_r;
-            torque_j -= t_r;
-            out.rolling_slip = slip as i32;
+            state.rolling_angle = angle.into();
+            out.rolling_slip = l.rolling_slip as i32;
         }
-        out.force_i = (v3(f.n) * f_n + t.force).into();
-        out.torque_i = torque_i.into();
-        out.torque_j = torque_j.into();
-        out.normal_force = f_n;
+        out.force_i = l.force_i.into();
+        out.torque_i = l.torque_i.into();
+        out.torque_j = l.torque_j.into();
+        out.normal_force = l.normal_force;
         out.touching = 1;
-        out.sliding = t.sliding as i32;
+        out.sliding = l.sliding as i32;
+    }
+
+    /// The laws of one step, on any of their vectors (`contact::dispatch`
+    /// runs them on AVX registers): `None` when the bodies are apart (the
+    /// caller forgets the history), else the loads, with the tangential
+    /// spring and (with `ROLLING`) the rolling angle updated in place.
+    #[inline(always)]
+    pub(crate) fn touching<V: ContactVector, const ROLLING: bool, const ADVANCE: bool>(
+        &self,
+        f: &FrameIn<V>,
+        dt: f64,
+        spring: &mut V,
+        angle: &mut V,
+    ) -> Option<Loads<V>> {
+        if !(f.overlap > 0.0) {
+            return None;
+        }
+        let f_n = self.normal_force_in(f);
+        let t = self.tangential_kernel::<V, ADVANCE>(f, f_n, dt, spring);
+        let (mut torque_i, mut torque_j) = (t.torque_i, t.torque_j);
+        let mut rolling_slip = false;
+        if ROLLING {
+            let (t_r, slip) = self.rolling_kernel::<V, ADVANCE>(f, f_n, dt, angle);
+            torque_i = torque_i + t_r;
+            torque_j -= t_r;
+            rolling_slip = slip;
+        }
+        Some(Loads {
+            force_i: f.n * f_n + t.force,
+            torque_i,
+            torque_j,
+            normal_force: f_n,
+            sliding: t.sliding,
+            rolling_slip,
+        })
     }
 
     /// `Fn = k_n delta_n - gamma_n v_n` (clamped at zero without attraction).
     #[inline(always)]
     pub fn normal_force(&self, f: &ContactFrame) -> f64 {
-        let v_n = (v3(f.v_i) - v3(f.v_j)).dot(&v3(f.n));
+        self.normal_force_in(&f.vectors())
+    }
+
+    #[inline(always)]
+    fn normal_force_in<V: ContactVector>(&self, f: &FrameIn<V>) -> f64 {
+        let v_n = (f.v_i - f.v_j).dot(&f.n);
         normal_force(
             self.params.k_n,
             self.params.gamma_n,
@@ -210,38 +260,34 @@ impl VoigtModel {
     /// spring elongation in place.
     #[inline(always)]
     pub fn tangential(&self, f: &ContactFrame, f_n: f64, dt: f64, spring: &mut [f64; 3]) -> TangentialLoad {
-        self.tangential_kernel::<true>(f, f_n, dt, spring)
+        let mut s = v3(*spring);
+        let t = self.tangential_kernel::<Vec3, true>(&f.vectors(), f_n, dt, &mut s);
+        *spring = s.into();
+        t
     }
 
     /// [`Self::tangential`] of the stored spring, not advanced (see
     /// [`Self::evaluate_frame`]).
     pub fn tangential_held(&self, f: &ContactFrame, f_n: f64, spring: &[f64; 3]) -> TangentialLoad {
-        let mut scratch = *spring;
-        self.tangential_kernel::<false>(f, f_n, 0.0, &mut scratch)
+        let mut scratch = v3(*spring);
+        self.tangential_kernel::<Vec3, false>(&f.vectors(), f_n, 0.0, &mut scratch)
     }
 
     #[inline(always)]
-    fn tangential_kernel<const ADVANCE: bool>(
+    fn tangential_kernel<V: ContactVector, const ADVANCE: bool>(
         &self,
-        f: &ContactFrame,
+        f: &FrameIn<V>,
         f_n: f64,
         dt: f64,
-        spring: &mut [f64; 3],
-    ) -> TangentialLoad {
+        spring: &mut V,
+    ) -> TangentialLoad<V> {
         let p = &self.params;
-        let n = v3(f.n);
-        let slip = slip_velocity(
-            v3(f.v_i) - v3(f.v_j),
-            v3(f.w_i),
-            v3(f.w_j),
-            n,
-            f.lever_i,
-            f.lever_j,
-        );
-        let carried = carry_spring(v3(*spring), n);
+        let n = f.n;
+        let slip = slip_velocity(f.v_i - f.v_j, f.w_i, f.w_j, n, f.lever_i, f.lever_j);
+        let carried = carry_spring(*spring, n);
         let trial = if ADVANCE { carried + slip * dt } else { carried };
         let (force, kept, sliding) = capped_spring(trial, slip, p.k_t, p.gamma_t, p.mu * f_n.abs());
-        *spring = kept.into();
+        *spring = kept;
         let arm = n.cross(&force);
         TangentialLoad {
             force,
@@ -256,32 +302,35 @@ impl VoigtModel {
     /// Updates the rolling angle in place; reports whether the cap was hit.
     #[inline(always)]
     pub fn rolling_torque(&self, f: &ContactFrame, f_n: f64, dt: f64, angle: &mut [f64; 3]) -> (Vec3, bool) {
-        self.rolling_kernel::<true>(f, f_n, dt, angle)
+        let mut a = v3(*angle);
+        let t = self.rolling_kernel::<Vec3, true>(&f.vectors(), f_n, dt, &mut a);
+        *angle = a.into();
+        t
     }
 
     /// [`Self::rolling_torque`] of the stored angle, not advanced (see
     /// [`Self::evaluate_frame`]).
     pub fn rolling_torque_held(&self, f: &ContactFrame, f_n: f64, angle: &[f64; 3]) -> (Vec3, bool) {
-        let mut scratch = *angle;
-        self.rolling_kernel::<false>(f, f_n, 0.0, &mut scratch)
+        let mut scratch = v3(*angle);
+        self.rolling_kernel::<Vec3, false>(&f.vectors(), f_n, 0.0, &mut scratch)
     }
 
     #[inline(always)]
-    fn rolling_kernel<const ADVANCE: bool>(
+    fn rolling_kernel<V: ContactVector, const ADVANCE: bool>(
         &self,
-        f: &ContactFrame,
+        f: &FrameIn<V>,
         f_n: f64,
         dt: f64,
-        angle: &mut [f64; 3],
-    ) -> (Vec3, bool) {
+        angle: &mut V,
+    ) -> (V, bool) {
         let p = &self.params;
-        let n = v3(f.n);
-        let spin = rolling_spin(v3(f.w_i), v3(f.w_j), n);
-        let turned = tangential_part(v3(*angle), n);
+        let n = f.n;
+        let spin = rolling_spin(f.w_i, f.w_j, n);
+        let turned = tangential_part(*angle, n);
         let trial = if ADVANCE { turned + spin * dt } else { turned };
         let limit = p.mu_r * f_n.abs() * f.r_eff;
         let (t_r, kept, slip) = capped_spring(trial, spin, p.k_r, p.gamma_r, limit);
-        *angle = kept.into();
+        *angle = kept;
         (t_r - spin * p.eta_r, slip)
     }
 

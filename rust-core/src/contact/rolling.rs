@@ -1,11 +1,11 @@
 //! Iwashita-Oda rolling resistance on the rolling part of the relative spin.
 
-use crate::vector::{tangential_part, Vec3};
+use crate::vector::{tangential_part, Vector};
 
 /// Relative spin without its twisting part: a pure spin about `n` meets no
 /// rolling resistance.
 #[inline(always)]
-pub fn rolling_spin(w_i: Vec3, w_j: Vec3, n: Vec3) -> Vec3 {
+pub fn rolling_spin<V: Vector<f64>>(w_i: V, w_j: V, n: V) -> V {
     tangential_part(w_i - w_j, n)
 }
 

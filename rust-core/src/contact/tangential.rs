@@ -1,6 +1,7 @@
 //! Cundall-Strack tangential history.
 
-use crate::vector::{tangential_part, Vec3};
+use super::vectors::ContactVector;
+use crate::vector::tangential_part;
 
 /// Turns the stored spring into the current tangent plane, keeping its
 /// length (the contact frame has rotated since the last step).
@@ -12,7 +13,7 @@ use crate::vector::{tangential_part, Vec3};
 /// has hardly turned (a packing at rest) skips a division and a square root
 /// that stood on its critical path.
 #[inline(always)]
-pub fn carry_spring(spring: Vec3, n: Vec3) -> Vec3 {
+pub fn carry_spring<V: ContactVector>(spring: V, n: V) -> V {
     let along = spring.dot(&n);
     let projected = tangential_part(spring, n);
     let after = projected.norm_squared();
@@ -25,6 +26,7 @@ pub fn carry_spring(spring: Vec3, n: Vec3) -> Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::vector::Vec3;
     use proptest::prelude::*;
 
     fn unit(v: Vec3) -> Vec3 {

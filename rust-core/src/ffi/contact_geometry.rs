@@ -17,9 +17,84 @@ use super::contact::non_finite_loads;
 use super::entry;
 use super::error::{record, Failure, Status};
 use super::guard::{reference_mut, vector3};
-use crate::contact::dispatch::{step_normal, step_separation};
 use crate::contact::{ContactFrame, ContactOutput, Motion, VoigtModel};
 use crate::kinematics::{separated, KinematicsError};
+
+/// The body of an unchecked per-contact entry: `$step` (one of
+/// `contact::dispatch`'s steps) on the chosen instruction set, `Status::Ok` when it
+/// answers true, else `$failed` (evaluated where the entry's arguments and
+/// `FUNCTION` are in scope). Each copy is a function of its own with the
+/// entry's arguments, which the entry only chooses and jumps to: the
+/// failure is handled inside the copy, so the entry's call is its last act.
+macro_rules! chosen_step {
+    ($step:ident($($arg:ident),*) else $failed:expr) => {{
+        step_copy! {
+            #[inline(never)]
+            fn baseline($($arg),*) {
+                if $crate::contact::dispatch::$step::<$crate::vector::Vec3>($($arg),*) {
+                    return Status::Ok;
+                }
+                $failed
+            }
+        }
+        step_copy! {
+            #[cfg(target_arch = "x86_64")]
+            #[target_feature(enable = "avx2")]
+            fn wide($($arg),*) {
+                if $crate::contact::dispatch::$step::<$crate::contact::wide::Y3>($($arg),*) {
+                    return Status::Ok;
+                }
+                $failed
+            }
+        }
+        step_copy! {
+            /// The first call, before the instruction set is found.
+            #[cold]
+            #[inline(never)]
+            fn first($($arg),*) {
+                $crate::simd::Simd::chosen();
+                chosen($($arg),*)
+            }
+        }
+        step_copy! {
+            #[inline(always)]
+            fn chosen($($arg),*) {
+                match $crate::simd::Simd::known() {
+                    None => first($($arg),*),
+                    #[cfg(target_arch = "x86_64")]
+                    Some(simd) if simd != $crate::simd::Simd::Scalar => wide($($arg),*),
+                    Some(_) => baseline($($arg),*),
+                }
+            }
+        }
+        chosen($($arg),*)
+    }};
+}
+
+/// A function with the arguments of the unchecked per-contact entries
+/// (their names as given), returning a status.
+macro_rules! step_copy {
+    ($(#[$attribute:meta])* fn $name:ident($model:ident, $geometry:ident, $length:ident, $radius_i:ident,
+        $radius_j:ident, $v_i:ident, $v_j:ident, $w_i:ident, $w_j:ident, $dt:ident, $state:ident, $out:ident)
+        $body:block) => {
+        $(#[$attribute])*
+        #[allow(clippy::too_many_arguments)]
+        unsafe extern "C" fn $name(
+            $model: *const $crate::contact::VoigtModel,
+            $geometry: *const f64,
+            $length: f64,
+            $radius_i: f64,
+            $radius_j: f64,
+            $v_i: *const f64,
+            $v_j: *const f64,
+            $w_i: *const f64,
+            $w_j: *const f64,
+            $dt: f64,
+            $state: *mut f64,
+            $out: *mut $crate::contact::ContactOutput,
+        ) -> Status $body
+    };
+}
 
 /// One step of a Voigt contact given by its separation `del = x_i - x_j`
 /// (3 doubles) and `rsq = |del|^2`: the normal is `del / sqrt(rsq)` (one
@@ -48,16 +123,13 @@ pub unsafe extern "C" fn granbond_voigt_compute_separation_unchecked(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    if step_separation(
-        model, del, rsq, radius_i, radius_j, v_i, v_j, w_i, w_j, dt, state, out,
-    ) {
-        return Status::Ok;
-    }
-    if !separated(rsq) {
-        // the cause, named (only on the failure path: the step has no branch for it)
-        return coincident(FUNCTION);
-    }
-    non_finite_loads(FUNCTION)
+    chosen_step!(step_separation(model, del, rsq, radius_i, radius_j, v_i, v_j, w_i, w_j, dt, state, out) else {
+        if !separated(rsq) {
+            // the cause, named (only on the failure path: the step has no branch for it)
+            return coincident(FUNCTION);
+        }
+        non_finite_loads(FUNCTION)
+    })
 }
 
 /// Records that the centres coincide: the pair has no axis.
@@ -93,12 +165,9 @@ pub unsafe extern "C" fn granbond_voigt_compute_normal_unchecked(
     state: *mut f64,
     out: *mut ContactOutput,
 ) -> Status {
-    if step_normal(
-        model, n, distance, radius_i, radius_j, v_i, v_j, w_i, w_j, dt, state, out,
-    ) {
-        return Status::Ok;
-    }
-    non_finite_loads(FUNCTION)
+    chosen_step!(step_normal(model, n, distance, radius_i, radius_j, v_i, v_j, w_i, w_j, dt, state, out) else {
+        non_finite_loads(FUNCTION)
+    })
 }
 
 /// The contact frame `granbond_voigt_compute_separation_unchecked` builds
