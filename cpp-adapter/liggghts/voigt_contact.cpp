@@ -465,11 +465,23 @@ void VoigtNormal::normalPart(SurfacesIntersectData &sidata, ForceData &i_forces,
     addLoads(sidata, i_forces, j_forces, force_i, none, none);
 }
 
+// One step of the fused contact on `state` with the frame's fields straight
+// from the engine's data and the core's unchecked entry (the models were
+// validated when built, dt by the engine; a non-finite result is still
+// caught); sets the engine's normal force.
+inline void VoigtNormal::stepFused(SurfacesIntersectData &sidata, double *state, GbContactOutput &out)
+{
+    const EngineContact c = engineContact(sidata);
+    if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
+                                                c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt, state,
+                                                &out) != GB_STATUS_OK)
+        voigtFailed(lmp, sidata, "model voigt");
+    sidata.Fn = fresh(out.normal_force);
+}
+
 // normal + tangential (+ rolling) voigt in one core call, the hot path of
-// voigt x voigt (x voigt): the frame's fields straight from the engine's data
-// and the core's unchecked entry (the models were validated when built, dt by the
-// engine; a non-finite result is still caught). The tangential and rolling
-// voigt models then add nothing themselves.
+// voigt x voigt (x voigt). The tangential and rolling voigt models then add
+// nothing themselves.
 //
 // The common case (rolling voigt too, a real force step, no bond holding
 // the contact) steps the stored state in place; every other case is
@@ -482,13 +494,7 @@ void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_force
         return;
     }
     GbContactOutput out;
-    const EngineContact c = engineContact(sidata);
-    if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
-                                                c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt,
-                                                &sidata.contact_history[share_->tangential_offset],
-                                                &out) != GB_STATUS_OK)
-        voigtFailed(lmp, sidata, "model voigt");
-    sidata.Fn = fresh(out.normal_force);
+    stepFused(sidata, &sidata.contact_history[share_->tangential_offset], out);
 #if defined(__SSE2__)
     if (!sidata.is_wall) {
         addPairLoads(i_forces, j_forces, out);
@@ -498,15 +504,16 @@ void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_force
     addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
 }
 
+// Every case here steps or evaluates a copy of the stored state.
 void VoigtNormal::wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
     // stock rolling models after voigt x voigt read kn, kt, ... (epsd2: kt)
     if (!fusedRolling_) handOn(sidata);
     double *const stored = &sidata.contact_history[share_->tangential_offset];
+    double scratch[GRANBOND_CONTACT_STATE_LEN];
+    GbContactOutput out;
     // the history moves on only in a real force step (not at setup or for a
     // per-contact output pass)
-    double scratch[GRANBOND_CONTACT_STATE_LEN];
-    double *state = stored;
     const bool force = sidata.computeflag && sidata.shearupdate;
     if (force && share_->heldByBond(sidata.contact_history)) {
         // the loads of a fresh contact, in case the bond breaks in this
@@ -516,24 +523,14 @@ void VoigtNormal::wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_
             scratch[k] = 0.0;
         for (int k = 0; k < own; k++)
             stored[k] = 0.0;
-        GbContactOutput out;
-        const EngineContact c = engineContact(sidata);
-        if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
-                                                    c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt,
-                                                    scratch, &out) != GB_STATUS_OK)
-            voigtFailed(lmp, sidata, "model voigt");
-        sidata.Fn = fresh(out.normal_force);
+        stepFused(sidata, scratch, out);
         addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
         return;
     }
-    if (!(force && fusedRolling_)) {
-        // the core writes 6 slots; without rolling voigt only 3 are ours
-        for (int k = 0; k < GRANBOND_CONTACT_STATE_LEN; k++)
-            scratch[k] = (fusedRolling_ || k < 3) ? stored[k] : 0.0;
-        state = scratch;
-    }
-    GbContactOutput out;
-    if (state == scratch && !(sidata.computeflag && sidata.shearupdate)) {
+    // the core writes 6 slots; without rolling voigt only 3 are ours
+    for (int k = 0; k < GRANBOND_CONTACT_STATE_LEN; k++)
+        scratch[k] = (fusedRolling_ || k < 3) ? stored[k] : 0.0;
+    if (!force) {
         // setup or output pass: the loads of the stored state, not advanced
         GbContactFrame frame;
         engineFrame(lmp, sidata, frame);
@@ -544,17 +541,10 @@ void VoigtNormal::wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_
         addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
         return;
     }
-    // the frame's fields straight from the engine: no frame is built here
-    // and read back by the core
-    const EngineContact c = engineContact(sidata);
-    if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
-                                                c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt, state,
-                                                &out) != GB_STATUS_OK)
-        voigtFailed(lmp, sidata, "model voigt");
-    if (state == scratch && sidata.computeflag && sidata.shearupdate)
-        for (int k = 0; k < 3; k++)
-            stored[k] = scratch[k];
-    sidata.Fn = fresh(out.normal_force);
+    // a force step without rolling voigt: the tangential spring moves on
+    stepFused(sidata, scratch, out);
+    for (int k = 0; k < 3; k++)
+        stored[k] = scratch[k];
     addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
 }
 

@@ -191,6 +191,7 @@ private:
     // gamman, gammat of the type pair
     void handOn(SurfacesIntersectData &sidata);
     void normalPart(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    void stepFused(SurfacesIntersectData &sidata, double *state, GbContactOutput &out);
     void wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
     // the cases wholeContact leaves aside: without rolling voigt, setup and
     // output passes, a contact held by a bond
