@@ -21,6 +21,18 @@ __attribute__((always_inline)) inline void prefetchFlaggedRecords(const int *fla
             for (int s = 0; s < size; s += 8) __builtin_prefetch(records + size * jj + s, 1);
 }
 
+
+// The same for the pairs at slots `slots[0 .. count)` of one atom's records.
+__attribute__((always_inline)) inline void prefetchFlaggedSlots(const int *flags, const double *records,
+                                                                 const int *slots, int count, int size, int skip)
+{
+    for (int s = 0; s < count; s++) {
+        const int jj = slots[s];
+        if (flags[jj] && flags[jj] != skip)
+            for (int c = 0; c < size; c += 8) __builtin_prefetch(records + size * jj + c, 1);
+    }
+}
+
 }
 
 #endif

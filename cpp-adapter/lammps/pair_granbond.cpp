@@ -414,6 +414,11 @@ void PairGranbond::compute(int eflag, int vflag)
                                list->firstneigh, fixHistory_->firstflag, fixHistory_->firstvalue, sizeHistory_);
         indexBonds();
     }
+    // the pairs the contact loop visits, while the list stands
+    const bool trimmed = anyBond_;
+    if (trimmed && (update->setupflag || neighbor->ago == 0 || nearBuilt_ != neighbor->ncalls ||
+                    nearFirst_.size() != static_cast<size_t>(list->inum) + 1))
+        trimToReach();
 
     // setup (run/minimize start) evaluates forces without advancing history
     const bool advance = !update->setupflag;
@@ -447,30 +452,37 @@ void PairGranbond::compute(int eflag, int vflag)
     const TypePair *const pairs = pairs_.data();
     const GbBondModel *const *const bonds = bond_.data();
     const char *const createsNow = createsNow_.data();
+    const int *const nearFirst = nearFirst_.data(), *const near = near_.data();
+    bool underBond = false;   // whether any intact bond's contact is stepped in this pass
+    for (size_t tp = 0; tp < pairs_.size(); tp++) underBond = underBond || (advance && pairs[tp].contactUnderBond);
     for (int ii = 0; ii < inum; ii++) {
         // the next atom's records, requested while this atom's pairs are
         // computed (history_prefetch.h)
         if (ii + 1 < inum) {
             const int next = ilist[ii + 1];
-            prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size, kSweptMark);
+            if (trimmed)
+                prefetchFlaggedSlots(firsttouch[next], firsthistory[next], near + nearFirst[ii + 1],
+                                     nearFirst[ii + 2] - nearFirst[ii + 1], size, kSweptMark);
+            else
+                prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size, kSweptMark);
         }
         const int i = ilist[ii];
         const int itype = type[i];
         const double radi = radius[i];
         const double *const xi = x0 + 3 * static_cast<size_t>(i);
         const int *jlist = firstneigh[i];
-        const int jnum = numneigh[i];
         int *touch = firsttouch[i];
         double *allhistory = firsthistory[i];
 
-        for (int jj = 0; jj < jnum; jj++) {
+        const auto pair = [&](int jj) __attribute__((always_inline)) {
+            if (touch[jj] == kSweptMark && !underBond) return;   // most bonds: no lookup
             const int j = jlist[jj] & NEIGHMASK;
             const int jtype = type[j];
             const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype
                                              : static_cast<size_t>(jtype) * ntypes1 + itype;
             // an intact bond: swept above. Its contact's state goes on
             // under it only where the deck asks for it.
-            if (touch[jj] == kSweptMark && !(advance && pairs[tp].contactUnderBond)) continue;
+            if (touch[jj] == kSweptMark && !(advance && pairs[tp].contactUnderBond)) return;
             const double *const xj = x0 + 3 * static_cast<size_t>(j);
             const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
@@ -484,7 +496,7 @@ void PairGranbond::compute(int eflag, int vflag)
                 } else {
                     std::fill(history, history + contactLen, 0.0);
                 }
-                continue;
+                return;
             }
             const GbBondModel *bondModel = bonds[tp];
             // apart, and no bond can form: a pair not marked touching has an
@@ -495,14 +507,14 @@ void PairGranbond::compute(int eflag, int vflag)
                     touch[jj] = 0;
                     std::fill(history, history + size, 0.0);
                 }
-                continue;
+                return;
             }
             if (!bondModel && advance) {   // a plain contact, touching: inline, the loads applied here
                 touch[jj] = 1;
                 GbContactOutput cout;
                 voigtStep(reads, tp, i, j, del, rsq, history, cout);
                 apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newtonPair);
-                continue;
+                return;
             }
             if (bondModel && createsNow[tp] && touch[jj] != kBrokeMark &&
                 granbond_bond_may_create(bondModel, history + layout_.bond, step)) {
@@ -516,11 +528,15 @@ void PairGranbond::compute(int eflag, int vflag)
                     if (counts) created_++;
                     index_[tp].add(i, j, counts, history, &touch[jj]);
                     touch[jj] = kSweptMark;
-                    continue;
+                    return;
                 }
             }
             contactOf(tp, i, j, &touch[jj], history, advance, touching, del, rsq);
-        }
+        };
+        if (trimmed)
+            for (int s = nearFirst[ii]; s < nearFirst[ii + 1]; s++) pair(near[s]);
+        else
+            for (int jj = 0; jj < numneigh[i]; jj++) pair(jj);
     }
 
     // the bonds formed in this pass, advanced in it
@@ -634,6 +650,63 @@ void PairGranbond::indexBonds()
     }
 }
 
+// The pairs of the list just built that the contact loop visits until the
+// next build: those that may touch (per-type radii of the run, as init_one's
+// cutoffs) or bond (the core's creation reach from this step on) before
+// atoms move a skin's worth, and every indexed bond's. The list itself
+// reaches as far as an intact bond may stretch, a reach few pairs ever need
+// for contact. A pair left out that is marked touching is forgotten now,
+// as the loop would on meeting it apart.
+void PairGranbond::trimToReach()
+{
+    const int ntypes1 = atom->ntypes + 1;
+    nearReachSq_.assign(bond_.size(), 0.0);
+    for (int ti = 1; ti < ntypes1; ti++)
+        for (int tj = ti; tj < ntypes1; tj++) {
+            const size_t tp = at(ti, tj);
+            double reach = bodies_[ti].radius_max + bodies_[tj].radius_max;
+            double creates = 0.0;
+            if (bond_[tp] && granbond_bond_creation_reach(bond_[tp], update->ntimestep, &creates) != GB_STATUS_OK)
+                error->one(FLERR, "pair granbond: " + coreReason());
+            reach = std::max(reach, creates) + neighbor->skin;
+            nearReachSq_[tp] = reach > 0.0 ? reach * reach : 0.0;
+        }
+    const int inum = list->inum;
+    const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
+    nearFirst_.resize(static_cast<size_t>(inum) + 1);
+    near_.clear();
+    for (int ii = 0; ii < inum; ii++) {
+        nearFirst_[ii] = static_cast<int>(near_.size());
+        const int i = list->ilist[ii];
+        const int ti = atom->type[i];
+        const double *xi = x0 + 3 * static_cast<size_t>(i);
+        const int *jlist = list->firstneigh[i];
+        int *touch = fixHistory_->firstflag[i];
+        double *allhistory = fixHistory_->firstvalue[i];
+        for (int jj = 0; jj < list->numneigh[i]; jj++) {
+            if (touch[jj] == kSweptMark) {
+                near_.push_back(jj);
+                continue;
+            }
+            const int j = jlist[jj] & NEIGHMASK;
+            const int tj = atom->type[j];
+            const double *xj = x0 + 3 * static_cast<size_t>(j);
+            const double d[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
+            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < nearReachSq_[at(std::min(ti, tj), std::max(ti, tj))]) {
+                near_.push_back(jj);
+                continue;
+            }
+            if (touch[jj]) {
+                touch[jj] = 0;
+                std::fill(allhistory + static_cast<size_t>(sizeHistory_) * jj,
+                          allhistory + static_cast<size_t>(sizeHistory_) * (jj + 1), 0.0);
+            }
+        }
+    }
+    nearFirst_[inum] = static_cast<int>(near_.size());
+    nearBuilt_ = neighbor->ncalls;
+}
+
 // GRANBOND_CHECK_INDEX: the index recounted from the records after a pass
 // (bond_index.h, checkIndex); a mismatch ends the run.
 void PairGranbond::checkIndex()
@@ -650,8 +723,42 @@ void PairGranbond::checkIndex()
             }
         }
     });
-    if (!wrong.empty())
-        error->one(FLERR, "pair granbond: index check at step " + std::to_string(update->ntimestep) + ": " + wrong);
+    const std::string missed = wrong.empty() ? checkNear() : std::string();
+    if (!wrong.empty() || !missed.empty())
+        error->one(FLERR, "pair granbond: index check at step " + std::to_string(update->ntimestep) + ": " + wrong +
+                              missed);
+}
+
+// Every pair of the list the contact loop passed over (trimToReach) is one
+// it would have left alone: unmarked, apart, and out of the creation reach.
+// What is wrong, or an empty string.
+std::string PairGranbond::checkNear() const
+{
+    const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
+    for (int ii = 0; ii < list->inum; ii++) {
+        const int i = list->ilist[ii];
+        const int *jlist = list->firstneigh[i];
+        const int *touch = fixHistory_->firstflag[i];
+        const int *nearOf = near_.data() + nearFirst_[ii], *const nearEnd = near_.data() + nearFirst_[ii + 1];
+        for (int jj = 0; jj < list->numneigh[i]; jj++) {
+            if (nearOf < nearEnd && *nearOf == jj) {
+                nearOf++;
+                continue;
+            }
+            const int j = jlist[jj] & NEIGHMASK;
+            const int ti = atom->type[i], tj = atom->type[j];
+            const GbBondModel *model = bond_[at(std::min(ti, tj), std::max(ti, tj))];
+            double reach = atom->radius[i] + atom->radius[j], creates = 0.0;
+            if (model && granbond_bond_creation_reach(model, update->ntimestep, &creates) == GB_STATUS_OK)
+                reach = std::max(reach, creates);
+            const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+            const double d[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
+            if (touch[jj] || d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach)
+                return "the contact loop passed over atoms " + std::to_string(atom->tag[i]) + " and " +
+                       std::to_string(atom->tag[j]) + ", " + (touch[jj] ? "marked" : "within reach");
+        }
+    }
+    return std::string();
 }
 
 inline bool PairGranbond::countsHere(int i, int j) const

@@ -107,6 +107,8 @@ private:
     void contactOf(size_t tp, int i, int j, int *touch, double *history, bool advance, bool touching,
                    const double *del, double rsq);
     void checkIndex();
+    void trimToReach();
+    std::string checkNear() const;
 
     std::vector<TypePair> pairs_;
     std::vector<GbVoigtModel *> voigt_;
@@ -117,6 +119,12 @@ private:
     GbRecordLayout layout_;                 // the core's record: contact, bond, bond loads
     std::vector<BondIndex> index_;          // per type pair: its intact bonds (bond_index.h)
     std::vector<size_t> formed_;            // per type pair: where this pass's new bonds start in index_
+    // The pairs of the engine's list the contact loop visits while the list
+    // stands (trimToReach): for list position ii, the neighbour slots
+    // near_[nearFirst_[ii] .. nearFirst_[ii + 1]).
+    std::vector<int> nearFirst_, near_;
+    LAMMPS_NS::bigint nearBuilt_ = -1;      // neighbor->ncalls when near_ was built
+    std::vector<double> nearReachSq_;       // per type pair, at near_'s build
     bool checkIndex_;                       // GRANBOND_CHECK_INDEX: recount the index after each pass
     int sizeHistory_;
     bool anyBond_;

@@ -1146,6 +1146,21 @@ int32_t granbond_bond_may_create(const struct GbBondModel *model,
 int32_t granbond_bond_creates_at(const struct GbBondModel *model, int64_t step);
 
 /**
+ * The centre distance within which `granbond_bond_try_create` may create
+ * a bond at `from_step` or any later step, written to `reach`:
+ * `create_distance` while a creation step lies ahead (or bonds are created
+ * every step), 0 after it. An engine that searches its neighbour list for
+ * pairs to bond needs to search no farther (plus what atoms may move
+ * before the list is built again).
+ *
+ * # Safety
+ * Pointers must be null or valid (`model` from `granbond_bond_model_new`).
+ */
+enum GbStatus granbond_bond_creation_reach(const struct GbBondModel *model,
+                                           int64_t from_step,
+                                           double *reach);
+
+/**
  * Creates the bond now, skipping the step rule (for bonds an engine forms
  * by its own rule, such as the spheres of a `bonded yes` clump): only if
  * the pair is not bonded and closer than `create_distance`.

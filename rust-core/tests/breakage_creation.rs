@@ -295,3 +295,43 @@ fn immediate_creation_skips_the_step_rule_but_not_the_others() {
     );
     assert_eq!(s.delta_max, 1e-6);
 }
+
+#[test]
+fn no_bond_forms_beyond_the_creation_reach() {
+    // every pair try_create bonds at a step at or after `from` lies closer
+    // than creation_reach(from); a reach of 0 means no bond forms at all
+    for always in [0, 1] {
+        let m = model(BondParams {
+            create_distance: 2.1 * RADIUS,
+            create_step: 5,
+            create_always: always,
+            ..params()
+        });
+        for from in 0..9 {
+            let reach = m.creation_reach(from);
+            for step in from..12 {
+                for status in [BondStatus::Unbonded, BondStatus::Broken] {
+                    for r in [1.9, 2.0, 2.05, 2.0999, 2.1, 2.2] {
+                        let mut s = BondState {
+                            status: status as i32 as f64,
+                            ..BondState::default()
+                        };
+                        let made = m.try_create(&pair_at(r * RADIUS), step, &mut s).unwrap();
+                        assert!(
+                            !made || r * RADIUS < reach,
+                            "create_always {always}: a bond formed at step {step}, {r} R apart, \
+                             beyond the reach {reach} from step {from}"
+                        );
+                    }
+                }
+            }
+            // and the reach is no wider than needed: at the creation step
+            // itself a pair just inside it bonds
+            if always == 1 || from <= 5 {
+                assert_eq!(reach, 2.1 * RADIUS);
+            } else {
+                assert_eq!(reach, 0.0);
+            }
+        }
+    }
+}

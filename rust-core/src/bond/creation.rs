@@ -26,6 +26,18 @@ pub fn creates_at(params: &BondParams, step: i64) -> bool {
     BondParams::switch(params.create_always) || step == params.create_step
 }
 
+/// The centre distance within which a pair may bond at `from_step` or any
+/// later step: `create_distance` while a creation step lies ahead (or under
+/// `create_always`), 0 after it. Engines that search for pairs to bond need
+/// look no farther.
+pub fn creation_reach(params: &BondParams, from_step: i64) -> f64 {
+    if BondParams::switch(params.create_always) || from_step <= params.create_step {
+        params.create_distance
+    } else {
+        0.0
+    }
+}
+
 /// Bonds formed by an engine's own rule (e.g. the spheres of one clump
 /// inserted with `bonded yes`) skip the step rule but keep the others: an
 /// intact bond is kept, and the centres must be closer than
@@ -39,6 +51,11 @@ impl BondModel {
     /// otherwise).
     pub fn creates_at(&self, step: i64) -> bool {
         creates_at(&self.params, step)
+    }
+
+    /// [`creation_reach`] of this model's parameters.
+    pub fn creation_reach(&self, from_step: i64) -> f64 {
+        creation_reach(&self.params, from_step)
     }
 
     /// Creates the bond in `state` if the rules allow it at `step`; returns

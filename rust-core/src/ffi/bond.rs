@@ -135,6 +135,26 @@ pub unsafe extern "C" fn granbond_bond_creates_at(model: *const BondModel, step:
     model.creates_at(step) as i32
 }
 
+/// The centre distance within which `granbond_bond_try_create` may create
+/// a bond at `from_step` or any later step, written to `reach`:
+/// `create_distance` while a creation step lies ahead (or bonds are created
+/// every step), 0 after it. An engine that searches its neighbour list for
+/// pairs to bond needs to search no farther (plus what atoms may move
+/// before the list is built again).
+///
+/// # Safety
+/// Pointers must be null or valid (`model` from `granbond_bond_model_new`).
+#[entry(model: reference, reach: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_creation_reach(
+    model: *const BondModel,
+    from_step: i64,
+    reach: *mut f64,
+) -> Status {
+    *reach = model.creation_reach(from_step);
+    Ok(())
+}
+
 /// Creates the bond now, skipping the step rule (for bonds an engine forms
 /// by its own rule, such as the spheres of a `bonded yes` clump): only if
 /// the pair is not bonded and closer than `create_distance`.

@@ -63,6 +63,26 @@ int test_bond_create_and_force(void)
     CHECK(granbond_bond_creates_at(NULL, CREATE_STEP) == 0 &&
               granbond_bond_creates_at((const GbBondModel *)((const char *)m + 1), CREATE_STEP) == 0,
           "creates_at: 0 for a null or misaligned model");
+    /* granbond_bond_creation_reach: create_distance up to create_step, 0
+     * after it; with create_always, create_distance at every step */
+    {
+        double reach = -1.0;
+        GbBondParams always = p;
+        GbBondModel *ma = NULL;
+        EXPECT_OK(granbond_bond_creation_reach(m, CREATE_STEP, &reach), "creation_reach at create_step");
+        CHECK(reach == CREATE_DISTANCE, "creation_reach: create_distance up to create_step");
+        EXPECT_OK(granbond_bond_creation_reach(m, CREATE_STEP + 1, &reach), "creation_reach after create_step");
+        CHECK(reach == 0.0, "creation_reach: 0 after create_step");
+        always.create_always = 1;
+        if (new_bond_model(&always, &ma))
+            return 1;
+        EXPECT_OK(granbond_bond_creation_reach(ma, CREATE_STEP + 7, &reach), "creation_reach, create_always");
+        CHECK(reach == CREATE_DISTANCE, "creation_reach: create_distance at any step with create_always");
+        granbond_bond_model_free(ma);
+        CHECK(granbond_bond_creation_reach(NULL, CREATE_STEP, &reach) == GB_STATUS_NULL_POINTER &&
+                  granbond_bond_creation_reach(m, CREATE_STEP, NULL) == GB_STATUS_NULL_POINTER,
+              "creation_reach: a null model or reach is an error");
+    }
     CHECK(granbond_bond_may_create(NULL, state, CREATE_STEP) == 0 && granbond_bond_may_create(m, NULL, CREATE_STEP) == 0 &&
               granbond_bond_may_create(m, (const double *)((const char *)state + 1), CREATE_STEP) == 0,
           "may_create: 0 for a null model, a null or misaligned state");

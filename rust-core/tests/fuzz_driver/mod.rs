@@ -59,7 +59,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 59] = [
+pub const ENTRY_POINTS: [&str; 60] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -69,6 +69,7 @@ pub const ENTRY_POINTS: [&str; 59] = [
     "granbond_bond_try_create",
     "granbond_bond_may_create",
     "granbond_bond_creates_at",
+    "granbond_bond_creation_reach",
     "granbond_bond_create_now",
     "granbond_bond_compute",
     "granbond_bond_compute_indexed",
@@ -1193,6 +1194,23 @@ impl<'t> Session<'t> {
             );
         }
         self.answer_value("granbond_bond_creates_at");
+
+        // the same model and step, read no further from the input so the
+        // corpus keeps its meaning
+        let mut reach = f64::NAN;
+        // SAFETY: null or from granbond_bond_model_new; `reach` is valid.
+        let status = unsafe { fb::granbond_bond_creation_reach(m, step, &mut reach) };
+        if self.answer("granbond_bond_creation_reach", status) {
+            assert!(
+                reach >= 0.0,
+                "granbond_bond_creation_reach at step {step}: {reach}"
+            );
+        } else {
+            assert!(
+                m.is_null(),
+                "granbond_bond_creation_reach refused a valid model: {status:?}"
+            );
+        }
     }
 
     fn bond_compute(&mut self, input: &mut Input) {
