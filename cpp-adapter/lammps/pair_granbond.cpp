@@ -431,7 +431,10 @@ void PairGranbond::compute(int eflag, int vflag)
     for (BondIndex &b : index_)
         if (b.size()) {
             sweep(b, 0, advance, tally);
-            for (size_t k : b.broken) *b.flags[k] = kBrokeMark;
+            for (size_t k : b.broken) {
+                *b.flags[k] = kBrokeMark;
+                if (trimmed) nearLive_[nearAt_[b.pairs[2 * k]]]++;   // a contact from now on
+            }
             b.keepIntact();
         }
     for (size_t tp = 0; tp < index_.size(); tp++) formed_[tp] = index_[tp].size();
@@ -455,17 +458,22 @@ void PairGranbond::compute(int eflag, int vflag)
     const int *const nearFirst = nearFirst_.data(), *const near = near_.data();
     bool underBond = false;   // whether any intact bond's contact is stepped in this pass
     for (size_t tp = 0; tp < pairs_.size(); tp++) underBond = underBond || (advance && pairs[tp].contactUnderBond);
+    int *const live = nearLive_.data();
     for (int ii = 0; ii < inum; ii++) {
         // the next atom's records, requested while this atom's pairs are
         // computed (history_prefetch.h)
         if (ii + 1 < inum) {
             const int next = ilist[ii + 1];
-            if (trimmed)
-                prefetchFlaggedSlots(firsttouch[next], firsthistory[next], near + nearFirst[ii + 1],
-                                     nearFirst[ii + 2] - nearFirst[ii + 1], size, kSweptMark);
-            else
+            if (trimmed) {
+                if (live[ii + 1] || underBond)
+                    prefetchFlaggedSlots(firsttouch[next], firsthistory[next], near + nearFirst[ii + 1],
+                                         nearFirst[ii + 2] - nearFirst[ii + 1], size, kSweptMark);
+            } else {
                 prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size, kSweptMark);
+            }
         }
+        // an atom whose visited pairs are all intact bonds: nothing to do
+        if (trimmed && !live[ii] && !underBond) continue;
         const int i = ilist[ii];
         const int itype = type[i];
         const double radi = radius[i];
@@ -528,6 +536,7 @@ void PairGranbond::compute(int eflag, int vflag)
                     if (counts) created_++;
                     index_[tp].add(i, j, counts, history, &touch[jj]);
                     touch[jj] = kSweptMark;
+                    if (trimmed) live[ii]--;
                     return;
                 }
             }
@@ -551,6 +560,7 @@ void PairGranbond::compute(int eflag, int vflag)
             const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
             const double radsum = radius[i] + radius[j];
             *b.flags[k] = 1;
+            if (trimmed) nearLive_[nearAt_[i]]++;
             contactOf(tp, i, j, b.flags[k], b.records[k], advance, rsq < radsum * radsum, del, rsq);
         }
         b.keepIntact();
@@ -675,9 +685,12 @@ void PairGranbond::trimToReach()
     const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
     nearFirst_.resize(static_cast<size_t>(inum) + 1);
     near_.clear();
+    nearLive_.assign(static_cast<size_t>(inum), 0);
+    nearAt_.assign(static_cast<size_t>(atom->nlocal), -1);
     for (int ii = 0; ii < inum; ii++) {
         nearFirst_[ii] = static_cast<int>(near_.size());
         const int i = list->ilist[ii];
+        nearAt_[i] = ii;
         const int ti = atom->type[i];
         const double *xi = x0 + 3 * static_cast<size_t>(i);
         const int *jlist = list->firstneigh[i];
@@ -694,6 +707,7 @@ void PairGranbond::trimToReach()
             const double d[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < nearReachSq_[at(std::min(ti, tj), std::max(ti, tj))]) {
                 near_.push_back(jj);
+                nearLive_[ii]++;
                 continue;
             }
             if (touch[jj]) {
@@ -730,7 +744,9 @@ void PairGranbond::checkIndex()
 }
 
 // Every pair of the list the contact loop passed over (trimToReach) is one
-// it would have left alone: unmarked, apart, and out of the creation reach.
+// it would have left alone: unmarked, apart, and out of the creation reach;
+// and each atom's count of visited pairs that are not intact bonds (an
+// atom without any is passed over) is right.
 // What is wrong, or an empty string.
 std::string PairGranbond::checkNear() const
 {
@@ -740,6 +756,12 @@ std::string PairGranbond::checkNear() const
         const int *jlist = list->firstneigh[i];
         const int *touch = fixHistory_->firstflag[i];
         const int *nearOf = near_.data() + nearFirst_[ii], *const nearEnd = near_.data() + nearFirst_[ii + 1];
+        int live = 0;
+        for (const int *s = nearOf; s < nearEnd; s++) live += touch[*s] != kSweptMark;
+        if (live != nearLive_[ii])
+            return "atom " + std::to_string(atom->tag[i]) + " has " + std::to_string(live) +
+                   " visited pairs that are not intact bonds, the contact loop counts " +
+                   std::to_string(nearLive_[ii]);
         for (int jj = 0; jj < list->numneigh[i]; jj++) {
             if (nearOf < nearEnd && *nearOf == jj) {
                 nearOf++;

@@ -125,6 +125,11 @@ private:
     std::vector<int> nearFirst_, near_;
     LAMMPS_NS::bigint nearBuilt_ = -1;      // neighbor->ncalls when near_ was built
     std::vector<double> nearReachSq_;       // per type pair, at near_'s build
+    // per list position: how many of the atom's visited pairs are not
+    // intact bonds (contacts, pairs that may bond, bonds broken since the
+    // build); per owned atom: its list position
+    std::vector<int> nearLive_;
+    std::vector<int> nearAt_;
     bool checkIndex_;                       // GRANBOND_CHECK_INDEX: recount the index after each pass
     int sizeHistory_;
     bool anyBond_;
