@@ -33,6 +33,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 using namespace LAMMPS_NS;
 
@@ -459,94 +460,103 @@ void PairGranbond::compute(int eflag, int vflag)
     bool underBond = false;   // whether any intact bond's contact is stepped in this pass
     for (size_t tp = 0; tp < pairs_.size(); tp++) underBond = underBond || (advance && pairs[tp].contactUnderBond);
     int *const live = nearLive_.data();
-    for (int ii = 0; ii < inum; ii++) {
-        // the next atom's records, requested while this atom's pairs are
-        // computed (history_prefetch.h)
-        if (ii + 1 < inum) {
-            const int next = ilist[ii + 1];
-            if (trimmed) {
-                if (live[ii + 1] || underBond)
-                    prefetchFlaggedSlots(firsttouch[next], firsthistory[next], near + nearFirst[ii + 1],
-                                         nearFirst[ii + 2] - nearFirst[ii + 1], size, kSweptMark);
-            } else {
-                prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size, kSweptMark);
-            }
-        }
-        // an atom whose visited pairs are all intact bonds: nothing to do
-        if (trimmed && !live[ii] && !underBond) continue;
-        const int i = ilist[ii];
-        const int itype = type[i];
-        const double radi = radius[i];
-        const double *const xi = x0 + 3 * static_cast<size_t>(i);
-        const int *jlist = firstneigh[i];
-        int *touch = firsttouch[i];
-        double *allhistory = firsthistory[i];
-
-        const auto pair = [&](int jj) __attribute__((always_inline)) {
-            if (touch[jj] == kSweptMark && !underBond) return;   // most bonds: no lookup
-            const int j = jlist[jj] & NEIGHMASK;
-            const int jtype = type[j];
-            const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype
-                                             : static_cast<size_t>(jtype) * ntypes1 + itype;
-            // an intact bond: swept above. Its contact's state goes on
-            // under it only where the deck asks for it.
-            if (touch[jj] == kSweptMark && !(advance && pairs[tp].contactUnderBond)) return;
-            const double *const xj = x0 + 3 * static_cast<size_t>(j);
-            const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
-            const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-            const double radsum = radi + radius[j];
-            const bool touching = rsq < radsum * radsum;
-            double *history = &allhistory[size * jj];
-            if (touch[jj] == kSweptMark) {
-                if (touching) {
-                    GbContactOutput unused;
-                    voigtStep(reads, tp, i, j, del, rsq, history, unused);
+    // one loop compiled for each kind of list: the whole list (no bonds) or
+    // the pairs kept within reach
+    const auto atoms = [&](auto trimmedKind) {
+        constexpr bool kept = decltype(trimmedKind)::value;
+        for (int ii = 0; ii < inum; ii++) {
+            // the next atom's records, requested while this atom's pairs are
+            // computed (history_prefetch.h)
+            if (ii + 1 < inum) {
+                const int next = ilist[ii + 1];
+                if (kept) {
+                    if (live[ii + 1] || underBond)
+                        prefetchFlaggedSlots(firsttouch[next], firsthistory[next], near + nearFirst[ii + 1],
+                                             nearFirst[ii + 2] - nearFirst[ii + 1], size, kSweptMark);
                 } else {
-                    std::fill(history, history + contactLen, 0.0);
+                    prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size, kSweptMark);
                 }
-                return;
             }
-            const GbBondModel *bondModel = bonds[tp];
-            // apart, and no bond can form: a pair not marked touching has an
-            // all-zero record (every path that clears the mark zeroes it),
-            // so it is not read
-            if (!touching && !(bondModel && createsNow[tp])) {
-                if (touch[jj]) {
-                    touch[jj] = 0;
-                    std::fill(history, history + size, 0.0);
-                }
-                return;
-            }
-            if (!bondModel && advance) {   // a plain contact, touching: inline, the loads applied here
-                touch[jj] = 1;
-                GbContactOutput cout;
-                voigtStep(reads, tp, i, j, del, rsq, history, cout);
-                apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newtonPair);
-                return;
-            }
-            if (bondModel && createsNow[tp] && touch[jj] != kBrokeMark &&
-                granbond_bond_may_create(bondModel, history + layout_.bond, step)) {
-                GbPairKinematics k;
-                pairKinematics(i, j, k);
-                int32_t created = 0;
-                if (granbond_bond_try_create(bondModel, &k, step, history + layout_.bond, &created) != GB_STATUS_OK)
-                    failPair(i, j, "the bond's creation");
-                if (created) {
-                    const bool counts = countsHere(i, j);
-                    if (counts) created_++;
-                    index_[tp].add(i, j, counts, history, &touch[jj]);
-                    touch[jj] = kSweptMark;
-                    if (trimmed) live[ii]--;
+            // an atom whose visited pairs are all intact bonds: nothing to do
+            if (kept && !live[ii] && !underBond) continue;
+            const int i = ilist[ii];
+            const int itype = type[i];
+            const double radi = radius[i];
+            const double *const xi = x0 + 3 * static_cast<size_t>(i);
+            const int *jlist = firstneigh[i];
+            int *touch = firsttouch[i];
+            double *allhistory = firsthistory[i];
+
+            const auto pair = [&](int jj) __attribute__((always_inline)) {
+                if (kept && touch[jj] == kSweptMark && !underBond) return;   // most bonds: no lookup
+                const int j = jlist[jj] & NEIGHMASK;
+                const int jtype = type[j];
+                const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype
+                                                 : static_cast<size_t>(jtype) * ntypes1 + itype;
+                // an intact bond: swept above. Its contact's state goes on
+                // under it only where the deck asks for it.
+                if (touch[jj] == kSweptMark && !(advance && pairs[tp].contactUnderBond)) return;
+                const double *const xj = x0 + 3 * static_cast<size_t>(j);
+                const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
+                const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+                const double radsum = radi + radius[j];
+                const bool touching = rsq < radsum * radsum;
+                double *history = &allhistory[size * jj];
+                if (touch[jj] == kSweptMark) {
+                    if (touching) {
+                        GbContactOutput unused;
+                        voigtStep(reads, tp, i, j, del, rsq, history, unused);
+                    } else {
+                        std::fill(history, history + contactLen, 0.0);
+                    }
                     return;
                 }
-            }
-            contactOf(tp, i, j, &touch[jj], history, advance, touching, del, rsq);
-        };
-        if (trimmed)
-            for (int s = nearFirst[ii]; s < nearFirst[ii + 1]; s++) pair(near[s]);
-        else
-            for (int jj = 0; jj < numneigh[i]; jj++) pair(jj);
-    }
+                const GbBondModel *bondModel = bonds[tp];
+                // apart, and no bond can form: a pair not marked touching has an
+                // all-zero record (every path that clears the mark zeroes it),
+                // so it is not read
+                if (!touching && !(bondModel && createsNow[tp])) {
+                    if (touch[jj]) {
+                        touch[jj] = 0;
+                        std::fill(history, history + size, 0.0);
+                    }
+                    return;
+                }
+                if (!bondModel && advance) {   // a plain contact, touching: inline, the loads applied here
+                    touch[jj] = 1;
+                    GbContactOutput cout;
+                    voigtStep(reads, tp, i, j, del, rsq, history, cout);
+                    apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newtonPair);
+                    return;
+                }
+                if (bondModel && createsNow[tp] && touch[jj] != kBrokeMark &&
+                    granbond_bond_may_create(bondModel, history + layout_.bond, step)) {
+                    GbPairKinematics k;
+                    pairKinematics(i, j, k);
+                    int32_t created = 0;
+                    if (granbond_bond_try_create(bondModel, &k, step, history + layout_.bond, &created) != GB_STATUS_OK)
+                        failPair(i, j, "the bond's creation");
+                    if (created) {
+                        const bool counts = countsHere(i, j);
+                        if (counts) created_++;
+                        index_[tp].add(i, j, counts, history, &touch[jj]);
+                        touch[jj] = kSweptMark;
+                        if (kept) live[ii]--;
+                        return;
+                    }
+                }
+                contactOf(tp, i, j, &touch[jj], history, advance, touching, del, rsq);
+            };
+            if (kept)
+                for (int s = nearFirst[ii]; s < nearFirst[ii + 1]; s++) pair(near[s]);
+            else
+                for (int jj = 0, jnum = numneigh[i]; jj < jnum; jj++) pair(jj);
+        }
+    };
+    if (trimmed)
+        atoms(std::true_type());
+    else
+        atoms(std::false_type());
 
     // the bonds formed in this pass, advanced in it
     for (size_t tp = 0; tp < index_.size(); tp++) {
