@@ -27,6 +27,9 @@
 #include "neigh_request.h"
 #endif
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -315,24 +318,42 @@ void PairGranbond::failPair(int i, int j, const char *what)
 // of 3 doubles per atom (memory->create), and indexing them directly spares
 // the load of a row pointer, which a core call in between forces the
 // compiler to repeat, ahead of every update.
+namespace {
+
+// to[0..2] += from[0..2] (or -=): the first two components in one 16-byte
+// operation, each lane the scalar operation, so the sums are the same bits.
+inline void add3(double *to, const double *from)
+{
+#if defined(__SSE2__)
+    _mm_storeu_pd(to, _mm_add_pd(_mm_loadu_pd(to), _mm_loadu_pd(from)));
+#else
+    to[0] += from[0];
+    to[1] += from[1];
+#endif
+    to[2] += from[2];
+}
+
+inline void subtract3(double *to, const double *from)
+{
+#if defined(__SSE2__)
+    _mm_storeu_pd(to, _mm_sub_pd(_mm_loadu_pd(to), _mm_loadu_pd(from)));
+#else
+    to[0] -= from[0];
+    to[1] -= from[1];
+#endif
+    to[2] -= from[2];
+}
+
+}
+
 inline void PairGranbond::apply(double *f, double *torque, int i, int j, const double *fi, const double *ti,
                                 const double *tj, const double *del, int nlocal, int newton_pair)
 {
-    double *const fI = f + 3 * static_cast<size_t>(i), *const tI = torque + 3 * static_cast<size_t>(i);
-    fI[0] += fi[0];
-    fI[1] += fi[1];
-    fI[2] += fi[2];
-    tI[0] += ti[0];
-    tI[1] += ti[1];
-    tI[2] += ti[2];
+    add3(f + 3 * static_cast<size_t>(i), fi);
+    add3(torque + 3 * static_cast<size_t>(i), ti);
     if (newton_pair || j < nlocal) {
-        double *const fJ = f + 3 * static_cast<size_t>(j), *const tJ = torque + 3 * static_cast<size_t>(j);
-        fJ[0] -= fi[0];
-        fJ[1] -= fi[1];
-        fJ[2] -= fi[2];
-        tJ[0] += tj[0];
-        tJ[1] += tj[1];
-        tJ[2] += tj[2];
+        subtract3(f + 3 * static_cast<size_t>(j), fi);
+        add3(torque + 3 * static_cast<size_t>(j), tj);
     }
     if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fi[0], fi[1], fi[2], del[0], del[1], del[2]);
 }
@@ -604,10 +625,12 @@ void PairGranbond::sweep(BondIndex &b, size_t first, bool advance, GbSweepTally 
     const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
     if (b.sweep(atom, first, b.size(), advance, update->dt, tally, bad, [&](size_t k, const GbBondOutput &out) {
             const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
-            double del[3] = {0.0, 0.0, 0.0};
-            if (evflag)
-                for (int c = 0; c < 3; c++)
-                    del[c] = x0[3 * static_cast<size_t>(i) + c] - x0[3 * static_cast<size_t>(j) + c];
+            if (!evflag) {   // the separation is only for the virial
+                apply(f0, t0, i, j, out.force_i, out.torque_i, out.torque_j, nullptr, nlocal, newton_pair);
+                return;
+            }
+            const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+            const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             apply(f0, t0, i, j, out.force_i, out.torque_i, out.torque_j, del, nlocal, newton_pair);
         }) != GB_STATUS_OK)
         failPair(b.pairs[2 * bad], b.pairs[2 * bad + 1], "the bond");

@@ -78,6 +78,8 @@ private:
     // Ends the run on this rank: `what` of atoms i and j failed, with the
     // core's reason.
     [[noreturn]] void failPair(int i, int j, const char *what);
+    // Adds a pair's loads to atoms i and j as LAMMPS's pair styles do;
+    // `del` (x_i - x_j) is read only when the virial is tallied (evflag).
     void apply(double *f, double *torque, int i, int j, const double *fi, const double *ti, const double *tj,
                const double *del, int nlocal, int newton_pair);
     size_t at(int i, int j) const;
