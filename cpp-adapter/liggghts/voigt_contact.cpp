@@ -341,6 +341,7 @@ VoigtNormal::VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup 
     fused_(false),
     fusedRolling_(false),
     pairInPlace_(false),
+    passInPlace_(false),
     pairState_(0),
     pairModels_(0),
     pairStride_(0),
@@ -376,6 +377,7 @@ void VoigtNormal::connectToProperties(::PropertyRegistry &registry)
     fused_ = share_->fused();   // every sub-model exists by now
     fusedRolling_ = share_->fusedRolling();
     pairInPlace_ = fusedRolling_ && !wall_ && !share_->bondMayHold();
+    passInPlace_ = false;
     pairState_ = share_->tangential_offset;
     checkPending_ = true;
 }

@@ -236,10 +236,12 @@ public:
             normalPart(sidata, i_forces, j_forces);
     }
     void surfacesClose(SurfacesCloseData &, ForceData &, ForceData &) {}
-    // Only the pair style calls it, once before each pass over its contacts.
-    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
+    // Only the pair style calls it, once before each pass over its contacts,
+    // with the pass's computeflag and shearupdate already set.
+    void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
     {
         if (wall_) return;
+        passInPlace_ = pairInPlace_ && sidata.computeflag && sidata.shearupdate;
         if (checkPending_ || atom->natoms != checkedNatoms_) checkTimestep();
         // later sub-models rebuild the fused table when they connect, and a
         // run may change dt: both are fixed for the pass
@@ -247,12 +249,13 @@ public:
         pairStride_ = share_->fusedTable().ntypes() + 1;
         pairDt_ = update->dt;
     }
-    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) { passInPlace_ = false; }
 
-    // A pair in a force pass with the whole contact's state stored in place
-    // (rolling voigt too, no bond that may hold the contact): stepInPlace
-    // may take it, and the tangential and rolling models add nothing.
-    bool pairInPlace() const { return pairInPlace_; }
+    // The pair style's current pass is a force pass and the whole contact's
+    // state is stored in place (rolling voigt too, no bond that may hold
+    // the contact): stepInPlace takes each of its pairs, and the tangential
+    // and rolling models add nothing. Always false for a wall.
+    bool passInPlace() const { return passInPlace_; }
     // wholeContact's common case for a pair, inline in the engine's pair
     // loop: the one core call on the engine's data and the stored state,
     // the loads added in pairs.
@@ -296,6 +299,7 @@ private:
     int stride_;
     bool fused_, fusedRolling_;   // share_->fused(), fusedRolling(), known once connected
     bool pairInPlace_;            // known once connected
+    bool passInPlace_;            // pairInPlace_ in a force pass of the pair style
     int pairState_;               // history offset of the fused state
     // the fused table and dt as of the pair style's current pass
     const GbVoigtModel *const *pairModels_;

@@ -37,7 +37,7 @@ GRANBOND_VOIGT_SLOT(RollingModel, ROLLING_VOIGT, VoigtRolling)
 // velocities the default surface model derives (vn, wr, vtr, cri, crj), so
 // only its overlap is set, by the same expression. Setup and per-contact
 // output passes, which tools may inspect, get the full surface model. A
-// pair the normal model steps in place (pairInPlace) skips the sub-models'
+// pair the normal model steps in place (passInPlace) skips the sub-models'
 // calls, which would only set their flags and step aside; always inline, as
 // the engine's wall loop would otherwise call it rather than inline it.
 #define GRANBOND_VOIGT_FUSED_INTERSECT(Rolling, inPlace)                                                       \
@@ -46,15 +46,16 @@ GRANBOND_VOIGT_SLOT(RollingModel, ROLLING_VOIGT, VoigtRolling)
     ContactModel<GranStyle<NORMAL_VOIGT, TANGENTIAL_VOIGT, COHESION_OFF, Rolling, SURFACE_DEFAULT> >::            \
         surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)            \
     {                                                                                                          \
-        if (sidata.computeflag && sidata.shearupdate) {                                                        \
+        if (inPlace && normalModel.passInPlace()) {                                                            \
             sidata.deltan = sidata.radsum - sidata.r;                                                          \
-            if (inPlace && normalModel.pairInPlace()) {                                                        \
-                if (sidata.contact_flags)                                                                      \
-                    *sidata.contact_flags |= CONTACT_NORMAL_MODEL | CONTACT_TANGENTIAL_MODEL | CONTACT_ROLLING_MODEL; \
-                normalModel.stepInPlace(sidata, i_forces, j_forces);                                           \
-                return;                                                                                        \
-            }                                                                                                  \
-        } else                                                                                                 \
+            if (sidata.contact_flags)                                                                          \
+                *sidata.contact_flags |= CONTACT_NORMAL_MODEL | CONTACT_TANGENTIAL_MODEL | CONTACT_ROLLING_MODEL; \
+            normalModel.stepInPlace(sidata, i_forces, j_forces);                                               \
+            return;                                                                                            \
+        }                                                                                                      \
+        if (sidata.computeflag && sidata.shearupdate)                                                          \
+            sidata.deltan = sidata.radsum - sidata.r;                                                          \
+        else                                                                                                   \
             surfaceModel.surfacesIntersect(sidata, i_forces, j_forces);                                        \
         normalModel.surfacesIntersect(sidata, i_forces, j_forces);                                             \
         cohesionModel.surfacesIntersect(sidata, i_forces, j_forces);                                           \
