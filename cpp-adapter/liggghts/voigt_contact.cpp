@@ -11,9 +11,6 @@
 #include <map>
 #include <string>
 #include <utility>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 using namespace LIGGGHTS::ContactModels;
 
@@ -246,30 +243,6 @@ void VoigtContactShare::rebuild(LAMMPS_NS::Error *error)
 
 // ------------------------------------------------------------ translation
 
-// Records handed between the engine, this adapter and the core (the
-// engine's contact data, the frame, the core's output, the engine's force
-// accumulators) are written just before they are read, and the stores are
-// still in flight. A load that spans two stores cannot be served from the
-// store buffer (store-to-load forwarding fails; it waits until the stores
-// reach the cache), and compilers pair neighbouring doubles into 16-byte
-// loads at will (the engine resets ForceData in 16-byte stores at offsets
-// 0, 16, 32: a paired load of delta_torque[0..1] at 24 spans two of them).
-// So this code reads such records one double at a time, as the core reads
-// the frame: each load is served by the store that wrote it, whatever
-// widths either compiler chose; only where both layouts are known does it
-// read pairs (addPairLoads).
-static inline double fresh(const double &x) { return *static_cast<const volatile double *>(&x); }
-static inline void addTo(double &x, double d)
-{
-    volatile double &v = x;
-    v = v + d;
-}
-static inline void subtractFrom(double &x, double d)
-{
-    volatile double &v = x;
-    v = v - d;
-}
-
 // The engine's description of a touching contact as the core takes it:
 // the engine's unit normal en (x_i - x_j over its length), the centre
 // distance and the radii; for a wall (radius_j = 0) the centre's distance
@@ -314,31 +287,6 @@ static inline void engineFrame(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectDa
         GB_STATUS_OK)
         voigtFailed(lmp, d, "model voigt");
 }
-
-// The loads of a pair added to the engine's accumulators of i and j, as
-// addLoads does, in 16-byte pairs of doubles: ForceData is delta_F and
-// delta_torque side by side, reset by the engine in 16-byte stores at
-// offsets 0, 16 and 32, and the core's output is force_i, torque_i and
-// torque_j side by side, written so that each pair read below (offsets 0,
-// 16, 32 and 56) lies within one of its stores. Each load is
-// then served by one store, and each lane is the scalar operation of
-// addLoads: delta_F[2] - force_i[2] as delta_F[2] + (-force_i[2]), the same
-// IEEE operation.
-#if defined(__SSE2__)
-static inline void addPairLoads(ForceData &i_forces, ForceData &j_forces, const GbContactOutput &out)
-{
-    static_assert(offsetof(ForceData, delta_torque) == 3 * sizeof(double), "ForceData: delta_F, delta_torque");
-    static_assert(offsetof(GbContactOutput, torque_i) == 3 * sizeof(double) &&
-                      offsetof(GbContactOutput, torque_j) == 6 * sizeof(double),
-                  "GbContactOutput: force_i, torque_i, torque_j");
-    const double *const o = out.force_i;
-    double *const fi = i_forces.delta_F, *const fj = j_forces.delta_F;
-    for (int k = 0; k < 6; k += 2) _mm_storeu_pd(fi + k, _mm_add_pd(_mm_loadu_pd(fi + k), _mm_loadu_pd(o + k)));
-    _mm_storeu_pd(fj, _mm_sub_pd(_mm_loadu_pd(fj), _mm_loadu_pd(o)));
-    _mm_storeu_pd(fj + 2, _mm_add_pd(_mm_loadu_pd(fj + 2), _mm_set_pd(o[6], -o[2])));
-    _mm_storeu_pd(fj + 4, _mm_add_pd(_mm_loadu_pd(fj + 4), _mm_loadu_pd(o + 7)));
-}
-#endif
 
 // Adds a force on i (and its opposite on j for a pair) and the torques.
 static inline void addLoads(const SurfacesIntersectData &d, ForceData &i_forces, ForceData &j_forces,
@@ -392,6 +340,12 @@ VoigtNormal::VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup 
     stride_(0),
     fused_(false),
     fusedRolling_(false),
+    pairInPlace_(false),
+    passInPlace_(false),
+    pairState_(0),
+    pairModels_(0),
+    pairStride_(0),
+    pairDt_(0.0),
     wall_(cmb->is_wall()),
     checkPending_(true),
     checkedNatoms_(-1)
@@ -422,6 +376,9 @@ void VoigtNormal::connectToProperties(::PropertyRegistry &registry)
     share_->contribute(error, caller, ntypes, deck_);
     fused_ = share_->fused();   // every sub-model exists by now
     fusedRolling_ = share_->fusedRolling();
+    pairInPlace_ = fusedRolling_ && !wall_ && !share_->bondMayHold();
+    passInPlace_ = false;
+    pairState_ = share_->tangential_offset;
     checkPending_ = true;
 }
 

@@ -22,8 +22,12 @@
 #include "granbond.h"
 #include "run_checks.h"
 
+#include <cstddef>
 #include <deque>
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace granbond {
 namespace liggghts {
@@ -125,8 +129,10 @@ public:
     // at zero: the contact starts afresh when the bond breaks.
     bool heldByBond(const double *history) const
     {
-        return bondStatus_ >= 0 && !contactUnderBond_ && history && history[bondStatus_] == GB_BOND_STATUS_INTACT;
+        return bondMayHold() && history && history[bondStatus_] == GB_BOND_STATUS_INTACT;
     }
+    // Known once the settings are read and every sub-model is constructed.
+    bool bondMayHold() const { return bondStatus_ >= 0 && !contactUnderBond_; }
 
     GbContactFrame frame;
     bool normal;               // model voigt present
@@ -146,6 +152,63 @@ private:
     std::vector<GbVoigtParams> params_;
     VoigtModelTable table_;
 };
+
+// Records handed between the engine, this adapter and the core (the
+// engine's contact data, the frame, the core's output, the engine's force
+// accumulators) are written just before they are read, and the stores are
+// still in flight. A load that spans two stores cannot be served from the
+// store buffer (store-to-load forwarding fails; it waits until the stores
+// reach the cache), and compilers pair neighbouring doubles into 16-byte
+// loads at will (the engine resets ForceData in 16-byte stores at offsets
+// 0, 16, 32: a paired load of delta_torque[0..1] at 24 spans two of them).
+// So this code reads such records one double at a time, as the core reads
+// the frame: each load is served by the store that wrote it, whatever
+// widths either compiler chose; only where both layouts are known does it
+// read pairs (addPairLoads).
+inline double fresh(const double &x) { return *static_cast<const volatile double *>(&x); }
+inline void addTo(double &x, double d)
+{
+    volatile double &v = x;
+    v = v + d;
+}
+inline void subtractFrom(double &x, double d)
+{
+    volatile double &v = x;
+    v = v - d;
+}
+
+// The loads of a pair added to the engine's accumulators of i and j, as
+// addLoads does, in 16-byte pairs of doubles: ForceData is delta_F and
+// delta_torque side by side, reset by the engine in 16-byte stores at
+// offsets 0, 16 and 32, and the core's output is force_i, torque_i and
+// torque_j side by side, written so that each pair read below (offsets 0,
+// 16, 32 and 56) lies within one of its stores. Each load is
+// then served by one store, and each lane is the scalar operation of
+// addLoads: delta_F[2] - force_i[2] as delta_F[2] + (-force_i[2]), the same
+// IEEE operation.
+inline void addPairLoads(ForceData &i_forces, ForceData &j_forces, const GbContactOutput &out)
+{
+#if defined(__SSE2__)
+    static_assert(offsetof(ForceData, delta_torque) == 3 * sizeof(double), "ForceData: delta_F, delta_torque");
+    static_assert(offsetof(GbContactOutput, torque_i) == 3 * sizeof(double) &&
+                      offsetof(GbContactOutput, torque_j) == 6 * sizeof(double),
+                  "GbContactOutput: force_i, torque_i, torque_j");
+    const double *const o = out.force_i;
+    double *const fi = i_forces.delta_F, *const fj = j_forces.delta_F;
+    for (int k = 0; k < 6; k += 2) _mm_storeu_pd(fi + k, _mm_add_pd(_mm_loadu_pd(fi + k), _mm_loadu_pd(o + k)));
+    _mm_storeu_pd(fj, _mm_sub_pd(_mm_loadu_pd(fj), _mm_loadu_pd(o)));
+    _mm_storeu_pd(fj + 2, _mm_add_pd(_mm_loadu_pd(fj + 2), _mm_set_pd(o[6], -o[2])));
+    _mm_storeu_pd(fj + 4, _mm_add_pd(_mm_loadu_pd(fj + 4), _mm_loadu_pd(o + 7)));
+#else
+    for (int k = 0; k < 3; k++) {
+        const double f = fresh(out.force_i[k]);
+        addTo(i_forces.delta_F[k], f);
+        subtractFrom(j_forces.delta_F[k], f);
+        addTo(i_forces.delta_torque[k], fresh(out.torque_i[k]));
+        addTo(j_forces.delta_torque[k], fresh(out.torque_j[k]));
+    }
+#endif
+}
 
 // Ends the run on this rank with the core's message.
 void voigtFailed(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const char *who);
@@ -173,11 +236,40 @@ public:
             normalPart(sidata, i_forces, j_forces);
     }
     void surfacesClose(SurfacesCloseData &, ForceData &, ForceData &) {}
-    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
+    // Only the pair style calls it, once before each pass over its contacts,
+    // with the pass's computeflag and shearupdate already set.
+    void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
     {
-        if (!wall_ && (checkPending_ || atom->natoms != checkedNatoms_)) checkTimestep();
+        if (wall_) return;
+        passInPlace_ = pairInPlace_ && sidata.computeflag && sidata.shearupdate;
+        if (checkPending_ || atom->natoms != checkedNatoms_) checkTimestep();
+        // later sub-models rebuild the fused table when they connect, and a
+        // run may change dt: both are fixed for the pass
+        pairModels_ = share_->fusedTable().data();
+        pairStride_ = share_->fusedTable().ntypes() + 1;
+        pairDt_ = update->dt;
     }
-    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) { passInPlace_ = false; }
+
+    // The pair style's current pass is a force pass and the whole contact's
+    // state is stored in place (rolling voigt too, no bond that may hold
+    // the contact): stepInPlace takes each of its pairs, and the tangential
+    // and rolling models add nothing. Always false for a wall.
+    bool passInPlace() const { return passInPlace_; }
+    // wholeContact's common case for a pair, inline in the engine's pair
+    // loop: the one core call on the engine's data and the stored state,
+    // the loads added in pairs.
+    void stepInPlace(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        GbContactOutput out;
+        if (granbond_voigt_compute_normal_unchecked(pairModels_[sidata.itype * pairStride_ + sidata.jtype], sidata.en,
+                                                    sidata.r, sidata.radi, sidata.radj, sidata.v_i, sidata.v_j,
+                                                    sidata.omega_i, sidata.omega_j, pairDt_,
+                                                    &sidata.contact_history[pairState_], &out) != GB_STATUS_OK)
+            voigtFailed(lmp, sidata, "model voigt");
+        sidata.Fn = fresh(out.normal_force);
+        addPairLoads(i_forces, j_forces, out);
+    }
 
 private:
     // The core's time-step check of the whole contact (the combined model
@@ -206,6 +298,13 @@ private:
     std::vector<GbVoigtParams> handed_;
     int stride_;
     bool fused_, fusedRolling_;   // share_->fused(), fusedRolling(), known once connected
+    bool pairInPlace_;            // known once connected
+    bool passInPlace_;            // pairInPlace_ in a force pass of the pair style
+    int pairState_;               // history offset of the fused state
+    // the fused table and dt as of the pair style's current pass
+    const GbVoigtModel *const *pairModels_;
+    int pairStride_;
+    double pairDt_;
     const bool wall_;
     bool checkPending_;           // a run starts: check at its first pass
     LAMMPS_NS::bigint checkedNatoms_;

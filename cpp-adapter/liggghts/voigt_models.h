@@ -36,12 +36,23 @@ GRANBOND_VOIGT_SLOT(RollingModel, ROLLING_VOIGT, VoigtRolling)
 // itself, and nothing else in these combinations reads the relative
 // velocities the default surface model derives (vn, wr, vtr, cri, crj), so
 // only its overlap is set, by the same expression. Setup and per-contact
-// output passes, which tools may inspect, get the full surface model.
-#define GRANBOND_VOIGT_FUSED_INTERSECT(Rolling)                                                                \
+// output passes, which tools may inspect, get the full surface model. A
+// pair the normal model steps in place (passInPlace) skips the sub-models'
+// calls, which would only set their flags and step aside; always inline, as
+// the engine's wall loop would otherwise call it rather than inline it.
+#define GRANBOND_VOIGT_FUSED_INTERSECT(Rolling, inPlace)                                                       \
     template<>                                                                                                 \
-    inline void ContactModel<GranStyle<NORMAL_VOIGT, TANGENTIAL_VOIGT, COHESION_OFF, Rolling, SURFACE_DEFAULT> >:: \
+    inline __attribute__((always_inline)) void                                                                 \
+    ContactModel<GranStyle<NORMAL_VOIGT, TANGENTIAL_VOIGT, COHESION_OFF, Rolling, SURFACE_DEFAULT> >::            \
         surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)            \
     {                                                                                                          \
+        if (inPlace && normalModel.passInPlace()) {                                                            \
+            sidata.deltan = sidata.radsum - sidata.r;                                                          \
+            if (sidata.contact_flags)                                                                          \
+                *sidata.contact_flags |= CONTACT_NORMAL_MODEL | CONTACT_TANGENTIAL_MODEL | CONTACT_ROLLING_MODEL; \
+            normalModel.stepInPlace(sidata, i_forces, j_forces);                                               \
+            return;                                                                                            \
+        }                                                                                                      \
         if (sidata.computeflag && sidata.shearupdate)                                                          \
             sidata.deltan = sidata.radsum - sidata.r;                                                          \
         else                                                                                                   \
@@ -52,8 +63,9 @@ GRANBOND_VOIGT_SLOT(RollingModel, ROLLING_VOIGT, VoigtRolling)
         rollingModel.surfacesIntersect(sidata, i_forces, j_forces);                                            \
     }
 
-GRANBOND_VOIGT_FUSED_INTERSECT(ROLLING_VOIGT)
-GRANBOND_VOIGT_FUSED_INTERSECT(ROLLING_OFF)
+// only with rolling voigt does the fused state hold the whole contact
+GRANBOND_VOIGT_FUSED_INTERSECT(ROLLING_VOIGT, true)
+GRANBOND_VOIGT_FUSED_INTERSECT(ROLLING_OFF, false)
 
 #undef GRANBOND_VOIGT_FUSED_INTERSECT
 
