@@ -18,14 +18,14 @@
 //! its index.
 
 use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
-use super::finite::{bond_finite, results_finite, results_finite_with_rest, BatchResult};
+use super::finite::{bond_finite, results_finite, results_surely_finite, BatchResult};
 use super::laws::BondLaws;
 use super::scalar::one_by_one;
 use super::state::{BondOutput, BondState, BondStatus, BOND_STATE_LEN};
 use super::step::{advance, History, Motion};
 use super::switches::Switches;
 use super::twist_bend::{BendHistory, TwistHistory};
-use crate::kinematics::{axis, separated, usable};
+use crate::kinematics::{axis, separated, surely_usable};
 use crate::pair_source::PairSource;
 use crate::real::packed::Pack;
 use crate::vector::{Vector, V3};
@@ -69,9 +69,11 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
 }
 
 /// Advances the `P::WIDTH` bonds of a chunk, from bond `first` of `kin` on,
-/// in lanes, and returns which lanes' results are finite; or returns `None`
-/// without touching anything when one of them is not intact or has
-/// unusable kinematics.
+/// in lanes, and returns a mask whose lanes are all true only if every
+/// bond's results are finite (a false lane leaves the caller to find which
+/// bond, if any, is not); or returns `None` without touching anything when
+/// one of them is not intact or its kinematics are not surely usable (the
+/// scalar kernel then decides).
 #[inline(always)]
 fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
     laws: &BondLaws,
@@ -98,7 +100,7 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     };
     let m = &motion;
     let vectors = [x_i, x_j, m.v_i, m.v_j, m.w_i, m.w_j].map(|v| [v.x, v.y, v.z]);
-    let (finite, positive) = usable(vectors, m.radius_i, m.radius_j);
+    let (finite, positive) = surely_usable(vectors, m.radius_i, m.radius_j);
     let d = x_i - x_j;
     let r2 = d.norm_squared();
     if !P::all(finite & positive & separated(r2)) {
@@ -184,8 +186,9 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     scatter(outs, loads.sigma, |o: &mut BondOutput, x| o.sigma = x);
     scatter(outs, loads.tau, |o: &mut BondOutput, x| o.tau = x);
     scatter(outs, loads.delta, |o: &mut BondOutput, x| o.delta = x);
-    scatter(outs, status, |o: &mut BondOutput, x| o.status = x as i32);
-    scatter(outs, loads.mode, |o: &mut BondOutput, x| o.break_mode = x as i32);
+    P::for_each_lane_codes(status, loads.mode, |i, [status, mode]| {
+        (outs[i].status, outs[i].break_mode) = (status, mode)
+    });
 
     // in the order of the slots and fields (finite.rs)
     let (f, ti, tj) = (loads.force_i, loads.torque_i, loads.torque_j);
@@ -218,7 +221,7 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     Some(if live == BOND_STATE_LEN {
         results_finite(loads, scalars, state)
     } else {
-        results_finite_with_rest(loads, scalars, &state[..live], |lane| {
+        results_surely_finite(loads, scalars, &state[..live], |lane| {
             &states[lane].borrow().as_slots()[live..]
         })
     })

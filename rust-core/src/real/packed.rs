@@ -25,6 +25,17 @@ pub(crate) trait Pack: Real {
     fn gather(f: impl Fn(usize) -> f64) -> Self;
     /// `f(i, lane i)` for every lane, in order.
     fn for_each_lane(self, f: impl FnMut(usize, f64));
+    /// `f(i, [lane i of a, lane i of b])` as `i32` for every lane, in order.
+    /// For codes (small whole numbers), which both conversions keep
+    /// exactly; other values may come out as the CPU's, not Rust's, `as`.
+    #[inline(always)]
+    fn for_each_lane_codes(a: Self, b: Self, mut f: impl FnMut(usize, [i32; 2])) {
+        let mut first = [0; 8];
+        a.for_each_lane(|i, x| first[i] = x as i32);
+        b.for_each_lane(|i, x| f(i, [first[i], x as i32]));
+    }
+    /// The first `WIDTH` numbers of `values`, one a lane.
+    fn load(values: &[f64]) -> Self;
 }
 
 /// 4 `f64` (AVX).
@@ -159,6 +170,27 @@ impl Pack for F64x4 {
             f(3, _mm_cvtsd_f64(_mm_unpackhi_pd(high, high)));
         }
     }
+    /// Both registers converted at once and interleaved, so that each
+    /// lane's pair is one 64-bit store.
+    #[inline(always)]
+    fn for_each_lane_codes(a: Self, b: Self, mut f: impl FnMut(usize, [i32; 2])) {
+        // SAFETY: see the module documentation.
+        unsafe {
+            let (a, b) = (_mm256_cvttpd_epi32(a.0), _mm256_cvttpd_epi32(b.0));
+            let (low, high) = (_mm_unpacklo_epi32(a, b), _mm_unpackhi_epi32(a, b));
+            let pair = |x: i64| [x as i32, (x >> 32) as i32];
+            f(0, pair(_mm_cvtsi128_si64(low)));
+            f(1, pair(_mm_extract_epi64::<1>(low)));
+            f(2, pair(_mm_cvtsi128_si64(high)));
+            f(3, pair(_mm_extract_epi64::<1>(high)));
+        }
+    }
+    #[inline(always)]
+    fn load(values: &[f64]) -> Self {
+        let values = &values[..4];
+        // SAFETY: see the module documentation; `values` holds 4 numbers.
+        F64x4(unsafe { _mm256_loadu_pd(values.as_ptr()) })
+    }
 }
 
 /// 8 `f64` (AVX-512F).
@@ -292,5 +324,11 @@ impl Pack for F64x8 {
         for (i, x) in lanes.into_iter().enumerate() {
             f(i, x);
         }
+    }
+    #[inline(always)]
+    fn load(values: &[f64]) -> Self {
+        let values = &values[..8];
+        // SAFETY: see the module documentation; `values` holds 8 numbers.
+        F64x8(unsafe { _mm512_loadu_pd(values.as_ptr()) })
     }
 }
