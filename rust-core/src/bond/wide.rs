@@ -86,7 +86,9 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     let n = P::WIDTH;
     let (states, outs) = (&mut states[..n], &mut outs[..n]);
     let kin = |lane: usize| kin.pair(first + lane);
-    if states.iter().any(|s| s.borrow().status() != BondStatus::Intact) {
+    let (status, r0): (P, P) = gather2(states, |s: &BondState| [s.status, s.r0]);
+    let intact = P::splat(BondStatus::Intact as i32 as f64);
+    if !P::all(status.ge(intact) & intact.ge(status)) {
         return None;
     }
     let (x_i, x_j) = (lanes3(kin, |k| k.x_i), lanes3(kin, |k| k.x_j));
@@ -103,9 +105,7 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     let (finite, positive) = surely_usable(vectors, m.radius_i, m.radius_j);
     let d = x_i - x_j;
     let r2 = d.norm_squared();
-    if !P::all(finite & positive & separated(r2)) {
-        return None;
-    }
+    let usable = finite & positive & separated(r2);
 
     // The slots after the last one a law switched on uses stay in memory:
     // the step leaves them alone, and only the results check reads them.
@@ -132,16 +132,22 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
             P::splat(0.0)
         }
     };
+    let (delta_max, delta_min) = gather2(states, |s: &BondState| [s.delta_max, s.delta_min]);
     let mut h = History {
-        r0: gather(states, |s: &BondState| s.r0),
-        delta_max: gather(states, |s: &BondState| s.delta_max),
-        delta_min: gather(states, |s: &BondState| s.delta_min),
+        r0,
+        delta_max,
+        delta_min,
         shear_force: vector(4, |s| s.shear_force),
         twist_angle: vector(7, |s| s.twist_angle),
         bend_angle: vector(10, |s| s.bend_angle),
-        twist: TwistHistory {
-            max: scalar(13, |s| s.twist_max),
-            min: scalar(14, |s| s.twist_min),
+        twist: if 13 < live {
+            let (max, min) = gather2(states, |s: &BondState| [s.twist_max, s.twist_min]);
+            TwistHistory { max, min }
+        } else {
+            TwistHistory {
+                max: P::splat(0.0),
+                min: P::splat(0.0),
+            }
         },
         bend: BendHistory {
             leading: vector(15, |s| s.bend_history),
@@ -149,6 +155,12 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
         },
     };
     let loads = advance::<S, P, V3<P>>(laws, &motion, axis(d, r2), P::splat(dt), &mut h);
+    // Decided here rather than before the step, so that the numbers read
+    // need not be held from their loads to the branch; lanes that fail it
+    // computed nothing that is kept.
+    if !P::all(usable) {
+        return None;
+    }
 
     // Back into the structs one quantity at a time: each register is
     // stored once and its lanes copied out.
@@ -159,16 +171,21 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     // leaves them alone): they are not stored back.
     scatter(states, status, |s: &mut BondState, x| s.status = x);
     if on(TENSION | COMPRESSION) {
-        scatter(states, h.delta_max, |s: &mut BondState, x| s.delta_max = x);
-        scatter(states, h.delta_min, |s: &mut BondState, x| s.delta_min = x);
+        scatter2(states, h.delta_max, h.delta_min, |s: &mut BondState, [hi, lo]| {
+            (s.delta_max, s.delta_min) = (hi, lo)
+        });
     }
     if on(SHEAR) {
         scatter3(states, h.shear_force, |s: &mut BondState| &mut s.shear_force);
     }
     if on(TWIST) {
         scatter3(states, h.twist_angle, |s: &mut BondState| &mut s.twist_angle);
-        scatter(states, h.twist.max, |s: &mut BondState, x| s.twist_max = x);
-        scatter(states, h.twist.min, |s: &mut BondState, x| s.twist_min = x);
+        scatter2(
+            states,
+            h.twist.max,
+            h.twist.min,
+            |s: &mut BondState, [max, min]| (s.twist_max, s.twist_min) = (max, min),
+        );
     }
     if on(BEND) {
         scatter3(states, h.bend_angle, |s: &mut BondState| &mut s.bend_angle);
@@ -180,12 +197,15 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     scatter3(outs, loads.force_i, |o: &mut BondOutput| &mut o.force_i);
     scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
     scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
-    scatter(outs, loads.normal_force, |o: &mut BondOutput, x| {
-        o.normal_force = x
+    scatter2(
+        outs,
+        loads.normal_force,
+        loads.sigma,
+        |o: &mut BondOutput, [f, s]| (o.normal_force, o.sigma) = (f, s),
+    );
+    scatter2(outs, loads.tau, loads.delta, |o: &mut BondOutput, [t, d]| {
+        (o.tau, o.delta) = (t, d)
     });
-    scatter(outs, loads.sigma, |o: &mut BondOutput, x| o.sigma = x);
-    scatter(outs, loads.tau, |o: &mut BondOutput, x| o.tau = x);
-    scatter(outs, loads.delta, |o: &mut BondOutput, x| o.delta = x);
     P::for_each_lane_codes(status, loads.mode, |i, [status, mode]| {
         (outs[i].status, outs[i].break_mode) = (status, mode)
     });
@@ -248,6 +268,12 @@ fn gather<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> f64) -> P {
     P::gather(|i| f(items[i].borrow()))
 }
 
+/// [`gather`] of two quantities, next to each other in memory.
+#[inline(always)]
+fn gather2<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> [f64; 2]) -> (P, P) {
+    P::gather2(|i| f(items[i].borrow()))
+}
+
 /// [`gather`] of a vector quantity.
 #[inline(always)]
 fn gather3<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> [f64; 3]) -> V3<P> {
@@ -257,11 +283,11 @@ fn gather3<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> [f64; 3]) ->
 /// A vector quantity of `P::WIDTH` items, lane `i` from `item(i)`.
 #[inline(always)]
 fn lanes3<T, P: Pack>(item: impl Fn(usize) -> T, f: impl Fn(&T) -> [f64; 3]) -> V3<P> {
-    V3::new(
-        P::gather(|i| f(&item(i))[0]),
-        P::gather(|i| f(&item(i))[1]),
-        P::gather(|i| f(&item(i))[2]),
-    )
+    let (x, y) = P::gather2(|i| {
+        let v = f(&item(i));
+        [v[0], v[1]]
+    });
+    V3::new(x, y, P::gather(|i| f(&item(i))[2]))
 }
 
 /// Lane `i` of `v` into `items[i]`.
@@ -270,10 +296,18 @@ fn scatter<T, S: BorrowMut<T>, P: Pack>(items: &mut [S], v: P, mut f: impl FnMut
     v.for_each_lane(|i, x| f(items[i].borrow_mut(), x));
 }
 
+/// [`scatter`] of two quantities.
+#[inline(always)]
+fn scatter2<T, S: BorrowMut<T>, P: Pack>(items: &mut [S], a: P, b: P, mut f: impl FnMut(&mut T, [f64; 2])) {
+    P::for_each_lane2(a, b, |i, pair| f(items[i].borrow_mut(), pair));
+}
+
 /// [`scatter`] of a vector quantity.
 #[inline(always)]
 fn scatter3<T, S: BorrowMut<T>, P: Pack>(items: &mut [S], v: V3<P>, f: impl Fn(&mut T) -> &mut [f64; 3]) {
-    v.x.for_each_lane(|i, x| f(items[i].borrow_mut())[0] = x);
-    v.y.for_each_lane(|i, y| f(items[i].borrow_mut())[1] = y);
+    P::for_each_lane2(v.x, v.y, |i, [x, y]| {
+        let v = f(items[i].borrow_mut());
+        (v[0], v[1]) = (x, y)
+    });
     v.z.for_each_lane(|i, z| f(items[i].borrow_mut())[2] = z);
 }

@@ -23,8 +23,22 @@ pub(crate) trait Pack: Real {
     const WIDTH: usize;
     /// Lane `i` is `f(i)`.
     fn gather(f: impl Fn(usize) -> f64) -> Self;
+    /// Lane `i` of the two registers from `f(i)`: where `f` reads two
+    /// numbers next to each other, one load a lane fills both.
+    #[inline(always)]
+    fn gather2(f: impl Fn(usize) -> [f64; 2]) -> (Self, Self) {
+        (Self::gather(|i| f(i)[0]), Self::gather(|i| f(i)[1]))
+    }
     /// `f(i, lane i)` for every lane, in order.
     fn for_each_lane(self, f: impl FnMut(usize, f64));
+    /// `f(i, [lane i of a, lane i of b])` for every lane, in order: where
+    /// `f` writes the two next to each other, one store a lane.
+    #[inline(always)]
+    fn for_each_lane2(a: Self, b: Self, mut f: impl FnMut(usize, [f64; 2])) {
+        let mut first = [0.0; 8];
+        a.for_each_lane(|i, x| first[i] = x);
+        b.for_each_lane(|i, y| f(i, [first[i], y]));
+    }
     /// `f(i, [lane i of a, lane i of b])` as `i32` for every lane, in order.
     /// For codes (small whole numbers), which both conversions keep
     /// exactly; other values may come out as the CPU's, not Rust's, `as`.
@@ -155,6 +169,38 @@ impl Pack for F64x4 {
     fn gather(f: impl Fn(usize) -> f64) -> Self {
         // SAFETY: see the module documentation.
         F64x4(unsafe { _mm256_set_pd(f(3), f(2), f(1), f(0)) })
+    }
+    /// Two lanes' pairs side by side in each half (`even`, `odd`), then
+    /// the halves' lanes interleaved.
+    #[inline(always)]
+    fn gather2(f: impl Fn(usize) -> [f64; 2]) -> (Self, Self) {
+        // SAFETY: see the module documentation.
+        unsafe {
+            let pair = |i| {
+                let [x, y] = f(i);
+                _mm_set_pd(y, x)
+            };
+            let even = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(0)), pair(2));
+            let odd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(1)), pair(3));
+            (
+                F64x4(_mm256_unpacklo_pd(even, odd)),
+                F64x4(_mm256_unpackhi_pd(even, odd)),
+            )
+        }
+    }
+    /// The inverse of [`Pack::gather2`]'s shuffle: each lane's pair in one
+    /// half of a register.
+    #[inline(always)]
+    fn for_each_lane2(a: Self, b: Self, mut f: impl FnMut(usize, [f64; 2])) {
+        // SAFETY: see the module documentation.
+        unsafe {
+            let (even, odd) = (_mm256_unpacklo_pd(a.0, b.0), _mm256_unpackhi_pd(a.0, b.0));
+            let pair = |v: __m128d| [_mm_cvtsd_f64(v), _mm_cvtsd_f64(_mm_unpackhi_pd(v, v))];
+            f(0, pair(_mm256_castpd256_pd128(even)));
+            f(1, pair(_mm256_castpd256_pd128(odd)));
+            f(2, pair(_mm256_extractf128_pd::<1>(even)));
+            f(3, pair(_mm256_extractf128_pd::<1>(odd)));
+        }
     }
     /// Lanes read out of the register, not through a copy on the stack: a
     /// lane stored to memory becomes one store instruction.
