@@ -110,18 +110,24 @@ pub fn usable<R: Real>(vectors: [[R; 3]; 6], radius_i: R, radius_j: R) -> (R::Ma
     (finite, radius_i.gt(zero) & radius_j.gt(zero))
 }
 
-/// [`usable`] in one add per number where it says yes: the 18 vector
-/// components and two radii are all finite if their sum is (per lane). A
-/// sum of finite numbers that overflows says no as well, so a no sends the
-/// caller to [`usable`]. The sum is a tree of four partial sums, as there.
+/// [`usable`] in one add per number where it says yes: the numbers of a
+/// pair (its 18 vector components, or some of them and sums of the others)
+/// and its two radii are all finite if their sum is (per lane). A sum of
+/// finite numbers that overflows says no as well, so a no sends the caller
+/// to [`usable`]. The sum is a tree of four partial sums, as there.
 #[inline(always)]
-pub(crate) fn surely_usable<R: Real>(vectors: [[R; 3]; 6], radius_i: R, radius_j: R) -> (R::Mask, R::Mask) {
-    let [a, b, c, d, e, f] = vectors;
-    let mut acc = [a[0] + radius_i, a[1] + radius_j, a[2], b[0]];
-    let rest = [
-        b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2], e[0], e[1], e[2], f[0], f[1], f[2],
+pub(crate) fn surely_usable<R: Real, const N: usize>(
+    numbers: [R; N],
+    radius_i: R,
+    radius_j: R,
+) -> (R::Mask, R::Mask) {
+    let mut acc = [
+        numbers[0] + radius_i,
+        numbers[1] + radius_j,
+        numbers[2],
+        numbers[3],
     ];
-    for (k, x) in rest.into_iter().enumerate() {
+    for (k, &x) in numbers[4..].iter().enumerate() {
         acc[k % 4] = acc[k % 4] + x;
     }
     let sum = (acc[0] + acc[1]) + (acc[2] + acc[3]);

@@ -91,18 +91,39 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     if !P::all(status.ge(intact) & intact.ge(status)) {
         return None;
     }
+    let on = |bits| S::of(laws).any(bits);
     let (x_i, x_j) = (lanes3(kin, |k| k.x_i), lanes3(kin, |k| k.x_j));
-    let motion = Motion {
-        v_i: lanes3(kin, |k| k.v_i),
-        v_j: lanes3(kin, |k| k.v_j),
-        w_i: lanes3(kin, |k| k.w_i),
-        w_j: lanes3(kin, |k| k.w_j),
-        radius_i: P::gather(|lane| kin(lane).radius_i),
-        radius_j: P::gather(|lane| kin(lane).radius_j),
+    let (v_i, v_j) = (lanes3(kin, |k| k.v_i), lanes3(kin, |k| k.v_j));
+    let (radius_i, radius_j) = (
+        P::gather(|lane| kin(lane).radius_i),
+        P::gather(|lane| kin(lane).radius_j),
+    );
+    let [a, b, c, e] = [x_i, x_j, v_i, v_j].map(|v| [v.x, v.y, v.z]);
+    let zero = V3::new(P::splat(0.0), P::splat(0.0), P::splat(0.0));
+    // Spins that no law switched on reads are only checked: added up as
+    // they are loaded, not moved into their lanes.
+    let ((w_i, w_j), (finite, positive)) = if !S::FIXED || on(SHEAR | TWIST | BEND) {
+        let (w_i, w_j) = (lanes3(kin, |k| k.w_i), lanes3(kin, |k| k.w_j));
+        let numbers = [a, b, c, e, [w_i.x, w_i.y, w_i.z], [w_j.x, w_j.y, w_j.z]];
+        let numbers: [P; 18] = std::array::from_fn(|i| numbers[i / 3][i % 3]);
+        ((w_i, w_j), surely_usable(numbers, radius_i, radius_j))
+    } else {
+        let spins = P::gather2_sum(|lane| [kin(lane).w_i[0], kin(lane).w_i[1]])
+            + P::gather2_sum(|lane| [kin(lane).w_i[2], kin(lane).w_j[0]])
+            + P::gather2_sum(|lane| [kin(lane).w_j[1], kin(lane).w_j[2]]);
+        let numbers = [
+            a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], e[0], e[1], e[2], spins,
+        ];
+        ((zero, zero), surely_usable(numbers, radius_i, radius_j))
     };
-    let m = &motion;
-    let vectors = [x_i, x_j, m.v_i, m.v_j, m.w_i, m.w_j].map(|v| [v.x, v.y, v.z]);
-    let (finite, positive) = surely_usable(vectors, m.radius_i, m.radius_j);
+    let motion = Motion {
+        v_i,
+        v_j,
+        w_i,
+        w_j,
+        radius_i,
+        radius_j,
+    };
     let d = x_i - x_j;
     let r2 = d.norm_squared();
     let usable = finite & positive & separated(r2);
@@ -111,13 +132,11 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     // the step leaves them alone, and only the results check reads them.
     // (Where the bits are read at run time, a rest of varying length costs
     // more than it saves: every slot is moved.)
-    let on = |bits| S::of(laws).any(bits);
     let live = if S::FIXED {
         live_slots(on(SHEAR), on(TWIST), on(BEND))
     } else {
         BOND_STATE_LEN
     };
-    let zero = V3::new(P::splat(0.0), P::splat(0.0), P::splat(0.0));
     let vector = |first: usize, f: fn(&BondState) -> [f64; 3]| {
         if first < live {
             gather3(states, f)

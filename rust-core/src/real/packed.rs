@@ -29,6 +29,13 @@ pub(crate) trait Pack: Real {
     fn gather2(f: impl Fn(usize) -> [f64; 2]) -> (Self, Self) {
         (Self::gather(|i| f(i)[0]), Self::gather(|i| f(i)[1]))
     }
+    /// The numbers `f(i)` of every lane added up in some lane, each once:
+    /// for a check over all of them, which needs no number in its own lane.
+    #[inline(always)]
+    fn gather2_sum(f: impl Fn(usize) -> [f64; 2]) -> Self {
+        let (a, b) = Self::gather2(f);
+        a + b
+    }
     /// `f(i, lane i)` for every lane, in order.
     fn for_each_lane(self, f: impl FnMut(usize, f64));
     /// `f(i, [lane i of a, lane i of b])` for every lane, in order: where
@@ -186,6 +193,20 @@ impl Pack for F64x4 {
                 F64x4(_mm256_unpacklo_pd(even, odd)),
                 F64x4(_mm256_unpackhi_pd(even, odd)),
             )
+        }
+    }
+    /// [`Pack::gather2`] without its last shuffle.
+    #[inline(always)]
+    fn gather2_sum(f: impl Fn(usize) -> [f64; 2]) -> Self {
+        // SAFETY: see the module documentation.
+        unsafe {
+            let pair = |i| {
+                let [x, y] = f(i);
+                _mm_set_pd(y, x)
+            };
+            let even = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(0)), pair(2));
+            let odd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(1)), pair(3));
+            F64x4(_mm256_add_pd(even, odd))
         }
     }
     /// The inverse of [`Pack::gather2`]'s shuffle: each lane's pair in one
