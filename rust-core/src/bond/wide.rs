@@ -267,13 +267,15 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
 }
 
 /// How many slots, from the first, a step with these laws switched on
-/// keeps in registers: at least those it changes. A rest of a few slots
-/// costs more added lane by lane than moved into lanes (measured with
-/// `bench/scattered_cost.sh`), so with twist on every slot is.
+/// keeps in registers: up to the last one it changes. The rest, which it
+/// leaves alone, only the results check reads, from memory (at least a
+/// register's worth a bond, as it reads them a register at a time).
 #[inline(always)]
 fn live_slots(shear: bool, twist: bool, bend: bool) -> usize {
-    if bend || twist {
+    if bend {
         BOND_STATE_LEN
+    } else if twist {
+        15
     } else if shear {
         7
     } else {

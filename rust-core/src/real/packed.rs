@@ -106,6 +106,21 @@ impl Not for Mask4 {
 }
 
 impl F64x4 {
+    /// The pairs `f(i)` of lanes 0 and 2 side by side in one register, of
+    /// lanes 1 and 3 in the other: one load a lane.
+    #[inline(always)]
+    fn pairs(f: impl Fn(usize) -> [f64; 2]) -> (__m256d, __m256d) {
+        // SAFETY: see the module documentation.
+        unsafe {
+            let pair = |i| {
+                let [x, y] = f(i);
+                _mm_set_pd(y, x)
+            };
+            let even = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(0)), pair(2));
+            let odd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(1)), pair(3));
+            (even, odd)
+        }
+    }
     #[inline(always)]
     fn cmp<const P: i32>(self, other: Self) -> Mask4 {
         // SAFETY: see the module documentation.
@@ -177,37 +192,24 @@ impl Pack for F64x4 {
         // SAFETY: see the module documentation.
         F64x4(unsafe { _mm256_set_pd(f(3), f(2), f(1), f(0)) })
     }
-    /// Two lanes' pairs side by side in each half (`even`, `odd`), then
-    /// the halves' lanes interleaved.
+    /// [`F64x4::pairs`] with the halves' lanes interleaved.
     #[inline(always)]
     fn gather2(f: impl Fn(usize) -> [f64; 2]) -> (Self, Self) {
+        let (even, odd) = Self::pairs(f);
         // SAFETY: see the module documentation.
         unsafe {
-            let pair = |i| {
-                let [x, y] = f(i);
-                _mm_set_pd(y, x)
-            };
-            let even = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(0)), pair(2));
-            let odd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(1)), pair(3));
             (
                 F64x4(_mm256_unpacklo_pd(even, odd)),
                 F64x4(_mm256_unpackhi_pd(even, odd)),
             )
         }
     }
-    /// [`Pack::gather2`] without its last shuffle.
+    /// [`F64x4::pairs`] added, without the shuffle of [`Pack::gather2`].
     #[inline(always)]
     fn gather2_sum(f: impl Fn(usize) -> [f64; 2]) -> Self {
+        let (even, odd) = Self::pairs(f);
         // SAFETY: see the module documentation.
-        unsafe {
-            let pair = |i| {
-                let [x, y] = f(i);
-                _mm_set_pd(y, x)
-            };
-            let even = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(0)), pair(2));
-            let odd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(1)), pair(3));
-            F64x4(_mm256_add_pd(even, odd))
-        }
+        F64x4(unsafe { _mm256_add_pd(even, odd) })
     }
     /// The inverse of [`Pack::gather2`]'s shuffle: each lane's pair in one
     /// half of a register.
