@@ -434,24 +434,8 @@ fn slots_of_switched_off_laws_count_in_the_results_check() {
 /// parameters `p` names bond `k`, as one step per bond and the rule of
 /// `bond_finite` do, and advances every bond.
 fn names_the_first_bond_not_finite(p: BondParams, runner: &mut TestRunner) {
-    // intact bonds with usable kinematics and finite results, so that every
-    // chunk runs in lanes
     let model = BondModel::new(p).unwrap();
-    let good: Vec<(PairKinematics, BondState)> = prop::collection::vec(bond(), 400)
-        .new_tree(runner)
-        .unwrap()
-        .current()
-        .into_iter()
-        .filter(|(k, s)| {
-            let (mut s, mut o) = (*s, BondOutput::default());
-            s.status() == BondStatus::Intact
-                && model.step(k, DT, &mut s, &mut o).is_ok()
-                && o.status == BondStatus::Intact as i32
-                && bond_finite(&s, &o)
-        })
-        .take(17)
-        .collect();
-    assert_eq!(good.len(), 17);
+    let good = good_bonds(&model, runner);
     for k in 0..12 {
         let mut bonds = good.clone();
         for b in [k, k + 5] {
@@ -469,6 +453,63 @@ fn names_the_first_bond_not_finite(p: BondParams, runner: &mut TestRunner) {
             "the reference: bond {k} first"
         );
         check_scattered(p, &bonds).unwrap();
+    }
+}
+
+/// 17 intact bonds with usable kinematics whose results under `model` are
+/// finite, so that every chunk runs in lanes.
+fn good_bonds(model: &BondModel, runner: &mut TestRunner) -> Vec<(PairKinematics, BondState)> {
+    let good: Vec<(PairKinematics, BondState)> = prop::collection::vec(bond(), 400)
+        .new_tree(runner)
+        .unwrap()
+        .current()
+        .into_iter()
+        .filter(|(k, s)| {
+            let (mut s, mut o) = (*s, BondOutput::default());
+            s.status() == BondStatus::Intact
+                && model.step(k, DT, &mut s, &mut o).is_ok()
+                && o.status == BondStatus::Intact as i32
+                && bond_finite(&s, &o)
+        })
+        .take(17)
+        .collect();
+    assert_eq!(good.len(), 17);
+    good
+}
+
+/// Numbers near the largest double that the exact checks accept are
+/// accepted in lanes too: slots of switched-off laws whose sum stays
+/// finite name no bond, and velocities whose sum overflows (each finite,
+/// their difference 0) are stepped, in lanes as one step per bond does.
+#[test]
+fn large_finite_numbers_pass_the_checks_as_one_by_one() {
+    let mut runner = TestRunner::deterministic();
+    let base = any_params().new_tree(&mut runner).unwrap().current();
+    for features in COMPILED_ALONE {
+        let p = switched_on(features, base);
+        let model = BondModel::new(p).unwrap();
+        let good = good_bonds(&model, &mut runner);
+        for k in 0..12 {
+            let mut bonds = good.clone();
+            if features & (TWIST | BEND) == 0 {
+                for b in [k, k + 5] {
+                    bonds[b].1.twist_max = 1.7e308;
+                    bonds[b].1.bend_opposite = -1.7e308;
+                }
+                let kin: Vec<PairKinematics> = bonds.iter().map(|b| b.0).collect();
+                let mut states: Vec<BondState> = bonds.iter().map(|b| b.1).collect();
+                let mut outs = stale_outputs(bonds.len());
+                assert_eq!(
+                    one_by_one(&model, &kin, &mut states, &mut outs),
+                    Ok(None),
+                    "the reference: no bond"
+                );
+            }
+            // moving together: the relative velocity the laws read is 0
+            let kin = &mut bonds[k + 2].0;
+            (kin.v_i, kin.v_j) = ([1.2e308, 1.2e308, 0.0], [1.2e308, 1.2e308, 0.0]);
+            check_scattered(p, &bonds).unwrap();
+        }
     }
 }
 

@@ -28,23 +28,51 @@ pub fn results_finite<R: Real>(loads: [R; 9], scalars: [R; 4], state: [R; BOND_S
     is_finite(outputs) & is_finite(sum(&state))
 }
 
-/// [`results_finite`] of a register of bonds whose first state slots are
-/// in `state` and whose other slots are read from `rest(lane)`: each lane
-/// adds its own rest to its sum, in the same order, so it decides as
-/// [`bond_finite`] does.
+/// Whether [`results_finite`] holds for every lane of a register of bonds
+/// whose first state slots are in `state` and whose other slots are read
+/// from `rest(lane)`: all lanes true only if it does. The rest is not added
+/// lane by lane in order: the step proves its sums finite with a bound
+/// instead (the first slots' sum and all the rest's magnitudes together
+/// under a quarter of the largest double each: no sum of them in any order
+/// then reaches it), and a lane false only asks the caller to decide with
+/// [`bond_finite`] (values near the bound, or not finite).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-pub(crate) fn results_finite_with_rest<'a, P: Pack>(
+pub(crate) fn results_surely_finite<'a, P: Pack>(
     loads: [P; 9],
     scalars: [P; 4],
     state: &[P],
     rest: impl Fn(usize) -> &'a [f64],
 ) -> P::Mask {
     let outputs = sum(&loads) + sum(&scalars);
-    let mut head = [0.0; 8];
-    sum(state).for_each_lane(|i, x| head[i] = x);
-    let whole = P::gather(|i| rest(i).iter().fold(head[i], |acc, &x| acc + x));
-    is_finite(outputs) & is_finite(whole)
+    let bound = P::splat(f64::MAX / 4.0);
+    let head = sum(state).abs().lt(bound);
+    let mut magnitudes = P::splat(0.0);
+    for lane in 0..P::WIDTH {
+        magnitudes = add_magnitudes(magnitudes, rest(lane));
+    }
+    // Each lane of `magnitudes` sums a quarter or so of the magnitudes; the
+    // bound on each keeps their total, and so every bond's, under the
+    // largest double.
+    let bound = P::splat(f64::MAX / (4 * P::WIDTH) as f64);
+    is_finite(outputs) & head & P::mask(P::all(magnitudes.lt(bound)))
+}
+
+/// `acc` plus the magnitudes of `row` loaded `P::WIDTH` at a time, the last
+/// register ending with the row (so it may repeat some numbers of the one
+/// before): every number counted at least once, none read from beyond the
+/// row.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn add_magnitudes<P: Pack>(mut acc: P, row: &[f64]) -> P {
+    let n = P::WIDTH;
+    assert!(row.is_empty() || row.len() >= n, "a rest shorter than a register");
+    let mut start = 0;
+    while start < row.len() {
+        acc = acc + P::load(&row[start.min(row.len() - n)..]).abs();
+        start += n;
+    }
+    acc
 }
 
 /// [`results_finite`] of one bond.

@@ -18,14 +18,14 @@
 //! its index.
 
 use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
-use super::finite::{bond_finite, results_finite, results_finite_with_rest, BatchResult};
+use super::finite::{bond_finite, results_finite, results_surely_finite, BatchResult};
 use super::laws::BondLaws;
 use super::scalar::one_by_one;
 use super::state::{BondOutput, BondState, BondStatus, BOND_STATE_LEN};
 use super::step::{advance, History, Motion};
 use super::switches::Switches;
 use super::twist_bend::{BendHistory, TwistHistory};
-use crate::kinematics::{axis, separated, usable};
+use crate::kinematics::{axis, separated, surely_usable};
 use crate::pair_source::PairSource;
 use crate::real::packed::Pack;
 use crate::vector::{Vector, V3};
@@ -69,9 +69,11 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
 }
 
 /// Advances the `P::WIDTH` bonds of a chunk, from bond `first` of `kin` on,
-/// in lanes, and returns which lanes' results are finite; or returns `None`
-/// without touching anything when one of them is not intact or has
-/// unusable kinematics.
+/// in lanes, and returns a mask whose lanes are all true only if every
+/// bond's results are finite (a false lane leaves the caller to find which
+/// bond, if any, is not); or returns `None` without touching anything when
+/// one of them is not intact or its kinematics are not surely usable (the
+/// scalar kernel then decides).
 #[inline(always)]
 fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
     laws: &BondLaws,
@@ -84,38 +86,57 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     let n = P::WIDTH;
     let (states, outs) = (&mut states[..n], &mut outs[..n]);
     let kin = |lane: usize| kin.pair(first + lane);
-    if states.iter().any(|s| s.borrow().status() != BondStatus::Intact) {
+    let (status, r0): (P, P) = gather2(states, |s: &BondState| [s.status, s.r0]);
+    let intact = P::splat(BondStatus::Intact as i32 as f64);
+    if !P::all(status.ge(intact) & intact.ge(status)) {
         return None;
     }
+    let on = |bits| S::of(laws).any(bits);
     let (x_i, x_j) = (lanes3(kin, |k| k.x_i), lanes3(kin, |k| k.x_j));
-    let motion = Motion {
-        v_i: lanes3(kin, |k| k.v_i),
-        v_j: lanes3(kin, |k| k.v_j),
-        w_i: lanes3(kin, |k| k.w_i),
-        w_j: lanes3(kin, |k| k.w_j),
-        radius_i: P::gather(|lane| kin(lane).radius_i),
-        radius_j: P::gather(|lane| kin(lane).radius_j),
+    let (v_i, v_j) = (lanes3(kin, |k| k.v_i), lanes3(kin, |k| k.v_j));
+    let (radius_i, radius_j) = (
+        P::gather(|lane| kin(lane).radius_i),
+        P::gather(|lane| kin(lane).radius_j),
+    );
+    let [a, b, c, e] = [x_i, x_j, v_i, v_j].map(|v| [v.x, v.y, v.z]);
+    let zero = V3::new(P::splat(0.0), P::splat(0.0), P::splat(0.0));
+    // Spins that no law switched on reads are only checked: added up as
+    // they are loaded, not moved into their lanes.
+    let ((w_i, w_j), (finite, positive)) = if !S::FIXED || on(SHEAR | TWIST | BEND) {
+        let (w_i, w_j) = (lanes3(kin, |k| k.w_i), lanes3(kin, |k| k.w_j));
+        let numbers = [a, b, c, e, [w_i.x, w_i.y, w_i.z], [w_j.x, w_j.y, w_j.z]];
+        let numbers: [P; 18] = std::array::from_fn(|i| numbers[i / 3][i % 3]);
+        ((w_i, w_j), surely_usable(numbers, radius_i, radius_j))
+    } else {
+        let spins = P::gather2_sum(|lane| [kin(lane).w_i[0], kin(lane).w_i[1]])
+            + P::gather2_sum(|lane| [kin(lane).w_i[2], kin(lane).w_j[0]])
+            + P::gather2_sum(|lane| [kin(lane).w_j[1], kin(lane).w_j[2]]);
+        let numbers = [
+            a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], e[0], e[1], e[2], spins,
+        ];
+        ((zero, zero), surely_usable(numbers, radius_i, radius_j))
     };
-    let m = &motion;
-    let vectors = [x_i, x_j, m.v_i, m.v_j, m.w_i, m.w_j].map(|v| [v.x, v.y, v.z]);
-    let (finite, positive) = usable(vectors, m.radius_i, m.radius_j);
+    let motion = Motion {
+        v_i,
+        v_j,
+        w_i,
+        w_j,
+        radius_i,
+        radius_j,
+    };
     let d = x_i - x_j;
     let r2 = d.norm_squared();
-    if !P::all(finite & positive & separated(r2)) {
-        return None;
-    }
+    let usable = finite & positive & separated(r2);
 
     // The slots after the last one a law switched on uses stay in memory:
     // the step leaves them alone, and only the results check reads them.
     // (Where the bits are read at run time, a rest of varying length costs
     // more than it saves: every slot is moved.)
-    let on = |bits| S::of(laws).any(bits);
     let live = if S::FIXED {
         live_slots(on(SHEAR), on(TWIST), on(BEND))
     } else {
         BOND_STATE_LEN
     };
-    let zero = V3::new(P::splat(0.0), P::splat(0.0), P::splat(0.0));
     let vector = |first: usize, f: fn(&BondState) -> [f64; 3]| {
         if first < live {
             gather3(states, f)
@@ -130,16 +151,22 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
             P::splat(0.0)
         }
     };
+    let (delta_max, delta_min) = gather2(states, |s: &BondState| [s.delta_max, s.delta_min]);
     let mut h = History {
-        r0: gather(states, |s: &BondState| s.r0),
-        delta_max: gather(states, |s: &BondState| s.delta_max),
-        delta_min: gather(states, |s: &BondState| s.delta_min),
+        r0,
+        delta_max,
+        delta_min,
         shear_force: vector(4, |s| s.shear_force),
         twist_angle: vector(7, |s| s.twist_angle),
         bend_angle: vector(10, |s| s.bend_angle),
-        twist: TwistHistory {
-            max: scalar(13, |s| s.twist_max),
-            min: scalar(14, |s| s.twist_min),
+        twist: if 13 < live {
+            let (max, min) = gather2(states, |s: &BondState| [s.twist_max, s.twist_min]);
+            TwistHistory { max, min }
+        } else {
+            TwistHistory {
+                max: P::splat(0.0),
+                min: P::splat(0.0),
+            }
         },
         bend: BendHistory {
             leading: vector(15, |s| s.bend_history),
@@ -147,6 +174,12 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
         },
     };
     let loads = advance::<S, P, V3<P>>(laws, &motion, axis(d, r2), P::splat(dt), &mut h);
+    // Decided here rather than before the step, so that the numbers read
+    // need not be held from their loads to the branch; lanes that fail it
+    // computed nothing that is kept.
+    if !P::all(usable) {
+        return None;
+    }
 
     // Back into the structs one quantity at a time: each register is
     // stored once and its lanes copied out.
@@ -157,16 +190,21 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     // leaves them alone): they are not stored back.
     scatter(states, status, |s: &mut BondState, x| s.status = x);
     if on(TENSION | COMPRESSION) {
-        scatter(states, h.delta_max, |s: &mut BondState, x| s.delta_max = x);
-        scatter(states, h.delta_min, |s: &mut BondState, x| s.delta_min = x);
+        scatter2(states, h.delta_max, h.delta_min, |s: &mut BondState, [hi, lo]| {
+            (s.delta_max, s.delta_min) = (hi, lo)
+        });
     }
     if on(SHEAR) {
         scatter3(states, h.shear_force, |s: &mut BondState| &mut s.shear_force);
     }
     if on(TWIST) {
         scatter3(states, h.twist_angle, |s: &mut BondState| &mut s.twist_angle);
-        scatter(states, h.twist.max, |s: &mut BondState, x| s.twist_max = x);
-        scatter(states, h.twist.min, |s: &mut BondState, x| s.twist_min = x);
+        scatter2(
+            states,
+            h.twist.max,
+            h.twist.min,
+            |s: &mut BondState, [max, min]| (s.twist_max, s.twist_min) = (max, min),
+        );
     }
     if on(BEND) {
         scatter3(states, h.bend_angle, |s: &mut BondState| &mut s.bend_angle);
@@ -178,14 +216,18 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     scatter3(outs, loads.force_i, |o: &mut BondOutput| &mut o.force_i);
     scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
     scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
-    scatter(outs, loads.normal_force, |o: &mut BondOutput, x| {
-        o.normal_force = x
+    scatter2(
+        outs,
+        loads.normal_force,
+        loads.sigma,
+        |o: &mut BondOutput, [f, s]| (o.normal_force, o.sigma) = (f, s),
+    );
+    scatter2(outs, loads.tau, loads.delta, |o: &mut BondOutput, [t, d]| {
+        (o.tau, o.delta) = (t, d)
     });
-    scatter(outs, loads.sigma, |o: &mut BondOutput, x| o.sigma = x);
-    scatter(outs, loads.tau, |o: &mut BondOutput, x| o.tau = x);
-    scatter(outs, loads.delta, |o: &mut BondOutput, x| o.delta = x);
-    scatter(outs, status, |o: &mut BondOutput, x| o.status = x as i32);
-    scatter(outs, loads.mode, |o: &mut BondOutput, x| o.break_mode = x as i32);
+    P::for_each_lane_codes(status, loads.mode, |i, [status, mode]| {
+        (outs[i].status, outs[i].break_mode) = (status, mode)
+    });
 
     // in the order of the slots and fields (finite.rs)
     let (f, ti, tj) = (loads.force_i, loads.torque_i, loads.torque_j);
@@ -218,20 +260,22 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     Some(if live == BOND_STATE_LEN {
         results_finite(loads, scalars, state)
     } else {
-        results_finite_with_rest(loads, scalars, &state[..live], |lane| {
+        results_surely_finite(loads, scalars, &state[..live], |lane| {
             &states[lane].borrow().as_slots()[live..]
         })
     })
 }
 
 /// How many slots, from the first, a step with these laws switched on
-/// keeps in registers: at least those it changes. A rest of a few slots
-/// costs more added lane by lane than moved into lanes (measured with
-/// `bench/scattered_cost.sh`), so with twist on every slot is.
+/// keeps in registers: up to the last one it changes. The rest, which it
+/// leaves alone, only the results check reads, from memory (at least a
+/// register's worth a bond, as it reads them a register at a time).
 #[inline(always)]
 fn live_slots(shear: bool, twist: bool, bend: bool) -> usize {
-    if bend || twist {
+    if bend {
         BOND_STATE_LEN
+    } else if twist {
+        15
     } else if shear {
         7
     } else {
@@ -245,6 +289,12 @@ fn gather<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> f64) -> P {
     P::gather(|i| f(items[i].borrow()))
 }
 
+/// [`gather`] of two quantities, next to each other in memory.
+#[inline(always)]
+fn gather2<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> [f64; 2]) -> (P, P) {
+    P::gather2(|i| f(items[i].borrow()))
+}
+
 /// [`gather`] of a vector quantity.
 #[inline(always)]
 fn gather3<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> [f64; 3]) -> V3<P> {
@@ -254,11 +304,11 @@ fn gather3<T, S: Borrow<T>, P: Pack>(items: &[S], f: impl Fn(&T) -> [f64; 3]) ->
 /// A vector quantity of `P::WIDTH` items, lane `i` from `item(i)`.
 #[inline(always)]
 fn lanes3<T, P: Pack>(item: impl Fn(usize) -> T, f: impl Fn(&T) -> [f64; 3]) -> V3<P> {
-    V3::new(
-        P::gather(|i| f(&item(i))[0]),
-        P::gather(|i| f(&item(i))[1]),
-        P::gather(|i| f(&item(i))[2]),
-    )
+    let (x, y) = P::gather2(|i| {
+        let v = f(&item(i));
+        [v[0], v[1]]
+    });
+    V3::new(x, y, P::gather(|i| f(&item(i))[2]))
 }
 
 /// Lane `i` of `v` into `items[i]`.
@@ -267,10 +317,18 @@ fn scatter<T, S: BorrowMut<T>, P: Pack>(items: &mut [S], v: P, mut f: impl FnMut
     v.for_each_lane(|i, x| f(items[i].borrow_mut(), x));
 }
 
+/// [`scatter`] of two quantities.
+#[inline(always)]
+fn scatter2<T, S: BorrowMut<T>, P: Pack>(items: &mut [S], a: P, b: P, mut f: impl FnMut(&mut T, [f64; 2])) {
+    P::for_each_lane2(a, b, |i, pair| f(items[i].borrow_mut(), pair));
+}
+
 /// [`scatter`] of a vector quantity.
 #[inline(always)]
 fn scatter3<T, S: BorrowMut<T>, P: Pack>(items: &mut [S], v: V3<P>, f: impl Fn(&mut T) -> &mut [f64; 3]) {
-    v.x.for_each_lane(|i, x| f(items[i].borrow_mut())[0] = x);
-    v.y.for_each_lane(|i, y| f(items[i].borrow_mut())[1] = y);
+    P::for_each_lane2(v.x, v.y, |i, [x, y]| {
+        let v = f(items[i].borrow_mut());
+        (v[0], v[1]) = (x, y)
+    });
     v.z.for_each_lane(|i, z| f(items[i].borrow_mut())[2] = z);
 }

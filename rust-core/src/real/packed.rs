@@ -23,8 +23,40 @@ pub(crate) trait Pack: Real {
     const WIDTH: usize;
     /// Lane `i` is `f(i)`.
     fn gather(f: impl Fn(usize) -> f64) -> Self;
+    /// Lane `i` of the two registers from `f(i)`: where `f` reads two
+    /// numbers next to each other, one load a lane fills both.
+    #[inline(always)]
+    fn gather2(f: impl Fn(usize) -> [f64; 2]) -> (Self, Self) {
+        (Self::gather(|i| f(i)[0]), Self::gather(|i| f(i)[1]))
+    }
+    /// The numbers `f(i)` of every lane added up in some lane, each once:
+    /// for a check over all of them, which needs no number in its own lane.
+    #[inline(always)]
+    fn gather2_sum(f: impl Fn(usize) -> [f64; 2]) -> Self {
+        let (a, b) = Self::gather2(f);
+        a + b
+    }
     /// `f(i, lane i)` for every lane, in order.
     fn for_each_lane(self, f: impl FnMut(usize, f64));
+    /// `f(i, [lane i of a, lane i of b])` for every lane, in order: where
+    /// `f` writes the two next to each other, one store a lane.
+    #[inline(always)]
+    fn for_each_lane2(a: Self, b: Self, mut f: impl FnMut(usize, [f64; 2])) {
+        let mut first = [0.0; 8];
+        a.for_each_lane(|i, x| first[i] = x);
+        b.for_each_lane(|i, y| f(i, [first[i], y]));
+    }
+    /// `f(i, [lane i of a, lane i of b])` as `i32` for every lane, in order.
+    /// For codes (small whole numbers), which both conversions keep
+    /// exactly; other values may come out as the CPU's, not Rust's, `as`.
+    #[inline(always)]
+    fn for_each_lane_codes(a: Self, b: Self, mut f: impl FnMut(usize, [i32; 2])) {
+        let mut first = [0; 8];
+        a.for_each_lane(|i, x| first[i] = x as i32);
+        b.for_each_lane(|i, x| f(i, [first[i], x as i32]));
+    }
+    /// The first `WIDTH` numbers of `values`, one a lane.
+    fn load(values: &[f64]) -> Self;
 }
 
 /// 4 `f64` (AVX).
@@ -74,6 +106,21 @@ impl Not for Mask4 {
 }
 
 impl F64x4 {
+    /// The pairs `f(i)` of lanes 0 and 2 side by side in one register, of
+    /// lanes 1 and 3 in the other: one load a lane.
+    #[inline(always)]
+    fn pairs(f: impl Fn(usize) -> [f64; 2]) -> (__m256d, __m256d) {
+        // SAFETY: see the module documentation.
+        unsafe {
+            let pair = |i| {
+                let [x, y] = f(i);
+                _mm_set_pd(y, x)
+            };
+            let even = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(0)), pair(2));
+            let odd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(1)), pair(3));
+            (even, odd)
+        }
+    }
     #[inline(always)]
     fn cmp<const P: i32>(self, other: Self) -> Mask4 {
         // SAFETY: see the module documentation.
@@ -145,6 +192,39 @@ impl Pack for F64x4 {
         // SAFETY: see the module documentation.
         F64x4(unsafe { _mm256_set_pd(f(3), f(2), f(1), f(0)) })
     }
+    /// [`F64x4::pairs`] with the halves' lanes interleaved.
+    #[inline(always)]
+    fn gather2(f: impl Fn(usize) -> [f64; 2]) -> (Self, Self) {
+        let (even, odd) = Self::pairs(f);
+        // SAFETY: see the module documentation.
+        unsafe {
+            (
+                F64x4(_mm256_unpacklo_pd(even, odd)),
+                F64x4(_mm256_unpackhi_pd(even, odd)),
+            )
+        }
+    }
+    /// [`F64x4::pairs`] added, without the shuffle of [`Pack::gather2`].
+    #[inline(always)]
+    fn gather2_sum(f: impl Fn(usize) -> [f64; 2]) -> Self {
+        let (even, odd) = Self::pairs(f);
+        // SAFETY: see the module documentation.
+        F64x4(unsafe { _mm256_add_pd(even, odd) })
+    }
+    /// The inverse of [`Pack::gather2`]'s shuffle: each lane's pair in one
+    /// half of a register.
+    #[inline(always)]
+    fn for_each_lane2(a: Self, b: Self, mut f: impl FnMut(usize, [f64; 2])) {
+        // SAFETY: see the module documentation.
+        unsafe {
+            let (even, odd) = (_mm256_unpacklo_pd(a.0, b.0), _mm256_unpackhi_pd(a.0, b.0));
+            let pair = |v: __m128d| [_mm_cvtsd_f64(v), _mm_cvtsd_f64(_mm_unpackhi_pd(v, v))];
+            f(0, pair(_mm256_castpd256_pd128(even)));
+            f(1, pair(_mm256_castpd256_pd128(odd)));
+            f(2, pair(_mm256_extractf128_pd::<1>(even)));
+            f(3, pair(_mm256_extractf128_pd::<1>(odd)));
+        }
+    }
     /// Lanes read out of the register, not through a copy on the stack: a
     /// lane stored to memory becomes one store instruction.
     #[inline(always)]
@@ -158,6 +238,27 @@ impl Pack for F64x4 {
             f(2, _mm_cvtsd_f64(high));
             f(3, _mm_cvtsd_f64(_mm_unpackhi_pd(high, high)));
         }
+    }
+    /// Both registers converted at once and interleaved, so that each
+    /// lane's pair is one 64-bit store.
+    #[inline(always)]
+    fn for_each_lane_codes(a: Self, b: Self, mut f: impl FnMut(usize, [i32; 2])) {
+        // SAFETY: see the module documentation.
+        unsafe {
+            let (a, b) = (_mm256_cvttpd_epi32(a.0), _mm256_cvttpd_epi32(b.0));
+            let (low, high) = (_mm_unpacklo_epi32(a, b), _mm_unpackhi_epi32(a, b));
+            let pair = |x: i64| [x as i32, (x >> 32) as i32];
+            f(0, pair(_mm_cvtsi128_si64(low)));
+            f(1, pair(_mm_extract_epi64::<1>(low)));
+            f(2, pair(_mm_cvtsi128_si64(high)));
+            f(3, pair(_mm_extract_epi64::<1>(high)));
+        }
+    }
+    #[inline(always)]
+    fn load(values: &[f64]) -> Self {
+        let values = &values[..4];
+        // SAFETY: see the module documentation; `values` holds 4 numbers.
+        F64x4(unsafe { _mm256_loadu_pd(values.as_ptr()) })
     }
 }
 
@@ -292,5 +393,11 @@ impl Pack for F64x8 {
         for (i, x) in lanes.into_iter().enumerate() {
             f(i, x);
         }
+    }
+    #[inline(always)]
+    fn load(values: &[f64]) -> Self {
+        let values = &values[..8];
+        // SAFETY: see the module documentation; `values` holds 8 numbers.
+        F64x8(unsafe { _mm512_loadu_pd(values.as_ptr()) })
     }
 }
