@@ -13,24 +13,25 @@ namespace granbond {
 // read; LIGGGHTS: 0, as its loop reads every flagged pair's record, a bond's
 // included). Always inlined: GCC deletes calls to a function whose only
 // effect is prefetching.
+__attribute__((always_inline)) inline void prefetchFlaggedRecord(const int *flags, const double *records, int jj,
+                                                                  int size, int skip)
+{
+    if (flags[jj] && flags[jj] != skip)
+        for (int s = 0; s < size; s += 8) __builtin_prefetch(records + size * jj + s, 1);
+}
+
+// Every pair of the atom.
 __attribute__((always_inline)) inline void prefetchFlaggedRecords(const int *flags, const double *records,
                                                                    int count, int size, int skip)
 {
-    for (int jj = 0; jj < count; jj++)
-        if (flags[jj] && flags[jj] != skip)
-            for (int s = 0; s < size; s += 8) __builtin_prefetch(records + size * jj + s, 1);
+    for (int jj = 0; jj < count; jj++) prefetchFlaggedRecord(flags, records, jj, size, skip);
 }
-
 
 // The same for the pairs at slots `slots[0 .. count)` of one atom's records.
 __attribute__((always_inline)) inline void prefetchFlaggedSlots(const int *flags, const double *records,
                                                                  const int *slots, int count, int size, int skip)
 {
-    for (int s = 0; s < count; s++) {
-        const int jj = slots[s];
-        if (flags[jj] && flags[jj] != skip)
-            for (int c = 0; c < size; c += 8) __builtin_prefetch(records + size * jj + c, 1);
-    }
+    for (int s = 0; s < count; s++) prefetchFlaggedRecord(flags, records, slots[s], size, skip);
 }
 
 }

@@ -313,11 +313,6 @@ void PairGranbond::failPair(int i, int j, const char *what)
     std::abort();   // not reached
 }
 
-// Forces of a contact (or an intact bond) on i and j. `f` and `torque` are
-// atom->f[0] and atom->torque[0], read once per pass: the arrays are blocks
-// of 3 doubles per atom (memory->create), and indexing them directly spares
-// the load of a row pointer, which a core call in between forces the
-// compiler to repeat, ahead of every update.
 namespace {
 
 // to[0..2] += from[0..2] (or -=): the first two components in one 16-byte
@@ -346,6 +341,11 @@ inline void subtract3(double *to, const double *from)
 
 }
 
+// Forces of a contact (or an intact bond) on i and j. `f` and `torque` are
+// atom->f[0] and atom->torque[0], read once per pass: the arrays are blocks
+// of 3 doubles per atom (memory->create), and indexing them directly spares
+// the load of a row pointer, which a core call in between forces the
+// compiler to repeat, ahead of every update.
 inline void PairGranbond::apply(double *f, double *torque, int i, int j, const double *fi, const double *ti,
                                 const double *tj, const double *del, int nlocal, int newton_pair)
 {
@@ -438,7 +438,7 @@ void PairGranbond::compute(int eflag, int vflag)
     }
     // the pairs the contact loop visits, while the list stands
     const bool trimmed = anyBond_;
-    if (trimmed && (update->setupflag || neighbor->ago == 0 || nearBuilt_ != neighbor->ncalls ||
+    if (trimmed && (update->setupflag || nearBuilt_ != neighbor->ncalls ||
                     nearFirst_.size() != static_cast<size_t>(list->inum) + 1))
         trimToReach();
 
@@ -703,7 +703,7 @@ void PairGranbond::indexBonds()
 void PairGranbond::trimToReach()
 {
     const int ntypes1 = atom->ntypes + 1;
-    nearReachSq_.assign(bond_.size(), 0.0);
+    std::vector<double> reachSq(bond_.size(), 0.0);   // per type pair
     for (int ti = 1; ti < ntypes1; ti++)
         for (int tj = ti; tj < ntypes1; tj++) {
             const size_t tp = at(ti, tj);
@@ -712,7 +712,7 @@ void PairGranbond::trimToReach()
             if (bond_[tp] && granbond_bond_creation_reach(bond_[tp], update->ntimestep, &creates) != GB_STATUS_OK)
                 error->one(FLERR, "pair granbond: " + coreReason());
             reach = std::max(reach, creates) + neighbor->skin;
-            nearReachSq_[tp] = reach > 0.0 ? reach * reach : 0.0;
+            reachSq[tp] = reach > 0.0 ? reach * reach : 0.0;
         }
     const int inum = list->inum;
     const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
@@ -738,7 +738,7 @@ void PairGranbond::trimToReach()
             const int tj = atom->type[j];
             const double *xj = x0 + 3 * static_cast<size_t>(j);
             const double d[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
-            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < nearReachSq_[at(std::min(ti, tj), std::max(ti, tj))]) {
+            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reachSq[at(std::min(ti, tj), std::max(ti, tj))]) {
                 near_.push_back(jj);
                 nearLive_[ii]++;
                 continue;

@@ -126,7 +126,6 @@ private:
     // near_[nearFirst_[ii] .. nearFirst_[ii + 1]).
     std::vector<int> nearFirst_, near_;
     LAMMPS_NS::bigint nearBuilt_ = -1;      // neighbor->ncalls when near_ was built
-    std::vector<double> nearReachSq_;       // per type pair, at near_'s build
     // per list position: how many of the atom's visited pairs are not
     // intact bonds (contacts, pairs that may bond, bonds broken since the
     // build); per owned atom: its list position

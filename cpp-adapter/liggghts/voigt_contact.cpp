@@ -301,13 +301,7 @@ static inline void addLoads(const SurfacesIntersectData &d, ForceData &i_forces,
         }
         return;
     }
-    for (int k = 0; k < 3; k++) {
-        const double f = fresh(force_i[k]);
-        addTo(i_forces.delta_F[k], f);
-        subtractFrom(j_forces.delta_F[k], f);
-        addTo(i_forces.delta_torque[k], fresh(torque_i[k]));
-        addTo(j_forces.delta_torque[k], fresh(torque_j[k]));
-    }
+    addScalarPairLoads(i_forces, j_forces, force_i, torque_i, torque_j);
 }
 
 void voigtFailed(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const char *who)

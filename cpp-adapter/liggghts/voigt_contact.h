@@ -177,14 +177,27 @@ inline void subtractFrom(double &x, double d)
     v = v - d;
 }
 
-// The loads of a pair added to the engine's accumulators of i and j, as
-// addLoads does, in 16-byte pairs of doubles: ForceData is delta_F and
+// The loads of a pair added to the engine's accumulators of i and j, a
+// double at a time.
+inline void addScalarPairLoads(ForceData &i_forces, ForceData &j_forces, const double *force_i,
+                               const double *torque_i, const double *torque_j)
+{
+    for (int k = 0; k < 3; k++) {
+        const double f = fresh(force_i[k]);
+        addTo(i_forces.delta_F[k], f);
+        subtractFrom(j_forces.delta_F[k], f);
+        addTo(i_forces.delta_torque[k], fresh(torque_i[k]));
+        addTo(j_forces.delta_torque[k], fresh(torque_j[k]));
+    }
+}
+
+// The same in 16-byte pairs of doubles: ForceData is delta_F and
 // delta_torque side by side, reset by the engine in 16-byte stores at
 // offsets 0, 16 and 32, and the core's output is force_i, torque_i and
 // torque_j side by side, written so that each pair read below (offsets 0,
 // 16, 32 and 56) lies within one of its stores. Each load is
 // then served by one store, and each lane is the scalar operation of
-// addLoads: delta_F[2] - force_i[2] as delta_F[2] + (-force_i[2]), the same
+// addScalarPairLoads: delta_F[2] - force_i[2] as delta_F[2] + (-force_i[2]), the same
 // IEEE operation.
 inline void addPairLoads(ForceData &i_forces, ForceData &j_forces, const GbContactOutput &out)
 {
@@ -200,13 +213,7 @@ inline void addPairLoads(ForceData &i_forces, ForceData &j_forces, const GbConta
     _mm_storeu_pd(fj + 2, _mm_add_pd(_mm_loadu_pd(fj + 2), _mm_set_pd(o[6], -o[2])));
     _mm_storeu_pd(fj + 4, _mm_add_pd(_mm_loadu_pd(fj + 4), _mm_loadu_pd(o + 7)));
 #else
-    for (int k = 0; k < 3; k++) {
-        const double f = fresh(out.force_i[k]);
-        addTo(i_forces.delta_F[k], f);
-        subtractFrom(j_forces.delta_F[k], f);
-        addTo(i_forces.delta_torque[k], fresh(out.torque_i[k]));
-        addTo(j_forces.delta_torque[k], fresh(out.torque_j[k]));
-    }
+    addScalarPairLoads(i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
 #endif
 }
 
