@@ -10,6 +10,14 @@
 // pass is added to it. Records are keyed by the neighbour list, not by atom
 // IDs, so an ID handed out again cannot lead a bond to another pair
 // (fix_granbond_atoms.h forgets such records before any index is built).
+//
+// Where the adapter can write the bonds back before the engine moves its
+// records (LAMMPS: fix neigh/history's pre_exchange), the core steps copies
+// of the records side by side in index order (`rows`): the engine's pages
+// hold a record for every neighbour, so the bonds' records lie apart there,
+// and a pass would wait on memory for each. The engine's record stays the
+// bond's home: copied into its row when the index is built, written back
+// when the bond breaks and before the engine reads or moves the records.
 #ifndef GRANBOND_BOND_INDEX_H
 #define GRANBOND_BOND_INDEX_H
 
@@ -41,7 +49,8 @@ struct BondIndex {
     GbSweepPass pass{};
     std::vector<int32_t> pairs;      // i, j per bond
     std::vector<uint8_t> counted;    // this rank counts the bond (each bond on one rank)
-    std::vector<double *> records;
+    std::vector<double *> records;   // what the core steps: the homes, or their rows
+    std::vector<double *> homes;     // each bond's record in the engine's pages
     std::vector<int *> flags;        // the engine's flag of each bond's pair
     // The bonds that broke in the sweeps since the last keepIntact: their
     // positions, ascending within a sweep, and their outputs (mode,
@@ -53,14 +62,23 @@ struct BondIndex {
     size_t ordered = 0;
 
     size_t size() const { return records.size(); }
+    // From now on the bonds are stepped in rows of `layout`'s records (see
+    // the head of this file); the index must be empty.
+    void useRows(const GbRecordLayout &layout)
+    {
+        rowLen_ = layout.len;
+        contactLen_ = layout.bond;
+    }
     void clear()
     {
         pairs.clear();
         counted.clear();
         records.clear();
+        homes.clear();
         flags.clear();
         broken.clear();
         brokenOut.clear();
+        rows_.clear();
         ordered = 0;
     }
     void add(int i, int j, bool counts, double *record, int *flag)
@@ -68,8 +86,25 @@ struct BondIndex {
         pairs.push_back(i);
         pairs.push_back(j);
         counted.push_back(counts ? 1 : 0);
-        records.push_back(record);
+        homes.push_back(record);
         flags.push_back(flag);
+        if (!rowLen_) {
+            records.push_back(record);
+            return;
+        }
+        if (rows_.size() + rowLen_ > rows_.capacity()) {
+            rows_.reserve(std::max(2 * rows_.capacity(), kFirstRows * rowLen_));
+            for (size_t k = 0; k < records.size(); k++) records[k] = rows_.data() + k * rowLen_;
+        }
+        records.push_back(rows_.data() + rows_.size());
+        rows_.insert(rows_.end(), record, record + rowLen_);
+    }
+    // Every bond's row written back to its home (before the engine reads or
+    // moves its records); nothing where the core steps the homes.
+    void writeBack()
+    {
+        if (rowLen_)
+            for (size_t k = 0; k < size(); k++) writeBack(k);
     }
 
     // Core calls over the bonds from `first` to `last` (`advance`: a force pass),
@@ -116,6 +151,7 @@ struct BondIndex {
                 }
                 broken.push_back(from + c);
                 brokenOut.push_back(out[c]);
+                if (rowLen_) writeBack(from + c);   // the engine's loop reads it now
             }
         }
         return GB_STATUS_OK;
@@ -138,19 +174,39 @@ struct BondIndex {
             pairs[2 * kept] = pairs[2 * k];
             pairs[2 * kept + 1] = pairs[2 * k + 1];
             counted[kept] = counted[k];
-            records[kept] = records[k];
+            homes[kept] = homes[k];
             flags[kept] = flags[k];
+            if (rowLen_)
+                std::copy(records[k], records[k] + rowLen_, records[kept]);
+            else
+                records[kept] = records[k];
             kept++;
         }
         pairs.resize(2 * kept);
         counted.resize(kept);
         records.resize(kept);
+        homes.resize(kept);
         flags.resize(kept);
+        rows_.resize(kept * rowLen_);
         broken.clear();
         brokenOut.clear();
     }
 
 private:
+    // Row k back to its home: the bond and its loads, and the contact's
+    // state unless the contact goes on under the bond. Then the contact loop
+    // steps the home's contact state; otherwise nothing writes it while the
+    // bond holds, and the row's is the one the core clears at a break.
+    void writeBack(size_t k)
+    {
+        const size_t from = pass.contact_under_bond ? contactLen_ : 0;
+        std::copy(records[k] + from, records[k] + rowLen_, homes[k] + from);
+    }
+
+    std::vector<double> rows_;
+    size_t rowLen_ = 0;       // 0: the core steps the homes
+    size_t contactLen_ = 0;
+    static const size_t kFirstRows = 256;
     static const size_t kSweepChunk = 512;
     static const size_t kAhead = 64;   // the core's own block of bonds (ffi/sweep.rs)
 };
@@ -178,8 +234,9 @@ std::string checkIndex(const std::vector<BondIndex> &indices, size_t status, boo
     for (const BondIndex &b : indices)
         for (size_t k = 0; k < b.size(); k++) {
             entries++;
-            if (!indexed.insert(b.records[k]).second) return "a bond is in the index twice";
-            if (b.records[k][status] != GB_BOND_STATUS_INTACT) return "the index holds a bond that is not intact";
+            if (!indexed.insert(b.homes[k]).second) return "a bond is in the index twice";
+            if (b.records[k][status] != GB_BOND_STATUS_INTACT || b.homes[k][status] != GB_BOND_STATUS_INTACT)
+                return "the index holds a bond that is not intact";
             if (marked && *b.flags[k] != kSweptMark) return "an indexed bond's pair is not marked";
         }
     size_t intact = 0;

@@ -55,6 +55,23 @@ void copy3(double *to, const double *from)
     to[2] = from[2];
 }
 
+// fix neigh/history, which first has the bonds' rows written back to their
+// records (bond_index.h): its pre_exchange gathers the records before atoms
+// migrate, lists are rebuilt and restart files are written, and at a run's
+// end (post_run).
+class FixGranbondHistory : public FixNeighHistory {
+public:
+    FixGranbondHistory(LAMMPS *lmp, int narg, char **arg) : FixNeighHistory(lmp, narg, arg) {}
+    void pre_exchange() override
+    {
+        if (owner) owner->writeBackBonds();
+        FixNeighHistory::pre_exchange();
+    }
+    PairGranbond *owner = nullptr;
+};
+
+Fix *createHistoryFix(LAMMPS *lmp, int narg, char **arg) { return new FixGranbondHistory(lmp, narg, arg); }
+
 
 }
 
@@ -193,13 +210,21 @@ void PairGranbond::init_style()
                           "use a new pair_style granbond command");
     if (!fixHistory_) {
         sizeHistory_ = size;
-        fixHistory_ = static_cast<FixNeighHistory *>(
-            modify->replace_fix(kFixDummy, std::string(kFix) + " all NEIGH_HISTORY " + std::to_string(size), 1));
+        // made by our class under the stock style's name: restart files bring
+        // a fix's per-atom values back by its ID and style
+        auto &styles = *modify->fix_map;
+        const auto stock = styles["NEIGH_HISTORY"];
+        styles["NEIGH_HISTORY"] = &createHistoryFix;
+        Fix *made = modify->replace_fix(kFixDummy, std::string(kFix) + " all NEIGH_HISTORY " + std::to_string(size), 1);
+        styles["NEIGH_HISTORY"] = stock;
+        fixHistory_ = static_cast<FixNeighHistory *>(made);
         fixHistory_->pair = this;
     }
     const int ifix = modify->find_fix(kFix);
-    if (ifix < 0) error->all(FLERR, "pair granbond: fix neigh/history not found");
-    fixHistory_ = static_cast<FixNeighHistory *>(modify->fix[ifix]);
+    FixGranbondHistory *history = ifix < 0 ? nullptr : dynamic_cast<FixGranbondHistory *>(modify->fix[ifix]);
+    if (!history) error->all(FLERR, "pair granbond: its fix neigh/history was deleted or replaced");
+    history->owner = this;
+    fixHistory_ = history;
 
     // per-type radii (for the cutoffs) and masses, all ranks
     bodies_ = gatherTypeBodies(n, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
@@ -431,11 +456,11 @@ void PairGranbond::compute(int eflag, int vflag)
     // the index of bonds is built from the records whenever the lists are
     // (the records move with them), after the records of atoms no pass
     // has seen are forgotten
-    if (anyBond_ && (update->setupflag || neighbor->ago == 0)) {
+    const bool listBuilt = update->setupflag || neighbor->ago == 0;
+    if (anyBond_ && listBuilt)
         forgetRecordsOfNewborn(*atoms_, nlocal, atom->nghost, atom->tag, list->inum, list->ilist, list->numneigh,
                                list->firstneigh, fixHistory_->firstflag, fixHistory_->firstvalue, sizeHistory_);
-        indexBonds();
-    }
+    if (anyBond_ && (listBuilt || writtenBack_)) indexBonds();
     // the pairs the contact loop visits, while the list stands
     const bool trimmed = anyBond_;
     if (trimmed && (update->setupflag || nearBuilt_ != neighbor->ncalls ||
@@ -592,7 +617,7 @@ void PairGranbond::compute(int eflag, int vflag)
             const double radsum = radius[i] + radius[j];
             *b.flags[k] = 1;
             if (trimmed) nearLive_[nearAt_[i]]++;
-            contactOf(tp, i, j, b.flags[k], b.records[k], advance, rsq < radsum * radsum, del, rsq);
+            contactOf(tp, i, j, b.flags[k], b.homes[k], advance, rsq < radsum * radsum, del, rsq);
         }
         b.keepIntact();
     }
@@ -670,7 +695,9 @@ void PairGranbond::indexBonds()
         index_[tp].model = bond_[tp];
         index_[tp].pass.with_contact = 1;
         index_[tp].pass.contact_under_bond = pairs_[tp].contactUnderBond;
+        index_[tp].useRows(layout_);
     }
+    writtenBack_ = false;
     const int ntypes1 = atom->ntypes + 1;
     for (int ii = 0; ii < list->inum; ii++) {
         const int i = list->ilist[ii];
@@ -691,6 +718,16 @@ void PairGranbond::indexBonds()
             touch[jj] = kSweptMark;
         }
     }
+}
+
+// The bonds' rows back in their records, once per index (fix
+// neigh/history's pre_exchange; bond_index.h): the next pass indexes the
+// records again.
+void PairGranbond::writeBackBonds()
+{
+    if (writtenBack_) return;
+    for (BondIndex &b : index_) b.writeBack();
+    writtenBack_ = true;
 }
 
 // The pairs of the list just built that the contact loop visits until the

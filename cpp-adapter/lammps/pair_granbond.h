@@ -71,6 +71,11 @@ public:
     std::vector<BreakEvent> &breakEvents() { return breaks_; }
     int breakLogUsers = 0;
 
+    // The bonds, stepped side by side in their index (bond_index.h), written
+    // back to their records in the engine's history pages: before fix
+    // neigh/history gathers the records.
+    void writeBackBonds();
+
 private:
     void allocate();
     void freeModels();
@@ -131,6 +136,7 @@ private:
     // build); per owned atom: its list position
     std::vector<int> nearLive_;
     std::vector<int> nearAt_;
+    bool writtenBack_ = false;              // since the index was built (writeBackBonds)
     bool checkIndex_;                       // GRANBOND_CHECK_INDEX: recount the index after each pass
     int sizeHistory_;
     bool anyBond_;

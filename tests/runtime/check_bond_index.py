@@ -16,6 +16,9 @@ LIGGGHTS (liggghts-granbond). One claim per mode:
               intact, lost) equal those of the reference table
               data/index_counts_<kind>.txt, which the adapters that visited
               each bond in the neighbour loop printed for the same deck.
+              LAMMPS also runs its agglomerate example under the check on
+              1 and 2 ranks: bonds break in compression and shear between
+              spheres that go on touching.
   under       LAMMPS contact_under_bond yes|no, LIGGGHTS model voigt's
               contactUnderBond on|off (deck under_<kind>.in): two touching
               spheres, bonded, slide past each other until the bond breaks
@@ -128,8 +131,31 @@ def check_index(a, workdir):
         label = f"restart written on {wrote} ranks, read on {reads}"
         # LAMMPS's compute pair counts events of this process only
         judge(label, index_run(a, reads, w, {"phase": 1}), resumed, balanced=a.kind == "liggghts")
+    if a.kind == "lammps":
+        check_impact(a, workdir, failures)
     if failures:
         raise Failure("; ".join(failures))
+
+
+def check_impact(a, workdir, failures):
+    """The LAMMPS agglomerate example under the index check: the spheres of
+    a bond broken in compression or shear mostly go on touching, so the
+    contact loop reads the broken bond's record in the pass it broke in."""
+    deck = os.path.join(HERE, "..", "..", "examples", "lammps_agglomerate", "in.lammps_agglomerate")
+    for n in (1, 2):
+        run_dir = os.path.join(workdir, f"impact-r{n}")
+        rc, text = run_deck(launcher(a, n), deck, run_dir, {"nrun": 1500}, env=CHECK)
+        if rc != 0 or ANNOUNCED not in text:
+            failures.append(f"agglomerate example, {n} ranks: exit {rc}:\n{text[-3000:]}")
+            continue
+        with open(os.path.join(run_dir, "counts.txt"), encoding="utf-8") as f:
+            last = [int(float(v)) for v in f.read().split("\n")[-2].split()]
+        # step created broken intact distance tension compression shear vanished
+        if last[6] == 0 or last[7] == 0:
+            failures.append(f"agglomerate example, {n} ranks: no bond broke in compression and in shear: {last}")
+        else:
+            print(f"ok: agglomerate example under the check, {n} ranks: {last[2]} bonds broke, "
+                  f"{last[6]} in compression, {last[7]} in shear")
 
 
 def tangential_force_after_break(a, workdir, under):
