@@ -2,7 +2,6 @@
 #include "core_message.h"
 #include "core_bridge.h"
 #include "fix_granbond_atoms.h"
-#include "history_prefetch.h"
 
 #include "domain.h"
 #include "fix_property_atom.h"
@@ -619,23 +618,20 @@ void BondNonlinearCohesion::applyKept(SurfacesCloseData &d, ForceData &i_forces,
     apply(out, i_forces, j_forces);
 }
 
-// The records of the next atom in the neighbour list
-// (history_prefetch.h), requested while the pairs of atom i are computed:
-// the engine's contact models read each pair's record first. Called at the
-// first callback of each atom of a swept pass; the pair loop walks the
-// neighbour list in order.
-void BondNonlinearCohesion::prefetchNextAtom(int i)
+// The loop's first callback of atom i in a swept pass: the sweep is kept
+// at least half its look-ahead in front of the loop (sweepAhead), so the
+// records the engine's contact models read first are still in cache from
+// the sweep. Requesting the next atom's records too (docs/performance.md)
+// cost instructions and gained no time; the pair loop walks the neighbour
+// list in order.
+void BondNonlinearCohesion::atomReached(int i)
 {
     lastAtom_ = i;
-    const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
-    if (!list || !history || !history->firstneigh || !history->firstdouble) return;
+    const LAMMPS_NS::NeighList *list = pair_->list;
+    if (!list) return;
     while (cursor_ < list->inum && list->ilist[cursor_] != i) cursor_++;
     if (cursor_ + kSweepAheadAtoms / 2 > aheadTo_ && aheadTo_ < list->inum - 1)
         sweepAhead(cursor_ + kSweepAheadAtoms);
-    if (cursor_ + 1 >= list->inum) return;
-    const int next = list->ilist[cursor_ + 1];
-    prefetchFlaggedRecords(history->firstneigh[next], history->firstdouble[next], list->numneigh[next],
-                           pair_->dnum(), 0);
 }
 
 // A pair whose bond the pass swept (an intact bond: the sweep advanced it
@@ -643,7 +639,7 @@ void BondNonlinearCohesion::prefetchNextAtom(int i)
 // pair's flag keeps its record.
 inline bool BondNonlinearCohesion::swept(SurfacesCloseData &d)
 {
-    if (sweeping_ && d.i != lastAtom_) prefetchNextAtom(d.i);
+    if (sweeping_ && d.i != lastAtom_) atomReached(d.i);
     if (!sweeping_ || !d.contact_history || d.contact_history[offset_ + status_] != GB_BOND_STATUS_INTACT) return false;
     setContactFlag(d, true);
     return true;

@@ -74,7 +74,7 @@ private:
                     double *state, bool &created);
     bool swept(SurfacesCloseData &d);
     bool unbondable(SurfacesCloseData &d);
-    void prefetchNextAtom(int i);
+    void atomReached(int i);
     Formed form(SurfacesCloseData &d, const GbBondModel *model);
     bool sweepNow(const Formed &f, GbBondOutput &out);
     void applyKept(SurfacesCloseData &d, ForceData &i_forces, ForceData &j_forces);
@@ -128,7 +128,7 @@ private:
     bool sweeping_;               // a force pass of pairs: the index is swept (sweepIndex)
     bool direct_;                 // ... and the bonds' loads go straight to the atoms
     bool createsNow_;             // a bond may form in this pass (force passes only)
-    int cursor_;                  // position of the latest atom in the neighbour list (prefetchNextAtom)
+    int cursor_;                  // position of the latest atom in the neighbour list (atomReached)
     int lastAtom_;
     std::vector<BondIndex> index_;   // per bond model: the intact pair bonds (bond_index.h)
     std::vector<size_t> sweptTo_;    // per index: the bonds before it are swept in this pass

@@ -1,7 +1,8 @@
-// The history records of one atom's flagged pairs (bonds, touching
-// contacts), requested from memory ahead of their use: both engines keep a
-// record for every neighbour in their history pages, so the flagged ones lie
-// apart and each first read would otherwise wait for memory.
+// The history records of one atom's flagged pairs (touching contacts, bonds
+// whose contact goes on under them), requested from memory ahead of their
+// use by the contact loop: fix neigh/history keeps a record for every
+// neighbour in its pages, so the flagged ones lie apart and each first read
+// would otherwise wait for memory.
 #ifndef GRANBOND_HISTORY_PREFETCH_H
 #define GRANBOND_HISTORY_PREFETCH_H
 
@@ -9,9 +10,8 @@ namespace granbond {
 
 // The records of the `count` pairs of one atom, `size` doubles each, side by
 // side from `records`; pair `jj` is requested if its flag is set and is not
-// `skip` (LAMMPS: kSweptMark, a swept bond whose record the loop does not
-// read; LIGGGHTS: 0, as its loop reads every flagged pair's record, a bond's
-// included). Always inlined: GCC deletes calls to a function whose only
+// `skip` (kSweptMark: a swept bond, whose record the loop reads only where
+// its contact goes on under it). Always inlined: GCC deletes calls to a function whose only
 // effect is prefetching.
 __attribute__((always_inline)) inline void prefetchFlaggedRecord(const int *flags, const double *records, int jj,
                                                                   int size, int skip)
