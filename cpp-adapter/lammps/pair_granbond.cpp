@@ -2,6 +2,7 @@
 #include "core_message.h"
 #include "fix_granbond_atoms.h"
 #include "history_prefetch.h"
+#include "vector_adds.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -27,9 +28,6 @@
 #include "neigh_request.h"
 #endif
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -336,34 +334,6 @@ void PairGranbond::failPair(int i, int j, const char *what)
         }
     error->one(FLERR, message_);
     std::abort();   // not reached
-}
-
-namespace {
-
-// to[0..2] += from[0..2] (or -=): the first two components in one 16-byte
-// operation, each lane the scalar operation, so the sums are the same bits.
-inline void add3(double *to, const double *from)
-{
-#if defined(__SSE2__)
-    _mm_storeu_pd(to, _mm_add_pd(_mm_loadu_pd(to), _mm_loadu_pd(from)));
-#else
-    to[0] += from[0];
-    to[1] += from[1];
-#endif
-    to[2] += from[2];
-}
-
-inline void subtract3(double *to, const double *from)
-{
-#if defined(__SSE2__)
-    _mm_storeu_pd(to, _mm_sub_pd(_mm_loadu_pd(to), _mm_loadu_pd(from)));
-#else
-    to[0] -= from[0];
-    to[1] -= from[1];
-#endif
-    to[2] -= from[2];
-}
-
 }
 
 // Forces of a contact (or an intact bond) on i and j. `f` and `torque` are

@@ -1,6 +1,7 @@
 #include "bond_nonlinear_cohesion.h"
 #include "core_message.h"
 #include "core_bridge.h"
+#include "vector_adds.h"
 #include "fix_granbond_atoms.h"
 
 #include "domain.h"
@@ -257,32 +258,25 @@ inline void BondNonlinearCohesion::pairKinematics(const SurfacesCloseData &d, Gb
 }
 
 // What the engine's pair loop does with a pair's loads (relaxation factor,
-// newton off, virial).
-inline void BondNonlinearCohesion::addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj,
-                                              const double *tj)
+// newton off, virial), for a bond the sweep advanced: j takes -force_i. The
+// atoms' arrays are blocks of 3 doubles per atom, indexed from `sums`, read
+// once per sweep: a core call between two bonds would make the compiler
+// read every row pointer again.
+inline void BondNonlinearCohesion::addToAtoms(const AtomSums &sums, int i, int j, const GbBondOutput &out)
 {
-    // loads read before any store: the compiler cannot rule out aliasing
-    const double li[6] = {fi[0], fi[1], fi[2], ti[0], ti[1], ti[2]};
-    const double lj[6] = {fj[0], fj[1], fj[2], tj[0], tj[1], tj[2]};
-    double *const fI = atom->f[i], *const tI = atom->torque[i];
-    const int nlocal = atom->nlocal, newton = force->newton_pair;
+    const size_t I = 3 * static_cast<size_t>(i), J = 3 * static_cast<size_t>(j);
     const double relaxI = pair_->relax(i);
-    for (int c = 0; c < 3; c++) {
-        fI[c] += relaxI * li[c];
-        tI[c] += relaxI * li[3 + c];
-    }
-    if (newton || j < nlocal) {
-        double *const fJ = atom->f[j], *const tJ = atom->torque[j];
+    addScaled3(sums.f + I, relaxI, out.force_i);
+    addScaled3(sums.torque + I, relaxI, out.torque_i);
+    if (sums.newton || j < sums.nlocal) {
         const double relaxJ = pair_->relax(j);
-        for (int c = 0; c < 3; c++) {
-            fJ[c] += relaxJ * lj[c];
-            tJ[c] += relaxJ * lj[3 + c];
-        }
+        subtractScaled3(sums.f + J, relaxJ, out.force_i);
+        addScaled3(sums.torque + J, relaxJ, out.torque_j);
     }
     if (pair_->evflag) {
         const double *xi = atom->x[i], *xj = atom->x[j];
-        pair_->ev_tally_xyz(i, j, nlocal, newton, 0.0, 0.0, li[0], li[1], li[2], xi[0] - xj[0], xi[1] - xj[1],
-                            xi[2] - xj[2]);
+        pair_->ev_tally_xyz(i, j, sums.nlocal, sums.newton, 0.0, 0.0, out.force_i[0], out.force_i[1],
+                            out.force_i[2], xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
     }
 }
 
@@ -340,10 +334,9 @@ void BondNonlinearCohesion::sweepRange(BondIndex &b, size_t first, size_t last, 
     if (first == last) return;
     const size_t breaks = b.broken.size();
     size_t bad = 0;
+    const AtomSums sums = {atom->f[0], atom->torque[0], atom->nlocal, force->newton_pair};
     const GbStatus status = b.sweep(atom, first, last, true, update->dt, t, bad, [&](size_t k, const GbBondOutput &out) {
-        if (!direct_) return;
-        const double fj[3] = {-out.force_i[0], -out.force_i[1], -out.force_i[2]};
-        addToAtoms(b.pairs[2 * k], b.pairs[2 * k + 1], out.force_i, out.torque_i, fj, out.torque_j);
+        if (direct_) addToAtoms(sums, b.pairs[2 * k], b.pairs[2 * k + 1], out);
     });
     if (status != GB_STATUS_OK) failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
     settleBroken(b, breaks);

@@ -84,7 +84,11 @@ private:
     void sweepRange(BondIndex &b, size_t first, size_t last, GbSweepTally &t);
     void settleBroken(BondIndex &b, size_t from);
     void checkIndex();
-    void addToAtoms(int i, int j, const double *fi, const double *ti, const double *fj, const double *tj);
+    struct AtomSums {
+        double *f, *torque;   // atom->f[0], atom->torque[0]
+        int nlocal, newton;
+    };
+    void addToAtoms(const AtomSums &sums, int i, int j, const GbBondOutput &out);
     bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out,
                      bool &created);
     void apply(const GbBondOutput &out, ForceData &i_forces, ForceData &j_forces);
