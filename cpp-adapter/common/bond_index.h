@@ -134,7 +134,8 @@ struct BondIndex {
             const size_t n = last - from < kSweepChunk ? last - from : kSweepChunk;
             // the core requests each call's records ahead from its second
             // block on; the first block of the next call is requested here
-            for (size_t k = from + n; k < last && k < from + n + kAhead; k++)
+            // (rows stream in order by themselves)
+            for (size_t k = from + n; !rowLen_ && k < last && k < from + n + kAhead; k++)
                 for (size_t s = 0; s < layout.len; s += 8) __builtin_prefetch(records[k] + s, 1);
             size_t failed = 0;
             const GbStatus status = granbond_bond_sweep(model, &pass, n, &arrays, pairs.data() + 2 * from,
