@@ -3,7 +3,7 @@
 # (bench/lammps/block.in, n^3 touching spheres at rest, 3 n^2 (n - 1)
 # bonds, 1 rank), alternating in one window: for each size and round, each
 # build's ns per bond-step = (loop time with bonds - without) / (bonds x
-# steps), steps = 5e7 / bonds (at least 100).
+# steps), steps = 5e7 / bonds within 100-20000.
 #
 #   [ROUNDS=2] [SIZES="22 47 70"] bench/lammps/block_ab.sh LMP_A LMP_B
 #       LMP_A, LMP_B: lmp-granbond binaries (e.g. build/bin/lmp-granbond of
@@ -11,20 +11,25 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 [ $# -eq 2 ] || { sed -n 2,11p "$0"; exit 2; }
+a="$(realpath "$1")"
+b="$(realpath "$2")"
 rounds="${ROUNDS:-2}"
 sizes="${SIZES:-22 47 70}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 loop() {  # binary n steps bonds -> loop time
-    (cd "$work" && "$1" -in "$root/bench/lammps/block.in" -var n "$2" -var nrun "$3" -var bonds "$4" -log none) \
-        2>&1 | awk '/^Loop time of/ {print $4}'
+    local t
+    t=$( (cd "$work" && "$1" -in "$root/bench/lammps/block.in" -var n "$2" -var nrun "$3" -var bonds "$4" \
+          -log none) 2>&1 | awk '/^Loop time of/ {print $4}')
+    [ -n "$t" ] || { echo "block_ab.sh: no loop time from $1 (n $2, bonds $4)" >&2; exit 1; }
+    echo "$t"
 }
 for round in $(seq "$rounds"); do
     for n in $sizes; do
         bonds=$((3 * n * n * (n - 1)))
-        steps=$(awk -v b="$bonds" 'BEGIN {s = int(5e7 / b + 0.5); if (s < 100) s = 100; print s}')
+        steps=$(awk -v b="$bonds" 'BEGIN {s = int(5e7 / b + 0.5); if (s < 100) s = 100; if (s > 20000) s = 20000; print s}')
         for name in A B; do
-            if [ "$name" = A ]; then bin="$1"; else bin="$2"; fi
+            if [ "$name" = A ]; then bin="$a"; else bin="$b"; fi
             with=$(loop "$bin" "$n" "$steps" 1)
             without=$(loop "$bin" "$n" "$steps" 0)
             awk -v r="$round" -v v="$name" -v b="$bonds" -v s="$steps" -v w="$with" -v o="$without" \
