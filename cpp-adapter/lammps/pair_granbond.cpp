@@ -70,7 +70,6 @@ public:
 
 Fix *createHistoryFix(LAMMPS *lmp, int narg, char **arg) { return new FixGranbondHistory(lmp, narg, arg); }
 
-
 }
 
 PairGranbond::PairGranbond(LAMMPS *lmp) :
