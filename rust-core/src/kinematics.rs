@@ -110,33 +110,6 @@ pub fn usable<R: Real>(vectors: [[R; 3]; 6], radius_i: R, radius_j: R) -> (R::Ma
     (finite, radius_i.gt(zero) & radius_j.gt(zero))
 }
 
-/// [`usable`] in one add per number where it says yes: the numbers of a
-/// pair (its 18 vector components, or some of them and sums of the others)
-/// and its two radii are all finite if their sum is (per lane). A sum of
-/// finite numbers that overflows says no as well, so a no sends the caller
-/// to [`usable`]. The sum is a tree of four partial sums, as there.
-#[inline(always)]
-pub(crate) fn surely_usable<R: Real, const N: usize>(
-    numbers: [R; N],
-    radius_i: R,
-    radius_j: R,
-) -> (R::Mask, R::Mask) {
-    let mut acc = [
-        numbers[0] + radius_i,
-        numbers[1] + radius_j,
-        numbers[2],
-        numbers[3],
-    ];
-    for (k, &x) in numbers[4..].iter().enumerate() {
-        acc[k % 4] = acc[k % 4] + x;
-    }
-    let sum = (acc[0] + acc[1]) + (acc[2] + acc[3]);
-    let zero = R::splat(0.0);
-    #[allow(clippy::eq_op)]
-    let finite = (sum - sum).ge(zero);
-    (finite, radius_i.gt(zero) & radius_j.gt(zero))
-}
-
 /// Centre line of a pair: `n` points from `j` to `i`.
 #[derive(Clone, Copy, Debug)]
 pub struct CentreLine<R = f64, V = Vec3> {

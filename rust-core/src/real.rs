@@ -87,6 +87,16 @@ pub trait Real:
     fn div2(a: Self, b: Self, c: Self, d: Self) -> (Self, Self) {
         (a / b, c / d)
     }
+
+    /// The value itself, computed by here (no instruction). LLVM computes
+    /// a value only where it is first used, so a value used after a branch
+    /// is computed after it, and what it is computed from is held across
+    /// the branch instead; for lanes, where that is more than the
+    /// registers hold, this keeps a step's stages apart. `f64` needs none.
+    #[inline(always)]
+    fn pin(self) -> Self {
+        self
+    }
 }
 
 impl Real for f64 {

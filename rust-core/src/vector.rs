@@ -39,6 +39,11 @@ pub trait Vector<R: Real>:
     }
     /// `if m { a } else { b }` per lane.
     fn select(m: R::Mask, a: Self, b: Self) -> Self;
+    /// [`Real::pin`] of each component.
+    #[inline(always)]
+    fn pin(self) -> Self {
+        self
+    }
 }
 
 impl Vector<f64> for Vec3 {
@@ -163,6 +168,10 @@ impl<R: Real> Vector<R> for V3<R> {
             R::select(m, a.y, b.y),
             R::select(m, a.z, b.z),
         )
+    }
+    #[inline(always)]
+    fn pin(self) -> Self {
+        V3::new(self.x.pin(), self.y.pin(), self.z.pin())
     }
 }
 

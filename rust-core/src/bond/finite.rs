@@ -24,13 +24,21 @@ pub type BatchResult = Result<Option<usize>, (usize, KinematicsError)>;
 /// in every lane, so a lane decides as the scalar check does.
 #[inline(always)]
 pub fn results_finite<R: Real>(loads: [R; 9], scalars: [R; 4], state: [R; BOND_STATE_LEN]) -> R::Mask {
+    results_finite_summed(loads, scalars, sum(&state))
+}
+
+/// [`results_finite`] given the sum of the state's slots, added left to
+/// right in their order (by a step that adds each as it writes it).
+#[inline(always)]
+pub(crate) fn results_finite_summed<R: Real>(loads: [R; 9], scalars: [R; 4], state_sum: R) -> R::Mask {
     let outputs = sum(&loads) + sum(&scalars);
-    is_finite(outputs) & is_finite(sum(&state))
+    is_finite(outputs) & is_finite(state_sum)
 }
 
 /// Whether [`results_finite`] holds for every lane of a register of bonds
-/// whose first state slots are in `state` and whose other slots are read
-/// from `rest(lane)`: all lanes true only if it does. The rest is not added
+/// whose first state slots add up, left to right in their order, to
+/// `head_sum` and whose other slots are read from `rest(lane)`: all lanes
+/// true only if it does. The rest is not added
 /// lane by lane in order: the step proves its sums finite with a bound
 /// instead (the first slots' sum and all the rest's magnitudes together
 /// under a quarter of the largest double each: no sum of them in any order
@@ -41,12 +49,12 @@ pub fn results_finite<R: Real>(loads: [R; 9], scalars: [R; 4], state: [R; BOND_S
 pub(crate) fn results_surely_finite<'a, P: Pack>(
     loads: [P; 9],
     scalars: [P; 4],
-    state: &[P],
+    head_sum: P,
     rest: impl Fn(usize) -> &'a [f64],
 ) -> P::Mask {
     let outputs = sum(&loads) + sum(&scalars);
     let bound = P::splat(f64::MAX / 4.0);
-    let head = sum(state).abs().lt(bound);
+    let head = head_sum.abs().lt(bound);
     let mut magnitudes = P::splat(0.0);
     for lane in 0..P::WIDTH {
         magnitudes = add_magnitudes(magnitudes, rest(lane));

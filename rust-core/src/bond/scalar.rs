@@ -2,11 +2,10 @@
 //! step ([`super::step`]) and its loads back out.
 
 use super::breakage::BreakMode;
-use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
 use super::finite::{bond_finite, BatchResult};
 use super::laws::BondLaws;
 use super::state::{BondOutput, BondState, BondStatus};
-use super::step::{advance, History, Motion};
+use super::step::{advance, breaks_by_distance, broken_by_distance, relative, HistoryIo, MotionSource};
 use super::switches::Switches;
 use super::twist_bend::{BendHistory, TwistHistory};
 use crate::kinematics::{centre_line, KinematicsError, PairKinematics};
@@ -30,7 +29,7 @@ fn finish(state: &mut BondState, out: &mut BondOutput, status: BondStatus, mode:
 #[inline(always)]
 pub(crate) fn bond_step<S: Switches>(
     laws: &BondLaws,
-    kin: &PairKinematics,
+    mut kin: &PairKinematics,
     dt: f64,
     state: &mut BondState,
     out: &mut BondOutput,
@@ -43,51 +42,12 @@ pub(crate) fn bond_step<S: Switches>(
     }
     kin.check()?;
     let line = centre_line(kin)?;
-    let motion = Motion {
-        v_i: v3(kin.v_i),
-        v_j: v3(kin.v_j),
-        w_i: v3(kin.w_i),
-        w_j: v3(kin.w_j),
-        radius_i: kin.radius_i,
-        radius_j: kin.radius_j,
+    let loads = if breaks_by_distance(laws, line.r) {
+        broken_by_distance(state.r0 - line.r)
+    } else {
+        let relative = relative::<S, f64, Vec3>(laws, &mut kin, line, state.r0);
+        advance::<S, f64, Vec3, _>(laws, &relative, dt, state)
     };
-    let mut history = History {
-        r0: state.r0,
-        delta_max: state.delta_max,
-        delta_min: state.delta_min,
-        shear_force: v3(state.shear_force),
-        twist_angle: v3(state.twist_angle),
-        bend_angle: v3(state.bend_angle),
-        twist: TwistHistory {
-            max: state.twist_max,
-            min: state.twist_min,
-        },
-        bend: BendHistory {
-            leading: v3(state.bend_history),
-            opposite: state.bend_opposite,
-        },
-    };
-    let loads = advance::<S, f64, Vec3>(laws, &motion, line, dt, &mut history);
-    // The slots of a law switched off are left as they are (as `advance`
-    // leaves them).
-    let on = |bits| S::of(laws).any(bits);
-    if on(TENSION | COMPRESSION) {
-        state.delta_max = history.delta_max;
-        state.delta_min = history.delta_min;
-    }
-    if on(SHEAR) {
-        state.shear_force = history.shear_force.into();
-    }
-    if on(TWIST) {
-        state.twist_angle = history.twist_angle.into();
-        state.twist_max = history.twist.max;
-        state.twist_min = history.twist.min;
-    }
-    if on(BEND) {
-        state.bend_angle = history.bend_angle.into();
-        state.bend_history = history.bend.leading.into();
-        state.bend_opposite = history.bend.opposite;
-    }
     out.delta = loads.delta;
     out.normal_force = loads.normal_force;
     out.sigma = loads.sigma;
@@ -105,6 +65,92 @@ pub(crate) fn bond_step<S: Switches>(
     out.status = status as i32;
     out.break_mode = mode as i32;
     Ok(())
+}
+
+impl MotionSource<f64, Vec3> for &PairKinematics {
+    #[inline(always)]
+    fn radii(&mut self) -> (f64, f64) {
+        (self.radius_i, self.radius_j)
+    }
+    #[inline(always)]
+    fn velocities(&mut self) -> (Vec3, Vec3) {
+        (v3(self.v_i), v3(self.v_j))
+    }
+    #[inline(always)]
+    fn spins(&mut self) -> (Vec3, Vec3) {
+        (v3(self.w_i), v3(self.w_j))
+    }
+}
+
+/// The history in place: a law switched off leaves its slots as they are.
+impl HistoryIo<f64, Vec3> for BondState {
+    #[inline(always)]
+    fn delta_extremes(&mut self) -> (f64, f64) {
+        (self.delta_max, self.delta_min)
+    }
+    #[inline(always)]
+    fn shear_force(&mut self) -> Vec3 {
+        v3(self.shear_force)
+    }
+    #[inline(always)]
+    fn twist_angle(&mut self) -> Vec3 {
+        v3(self.twist_angle)
+    }
+    #[inline(always)]
+    fn bend_angle(&mut self) -> Vec3 {
+        v3(self.bend_angle)
+    }
+    #[inline(always)]
+    fn twist_extremes(&mut self) -> TwistHistory<f64> {
+        TwistHistory {
+            max: self.twist_max,
+            min: self.twist_min,
+        }
+    }
+    #[inline(always)]
+    fn bend_history(&mut self) -> BendHistory<f64, Vec3> {
+        BendHistory {
+            leading: v3(self.bend_history),
+            opposite: self.bend_opposite,
+        }
+    }
+    #[inline(always)]
+    fn put_delta_extremes(&mut self, new: Option<(f64, f64)>) {
+        if let Some((max, min)) = new {
+            (self.delta_max, self.delta_min) = (max, min);
+        }
+    }
+    #[inline(always)]
+    fn put_shear_force(&mut self, new: Option<Vec3>) {
+        if let Some(v) = new {
+            self.shear_force = v.into();
+        }
+    }
+    #[inline(always)]
+    fn put_twist_angle(&mut self, new: Option<Vec3>) {
+        if let Some(v) = new {
+            self.twist_angle = v.into();
+        }
+    }
+    #[inline(always)]
+    fn put_bend_angle(&mut self, new: Option<Vec3>) {
+        if let Some(v) = new {
+            self.bend_angle = v.into();
+        }
+    }
+    #[inline(always)]
+    fn put_twist_extremes(&mut self, new: Option<TwistHistory<f64>>) {
+        if let Some(t) = new {
+            (self.twist_max, self.twist_min) = (t.max, t.min);
+        }
+    }
+    #[inline(always)]
+    fn put_bend_history(&mut self, new: Option<BendHistory<f64, Vec3>>) {
+        if let Some(b) = new {
+            self.bend_history = b.leading.into();
+            self.bend_opposite = b.opposite;
+        }
+    }
 }
 
 /// Steps bonds `range` one by one, states in place or behind pointers,

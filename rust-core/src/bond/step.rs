@@ -2,13 +2,20 @@
 //! (`f64`) or a chunk of bonds in lanes, over the parts switched on. The
 //! scalar and wide paths ([`super::scalar`], [`super::wide`]) only move
 //! numbers in and out of it.
+//!
+//! The step runs in stages, so that in lanes what one stage holds is dead
+//! before the next stage's numbers come in (16 AVX2 registers): the pair's
+//! kinematics are reduced to what the laws read as soon as they are loaded
+//! ([`relative`]); then each law in the order of the state's slots reads
+//! its history, writes it back and is damped ([`advance`], through
+//! [`HistoryIo`]).
 
 use super::breakage::{distance_criterion, section_stresses, stress_criterion, BreakMode};
 use super::damping::{damp_along, damp_scalar, reciprocal_unit, sign, unit_scale};
 use super::features::{BEND, COMPRESSION, DAMPING, SHEAR, SMOOTH, TENSION, TWIST};
 use super::laws::BondLaws;
 use super::paired::{norms, reciprocals};
-use super::section::{lever_arms_scaled, section};
+use super::section::{lever_arms_scaled, section, Section};
 use super::shear::update_shear_force;
 use super::switches::Switches;
 use super::twist_bend::{advance_bend, advance_twist, split_relative_spin, BendHistory, TwistHistory};
@@ -16,49 +23,147 @@ use crate::kinematics::{slip_velocity, CentreLine};
 use crate::real::Real;
 use crate::vector::Vector;
 
-/// What a step reads of a pair besides its centre line.
-#[derive(Clone, Copy)]
-pub(crate) struct Motion<R, V> {
-    pub v_i: V,
-    pub v_j: V,
-    pub w_i: V,
-    pub w_j: V,
-    pub radius_i: R,
-    pub radius_j: R,
+/// Where a step reads what it needs of a pair besides its centre line,
+/// each when [`relative`] first needs it.
+pub(crate) trait MotionSource<R, V> {
+    /// `(R_i, R_j)`.
+    fn radii(&mut self) -> (R, R);
+    /// `(v_i, v_j)`.
+    fn velocities(&mut self) -> (V, V);
+    /// `(w_i, w_j)`.
+    fn spins(&mut self) -> (V, V);
 }
 
-/// The slots of [`BondState`] a step updates (all but the status).
-#[derive(Clone, Copy)]
-pub(crate) struct History<R, V> {
-    pub r0: R,
-    pub delta_max: R,
-    pub delta_min: R,
-    pub shear_force: V,
-    pub twist_angle: V,
-    pub bend_angle: V,
-    pub twist: TwistHistory<R>,
-    pub bend: BendHistory<R, V>,
+/// Where a step reads a bond's history and writes it back, one group of
+/// slots at a time. [`advance`] reads a group just before its law needs it
+/// and hands every group back once, in the order of the slots: the new
+/// values, or `None` for a law switched off, whose slots stay as they are.
+pub(crate) trait HistoryIo<R, V> {
+    fn delta_extremes(&mut self) -> (R, R);
+    fn shear_force(&mut self) -> V;
+    fn twist_angle(&mut self) -> V;
+    fn bend_angle(&mut self) -> V;
+    fn twist_extremes(&mut self) -> TwistHistory<R>;
+    fn bend_history(&mut self) -> BendHistory<R, V>;
+    /// `delta_max`, `delta_min`.
+    fn put_delta_extremes(&mut self, new: Option<(R, R)>);
+    fn put_shear_force(&mut self, new: Option<V>);
+    fn put_twist_angle(&mut self, new: Option<V>);
+    fn put_bend_angle(&mut self, new: Option<V>);
+    fn put_twist_extremes(&mut self, new: Option<TwistHistory<R>>);
+    fn put_bend_history(&mut self, new: Option<BendHistory<R, V>>);
 }
 
-impl<R: Real, V: Vector<R>> History<R, V> {
-    #[inline(always)]
-    fn select(m: R::Mask, a: Self, b: Self) -> Self {
-        Self {
-            r0: R::select(m, a.r0, b.r0),
-            delta_max: R::select(m, a.delta_max, b.delta_max),
-            delta_min: R::select(m, a.delta_min, b.delta_min),
-            shear_force: V::select(m, a.shear_force, b.shear_force),
-            twist_angle: V::select(m, a.twist_angle, b.twist_angle),
-            bend_angle: V::select(m, a.bend_angle, b.bend_angle),
-            twist: TwistHistory {
-                max: R::select(m, a.twist.max, b.twist.max),
-                min: R::select(m, a.twist.min, b.twist.min),
-            },
-            bend: BendHistory {
-                leading: V::select(m, a.bend.leading, b.bend.leading),
-                opposite: R::select(m, a.bend.opposite, b.bend.opposite),
-            },
+/// What the laws read of a pair: its centre line and section, and its
+/// relative motion in the terms the laws use, each only where a law
+/// switched on reads it (zero otherwise).
+#[derive(Clone, Copy)]
+pub(crate) struct Relative<R, V> {
+    pub n: V,
+    /// `r0 - r`.
+    pub delta: R,
+    pub section: Section<R>,
+    pub inv_rb: R,
+    pub lever_i: R,
+    pub lever_j: R,
+    pub slip: V,
+    /// `(v_i - v_j) . n`, for the damping of the normal force.
+    pub normal_rate: R,
+    /// `w_i - w_j`.
+    pub spin: V,
+}
+
+/// Whether the bond breaks on its centre distance `r` (distance mode).
+#[inline(always)]
+pub(crate) fn breaks_by_distance<R: Real>(laws: &BondLaws, r: R) -> R::Mask {
+    if laws.stress_break {
+        R::mask(false)
+    } else {
+        distance_criterion(r, laws.params.max_distance)
+    }
+}
+
+/// The loads of a bond broken by its centre distance at compression
+/// `delta`: nothing, no stresses; its history stays as it was.
+#[inline(always)]
+pub(crate) fn broken_by_distance<R: Real, V: Vector<R>>(delta: R) -> Loads<R, V> {
+    let zero = R::splat(0.0);
+    broken(
+        delta,
+        zero,
+        zero,
+        zero,
+        R::splat(BreakMode::Distance as i32 as f64),
+    )
+}
+
+#[inline(always)]
+fn broken<R: Real, V: Vector<R>>(delta: R, normal_force: R, sigma: R, tau: R, mode: R) -> Loads<R, V> {
+    Loads {
+        force_i: V::zeros(),
+        torque_i: V::zeros(),
+        torque_j: V::zeros(),
+        normal_force,
+        sigma,
+        tau,
+        delta,
+        mode,
+    }
+}
+
+/// The pair's motion reduced to what the laws switched on read, with its
+/// centre line and the bond's rest length `r0`.
+#[inline(always)]
+pub(crate) fn relative<S: Switches, R: Real, V: Vector<R>>(
+    laws: &BondLaws,
+    m: &mut impl MotionSource<R, V>,
+    line: CentreLine<R, V>,
+    r0: R,
+) -> Relative<R, V> {
+    let on = |bits| S::of(laws).any(bits);
+    let zero = R::splat(0.0);
+    let n = line.n;
+    let (shear, spins) = (on(SHEAR), on(TWIST | BEND));
+    let normal_damping = on(DAMPING) && on(TENSION | COMPRESSION);
+    let (radius_i, radius_j) = m.radii();
+    let sec = section(laws.params.lambda, radius_i, radius_j);
+    // The only divisions by the radii: the stresses and lever arms multiply.
+    let (inv_rb, inv_radius_sum) = super::section::reciprocals(&sec, radius_i, radius_j);
+    let (mut lever_i, mut lever_j) = (zero, zero);
+    let (mut slip, mut normal_rate, mut spin) = (V::zeros(), zero, V::zeros());
+    if shear || normal_damping {
+        let (v_i, v_j) = m.velocities();
+        if normal_damping {
+            normal_rate = (v_i - v_j).dot(&n);
         }
+        if shear || spins {
+            let (w_i, w_j) = m.spins();
+            if shear {
+                (lever_i, lever_j) = lever_arms_scaled(line.r, inv_radius_sum, radius_i, radius_j);
+                slip = slip_velocity(v_i - v_j, w_i, w_j, n, lever_i, lever_j);
+            }
+            if spins {
+                spin = w_i - w_j;
+            }
+        }
+    } else if spins {
+        let (w_i, w_j) = m.spins();
+        spin = w_i - w_j;
+    }
+    // Computed here, from numbers that die here, whatever branch comes
+    // before its first use (see `Real::pin`).
+    let pin_if = |on: bool, x: R| if on { x.pin() } else { x };
+    let pin_vector_if = |on: bool, v: V| if on { v.pin() } else { v };
+    Relative {
+        n: n.pin(),
+        delta: (r0 - line.r).pin(),
+        section: sec,
+        inv_rb,
+        lever_i: pin_if(shear, lever_i),
+        lever_j: pin_if(shear, lever_j),
+        slip: pin_vector_if(shear, slip),
+        normal_rate: pin_if(normal_damping, normal_rate),
+        spin: pin_vector_if(spins, spin),
     }
 }
 
@@ -76,112 +181,119 @@ pub(crate) struct Loads<R, V> {
     pub mode: R,
 }
 
-/// The physics of one step of an intact bond with usable kinematics, for one
-/// bond (`f64`) or a chunk of lanes (see [`super::wide`]): updates
-/// `history` and returns the loads.
+/// The physics of one step of an intact bond with usable kinematics that
+/// does not break by distance ([`breaks_by_distance`]), for one bond
+/// (`f64`) or a chunk of lanes (see [`super::wide`]): updates the history
+/// in `h` and returns the loads.
 ///
-/// A bond that breaks exerts nothing. One broken by distance keeps its
-/// history as it was and reports no stresses; one broken by stress has its
-/// history updated and reports the stresses that broke it. The scalar
-/// kernel returns as soon as its bond breaks; in lanes every lane is
-/// computed and the broken ones are masked at the end (and the history of
-/// the ones broken by distance restored), unless all of them broke.
+/// A bond broken by stress exerts nothing; its history is updated and it
+/// reports the stresses that broke it. Lanes broken by stress are computed
+/// with the others and masked at the end.
 #[inline(always)]
-pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>>(
+pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>, H: HistoryIo<R, V>>(
     laws: &BondLaws,
-    m: &Motion<R, V>,
-    line: CentreLine<R, V>,
+    k: &Relative<R, V>,
     dt: R,
-    h: &mut History<R, V>,
+    h: &mut H,
 ) -> Loads<R, V> {
     let on = |bits| S::of(laws).any(bits);
     let zero = R::splat(0.0);
-    let n = line.n;
-    let delta = h.r0 - line.r;
-    let broken = |normal_force, sigma, tau, mode| Loads {
-        force_i: V::zeros(),
-        torque_i: V::zeros(),
-        torque_j: V::zeros(),
-        normal_force,
-        sigma,
-        tau,
-        delta,
-        mode,
-    };
-    let distance_mode = R::splat(BreakMode::Distance as i32 as f64);
-    let gone = if laws.stress_break {
-        R::mask(false)
-    } else {
-        distance_criterion(line.r, laws.params.max_distance)
-    };
-    if R::all(gone) {
-        return broken(zero, zero, zero, distance_mode);
-    }
-    let before = *h;
-    let sec = section(laws.params.lambda, m.radius_i, m.radius_j);
-    // The only divisions by the radii: the stresses and lever arms multiply.
-    let (inv_rb, inv_radius_sum) = super::section::reciprocals(&sec, m.radius_i, m.radius_j);
+    let (n, delta, sec) = (k.n, k.delta, &k.section);
+    let (shear, twist, bend, damping) = (on(SHEAR), on(TWIST), on(BEND), on(DAMPING));
+    let smooth = on(SMOOTH);
+    let p = &laws.params;
+    let (ve, we) = (p.smooth_velocity, p.smooth_angular_velocity);
 
     let mut normal_force = zero;
     if on(TENSION | COMPRESSION) {
-        let (hi, lo) = laws.normal.update_history(delta, h.delta_max, h.delta_min);
-        h.delta_max = hi;
-        h.delta_min = lo;
+        let (max, min) = h.delta_extremes();
+        let (hi, lo) = laws.normal.update_history(delta, max, min);
+        h.put_delta_extremes(Some((hi, lo)));
         normal_force = sec.area * laws.normal.stress(delta, hi, lo, on(TENSION), on(COMPRESSION));
-    }
-
-    let (mut lever_i, mut lever_j) = (zero, zero);
-    let mut slip = V::zeros();
-    let mut shear_force = V::zeros();
-    if on(SHEAR) {
-        (lever_i, lever_j) = lever_arms_scaled(line.r, inv_radius_sum, m.radius_i, m.radius_j);
-        slip = slip_velocity(m.v_i - m.v_j, m.w_i, m.w_j, n, lever_i, lever_j);
-        let stiffness = R::splat(laws.params.k_ft) * sec.area;
-        shear_force = update_shear_force(h.shear_force, stiffness, dt, slip, n);
-        h.shear_force = shear_force;
-    }
-
-    let (twist, bend) = (on(TWIST), on(BEND));
-    let (w_along, w_across, spin_rate) = if twist || bend {
-        split_relative_spin(m.w_i - m.w_j, n)
     } else {
-        (V::zeros(), V::zeros(), zero)
-    };
-    let (mut twist_torque, mut bend_torque) = (V::zeros(), V::zeros());
-    // |torque| = |h| * moment, from the laws (no square roots).
-    let (mut twist_magnitude, mut bend_magnitude) = (zero, zero);
-    if twist {
-        let theta = advance_twist(h.twist_angle, w_along, n, dt);
-        let (t, history) = laws.twist.twist(theta, n, h.twist, sec.polar);
-        h.twist_angle = theta;
-        h.twist = history;
-        (twist_torque, twist_magnitude) = (t.torque, t.magnitude);
+        h.put_delta_extremes(None);
     }
-    if bend {
-        let theta = advance_bend(h.bend_angle, w_across, n, dt);
-        let (t, history) = laws.bend.bend(theta, n, h.bend, sec.inertia);
-        h.bend_angle = theta;
-        h.bend = history;
-        (bend_torque, bend_magnitude) = (t.torque, t.magnitude);
-    }
-    // Lanes broken by distance keep their history (a scalar bond returned
-    // above; for it `gone` is false here and this vanishes).
-    if R::any(gone) {
-        *h = History::select(gone, before, *h);
+    let undamped = normal_force;
+    if damping && on(TENSION | COMPRESSION) {
+        normal_force = damp_scalar(normal_force, p.eta_fn, k.normal_rate, ve, smooth);
     }
 
     // Lengths, two per instruction: the shear force (for the stresses and
     // the damping) and, with damping, the slip speed the damping opposes.
-    let (shear, damping) = (on(SHEAR), on(DAMPING));
-    let (shear_magnitude, slip_speed) = norms(shear_force, shear, slip, shear && damping);
+    let (mut shear_force, mut shear_magnitude, mut slip_speed) = (V::zeros(), zero, zero);
+    if shear {
+        let stiffness = R::splat(p.k_ft) * sec.area;
+        shear_force = update_shear_force(h.shear_force(), stiffness, dt, k.slip, n);
+        h.put_shear_force(Some(shear_force));
+        (shear_magnitude, slip_speed) = norms(shear_force, true, k.slip, damping);
+    } else {
+        h.put_shear_force(None);
+    }
+    let (w_along, w_across, spin_rate) = if twist || bend {
+        split_relative_spin(k.spin, n)
+    } else {
+        (V::zeros(), V::zeros(), zero)
+    };
+    // The (smooth) unit vectors of the slip and of the bending spin: one
+    // reciprocal each, both in one instruction.
+    let (mut scale_b, mut inv_b) = (zero, zero);
+    if damping {
+        let spin_across = if bend { w_across.norm() } else { zero };
+        let scale_s = unit_scale(slip_speed, ve, smooth);
+        scale_b = unit_scale(spin_across, we, smooth);
+        let inv_s;
+        (inv_s, inv_b) = reciprocals(scale_s, shear, scale_b, bend);
+        if shear {
+            let direction = reciprocal_unit(k.slip, scale_s, inv_s);
+            shear_force = damp_along(shear_force, shear_magnitude, p.eta_ft, direction);
+        }
+    }
+    let force = n * normal_force + shear_force;
+    let arm = if shear { n.cross(&shear_force) } else { V::zeros() };
+
+    // |torque| = |h| * moment, from the laws (no square roots).
+    let (mut twist_torque, mut twist_magnitude) = (V::zeros(), zero);
+    let mut twist_history = None;
+    if twist {
+        let theta = advance_twist(h.twist_angle(), w_along, n, dt);
+        h.put_twist_angle(Some(theta));
+        let (t, history) = laws.twist.twist(theta, n, h.twist_extremes(), sec.polar);
+        twist_history = Some(history);
+        (twist_torque, twist_magnitude) = (t.torque, t.magnitude);
+        if damping {
+            // w_along = n (w . n), so its unit vector is n sgn(w . n) (and
+            // the smooth one n clamp(w . n / we, -1, 1), the same thing).
+            let direction = n * sign(spin_rate, we, smooth);
+            twist_torque = damp_along(twist_torque, twist_magnitude, p.eta_tn, direction);
+        }
+    } else {
+        h.put_twist_angle(None);
+    }
+    let (mut bend_torque, mut bend_magnitude) = (V::zeros(), zero);
+    if bend {
+        let theta = advance_bend(h.bend_angle(), w_across, n, dt);
+        h.put_bend_angle(Some(theta));
+        h.put_twist_extremes(twist_history);
+        let (t, history) = laws.bend.bend(theta, n, h.bend_history(), sec.inertia);
+        h.put_bend_history(Some(history));
+        (bend_torque, bend_magnitude) = (t.torque, t.magnitude);
+        if damping {
+            let direction = reciprocal_unit(w_across, scale_b, inv_b);
+            bend_torque = damp_along(bend_torque, bend_magnitude, p.eta_tt, direction);
+        }
+    } else {
+        h.put_bend_angle(None);
+        h.put_twist_extremes(twist_history);
+        h.put_bend_history(None);
+    }
+
     let (sigma, tau) = section_stresses(
-        normal_force,
+        undamped,
         shear_magnitude,
         twist_magnitude,
         bend_magnitude,
-        inv_rb,
+        k.inv_rb,
     );
-    let undamped = normal_force;
     let stress_mode = if laws.stress_break {
         stress_criterion(sigma, tau, delta, &laws.limits)
     } else {
@@ -189,60 +301,36 @@ pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>>(
     };
     let snapped = stress_mode.gt(zero);
     if R::all(snapped) {
-        return broken(normal_force, sigma, tau, stress_mode);
+        return broken(delta, undamped, sigma, tau, stress_mode);
     }
 
-    if damping {
-        let smooth = on(SMOOTH);
-        let p = &laws.params;
-        let (ve, we) = (p.smooth_velocity, p.smooth_angular_velocity);
-        if on(TENSION | COMPRESSION) {
-            let vn = (m.v_i - m.v_j).dot(&n);
-            normal_force = damp_scalar(normal_force, p.eta_fn, vn, ve, smooth);
-        }
-        // The (smooth) unit vectors of the slip and of the bending spin: one
-        // reciprocal each, both in one instruction.
-        let spin_across = if bend { w_across.norm() } else { zero };
-        let scale_s = unit_scale(slip_speed, ve, smooth);
-        let scale_b = unit_scale(spin_across, we, smooth);
-        let (inv_s, inv_b) = reciprocals(scale_s, shear, scale_b, bend);
-        if shear {
-            let direction = reciprocal_unit(slip, scale_s, inv_s);
-            shear_force = damp_along(shear_force, shear_magnitude, p.eta_ft, direction);
-        }
-        if twist {
-            // w_along = n (w . n), so its unit vector is n sgn(w . n) (and
-            // the smooth one n clamp(w . n / we, -1, 1), the same thing).
-            let direction = n * sign(spin_rate, we, smooth);
-            twist_torque = damp_along(twist_torque, twist_magnitude, p.eta_tn, direction);
-        }
-        if bend {
-            let direction = reciprocal_unit(w_across, scale_b, inv_b);
-            bend_torque = damp_along(bend_torque, bend_magnitude, p.eta_tt, direction);
-        }
-    }
-
-    let force = n * normal_force + shear_force;
     let couple = bend_torque + twist_torque;
     let (mut torque_i, mut torque_j) = (couple, -couple);
     if shear {
-        let arm = n.cross(&shear_force);
-        torque_i -= arm * lever_i;
-        torque_j -= arm * lever_j;
+        torque_i -= arm * k.lever_i;
+        torque_j -= arm * k.lever_j;
     }
-    // The lanes that broke (none for a scalar bond here) exert nothing.
-    let off = gone | snapped;
-    let load = |v| V::select(off, V::zeros(), v);
-    Loads {
-        force_i: load(force),
-        torque_i: load(torque_i),
-        torque_j: load(torque_j),
-        normal_force: R::select(gone, zero, undamped),
-        sigma: R::select(gone, zero, sigma),
-        tau: R::select(gone, zero, tau),
+    let loads = Loads {
+        force_i: force,
+        torque_i,
+        torque_j,
+        normal_force: undamped,
+        sigma,
+        tau,
         delta,
-        // (`stress_mode` is 0 unless `snapped`; spelt out, the scalar
-        // kernel sees a constant here.)
-        mode: R::select(gone, distance_mode, R::select(snapped, stress_mode, zero)),
+        mode: zero,
+    };
+    // The lanes that broke (never a scalar bond here, which returned above)
+    // exert nothing. Rare: a branch rather than a blend per number.
+    if R::any(snapped) {
+        let load = |v| V::select(snapped, V::zeros(), v);
+        return Loads {
+            force_i: load(force),
+            torque_i: load(torque_i),
+            torque_j: load(torque_j),
+            mode: R::select(snapped, stress_mode, zero),
+            ..loads
+        };
     }
+    loads
 }

@@ -17,15 +17,15 @@
 //! kernel, which zeroes the first kind and reports the first bad one with
 //! its index.
 
-use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
-use super::finite::{bond_finite, results_finite, results_surely_finite, BatchResult};
+use super::features::{BEND, SHEAR, TWIST};
+use super::finite::{bond_finite, results_finite_summed, results_surely_finite, BatchResult};
 use super::laws::BondLaws;
 use super::scalar::one_by_one;
 use super::state::{BondOutput, BondState, BondStatus, BOND_STATE_LEN};
-use super::step::{advance, History, Motion};
+use super::step::{advance, breaks_by_distance, relative, HistoryIo, MotionSource};
 use super::switches::Switches;
 use super::twist_bend::{BendHistory, TwistHistory};
-use crate::kinematics::{axis, separated, surely_usable};
+use crate::kinematics::{axis, separated, PairKinematics};
 use crate::pair_source::PairSource;
 use crate::real::packed::Pack;
 use crate::vector::{Vector, V3};
@@ -93,40 +93,27 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     }
     let on = |bits| S::of(laws).any(bits);
     let (x_i, x_j) = (lanes3(kin, |k| k.x_i), lanes3(kin, |k| k.x_j));
-    let (v_i, v_j) = (lanes3(kin, |k| k.v_i), lanes3(kin, |k| k.v_j));
-    let (radius_i, radius_j) = (
-        P::gather(|lane| kin(lane).radius_i),
-        P::gather(|lane| kin(lane).radius_j),
-    );
-    let [a, b, c, e] = [x_i, x_j, v_i, v_j].map(|v| [v.x, v.y, v.z]);
-    let zero = V3::new(P::splat(0.0), P::splat(0.0), P::splat(0.0));
-    // Spins that no law switched on reads are only checked: added up as
-    // they are loaded, not moved into their lanes.
-    let ((w_i, w_j), (finite, positive)) = if !S::FIXED || on(SHEAR | TWIST | BEND) {
-        let (w_i, w_j) = (lanes3(kin, |k| k.w_i), lanes3(kin, |k| k.w_j));
-        let numbers = [a, b, c, e, [w_i.x, w_i.y, w_i.z], [w_j.x, w_j.y, w_j.z]];
-        let numbers: [P; 18] = std::array::from_fn(|i| numbers[i / 3][i % 3]);
-        ((w_i, w_j), surely_usable(numbers, radius_i, radius_j))
-    } else {
-        let spins = P::gather2_sum(|lane| [kin(lane).w_i[0], kin(lane).w_i[1]])
-            + P::gather2_sum(|lane| [kin(lane).w_i[2], kin(lane).w_j[0]])
-            + P::gather2_sum(|lane| [kin(lane).w_j[1], kin(lane).w_j[2]]);
-        let numbers = [
-            a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], e[0], e[1], e[2], spins,
-        ];
-        ((zero, zero), surely_usable(numbers, radius_i, radius_j))
-    };
-    let motion = Motion {
-        v_i,
-        v_j,
-        w_i,
-        w_j,
-        radius_i,
-        radius_j,
-    };
     let d = x_i - x_j;
     let r2 = d.norm_squared();
+    let line = axis(d, r2);
+    let mut motion = LaneMotion {
+        kin,
+        sum: ((x_i.x + x_i.y) + (x_i.z + x_j.x)) + (x_j.y + x_j.z),
+        positive: P::mask(true),
+        velocities: false,
+        spins: false,
+    };
+    let relative = relative::<S, P, V3<P>>(laws, &mut motion, line, r0);
+    let finite = motion.finite();
+    let positive = motion.positive;
+    // Decided before the step writes anything, and after the numbers read
+    // are reduced to what the laws need, so that they are not held to the
+    // branch. A bond broken by distance is rare, and its lane would need
+    // its history kept aside: the scalar kernel steps such a chunk too.
     let usable = finite & positive & separated(r2);
+    if !P::all(usable) || P::any(breaks_by_distance(laws, line.r)) {
+        return None;
+    }
 
     // The slots after the last one a law switched on uses stay in memory:
     // the step leaves them alone, and only the results check reads them.
@@ -137,82 +124,20 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     } else {
         BOND_STATE_LEN
     };
-    let vector = |first: usize, f: fn(&BondState) -> [f64; 3]| {
-        if first < live {
-            gather3(states, f)
-        } else {
-            zero
-        }
+    let mut history = Lanes {
+        states,
+        live,
+        sum: intact + r0,
     };
-    let scalar = |slot: usize, f: fn(&BondState) -> f64| {
-        if slot < live {
-            gather(states, f)
-        } else {
-            P::splat(0.0)
-        }
-    };
-    let (delta_max, delta_min) = gather2(states, |s: &BondState| [s.delta_max, s.delta_min]);
-    let mut h = History {
-        r0,
-        delta_max,
-        delta_min,
-        shear_force: vector(4, |s| s.shear_force),
-        twist_angle: vector(7, |s| s.twist_angle),
-        bend_angle: vector(10, |s| s.bend_angle),
-        twist: if 13 < live {
-            let (max, min) = gather2(states, |s: &BondState| [s.twist_max, s.twist_min]);
-            TwistHistory { max, min }
-        } else {
-            TwistHistory {
-                max: P::splat(0.0),
-                min: P::splat(0.0),
-            }
-        },
-        bend: BendHistory {
-            leading: vector(15, |s| s.bend_history),
-            opposite: scalar(18, |s| s.bend_opposite),
-        },
-    };
-    let loads = advance::<S, P, V3<P>>(laws, &motion, axis(d, r2), P::splat(dt), &mut h);
-    // Decided here rather than before the step, so that the numbers read
-    // need not be held from their loads to the branch; lanes that fail it
-    // computed nothing that is kept.
-    if !P::all(usable) {
-        return None;
-    }
+    let loads = advance::<S, P, V3<P>, _>(laws, &relative, P::splat(dt), &mut history);
+    let (states, state_sum) = (history.states, history.sum);
 
     // Back into the structs one quantity at a time: each register is
     // stored once and its lanes copied out.
     let broken = loads.mode.gt(P::splat(0.0));
     let status = |s: BondStatus| P::splat(s as i32 as f64);
     let status = P::select(broken, status(BondStatus::Broken), status(BondStatus::Intact));
-    // The slots of a law switched off still hold what was loaded (`advance`
-    // leaves them alone): they are not stored back.
     scatter(states, status, |s: &mut BondState, x| s.status = x);
-    if on(TENSION | COMPRESSION) {
-        scatter2(states, h.delta_max, h.delta_min, |s: &mut BondState, [hi, lo]| {
-            (s.delta_max, s.delta_min) = (hi, lo)
-        });
-    }
-    if on(SHEAR) {
-        scatter3(states, h.shear_force, |s: &mut BondState| &mut s.shear_force);
-    }
-    if on(TWIST) {
-        scatter3(states, h.twist_angle, |s: &mut BondState| &mut s.twist_angle);
-        scatter2(
-            states,
-            h.twist.max,
-            h.twist.min,
-            |s: &mut BondState, [max, min]| (s.twist_max, s.twist_min) = (max, min),
-        );
-    }
-    if on(BEND) {
-        scatter3(states, h.bend_angle, |s: &mut BondState| &mut s.bend_angle);
-        scatter3(states, h.bend.leading, |s: &mut BondState| &mut s.bend_history);
-        scatter(states, h.bend.opposite, |s: &mut BondState, x| {
-            s.bend_opposite = x
-        });
-    }
     scatter3(outs, loads.force_i, |o: &mut BondOutput| &mut o.force_i);
     scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
     scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
@@ -229,41 +154,232 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
         (outs[i].status, outs[i].break_mode) = (status, mode)
     });
 
-    // in the order of the slots and fields (finite.rs)
+    // The state's sum took the status to be intact: a lane that broke is
+    // left to the caller, who checks it exactly from what was stored.
     let (f, ti, tj) = (loads.force_i, loads.torque_i, loads.torque_j);
-    let (sf, ta, ba, bh) = (h.shear_force, h.twist_angle, h.bend_angle, h.bend.leading);
-    let state = [
-        status,
-        h.r0,
-        h.delta_max,
-        h.delta_min,
-        sf.x,
-        sf.y,
-        sf.z,
-        ta.x,
-        ta.y,
-        ta.z,
-        ba.x,
-        ba.y,
-        ba.z,
-        h.twist.max,
-        h.twist.min,
-        bh.x,
-        bh.y,
-        bh.z,
-        h.bend.opposite,
-    ];
     let (loads, scalars) = (
         [f.x, f.y, f.z, ti.x, ti.y, ti.z, tj.x, tj.y, tj.z],
         [loads.normal_force, loads.sigma, loads.tau, loads.delta],
     );
-    Some(if live == BOND_STATE_LEN {
-        results_finite(loads, scalars, state)
+    let finite = if live == BOND_STATE_LEN {
+        results_finite_summed(loads, scalars, state_sum)
     } else {
-        results_surely_finite(loads, scalars, &state[..live], |lane| {
+        results_surely_finite(loads, scalars, state_sum, |lane| {
             &states[lane].borrow().as_slots()[live..]
         })
-    })
+    };
+    Some(finite & !broken)
+}
+
+/// The kinematics of a chunk's pairs, read as [`relative`] asks. Each
+/// number is added up as it is loaded for the check of the kinematics (a
+/// sum that is finite proves every number finite; one that is not sends
+/// the chunk to the scalar kernel, which checks exactly); the numbers no
+/// law switched on reads are loaded for that alone, a pair of them a load
+/// and not moved into their lanes.
+struct LaneMotion<P: Pack, F> {
+    kin: F,
+    sum: P,
+    positive: P::Mask,
+    velocities: bool,
+    spins: bool,
+}
+
+impl<P: Pack, F: Fn(usize) -> PairKinematics> LaneMotion<P, F> {
+    #[inline(always)]
+    fn add(&mut self, v: V3<P>) {
+        self.sum = ((self.sum + v.x) + v.y) + v.z;
+    }
+
+    /// Whether every number of each pair is finite (per lane; true surely,
+    /// false maybe).
+    #[inline(always)]
+    fn finite(&mut self) -> P::Mask {
+        let kin = &self.kin;
+        if !self.velocities {
+            self.sum = self.sum
+                + P::gather2_sum(|lane| [kin(lane).v_i[0], kin(lane).v_i[1]])
+                + P::gather2_sum(|lane| [kin(lane).v_i[2], kin(lane).v_j[0]])
+                + P::gather2_sum(|lane| [kin(lane).v_j[1], kin(lane).v_j[2]]);
+        }
+        if !self.spins {
+            self.sum = self.sum
+                + P::gather2_sum(|lane| [kin(lane).w_i[0], kin(lane).w_i[1]])
+                + P::gather2_sum(|lane| [kin(lane).w_i[2], kin(lane).w_j[0]])
+                + P::gather2_sum(|lane| [kin(lane).w_j[1], kin(lane).w_j[2]]);
+        }
+        #[allow(clippy::eq_op)]
+        (self.sum - self.sum).ge(P::splat(0.0))
+    }
+}
+
+impl<P: Pack, F: Fn(usize) -> PairKinematics> MotionSource<P, V3<P>> for LaneMotion<P, F> {
+    #[inline(always)]
+    fn radii(&mut self) -> (P, P) {
+        let kin = &self.kin;
+        let (radius_i, radius_j) = P::gather2(|lane| [kin(lane).radius_i, kin(lane).radius_j]);
+        let zero = P::splat(0.0);
+        self.sum = (self.sum + radius_i) + radius_j;
+        self.positive = radius_i.gt(zero) & radius_j.gt(zero);
+        (radius_i, radius_j)
+    }
+    #[inline(always)]
+    fn velocities(&mut self) -> (V3<P>, V3<P>) {
+        let (v_i, v_j) = (lanes3(&self.kin, |k| k.v_i), lanes3(&self.kin, |k| k.v_j));
+        self.add(v_i);
+        self.add(v_j);
+        self.velocities = true;
+        (v_i, v_j)
+    }
+    #[inline(always)]
+    fn spins(&mut self) -> (V3<P>, V3<P>) {
+        let (w_i, w_j) = (lanes3(&self.kin, |k| k.w_i), lanes3(&self.kin, |k| k.w_j));
+        self.add(w_i);
+        self.add(w_j);
+        self.spins = true;
+        (w_i, w_j)
+    }
+}
+
+/// The history of a chunk's bonds, read from and written to their states
+/// as [`advance`] asks, one quantity a register. It adds up the slots the
+/// step keeps in registers (below `live`) in their order, from the status
+/// on, for the results check ([`results_finite_summed`]) as they pass; the
+/// slots of a law switched off are read for that alone.
+struct Lanes<'a, P, T> {
+    states: &'a mut [T],
+    live: usize,
+    sum: P,
+}
+
+impl<P: Pack, T: BorrowMut<BondState>> Lanes<'_, P, T> {
+    #[inline(always)]
+    fn add(&mut self, values: &[P]) {
+        for &x in values {
+            self.sum = self.sum + x;
+        }
+    }
+
+    #[inline(always)]
+    fn add_vector(&mut self, v: V3<P>) {
+        self.add(&[v.x, v.y, v.z]);
+    }
+}
+
+impl<P: Pack, T: BorrowMut<BondState>> HistoryIo<P, V3<P>> for Lanes<'_, P, T> {
+    #[inline(always)]
+    fn delta_extremes(&mut self) -> (P, P) {
+        gather2(self.states, |s: &BondState| [s.delta_max, s.delta_min])
+    }
+    #[inline(always)]
+    fn shear_force(&mut self) -> V3<P> {
+        gather3(self.states, |s: &BondState| s.shear_force)
+    }
+    #[inline(always)]
+    fn twist_angle(&mut self) -> V3<P> {
+        gather3(self.states, |s: &BondState| s.twist_angle)
+    }
+    #[inline(always)]
+    fn bend_angle(&mut self) -> V3<P> {
+        gather3(self.states, |s: &BondState| s.bend_angle)
+    }
+    #[inline(always)]
+    fn twist_extremes(&mut self) -> TwistHistory<P> {
+        let (max, min) = gather2(self.states, |s: &BondState| [s.twist_max, s.twist_min]);
+        TwistHistory { max, min }
+    }
+    #[inline(always)]
+    fn bend_history(&mut self) -> BendHistory<P, V3<P>> {
+        BendHistory {
+            leading: gather3(self.states, |s: &BondState| s.bend_history),
+            opposite: gather(self.states, |s: &BondState| s.bend_opposite),
+        }
+    }
+    #[inline(always)]
+    fn put_delta_extremes(&mut self, new: Option<(P, P)>) {
+        let (max, min) = match new {
+            Some((max, min)) => {
+                scatter2(self.states, max, min, |s: &mut BondState, [hi, lo]| {
+                    (s.delta_max, s.delta_min) = (hi, lo)
+                });
+                (max, min)
+            }
+            None => self.delta_extremes(),
+        };
+        self.add(&[max, min]);
+    }
+    #[inline(always)]
+    fn put_shear_force(&mut self, new: Option<V3<P>>) {
+        match new {
+            Some(v) => {
+                scatter3(self.states, v, |s: &mut BondState| &mut s.shear_force);
+                self.add_vector(v);
+            }
+            None if 4 < self.live => {
+                let v = self.shear_force();
+                self.add_vector(v);
+            }
+            None => {}
+        }
+    }
+    #[inline(always)]
+    fn put_twist_angle(&mut self, new: Option<V3<P>>) {
+        match new {
+            Some(v) => {
+                scatter3(self.states, v, |s: &mut BondState| &mut s.twist_angle);
+                self.add_vector(v);
+            }
+            None if 7 < self.live => {
+                let v = self.twist_angle();
+                self.add_vector(v);
+            }
+            None => {}
+        }
+    }
+    #[inline(always)]
+    fn put_bend_angle(&mut self, new: Option<V3<P>>) {
+        match new {
+            Some(v) => {
+                scatter3(self.states, v, |s: &mut BondState| &mut s.bend_angle);
+                self.add_vector(v);
+            }
+            None if 10 < self.live => {
+                let v = self.bend_angle();
+                self.add_vector(v);
+            }
+            None => {}
+        }
+    }
+    #[inline(always)]
+    fn put_twist_extremes(&mut self, new: Option<TwistHistory<P>>) {
+        let t = match new {
+            Some(t) => {
+                scatter2(self.states, t.max, t.min, |s: &mut BondState, [max, min]| {
+                    (s.twist_max, s.twist_min) = (max, min)
+                });
+                t
+            }
+            None if 13 < self.live => self.twist_extremes(),
+            None => return,
+        };
+        self.add(&[t.max, t.min]);
+    }
+    #[inline(always)]
+    fn put_bend_history(&mut self, new: Option<BendHistory<P, V3<P>>>) {
+        let b = match new {
+            Some(b) => {
+                scatter3(self.states, b.leading, |s: &mut BondState| &mut s.bend_history);
+                scatter(self.states, b.opposite, |s: &mut BondState, x| {
+                    s.bend_opposite = x
+                });
+                b
+            }
+            None if 15 < self.live => self.bend_history(),
+            None => return,
+        };
+        self.add_vector(b.leading);
+        self.add(&[b.opposite]);
+    }
 }
 
 /// How many slots, from the first, a step with these laws switched on

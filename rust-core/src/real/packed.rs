@@ -174,6 +174,11 @@ impl Real for F64x4 {
         F64x4(unsafe { _mm256_blendv_pd(b.0, a.0, m.0) })
     }
     #[inline(always)]
+    fn pin(self) -> Self {
+        // SAFETY: see the module documentation.
+        F64x4(unsafe { pinned(self.0) })
+    }
+    #[inline(always)]
     fn any(m: Mask4) -> bool {
         // SAFETY: see the module documentation.
         unsafe { _mm256_movemask_pd(m.0) != 0 }
@@ -183,6 +188,19 @@ impl Real for F64x4 {
         // SAFETY: see the module documentation.
         unsafe { _mm256_movemask_pd(m.0) == 0b1111 }
     }
+}
+
+/// `x`, which an empty `asm!` takes and gives back in a register: it
+/// cannot be moved, so `x` is computed before it. Compiled for AVX (the
+/// `asm!`'s register class needs it) and inlined into the AVX2 kernels.
+#[target_feature(enable = "avx")]
+#[inline]
+unsafe fn pinned(mut x: __m256d) -> __m256d {
+    // SAFETY: no instruction; the register goes out as it came in.
+    unsafe {
+        std::arch::asm!("/* {0} */", inout(ymm_reg) x, options(nomem, nostack, preserves_flags));
+    }
+    x
 }
 
 impl Pack for F64x4 {
