@@ -62,6 +62,12 @@ struct BondIndex {
     size_t ordered = 0;
 
     size_t size() const { return records.size(); }
+    // Memory held: the rows and, per bond, the pair, the flags and pointers.
+    double bytes() const
+    {
+        const size_t perBond = 2 * sizeof(int32_t) + sizeof(uint8_t) + 2 * sizeof(double *) + sizeof(int *);
+        return static_cast<double>(rows_.capacity() * sizeof(double) + records.capacity() * perBond);
+    }
     // From now on the bonds are stepped in rows of `layout`'s records (see
     // the head of this file); the index must be empty.
     void useRows(const GbRecordLayout &layout)

@@ -925,7 +925,9 @@ void PairGranbond::read_restart(FILE *fp)
 
 double PairGranbond::memory_usage()
 {
-    return Pair::memory_usage() + static_cast<double>(pairs_.size() * sizeof(TypePair));
+    double bytes = Pair::memory_usage() + static_cast<double>(pairs_.size() * sizeof(TypePair));
+    for (const BondIndex &b : index_) bytes += b.bytes();
+    return bytes;
 }
 
 }
