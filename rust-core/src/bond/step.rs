@@ -187,8 +187,7 @@ pub(crate) struct Loads<R, V> {
 /// in `h` and returns the loads.
 ///
 /// A bond broken by stress exerts nothing; its history is updated and it
-/// reports the stresses that broke it. Lanes broken by stress are computed
-/// with the others and masked at the end.
+/// reports the stresses that broke it.
 #[inline(always)]
 pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>, H: HistoryIo<R, V>>(
     laws: &BondLaws,
@@ -294,16 +293,6 @@ pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>, H: HistoryIo<R, V>>(
         bend_magnitude,
         k.inv_rb,
     );
-    let stress_mode = if laws.stress_break {
-        stress_criterion(sigma, tau, delta, &laws.limits)
-    } else {
-        zero
-    };
-    let snapped = stress_mode.gt(zero);
-    if R::all(snapped) {
-        return broken(delta, undamped, sigma, tau, stress_mode);
-    }
-
     let couple = bend_torque + twist_torque;
     let (mut torque_i, mut torque_j) = (couple, -couple);
     if shear {
@@ -320,17 +309,21 @@ pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>, H: HistoryIo<R, V>>(
         delta,
         mode: zero,
     };
-    // The lanes that broke (never a scalar bond here, which returned above)
-    // exert nothing. Rare: a branch rather than a blend per number.
-    if R::any(snapped) {
-        let load = |v| V::select(snapped, V::zeros(), v);
-        return Loads {
-            force_i: load(force),
-            torque_i: load(torque_i),
-            torque_j: load(torque_j),
-            mode: R::select(snapped, stress_mode, zero),
-            ..loads
-        };
+    if laws.stress_break {
+        // The bonds that broke exert nothing. Rare in lanes: a branch
+        // rather than a blend per number.
+        let stress_mode = stress_criterion(sigma, tau, delta, &laws.limits);
+        let snapped = stress_mode.gt(zero);
+        if R::any(snapped) {
+            let load = |v| V::select(snapped, V::zeros(), v);
+            return Loads {
+                force_i: load(force),
+                torque_i: load(torque_i),
+                torque_j: load(torque_j),
+                mode: R::select(snapped, stress_mode, zero),
+                ..loads
+            };
+        }
     }
     loads
 }

@@ -46,14 +46,13 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
     let mut start = 0;
     while start + P::WIDTH <= count {
         let end = start + P::WIDTH;
-        let found = match step_chunk::<S, P, K, T>(
-            laws,
-            kin,
-            start,
-            dt,
-            &mut states[start..end],
-            &mut outs[start..end],
-        ) {
+        let chunk = &mut states[start..end];
+        let outcome = match P::WIDTH {
+            4 => step_chunk::<S, P, K, 4>(laws, kin, start, dt, &mut lanes(chunk), &mut outs[start..end]),
+            8 => step_chunk::<S, P, K, 8>(laws, kin, start, dt, &mut lanes(chunk), &mut outs[start..end]),
+            _ => unreachable!("lanes of 4 or 8"),
+        };
+        let found = match outcome {
             // rare: which lane, from what was stored
             Some(finite) if !P::all(finite) => {
                 (start..end).find(|&b| !bond_finite(states[b].borrow(), &outs[b]))
@@ -68,6 +67,16 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
     Ok(first.or(found))
 }
 
+/// The chunk's states, one reference a lane, in an array of the step's
+/// own: the step's stores to the states cannot change it, so the
+/// references are read once (from the caller's slice, every store would
+/// make the compiler read them again).
+#[inline(always)]
+fn lanes<const N: usize, T: BorrowMut<BondState>>(chunk: &mut [T]) -> [&mut BondState; N] {
+    let mut chunk = chunk.iter_mut();
+    std::array::from_fn(|_| chunk.next().expect("a state a lane").borrow_mut())
+}
+
 /// Advances the `P::WIDTH` bonds of a chunk, from bond `first` of `kin` on,
 /// in lanes, and returns a mask whose lanes are all true only if every
 /// bond's results are finite (a false lane leaves the caller to find which
@@ -75,16 +84,15 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
 /// one of them is not intact or its kinematics are not surely usable (the
 /// scalar kernel then decides).
 #[inline(always)]
-fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
+fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     laws: &BondLaws,
     kin: &K,
     first: usize,
     dt: f64,
-    states: &mut [T],
+    states: &mut [&mut BondState; N],
     outs: &mut [BondOutput],
 ) -> Option<P::Mask> {
-    let n = P::WIDTH;
-    let (states, outs) = (&mut states[..n], &mut outs[..n]);
+    let (states, outs) = (&mut states[..], &mut outs[..N]);
     let kin = |lane: usize| kin.pair(first + lane);
     let (status, r0): (P, P) = gather2(states, |s: &BondState| [s.status, s.r0]);
     let intact = P::splat(BondStatus::Intact as i32 as f64);
@@ -164,9 +172,7 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondSta
     let finite = if live == BOND_STATE_LEN {
         results_finite_summed(loads, scalars, state_sum)
     } else {
-        results_surely_finite(loads, scalars, state_sum, |lane| {
-            &states[lane].borrow().as_slots()[live..]
-        })
+        results_surely_finite(loads, scalars, state_sum, |lane| &states[lane].as_slots()[live..])
     };
     Some(finite & !broken)
 }
