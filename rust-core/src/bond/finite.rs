@@ -24,20 +24,21 @@ pub type BatchResult = Result<Option<usize>, (usize, KinematicsError)>;
 /// in every lane, so a lane decides as the scalar check does.
 #[inline(always)]
 pub fn results_finite<R: Real>(loads: [R; 9], scalars: [R; 4], state: [R; BOND_STATE_LEN]) -> R::Mask {
-    results_finite_summed(loads, scalars, sum(&state))
+    results_finite_summed(sum(&loads), scalars, sum(&state))
 }
 
-/// [`results_finite`] given the sum of the state's slots, added left to
-/// right in their order (by a step that adds each as it writes it).
+/// [`results_finite`] given the sums of the loads and of the state's
+/// slots, each added left to right in their order (by a step that adds
+/// each as it writes it).
 #[inline(always)]
-pub(crate) fn results_finite_summed<R: Real>(loads: [R; 9], scalars: [R; 4], state_sum: R) -> R::Mask {
-    let outputs = sum(&loads) + sum(&scalars);
-    is_finite(outputs) & is_finite(state_sum)
+pub(crate) fn results_finite_summed<R: Real>(loads_sum: R, scalars: [R; 4], state_sum: R) -> R::Mask {
+    is_finite(loads_sum + sum(&scalars)) & is_finite(state_sum)
 }
 
 /// Whether [`results_finite`] holds for every lane of a register of bonds
-/// whose first state slots add up, left to right in their order, to
-/// `head_sum` and whose other slots are read from `rest(lane)`: all lanes
+/// whose loads add up, left to right in their order, to `loads_sum`, whose
+/// first state slots add up so to `head_sum` and whose other slots are
+/// read from `rest(lane)`: all lanes
 /// true only if it does. The rest is not added
 /// lane by lane in order: the step proves its sums finite with a bound
 /// instead (the first slots' sum and all the rest's magnitudes together
@@ -47,12 +48,12 @@ pub(crate) fn results_finite_summed<R: Real>(loads: [R; 9], scalars: [R; 4], sta
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 pub(crate) fn results_surely_finite<'a, P: Pack>(
-    loads: [P; 9],
+    loads_sum: P,
     scalars: [P; 4],
     head_sum: P,
     rest: impl Fn(usize) -> &'a [f64],
 ) -> P::Mask {
-    let outputs = sum(&loads) + sum(&scalars);
+    let outputs = loads_sum + sum(&scalars);
     let bound = P::splat(f64::MAX / 4.0);
     let head = head_sum.abs().lt(bound);
     let mut magnitudes = P::splat(0.0);

@@ -59,6 +59,8 @@ pub(crate) fn bond_step<S: Switches>(
     let status = if mode == BreakMode::None {
         BondStatus::Intact
     } else {
+        // It exerts nothing.
+        (out.force_i, out.torque_i, out.torque_j) = ([0.0; 3], [0.0; 3], [0.0; 3]);
         BondStatus::Broken
     };
     state.status = status as i32 as f64;
@@ -151,6 +153,9 @@ impl HistoryIo<f64, Vec3> for BondState {
             self.bend_opposite = b.opposite;
         }
     }
+    /// The step's caller writes it with the other loads.
+    #[inline(always)]
+    fn put_force(&mut self, _: Vec3) {}
 }
 
 /// Steps bonds `range` one by one, states in place or behind pointers,

@@ -35,9 +35,10 @@ pub(crate) trait MotionSource<R, V> {
 }
 
 /// Where a step reads a bond's history and writes it back, one group of
-/// slots at a time. [`advance`] reads a group just before its law needs it
-/// and hands every group back once, in the order of the slots: the new
-/// values, or `None` for a law switched off, whose slots stay as they are.
+/// slots at a time, and where its force goes as soon as it is known.
+/// [`advance`] reads a group just before its law needs it and hands every
+/// group back once, in the order of the slots: the new values, or `None`
+/// for a law switched off, whose slots stay as they are.
 pub(crate) trait HistoryIo<R, V> {
     fn delta_extremes(&mut self) -> (R, R);
     fn shear_force(&mut self) -> V;
@@ -52,6 +53,9 @@ pub(crate) trait HistoryIo<R, V> {
     fn put_bend_angle(&mut self, new: Option<V>);
     fn put_twist_extremes(&mut self, new: Option<TwistHistory<R>>);
     fn put_bend_history(&mut self, new: Option<BendHistory<R, V>>);
+    /// The force on `i` as soon as it is known, before the twisting and
+    /// bending laws (it is returned with the other loads too).
+    fn put_force(&mut self, force: V);
 }
 
 /// What the laws read of a pair: its centre line and section, and its
@@ -88,26 +92,15 @@ pub(crate) fn breaks_by_distance<R: Real>(laws: &BondLaws, r: R) -> R::Mask {
 #[inline(always)]
 pub(crate) fn broken_by_distance<R: Real, V: Vector<R>>(delta: R) -> Loads<R, V> {
     let zero = R::splat(0.0);
-    broken(
-        delta,
-        zero,
-        zero,
-        zero,
-        R::splat(BreakMode::Distance as i32 as f64),
-    )
-}
-
-#[inline(always)]
-fn broken<R: Real, V: Vector<R>>(delta: R, normal_force: R, sigma: R, tau: R, mode: R) -> Loads<R, V> {
     Loads {
         force_i: V::zeros(),
         torque_i: V::zeros(),
         torque_j: V::zeros(),
-        normal_force,
-        sigma,
-        tau,
+        normal_force: zero,
+        sigma: zero,
+        tau: zero,
         delta,
-        mode,
+        mode: R::splat(BreakMode::Distance as i32 as f64),
     }
 }
 
@@ -122,7 +115,11 @@ pub(crate) fn relative<S: Switches, R: Real, V: Vector<R>>(
 ) -> Relative<R, V> {
     let on = |bits| S::of(laws).any(bits);
     let zero = R::splat(0.0);
-    let n = line.n;
+    // Each value is computed where it is pinned, from numbers that die
+    // there, whatever branch comes before its first use (see `Real::pin`);
+    // pinned as soon as it is computed, while it is in a register.
+    let n = line.n.pin();
+    let delta = (r0 - line.r).pin();
     let (shear, spins) = (on(SHEAR), on(TWIST | BEND));
     let normal_damping = on(DAMPING) && on(TENSION | COMPRESSION);
     let (radius_i, radius_j) = m.radii();
@@ -134,36 +131,33 @@ pub(crate) fn relative<S: Switches, R: Real, V: Vector<R>>(
     if shear || normal_damping {
         let (v_i, v_j) = m.velocities();
         if normal_damping {
-            normal_rate = (v_i - v_j).dot(&n);
+            normal_rate = (v_i - v_j).dot(&n).pin();
         }
         if shear || spins {
             let (w_i, w_j) = m.spins();
             if shear {
-                (lever_i, lever_j) = lever_arms_scaled(line.r, inv_radius_sum, radius_i, radius_j);
-                slip = slip_velocity(v_i - v_j, w_i, w_j, n, lever_i, lever_j);
+                let (i, j) = lever_arms_scaled(line.r, inv_radius_sum, radius_i, radius_j);
+                (lever_i, lever_j) = (i.pin(), j.pin());
+                slip = slip_velocity(v_i - v_j, w_i, w_j, n, lever_i, lever_j).pin();
             }
             if spins {
-                spin = w_i - w_j;
+                spin = (w_i - w_j).pin();
             }
         }
     } else if spins {
         let (w_i, w_j) = m.spins();
-        spin = w_i - w_j;
+        spin = (w_i - w_j).pin();
     }
-    // Computed here, from numbers that die here, whatever branch comes
-    // before its first use (see `Real::pin`).
-    let pin_if = |on: bool, x: R| if on { x.pin() } else { x };
-    let pin_vector_if = |on: bool, v: V| if on { v.pin() } else { v };
     Relative {
-        n: n.pin(),
-        delta: (r0 - line.r).pin(),
+        n,
+        delta,
         section: sec,
         inv_rb,
-        lever_i: pin_if(shear, lever_i),
-        lever_j: pin_if(shear, lever_j),
-        slip: pin_vector_if(shear, slip),
-        normal_rate: pin_if(normal_damping, normal_rate),
-        spin: pin_vector_if(spins, spin),
+        lever_i,
+        lever_j,
+        slip,
+        normal_rate,
+        spin,
     }
 }
 
@@ -186,8 +180,9 @@ pub(crate) struct Loads<R, V> {
 /// (`f64`) or a chunk of lanes (see [`super::wide`]): updates the history
 /// in `h` and returns the loads.
 ///
-/// A bond broken by stress exerts nothing; its history is updated and it
-/// reports the stresses that broke it.
+/// A bond broken by stress (`mode` not 0) has its history updated and
+/// reports the stresses that broke it; the caller zeroes its force and
+/// torques, as it exerts nothing.
 #[inline(always)]
 pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>, H: HistoryIo<R, V>>(
     laws: &BondLaws,
@@ -248,6 +243,7 @@ pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>, H: HistoryIo<R, V>>(
         }
     }
     let force = n * normal_force + shear_force;
+    h.put_force(force);
     let arm = if shear { n.cross(&shear_force) } else { V::zeros() };
 
     // |torque| = |h| * moment, from the laws (no square roots).
@@ -299,7 +295,7 @@ pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>, H: HistoryIo<R, V>>(
         torque_i -= arm * k.lever_i;
         torque_j -= arm * k.lever_j;
     }
-    let loads = Loads {
+    Loads {
         force_i: force,
         torque_i,
         torque_j,
@@ -307,23 +303,11 @@ pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>, H: HistoryIo<R, V>>(
         sigma,
         tau,
         delta,
-        mode: zero,
-    };
-    if laws.stress_break {
-        // The bonds that broke exert nothing. Rare in lanes: a branch
-        // rather than a blend per number.
-        let stress_mode = stress_criterion(sigma, tau, delta, &laws.limits);
-        let snapped = stress_mode.gt(zero);
-        if R::any(snapped) {
-            let load = |v| V::select(snapped, V::zeros(), v);
-            return Loads {
-                force_i: load(force),
-                torque_i: load(torque_i),
-                torque_j: load(torque_j),
-                mode: R::select(snapped, stress_mode, zero),
-                ..loads
-            };
-        }
+        // (0 unless the bond breaks.)
+        mode: if laws.stress_break {
+            stress_criterion(sigma, tau, delta, &laws.limits)
+        } else {
+            zero
+        },
     }
-    loads
 }

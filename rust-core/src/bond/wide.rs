@@ -8,14 +8,15 @@
 //! [`crate::real`]), and nothing mixes lanes, so it does not matter which
 //! lane or chunk a bond lands in.
 //!
-//! Each register of results is checked ([`super::finite`]) while it is
-//! still in registers.
+//! Each number is checked ([`super::finite`]) as it passes: added to its
+//! sum when it is loaded or written, so that the checks hold no number of
+//! their own.
 //!
 //! What `bond_step` decides per bond with a jump is a mask here, except
 //! what is rare and has side effects of its own: a chunk with a bond that
-//! is not intact or whose kinematics are unusable is left to the scalar
-//! kernel, which zeroes the first kind and reports the first bad one with
-//! its index.
+//! is not intact, whose kinematics are unusable or that breaks by distance
+//! is left to the scalar kernel, which zeroes the first kind and reports
+//! the second with its index.
 
 use super::features::{BEND, SHEAR, TWIST};
 use super::finite::{bond_finite, results_finite_summed, results_surely_finite, BatchResult};
@@ -134,11 +135,14 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     };
     let mut history = Lanes {
         states,
+        outs,
         live,
         sum: intact + r0,
+        loads_sum: P::splat(0.0),
     };
     let loads = advance::<S, P, V3<P>, _>(laws, &relative, P::splat(dt), &mut history);
-    let (states, state_sum) = (history.states, history.sum);
+    let (states, outs, state_sum, mut loads_sum) =
+        (history.states, history.outs, history.sum, history.loads_sum);
 
     // Back into the structs one quantity at a time: each register is
     // stored once and its lanes copied out.
@@ -146,7 +150,6 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     let status = |s: BondStatus| P::splat(s as i32 as f64);
     let status = P::select(broken, status(BondStatus::Broken), status(BondStatus::Intact));
     scatter(states, status, |s: &mut BondState, x| s.status = x);
-    scatter3(outs, loads.force_i, |o: &mut BondOutput| &mut o.force_i);
     scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
     scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
     scatter2(
@@ -162,17 +165,31 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
         (outs[i].status, outs[i].break_mode) = (status, mode)
     });
 
-    // The state's sum took the status to be intact: a lane that broke is
-    // left to the caller, who checks it exactly from what was stored.
-    let (f, ti, tj) = (loads.force_i, loads.torque_i, loads.torque_j);
-    let (loads, scalars) = (
-        [f.x, f.y, f.z, ti.x, ti.y, ti.z, tj.x, tj.y, tj.z],
-        [loads.normal_force, loads.sigma, loads.tau, loads.delta],
-    );
+    // A bond that broke exerts nothing. Rare: a branch rather than a blend
+    // per number.
+    if P::any(broken) {
+        loads.mode.for_each_lane(|i, mode| {
+            if mode != 0.0 {
+                let o = &mut outs[i];
+                (o.force_i, o.torque_i, o.torque_j) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+            }
+        });
+    }
+
+    // The sums took the bonds to hold (the status intact, the loads as
+    // computed): a lane that broke is left to the caller, who checks it
+    // exactly from what was stored.
+    let (ti, tj) = (loads.torque_i, loads.torque_j);
+    for x in [ti.x, ti.y, ti.z, tj.x, tj.y, tj.z] {
+        loads_sum = loads_sum + x;
+    }
+    let scalars = [loads.normal_force, loads.sigma, loads.tau, loads.delta];
     let finite = if live == BOND_STATE_LEN {
-        results_finite_summed(loads, scalars, state_sum)
+        results_finite_summed(loads_sum, scalars, state_sum)
     } else {
-        results_surely_finite(loads, scalars, state_sum, |lane| &states[lane].as_slots()[live..])
+        results_surely_finite(loads_sum, scalars, state_sum, |lane| {
+            &states[lane].as_slots()[live..]
+        })
     };
     Some(finite & !broken)
 }
@@ -248,14 +265,18 @@ impl<P: Pack, F: Fn(usize) -> PairKinematics> MotionSource<P, V3<P>> for LaneMot
 }
 
 /// The history of a chunk's bonds, read from and written to their states
-/// as [`advance`] asks, one quantity a register. It adds up the slots the
+/// as [`advance`] asks, one quantity a register; the force goes out as
+/// soon as it is known, so that it is not held through the torques' laws. It adds up the slots the
 /// step keeps in registers (below `live`) in their order, from the status
 /// on, for the results check ([`results_finite_summed`]) as they pass; the
 /// slots of a law switched off are read for that alone.
 struct Lanes<'a, P, T> {
     states: &'a mut [T],
+    outs: &'a mut [BondOutput],
     live: usize,
     sum: P,
+    /// The force's components added up, for the results check.
+    loads_sum: P,
 }
 
 impl<P: Pack, T: BorrowMut<BondState>> Lanes<'_, P, T> {
@@ -385,6 +406,11 @@ impl<P: Pack, T: BorrowMut<BondState>> HistoryIo<P, V3<P>> for Lanes<'_, P, T> {
         };
         self.add_vector(b.leading);
         self.add(&[b.opposite]);
+    }
+    #[inline(always)]
+    fn put_force(&mut self, f: V3<P>) {
+        scatter3(self.outs, f, |o: &mut BondOutput| &mut o.force_i);
+        self.loads_sum = (f.x + f.y) + f.z;
     }
 }
 
