@@ -6,6 +6,7 @@
 //! [`RecordLayout`] its named offsets, so adapters restate none of them.
 
 use crate::bond::output_slots::{BOND_OUTPUT_LEN, BOND_OUTPUT_SLOTS};
+use crate::bond::state::slot_of;
 use crate::bond::{BOND_SLOTS, BOND_STATE_LEN};
 use crate::contact::{CONTACT_SLOTS, CONTACT_STATE_LEN};
 use crate::state_layout::StateSlot;
@@ -30,13 +31,7 @@ pub struct RecordLayout {
 }
 
 /// Index of the status in the bond state.
-const STATUS_SLOT: usize = {
-    let mut k = 0;
-    while !matches!(BOND_SLOTS[k].name.as_bytes(), b"status") {
-        k += 1;
-    }
-    k
-};
+const STATUS_SLOT: usize = slot_of!(status);
 
 impl RecordLayout {
     /// The record with the Voigt contact's state first (`with_contact`) or

@@ -90,6 +90,14 @@ pub const BOND_SLOTS: [StateSlot; BOND_STATE_LEN] = [
 
 const _: () = assert!(std::mem::size_of::<BondState>() == BOND_STATE_LEN * 8);
 
+/// Where a field of [`BondState`] starts, in slots of [`BOND_SLOTS`].
+macro_rules! slot_of {
+    ($field:ident) => {
+        std::mem::offset_of!($crate::bond::BondState, $field) / std::mem::size_of::<f64>()
+    };
+}
+pub(crate) use slot_of;
+
 impl BondState {
     /// The bond's [`BondStatus`].
     pub fn status(&self) -> BondStatus {

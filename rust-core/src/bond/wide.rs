@@ -22,7 +22,7 @@ use super::features::{BEND, SHEAR, TWIST};
 use super::finite::{bond_finite, results_finite_summed, results_surely_finite, BatchResult};
 use super::laws::BondLaws;
 use super::scalar::one_by_one;
-use super::state::{BondOutput, BondState, BondStatus, BOND_STATE_LEN};
+use super::state::{slot_of, BondOutput, BondState, BondStatus, BOND_STATE_LEN};
 use super::step::{advance, breaks_by_distance, relative, HistoryIo, MotionSource};
 use super::switches::Switches;
 use super::twist_bend::{BendHistory, TwistHistory};
@@ -291,6 +291,28 @@ impl<P: Pack, T: BorrowMut<BondState>> Lanes<'_, P, T> {
     fn add_vector(&mut self, v: V3<P>) {
         self.add(&[v.x, v.y, v.z]);
     }
+
+    /// A vector quantity of the history at `slot`: the new values written
+    /// back, or, if the step left it alone but keeps it in registers, read
+    /// for the results check; added up either way.
+    #[inline(always)]
+    fn put_vector(
+        &mut self,
+        new: Option<V3<P>>,
+        slot: usize,
+        read: impl Fn(&BondState) -> [f64; 3],
+        write: impl Fn(&mut BondState) -> &mut [f64; 3],
+    ) {
+        let v = match new {
+            Some(v) => {
+                scatter3(self.states, v, write);
+                v
+            }
+            None if slot < self.live => gather3(self.states, read),
+            None => return,
+        };
+        self.add_vector(v);
+    }
 }
 
 impl<P: Pack, T: BorrowMut<BondState>> HistoryIo<P, V3<P>> for Lanes<'_, P, T> {
@@ -337,45 +359,15 @@ impl<P: Pack, T: BorrowMut<BondState>> HistoryIo<P, V3<P>> for Lanes<'_, P, T> {
     }
     #[inline(always)]
     fn put_shear_force(&mut self, new: Option<V3<P>>) {
-        match new {
-            Some(v) => {
-                scatter3(self.states, v, |s: &mut BondState| &mut s.shear_force);
-                self.add_vector(v);
-            }
-            None if 4 < self.live => {
-                let v = self.shear_force();
-                self.add_vector(v);
-            }
-            None => {}
-        }
+        self.put_vector(new, SHEAR_FORCE, |s| s.shear_force, |s| &mut s.shear_force);
     }
     #[inline(always)]
     fn put_twist_angle(&mut self, new: Option<V3<P>>) {
-        match new {
-            Some(v) => {
-                scatter3(self.states, v, |s: &mut BondState| &mut s.twist_angle);
-                self.add_vector(v);
-            }
-            None if 7 < self.live => {
-                let v = self.twist_angle();
-                self.add_vector(v);
-            }
-            None => {}
-        }
+        self.put_vector(new, TWIST_ANGLE, |s| s.twist_angle, |s| &mut s.twist_angle);
     }
     #[inline(always)]
     fn put_bend_angle(&mut self, new: Option<V3<P>>) {
-        match new {
-            Some(v) => {
-                scatter3(self.states, v, |s: &mut BondState| &mut s.bend_angle);
-                self.add_vector(v);
-            }
-            None if 10 < self.live => {
-                let v = self.bend_angle();
-                self.add_vector(v);
-            }
-            None => {}
-        }
+        self.put_vector(new, BEND_ANGLE, |s| s.bend_angle, |s| &mut s.bend_angle);
     }
     #[inline(always)]
     fn put_twist_extremes(&mut self, new: Option<TwistHistory<P>>) {
@@ -386,7 +378,7 @@ impl<P: Pack, T: BorrowMut<BondState>> HistoryIo<P, V3<P>> for Lanes<'_, P, T> {
                 });
                 t
             }
-            None if 13 < self.live => self.twist_extremes(),
+            None if TWIST_MAX < self.live => self.twist_extremes(),
             None => return,
         };
         self.add(&[t.max, t.min]);
@@ -401,7 +393,7 @@ impl<P: Pack, T: BorrowMut<BondState>> HistoryIo<P, V3<P>> for Lanes<'_, P, T> {
                 });
                 b
             }
-            None if 15 < self.live => self.bend_history(),
+            None if BEND_HISTORY < self.live => self.bend_history(),
             None => return,
         };
         self.add_vector(b.leading);
@@ -423,13 +415,20 @@ fn live_slots(shear: bool, twist: bool, bend: bool) -> usize {
     if bend {
         BOND_STATE_LEN
     } else if twist {
-        15
+        TWIST_MIN + 1
     } else if shear {
-        7
+        SHEAR_FORCE + 3
     } else {
-        4
+        SHEAR_FORCE
     }
 }
+
+const SHEAR_FORCE: usize = slot_of!(shear_force);
+const TWIST_ANGLE: usize = slot_of!(twist_angle);
+const BEND_ANGLE: usize = slot_of!(bend_angle);
+const TWIST_MAX: usize = slot_of!(twist_max);
+const TWIST_MIN: usize = slot_of!(twist_min);
+const BEND_HISTORY: usize = slot_of!(bend_history);
 
 /// One quantity of `P::WIDTH` items, lane `i` from `items[i]`.
 #[inline(always)]
