@@ -18,6 +18,13 @@
 // and a pass would wait on memory for each. The engine's record stays the
 // bond's home: copied into its row when the index is built, written back
 // when the bond breaks and before the engine reads or moves the records.
+//
+// The index keeps each bond's output of its latest pass (`outs`), which the
+// core writes anyway for the loads to reach the atoms. A force pass stores
+// the loads in the records only where the engine reads them within the pass
+// (`pass.keep_loads`); otherwise they are filed from `outs` (fileLoads)
+// before anything else reads them: a run's end, a restart file, an output
+// of the bonds (sweep.rs in the core). Rows therefore end before the loads.
 #ifndef GRANBOND_BOND_INDEX_H
 #define GRANBOND_BOND_INDEX_H
 
@@ -52,6 +59,7 @@ struct BondIndex {
     std::vector<double *> records;   // what the core steps: the homes, or their rows
     std::vector<double *> homes;     // each bond's record in the engine's pages
     std::vector<int *> flags;        // the engine's flag of each bond's pair
+    std::vector<GbBondOutput> outs;  // each bond's latest pass (status 0: none since indexed)
     // The bonds that broke in the sweeps since the last keepIntact: their
     // positions, ascending within a sweep, and their outputs (mode,
     // stresses).
@@ -65,14 +73,15 @@ struct BondIndex {
     // Memory held: the rows and, per bond, the pair, the flags and pointers.
     double bytes() const
     {
-        const size_t perBond = 2 * sizeof(int32_t) + sizeof(uint8_t) + 2 * sizeof(double *) + sizeof(int *);
+        const size_t perBond =
+            2 * sizeof(int32_t) + sizeof(uint8_t) + 2 * sizeof(double *) + sizeof(int *) + sizeof(GbBondOutput);
         return static_cast<double>(rows_.capacity() * sizeof(double) + records.capacity() * perBond);
     }
-    // From now on the bonds are stepped in rows of `layout`'s records (see
-    // the head of this file); the index must be empty.
+    // From now on the bonds are stepped in rows of `layout`'s records, up to
+    // their loads (see the head of this file); the index must be empty.
     void useRows(const GbRecordLayout &layout)
     {
-        rowLen_ = layout.len;
+        rowLen_ = layout.loads;
         contactLen_ = layout.bond;
     }
     void clear()
@@ -82,6 +91,7 @@ struct BondIndex {
         records.clear();
         homes.clear();
         flags.clear();
+        outs.clear();
         broken.clear();
         brokenOut.clear();
         rows_.clear();
@@ -94,6 +104,7 @@ struct BondIndex {
         counted.push_back(counts ? 1 : 0);
         homes.push_back(record);
         flags.push_back(flag);
+        outs.push_back(GbBondOutput());
         if (!rowLen_) {
             records.push_back(record);
             return;
@@ -105,21 +116,44 @@ struct BondIndex {
         records.push_back(rows_.data() + rows_.size());
         rows_.insert(rows_.end(), record, record + rowLen_);
     }
-    // Every bond's row written back to its home (before the engine reads or
-    // moves its records); nothing where the core steps the homes.
-    void writeBack()
+    // Every bond's row written back to its home, and its loads filed there
+    // (before the engine reads or moves its records).
+    GbStatus writeBack()
     {
         if (rowLen_)
-            for (size_t k = 0; k < size(); k++) writeBack(k);
+            for (size_t k = 0; k < size(); k++) copyRow(k);
+        return fileLoads(0, size());
+    }
+    // The loads of the bonds from `first` to `last` filed in their homes.
+    GbStatus fileLoads(size_t first, size_t last)
+    {
+        if (first >= last) return GB_STATUS_OK;
+        size_t failed = 0;
+        return granbond_bond_file_loads(pass.with_contact, last - first, homes.data() + first, outs.data() + first,
+                                        &failed);
+    }
+    // Bond k's whole record as a pass that keeps the loads would leave it,
+    // in `scratch`, for outputs of the bonds.
+    const double *wholeRecord(size_t k, std::vector<double> &scratch, GbStatus &status) const
+    {
+        GbRecordLayout layout;
+        status = granbond_record_layout(pass.with_contact, &layout);
+        if (status != GB_STATUS_OK) return nullptr;
+        scratch.assign(homes[k], homes[k] + layout.len);
+        if (rowLen_) std::copy(records[k], records[k] + rowLen_, scratch.begin());
+        double *whole = scratch.data();
+        size_t failed = 0;
+        status = granbond_bond_file_loads(pass.with_contact, 1, &whole, &outs[k], &failed);
+        return whole;
     }
 
     // Core calls over the bonds from `first` to `last` (`advance`: a force pass),
     // reading the atoms of `atom` (x, v, omega: blocks of 3 doubles per
     // atom; local and ghost atoms). `intact(k, out)` is called for each bond
     // that held, in index order; those that broke are added to `broken`.
-    // The loads pass through a buffer of a few hundred bonds, which stays in
-    // cache between the core writing it and `intact` reading it. On failure
-    // `bad` is the bond's position in the index.
+    // The core is called for a few hundred bonds at a time, so that their
+    // outputs are still in cache when `intact` reads them. On failure `bad`
+    // is the bond's position in the index.
     template<class Atom, class Intact>
     GbStatus sweep(const Atom *atom, size_t first, size_t last, bool advance, double dt, GbSweepTally &tally,
                    size_t &bad, Intact intact)
@@ -135,7 +169,8 @@ struct BondIndex {
         GbRecordLayout layout;
         const GbStatus laid = granbond_record_layout(pass.with_contact, &layout);
         if (laid != GB_STATUS_OK) return laid;
-        GbBondOutput out[kSweepChunk];
+        // a setup pass reads the loads filed in the homes; rows end before them
+        double *const *stepped = (rowLen_ && !advance) ? homes.data() : records.data();
         for (size_t from = first; from < last; from += kSweepChunk) {
             const size_t n = last - from < kSweepChunk ? last - from : kSweepChunk;
             // the core requests each call's records ahead from its second
@@ -144,9 +179,10 @@ struct BondIndex {
             for (size_t k = from + n; !rowLen_ && k < last && k < from + n + kAhead; k++)
                 for (size_t s = 0; s < layout.len; s += 8) __builtin_prefetch(records[k] + s, 1);
             size_t failed = 0;
+            GbBondOutput *const out = outs.data() + from;
             const GbStatus status = granbond_bond_sweep(model, &pass, n, &arrays, pairs.data() + 2 * from,
-                                                        counted.data() + from, records.data() + from, out,
-                                                        &tally, &failed);
+                                                        counted.data() + from, stepped + from, out, &tally,
+                                                        &failed);
             if (status != GB_STATUS_OK) {
                 bad = from + (failed < n ? failed : 0);
                 return status;
@@ -158,7 +194,15 @@ struct BondIndex {
                 }
                 broken.push_back(from + c);
                 brokenOut.push_back(out[c]);
-                if (rowLen_) writeBack(from + c);   // the engine's loop reads it now
+                // the engine's loop reads it now
+                if (rowLen_) copyRow(from + c);
+                if (!pass.keep_loads) {
+                    const GbStatus filed = fileLoads(from + c, from + c + 1);
+                    if (filed != GB_STATUS_OK) {
+                        bad = from + c;
+                        return filed;
+                    }
+                }
             }
         }
         return GB_STATUS_OK;
@@ -183,6 +227,7 @@ struct BondIndex {
             counted[kept] = counted[k];
             homes[kept] = homes[k];
             flags[kept] = flags[k];
+            outs[kept] = outs[k];
             if (rowLen_)
                 std::copy(records[k], records[k] + rowLen_, records[kept]);
             else
@@ -194,24 +239,25 @@ struct BondIndex {
         records.resize(kept);
         homes.resize(kept);
         flags.resize(kept);
+        outs.resize(kept);
         rows_.resize(kept * rowLen_);
         broken.clear();
         brokenOut.clear();
     }
 
 private:
-    // Row k back to its home: the bond and its loads, and the contact's
-    // state unless the contact goes on under the bond. Then the contact loop
-    // steps the home's contact state; otherwise nothing writes it while the
-    // bond holds, and the row's is the one the core clears at a break.
-    void writeBack(size_t k)
+    // Row k back to its home: the bond, and the contact's state unless the
+    // contact goes on under the bond. Then the contact loop steps the home's
+    // contact state; otherwise nothing writes it while the bond holds, and
+    // the row's is the one the core clears at a break.
+    void copyRow(size_t k)
     {
         const size_t from = pass.contact_under_bond ? contactLen_ : 0;
         std::copy(records[k] + from, records[k] + rowLen_, homes[k] + from);
     }
 
     std::vector<double> rows_;
-    size_t rowLen_ = 0;       // 0: the core steps the homes
+    size_t rowLen_ = 0;       // 0: the core steps the homes; else layout.loads
     size_t contactLen_ = 0;
     static const size_t kFirstRows = 256;
     static const size_t kSweepChunk = 512;

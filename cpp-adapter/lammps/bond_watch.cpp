@@ -152,12 +152,15 @@ public:
         const size_t ncols = columns_.size();
         std::vector<double> &rows = buffer_;
         rows.clear();
-        std::vector<double> row(ncols);
+        std::vector<double> row(ncols), record;
         forEachBond(lmp, pair, "compute granbond/local", [&](const BondIndex &b, size_t k) {
             const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
             if (!b.counted[k] || !(mask[i] & groupbit) || !(mask[j] & groupbit)) return;
-            if (columns_.row(b.model, 1, b.records[k], static_cast<double>(atom->tag[i]),
-                             static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j], row.data()) != GB_STATUS_OK)
+            GbStatus whole = GB_STATUS_OK;
+            const double *r = b.wholeRecord(k, record, whole);
+            if (whole != GB_STATUS_OK ||
+                columns_.row(b.model, 1, r, static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
+                             atom->x[i], atom->x[j], row.data()) != GB_STATUS_OK)
                 error->one(FLERR, "compute granbond/local: atoms " + std::to_string(static_cast<long long>(atom->tag[i])) +
                                       " and " + std::to_string(static_cast<long long>(atom->tag[j])) + ": " +
                                       coreReason());

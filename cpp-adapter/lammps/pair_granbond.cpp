@@ -690,13 +690,14 @@ void PairGranbond::indexBonds()
     }
 }
 
-// The bonds' rows back in their records, once per index (fix
-// neigh/history's pre_exchange; bond_index.h): the next pass indexes the
-// records again.
+// The bonds' rows back in their records and their loads filed there, once
+// per index (fix neigh/history's pre_exchange; bond_index.h): the next pass
+// indexes the records again.
 void PairGranbond::writeBackBonds()
 {
     if (writtenBack_) return;
-    for (BondIndex &b : index_) b.writeBack();
+    for (BondIndex &b : index_)
+        if (b.writeBack() != GB_STATUS_OK) error->one(FLERR, "pair granbond: filing the bonds' loads: " + coreReason());
     writtenBack_ = true;
 }
 

@@ -1,5 +1,6 @@
 #include "atoms_fix.h"
 #include "bond_book.h"
+#include "bond_nonlinear_cohesion.h"
 #include "liggghts_engine.h"
 
 #include "fix_contact_history.h"
@@ -32,7 +33,11 @@ public:
     // values are right without it (0 from the constructor, or restart data).
     void init() { just_created = 0; }
 
-    void post_run() { fileContactHistory(); }
+    void post_run()
+    {
+        fileLoads();
+        fileContactHistory();
+    }
 
     // Restart files written during a run (`restart N`) take the history
     // from the partner arrays, which LIGGGHTS fills only at neighbour-list
@@ -40,7 +45,10 @@ public:
     // post_run has filed it, and atoms may have changed since.
     void write_restart(FILE *fp)
     {
-        if (update->whichflag != 0) fileContactHistory();
+        if (update->whichflag != 0) {
+            fileLoads();
+            fileContactHistory();
+        }
         FixGranbondAtoms::write_restart(fp);
     }
 
@@ -60,6 +68,12 @@ protected:
     }
 
 private:
+    // the bonds' loads go into the records first (bond_index.h)
+    void fileLoads()
+    {
+        BondNonlinearCohesion *bonds = BondBook::of(lmp).pairBonds;
+        if (bonds) bonds->fileLoads();
+    }
     void fileContactHistory()
     {
         LAMMPS_NS::PairGran *pair = static_cast<LAMMPS_NS::PairGran *>(force->pair_match("gran", 0));

@@ -68,8 +68,8 @@ public:
     void restoreTotals(const double totals[kTotals], bool root);
 
     // The pair style's bond model, for per-bond output (compute
-    // pair/gran/local/bond); null without one.
-    const BondNonlinearCohesion *pairBonds = nullptr;
+    // pair/gran/local/bond) and fix granbond/atoms; null without one.
+    BondNonlinearCohesion *pairBonds = nullptr;
 
     bool logging() const { return logUsers_ > 0; }
     void addLogUser() { logUsers_++; }

@@ -43,7 +43,8 @@ public:
     void compute_local()
     {
         invoked_local = update->ntimestep;
-        const BondNonlinearCohesion *model = bonds();
+        BondNonlinearCohesion *model = bonds();
+        model->fileLoads();   // the loads the records keep (bond_index.h)
         const LAMMPS_NS::PairGran *pair = model->pairStyle();
         const LAMMPS_NS::NeighList *list = pair ? pair->list : 0;
         const LAMMPS_NS::NeighList *history = pair ? pair->listgranhistory : 0;
@@ -94,9 +95,9 @@ public:
     double memory_usage() { return static_cast<double>(rows_.capacity()) * 2 * sizeof(double); }
 
 private:
-    const BondNonlinearCohesion *bonds()
+    BondNonlinearCohesion *bonds()
     {
-        const BondNonlinearCohesion *b = BondBook::of(lmp).pairBonds;
+        BondNonlinearCohesion *b = BondBook::of(lmp).pairBonds;
         if (!b)
             endRun(error, FLERR, "compute pair/gran/local/bond needs pair_style gran with cohesion bond/nonlinear "
                                  "(defined before the run)");

@@ -198,6 +198,9 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
         book_->beginPassIfNew(tally_, update);
         sweepIndex();
     }
+    // the per-contact output pass (compute pair/gran/local) applies the
+    // loads the records keep
+    if (!sidata.computeflag) fileLoads();
     cursor_ = 0;
     lastAtom_ = -1;
     // whether any bond may form in this pass (the core says, per bond type)
@@ -318,6 +321,8 @@ void BondNonlinearCohesion::indexBonds()
 void BondNonlinearCohesion::sweepIndex()
 {
     if (indexedAt_ != neighbor->ncalls) indexBonds();
+    // the pairs' callbacks read the loads from the records in this pass
+    for (BondIndex &b : index_) b.pass.keep_loads = direct_ ? 0 : 1;
     sweptTo_.assign(index_.size(), 0);
     sweepEnd_.resize(index_.size());
     for (size_t x = 0; x < index_.size(); x++) sweepEnd_[x] = index_[x].ordered;
@@ -374,6 +379,16 @@ void BondNonlinearCohesion::settleBroken(BondIndex &b, size_t from)
         *b.flags[k] &= ~CONTACT_COHESION_MODEL;
         brokeNow_.insert(b.records[k]);
     }
+}
+
+// Only while the index holds the records of the lists as they stand: an
+// older index's bonds were filed before the engine moved the records.
+void BondNonlinearCohesion::fileLoads()
+{
+    if (indexedAt_ != neighbor->ncalls) return;
+    for (BondIndex &b : index_)
+        if (b.fileLoads(0, b.size()) != GB_STATUS_OK)
+            endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: filing the bonds' loads: " + coreReason());
 }
 
 // GRANBOND_CHECK_INDEX: the index recounted from the records after a swept
@@ -643,6 +658,7 @@ BondNonlinearCohesion::Formed BondNonlinearCohesion::form(SurfacesCloseData &d, 
 {
     BondIndex &b = indexOf(index_, model);
     b.pass.with_contact = 0;
+    b.pass.keep_loads = direct_ ? 0 : 1;
     b.add(d.i, d.j, countsHere(d.i, d.j), d.contact_history + offset_, d.contact_flags);
     Formed f;
     f.index = static_cast<size_t>(&b - &index_[0]);

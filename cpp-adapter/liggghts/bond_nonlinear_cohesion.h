@@ -58,6 +58,10 @@ public:
     int recordOffset() const { return offset_; }
     size_t statusSlot() const { return status_; }
     const GbBondModel *model(int itype, int jtype) const { return parameters_.model(itype, jtype); }
+    // The loads of the latest force pass filed in the pairs' records, for
+    // what reads them after the pass (bond_index.h): a run's end, a restart
+    // file, per-bond and per-contact output.
+    void fileLoads();
 
 private:
     // Where a bond that formed in the pair loop lies in the index.

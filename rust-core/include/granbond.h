@@ -58,7 +58,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 13
+#define GRANBOND_ABI_VERSION 14
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -1022,6 +1022,14 @@ typedef struct GbSweepPass {
    * ([`RecordLayout::new`]).
    */
   int32_t with_contact;
+  /**
+   * 1: a force pass stores an intact bond's loads in its record (and
+   * clears them at a break); 0: the caller keeps the pass's outputs and
+   * files them with [`file_loads`] before anything reads the records'
+   * loads, and a force pass reads and writes only the first
+   * [`RecordLayout::loads`] doubles of each record.
+   */
+  int32_t keep_loads;
 } GbSweepPass;
 
 /**
@@ -1839,12 +1847,15 @@ enum GbStatus granbond_record_layout(int32_t with_contact, struct GbRecordLayout
  * the same) starts at `records[k]`.
  *
  * A force pass advances every bond (bit for bit `granbond_bond_compute_indexed`
- * on the records' bond states) and writes its loads to `out[k]`; an intact
- * bond's loads are kept in its record; a bond that breaks has `status`
+ * on the records' bond states) and writes its loads to `out[k]`; with
+ * `pass->keep_loads`, an intact bond's loads are also kept in its record
+ * (without, the caller files `out` with `granbond_bond_file_loads` before
+ * anything reads them, and the pass reads and writes only the first
+ * `layout.loads` doubles of each record); a bond that breaks has `status`
  * broken and its `break_mode` in `out[k]`, and unless
  * `pass->contact_under_bond`, its record's contact state is cleared. A
- * setup pass advances nothing and writes to `out[k]` the loads the latest
- * force pass kept. Bonds with `counted[k]` non-zero (each bond on one rank
+ * setup pass advances nothing and writes to `out[k]` the loads kept in
+ * the records. Bonds with `counted[k]` non-zero (each bond on one rank
  * only) are added to `tally`: intact after the pass, broken by mode.
  *
  * Stops at the first bad input and writes its index to `failed_index` (if
@@ -1853,7 +1864,8 @@ enum GbStatus granbond_record_layout(int32_t with_contact, struct GbRecordLayout
  *
  * # Safety
  * Pointers must be null or valid for the sizes above (`pairs`: `2 count`
- * ints; `counted`: `count` bytes; each `records[k]`: a record's length).
+ * ints; `counted`: `count` bytes; each `records[k]`: a record's length, or
+ * `layout.loads` doubles in a force pass without `keep_loads`).
  */
 enum GbStatus granbond_bond_sweep(const struct GbBondModel *model,
                                   const struct GbSweepPass *pass,
@@ -1865,6 +1877,27 @@ enum GbStatus granbond_bond_sweep(const struct GbBondModel *model,
                                   struct GbBondOutput *out,
                                   struct GbSweepTally *tally,
                                   size_t *failed_index);
+
+/**
+ * Files the outputs `outs[k]` of the latest passes of `count` bonds in
+ * their pair records `records[k]` (`granbond_record_layout` of
+ * `with_contact`), as a pass with `keep_loads` would have: an intact
+ * bond's loads stored, a broken bond's cleared; an output no pass wrote
+ * (all zero: status unbonded) leaves its record's loads alone. For engines
+ * that sweep without `keep_loads`, before anything reads the records'
+ * loads: a run's end, a restart file, an output of the bonds. A null or
+ * misaligned record is reported, its index written to `failed_index` (if
+ * not null), before any is filed.
+ *
+ * # Safety
+ * Pointers must be null or valid: `records` and `outs` hold `count`
+ * entries, each `records[k]` a record's length.
+ */
+enum GbStatus granbond_bond_file_loads(int32_t with_contact,
+                                       size_t count,
+                                       double *const *records,
+                                       const struct GbBondOutput *outs,
+                                       size_t *failed_index);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -2,13 +2,20 @@
 //! the records of intact bonds and sweep it once per pass
 //! (docs/models/bond-nonlinear.md, "Creation" and "Breakage"):
 //!
-//! - a force pass advances each bond; an intact bond's loads are kept in its
-//!   record for the passes that must not advance it; a bond that breaks is
-//!   counted by mode, and unless the contact goes on under the bond, the
-//!   contact starts afresh, as in BPM and LAMMPS `pair granular`;
+//! - a force pass advances each bond; a bond that breaks is counted by
+//!   mode, and unless the contact goes on under the bond, the contact starts
+//!   afresh, as in BPM and LAMMPS `pair granular`;
 //! - a setup pass (a run's start) advances nothing and applies the loads of
 //!   the latest force pass, so a second `run` or a restart continues the
 //!   first bit for bit.
+//!
+//! The loads a setup pass applies are kept in the bond's record. A force
+//! pass stores them there itself when the engine reads them within the pass
+//! (`keep_loads`); otherwise the engine keeps the pass's outputs, which it
+//! has anyway, and files them into the records ([`file_loads`]) only before
+//! something reads or moves the records: a run's end, a restart file, an
+//! output of the bonds. Storing them every step would cost each bond-step
+//! the stores of data that only the next run's first pass reads.
 //!
 //! The bond step itself is [`crate::bond::BondModel`]'s; this module says
 //! what the pass does around it.
@@ -31,6 +38,12 @@ pub struct SweepPass {
     /// 1: the records hold the Voigt contact's state first
     /// ([`RecordLayout::new`]).
     pub with_contact: i32,
+    /// 1: a force pass stores an intact bond's loads in its record (and
+    /// clears them at a break); 0: the caller keeps the pass's outputs and
+    /// files them with [`file_loads`] before anything reads the records'
+    /// loads, and a force pass reads and writes only the first
+    /// [`RecordLayout::loads`] doubles of each record.
+    pub keep_loads: i32,
 }
 
 /// The bonds one pass counted (only those its caller marked as counted:
@@ -69,8 +82,9 @@ impl SweepTally {
 }
 
 /// The rest of a force pass for one bond its step left with `out`: the
-/// loads kept while it is intact; at a break, the count, the loads cleared
-/// and, unless `contact_under_bond`, the contact's state.
+/// loads filed while it is intact, if the pass keeps them; at a break, the
+/// count, the loads cleared (likewise) and, unless `contact_under_bond`,
+/// the contact's state.
 #[inline]
 pub fn after_force_step(
     layout: &RecordLayout,
@@ -81,7 +95,9 @@ pub fn after_force_step(
     tally: &mut SweepTally,
 ) {
     if out.status == BondStatus::Intact as i32 {
-        *layout.loads(record) = store_output(out);
+        if pass.keep_loads != 0 {
+            *layout.loads(record) = store_output(out);
+        }
         tally.intact += i64::from(counted);
         return;
     }
@@ -89,10 +105,25 @@ pub fn after_force_step(
         if counted {
             tally.count_break(out.break_mode);
         }
-        layout.loads(record).fill(0.0);
+        if pass.keep_loads != 0 {
+            layout.loads(record).fill(0.0);
+        }
         if pass.contact_under_bond == 0 {
             record[..layout.contact_len].fill(0.0);
         }
+    }
+}
+
+/// Files the output of a bond's latest pass in its record, as a force pass
+/// that keeps the loads would have: an intact bond's loads stored, a broken
+/// bond's cleared. An output no pass wrote (status unbonded, as zeroed)
+/// leaves the record's loads as they are: the bond was not stepped since
+/// they were filed.
+pub fn file_loads(layout: &RecordLayout, record: &mut [f64], out: &BondOutput) {
+    match out.status {
+        s if s == BondStatus::Intact as i32 => *layout.loads(record) = store_output(out),
+        s if s == BondStatus::Broken as i32 => layout.loads(record).fill(0.0),
+        _ => {}
     }
 }
 

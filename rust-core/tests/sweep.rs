@@ -7,7 +7,7 @@ use granbond_test_support as common;
 use granbond::bond::{BondOutput, BondState, BondStatus, BreakMode, BOND_STATE_LEN};
 use granbond::ffi::bond::{granbond_bond_compute_indexed, AtomArrayPointers};
 use granbond::ffi::layout::StateKind;
-use granbond::ffi::sweep::{granbond_bond_sweep, granbond_record_layout};
+use granbond::ffi::sweep::{granbond_bond_file_loads, granbond_bond_sweep, granbond_record_layout};
 use granbond::ffi::Status;
 use granbond::record::{record_slots, RecordLayout};
 use granbond::state_layout::swap_state;
@@ -133,6 +133,7 @@ fn force_pass(contact_under_bond: bool) -> SweepPass {
         advance: 1,
         contact_under_bond: contact_under_bond as i32,
         with_contact: 1,
+        keep_loads: 1,
     }
 }
 
@@ -278,6 +279,94 @@ fn a_force_pass_steps_as_the_indexed_entry_and_keeps_the_loads_a_setup_pass_appl
         assert_eq!(bits(&setup_out[k].torque_j), bits(&out[k].torque_j));
         assert_eq!((setup_out[k].sigma, setup_out[k].tau), (out[k].sigma, out[k].tau));
     }
+}
+
+#[test]
+fn loads_filed_after_the_pass_give_the_records_a_pass_that_keeps_them_leaves() {
+    let (m, s, l) = (model(), scene(), layout(true));
+    let counted = vec![1u8; BONDS];
+    let mut failed = usize::MAX;
+    // the reference: a force pass that keeps the loads in the records
+    let mut kept = records(&l);
+    // old loads in every record: a pass that keeps none must not touch them
+    for r in kept.iter_mut() {
+        for (n, v) in r[l.loads..].iter_mut().enumerate() {
+            *v = 1.0 + n as f64;
+        }
+    }
+    let stale = kept.clone();
+    let mut kept_out = vec![BondOutput::default(); BONDS];
+    let mut kept_tally = SweepTally::default();
+    let status = sweep(
+        &m,
+        &s,
+        &force_pass(false),
+        &counted,
+        &mut kept,
+        &mut kept_out,
+        &mut kept_tally,
+        &mut failed,
+    );
+    assert_eq!(status, Status::Ok);
+
+    // the same pass over records cut before the loads, as an engine's rows
+    let mut short: Vec<Vec<f64>> = stale.iter().map(|r| r[..l.loads].to_vec()).collect();
+    let mut out = vec![BondOutput::default(); BONDS];
+    let mut tally = SweepTally::default();
+    let pass = SweepPass {
+        keep_loads: 0,
+        ..force_pass(false)
+    };
+    assert_eq!(
+        sweep(
+            &m,
+            &s,
+            &pass,
+            &counted,
+            &mut short,
+            &mut out,
+            &mut tally,
+            &mut failed
+        ),
+        Status::Ok
+    );
+    assert_eq!(tally, kept_tally);
+    assert!(kept_tally.intact > 0 && kept_tally.broken() > 0);
+    for k in 0..BONDS {
+        assert_eq!(bits(&short[k]), bits(&kept[k][..l.loads]), "bond {k}");
+        assert_eq!(bits(&out[k].force_i), bits(&kept_out[k].force_i));
+    }
+
+    // filed into the whole records: what the keeping pass left, bit for bit;
+    // the last bond's output as no pass wrote it leaves its loads alone
+    let mut filed: Vec<Vec<f64>> = stale.clone();
+    for (f, r) in filed.iter_mut().zip(&short) {
+        f[..l.loads].copy_from_slice(r);
+    }
+    out[BONDS - 1] = BondOutput::default();
+    let pointers: Vec<*mut f64> = filed.iter_mut().map(|r| r.as_mut_ptr()).collect();
+    let status = unsafe { granbond_bond_file_loads(1, BONDS, pointers.as_ptr(), out.as_ptr(), &mut failed) };
+    assert_eq!(status, Status::Ok);
+    for k in 0..BONDS - 1 {
+        assert_eq!(bits(&filed[k]), bits(&kept[k]), "bond {k}");
+    }
+    assert_eq!(
+        bits(&filed[BONDS - 1][l.loads..]),
+        bits(&stale[BONDS - 1][l.loads..])
+    );
+
+    // a null record is named before any is filed
+    for (f, old) in filed.iter_mut().zip(&stale) {
+        f[l.loads..].copy_from_slice(&old[l.loads..]);
+    }
+    let before = filed.clone();
+    let mut pointers: Vec<*mut f64> = filed.iter_mut().map(|r| r.as_mut_ptr()).collect();
+    pointers[7] = std::ptr::null_mut();
+    failed = usize::MAX;
+    let status = unsafe { granbond_bond_file_loads(1, BONDS, pointers.as_ptr(), out.as_ptr(), &mut failed) };
+    assert_eq!(status, Status::NullPointer);
+    assert_eq!(failed, 7);
+    assert_eq!(bits(&filed.concat()), bits(&before.concat()));
 }
 
 #[test]

@@ -9,7 +9,7 @@ use super::guard::{reference, reference_mut, slice, slice_mut, time_step, Failed
 use super::results;
 use crate::bond::{BondModel, BondOutput, BondState};
 use crate::record::RecordLayout;
-use crate::sweep::{after_force_step, setup_loads, SweepPass, SweepTally};
+use crate::sweep::{after_force_step, file_loads, setup_loads, SweepPass, SweepTally};
 
 /// The layout of a pair record, with the Voigt contact's state first
 /// (`with_contact` 1, LAMMPS `pair granbond`) or without it (0, where the
@@ -37,12 +37,15 @@ const CHUNK: usize = 64;
 /// the same) starts at `records[k]`.
 ///
 /// A force pass advances every bond (bit for bit `granbond_bond_compute_indexed`
-/// on the records' bond states) and writes its loads to `out[k]`; an intact
-/// bond's loads are kept in its record; a bond that breaks has `status`
+/// on the records' bond states) and writes its loads to `out[k]`; with
+/// `pass->keep_loads`, an intact bond's loads are also kept in its record
+/// (without, the caller files `out` with `granbond_bond_file_loads` before
+/// anything reads them, and the pass reads and writes only the first
+/// `layout.loads` doubles of each record); a bond that breaks has `status`
 /// broken and its `break_mode` in `out[k]`, and unless
 /// `pass->contact_under_bond`, its record's contact state is cleared. A
-/// setup pass advances nothing and writes to `out[k]` the loads the latest
-/// force pass kept. Bonds with `counted[k]` non-zero (each bond on one rank
+/// setup pass advances nothing and writes to `out[k]` the loads kept in
+/// the records. Bonds with `counted[k]` non-zero (each bond on one rank
 /// only) are added to `tally`: intact after the pass, broken by mode.
 ///
 /// Stops at the first bad input and writes its index to `failed_index` (if
@@ -51,7 +54,8 @@ const CHUNK: usize = 64;
 ///
 /// # Safety
 /// Pointers must be null or valid for the sizes above (`pairs`: `2 count`
-/// ints; `counted`: `count` bytes; each `records[k]`: a record's length).
+/// ints; `counted`: `count` bytes; each `records[k]`: a record's length, or
+/// `layout.loads` doubles in a force pass without `keep_loads`).
 #[entry(failed_index: FailedIndex::new, model: reference, pass: reference, atoms: reference, tally: reference_mut)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_sweep(
@@ -67,17 +71,22 @@ pub unsafe extern "C" fn granbond_bond_sweep(
     failed_index: *mut usize,
 ) -> Status {
     let layout = RecordLayout::new(pass.with_contact != 0);
+    let len = if pass.advance != 0 && pass.keep_loads == 0 {
+        layout.loads
+    } else {
+        layout.len
+    };
     let arrays = atom_arrays(atoms)?;
     let pairs = slice(pairs as *const [i32; 2], count, "pairs")?;
     let counted = slice(counted, count, "counted")?;
     let records = slice(records, count, "records")?;
     for (k, &r) in records.iter().enumerate() {
-        slice_mut(r, layout.len, "records[k]").map_err(|f| failed_index.fail("bond", k, f))?;
+        slice_mut(r, len, "records[k]").map_err(|f| failed_index.fail("bond", k, f))?;
     }
     let out = slice_mut(out, count, "out")?;
     // every index checked before any bond moves
     let all = indexed_pairs(arrays, pairs, 0, failed_index)?;
-    let record = |k: usize| std::slice::from_raw_parts_mut(records[k], layout.len);
+    let record = |k: usize| std::slice::from_raw_parts_mut(records[k], len);
     if pass.advance == 0 {
         for (k, o) in out.iter_mut().enumerate() {
             *o = setup_loads(&layout, record(k), counted[k] != 0, tally);
@@ -85,13 +94,13 @@ pub unsafe extern "C" fn granbond_bond_sweep(
         return Ok(());
     }
     let dt = time_step(pass.dt, "pass->dt")?;
-    prefetch_records(&records[..count.min(CHUNK)], layout.len);
+    prefetch_records(&records[..count.min(CHUNK)], len);
     for first in (0..count).step_by(CHUNK) {
         let last = count.min(first + CHUNK);
         // the next chunk's records, requested while this one is stepped:
         // they lie apart in the engine's history pages, and each first read
         // would otherwise wait for memory
-        prefetch_records(&records[last..count.min(last + CHUNK)], layout.len);
+        prefetch_records(&records[last..count.min(last + CHUNK)], len);
         let kinematics = all.sub(first..last);
         let mut states = [std::ptr::null_mut::<BondState>(); CHUNK];
         for (s, &r) in states.iter_mut().zip(&records[first..last]) {
@@ -109,6 +118,40 @@ pub unsafe extern "C" fn granbond_bond_sweep(
         for k in first..last {
             after_force_step(&layout, pass, record(k), &out[k], counted[k] != 0, tally);
         }
+    }
+    Ok(())
+}
+
+/// Files the outputs `outs[k]` of the latest passes of `count` bonds in
+/// their pair records `records[k]` (`granbond_record_layout` of
+/// `with_contact`), as a pass with `keep_loads` would have: an intact
+/// bond's loads stored, a broken bond's cleared; an output no pass wrote
+/// (all zero: status unbonded) leaves its record's loads alone. For engines
+/// that sweep without `keep_loads`, before anything reads the records'
+/// loads: a run's end, a restart file, an output of the bonds. A null or
+/// misaligned record is reported, its index written to `failed_index` (if
+/// not null), before any is filed.
+///
+/// # Safety
+/// Pointers must be null or valid: `records` and `outs` hold `count`
+/// entries, each `records[k]` a record's length.
+#[entry(failed_index: FailedIndex::new)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_file_loads(
+    with_contact: i32,
+    count: usize,
+    records: *const *mut f64,
+    outs: *const BondOutput,
+    failed_index: *mut usize,
+) -> Status {
+    let layout = RecordLayout::new(with_contact != 0);
+    let records = slice(records, count, "records")?;
+    let outs = slice(outs, count, "outs")?;
+    for (k, &r) in records.iter().enumerate() {
+        slice_mut(r, layout.len, "records[k]").map_err(|f| failed_index.fail("bond", k, f))?;
+    }
+    for (&r, out) in records.iter().zip(outs) {
+        file_loads(&layout, std::slice::from_raw_parts_mut(r, layout.len), out);
     }
     Ok(())
 }

@@ -596,7 +596,9 @@ int test_bond_limits(void)
  * among them. A force pass steps each bond as granbond_bond_compute would,
  * keeps an intact bond's loads, clears the contact and loads of one that
  * breaks, and counts what it was asked to; a setup pass applies the kept
- * loads, bit for bit, and changes nothing. */
+ * loads, bit for bit, and changes nothing. A force pass that keeps no
+ * loads, its outputs filed afterwards (granbond_bond_file_loads), leaves
+ * the same records. */
 int test_bond_sweep(void)
 {
     const GbBondParams p = bond_fixture();
@@ -606,7 +608,7 @@ int test_bond_sweep(void)
     GbBondOutput out[N_SCATTERED], setup[N_SCATTERED], single, kept;
     double memory[2 * N_SCATTERED * GRANBOND_BOND_STATE_LEN], one[GRANBOND_BOND_STATE_LEN];
     double records[N_SCATTERED][GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN];
-    double before[sizeof records / sizeof(double)];
+    double before[sizeof records / sizeof(double)], start[sizeof records / sizeof(double)];
     double x[6 * N_SCATTERED], v[6 * N_SCATTERED], w[6 * N_SCATTERED], radius[2 * N_SCATTERED];
     double *states[N_SCATTERED], *at[N_SCATTERED];
     int32_t pairs[2 * N_SCATTERED];
@@ -644,9 +646,24 @@ int test_bond_sweep(void)
     pass.advance = 1;
     pass.contact_under_bond = 0;
     pass.with_contact = 1;
+    pass.keep_loads = 0;
+    memset(&tally, 0, sizeof tally);
+    EXPECT_OK(granbond_bond_sweep(m, &pass, N_SCATTERED, &atoms, pairs, counted, at, out, &tally, &failed),
+              "granbond_bond_sweep, force pass keeping no loads");
+    for (b = 0; b < N_SCATTERED; b++)
+        CHECK(memcmp(at[b] + layout.loads, before + (at[b] - records[0]) + layout.loads,
+                     GRANBOND_BOND_OUTPUT_LEN * sizeof(double)) == 0,
+              say("bond %d: a pass that keeps no loads leaves them", b));
+    EXPECT_OK(granbond_bond_file_loads(1, N_SCATTERED, at, out, &failed), "granbond_bond_file_loads");
+    memcpy(start, records, sizeof records);
+
+    memcpy(records, before, sizeof records);
+    pass.keep_loads = 1;
     memset(&tally, 0, sizeof tally);
     EXPECT_OK(granbond_bond_sweep(m, &pass, N_SCATTERED, &atoms, pairs, counted, at, out, &tally, &failed),
               "granbond_bond_sweep, force pass");
+    CHECK(memcmp(start, records, sizeof records) == 0,
+          "the loads filed after the pass: the records a pass that keeps them leaves, bit for bit");
     for (b = 0; b < N_SCATTERED; b++) {
         memcpy(one, states[b], sizeof one);
         EXPECT_OK(granbond_bond_compute(m, &k[b], DT, one, &single), say("granbond_bond_compute, bond %d", b));

@@ -45,7 +45,7 @@ use granbond::ffi::fields::{
 };
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::parameters::{self as fp, ParameterRow};
-use granbond::ffi::sweep::{granbond_bond_sweep, granbond_record_layout};
+use granbond::ffi::sweep::{granbond_bond_file_loads, granbond_bond_sweep, granbond_record_layout};
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
 use granbond::record::RecordLayout;
@@ -59,7 +59,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 60] = [
+pub const ENTRY_POINTS: [&str; 61] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -116,6 +116,7 @@ pub const ENTRY_POINTS: [&str; 60] = [
     "granbond_state_slot",
     "granbond_record_layout",
     "granbond_bond_sweep",
+    "granbond_bond_file_loads",
     "granbond_bond_field_count",
     "granbond_bond_field_info",
     "granbond_bond_fields",
@@ -1522,6 +1523,7 @@ impl<'t> Session<'t> {
             advance: (flags & 1 == 0) as i32,
             contact_under_bond: (flags >> 1 & 1) as i32,
             with_contact: (flags >> 2 & 1) as i32,
+            keep_loads: (flags >> 3 & 1 == 0) as i32,
         };
         input.mutate(&mut pass);
         let layout = self.record_layout(input, pass.with_contact);
@@ -1660,6 +1662,22 @@ impl<'t> Session<'t> {
         }
         self.check_force_pass(&b, &pass, &layout, &before, out);
         if then_setup {
+            if pass.keep_loads == 0 {
+                // SAFETY: the records and outputs of the pass, every pointer valid.
+                let status = unsafe {
+                    granbond_bond_file_loads(
+                        pass.with_contact,
+                        count,
+                        records.as_ptr(),
+                        out.as_ptr(),
+                        null_mut(),
+                    )
+                };
+                assert!(
+                    self.answer("granbond_bond_file_loads", status),
+                    "granbond_bond_file_loads: refused the records a force pass took"
+                );
+            }
             // the loads kept are those the force pass applied, bit for bit
             let setup = SweepPass { advance: 0, ..pass };
             let mut again = vec![BondOutput::default(); count];
@@ -1808,7 +1826,13 @@ impl<'t> Session<'t> {
             );
             let contact = ..layout.contact_len;
             let loads = layout.loads..layout.len;
-            let (want_contact, want_loads) = if o.status == BondStatus::Intact as i32 {
+            let (want_contact, want_loads) = if pass.keep_loads == 0 {
+                // the caller files them (granbond_bond_file_loads)
+                let cleared = vec![0.0; layout.contact_len];
+                let broke = o.break_mode != BreakMode::None as i32 && pass.contact_under_bond == 0;
+                let contact = if broke { &cleared[..] } else { &old[contact] };
+                (bits(contact), bits(&old[loads.clone()]))
+            } else if o.status == BondStatus::Intact as i32 {
                 (bits(&old[contact]), bits(&store_output(o)))
             } else if o.break_mode != BreakMode::None as i32 {
                 let cleared = vec![0.0; layout.contact_len];
