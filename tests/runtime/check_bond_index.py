@@ -30,6 +30,14 @@ LIGGGHTS (liggghts-granbond). One claim per mode:
               1000 steps (bonds break under impact, fragments touch) with
               and without its dumps (compute pair/gran/local among them) end
               with the same state of every atom, to the last digit.
+  callbacks   LIGGGHTS: where the engine's pair loop reads each pair's
+              forces (here: the per-atom sum of normal forces, a fix
+              property/atom named sum_normal_force_), the pairs' callbacks
+              apply the bonds' loads, read back from the records the sweep
+              wrote in the same pass. The flagship deck's first 300 steps
+              (bonds loaded by the impact) with and without that fix end
+              with the same state of every atom, to round-off (the loads
+              join the atoms' sums in another order).
   reform      a bond that breaks between spheres still within the creation
               distance (create_always / createBondAlways) forms again in
               the next pass, not in the pass it broke in, as when each bond
@@ -216,39 +224,67 @@ def check_observe(a, workdir):
     compute pair/gran/local: the same state of every atom to the last digit."""
     if a.kind != "liggghts":
         raise Failure("observe: liggghts only")
+    finals = [flagship_final(a, workdir, f"dumps{dumps}", 1000, "", dumps) for dumps in (0, 1)]
+    if not os.path.isdir(os.path.join(workdir, "dumps1", "post")):
+        raise Failure("dumps 1 wrote no dumps")
+    if finals[0] != finals[1]:
+        diff = next((x, y) for x, y in zip(finals[0], finals[1]) if x != y)
+        raise Failure(f"the dumps changed the run: without them {diff[0]}, with them {diff[1]}")
+    print(f"the same final state of {len(finals[0])} atoms with and without the dumps "
+          "(compute pair/gran/local among them)")
+
+
+def flagship_final(a, workdir, name, nrun, extra, dumps=0):
+    """The flagship LIGGGHTS deck with its dumps or without, `extra`
+    commands added before its run, run for `nrun` steps: the final state,
+    one row of numbers per atom (id, x, v, omega), to the last digit."""
     example = os.path.join(HERE, "..", "..", "examples", "agglomerate_liggghts")
     with open(os.path.join(example, "in.agglomerate_liggghts"), encoding="utf-8") as f:
         deck = f.read()
     final = ("dump final all custom ${nrun} final.txt id x y z vx vy vz omegax omegay omegaz\n"
              'dump_modify final sort id format "%d' + " %.17g" * 9 + '"\n')
     if deck.count("\nrun ${nrun}") != 1:
-        raise Failure("observe: the flagship deck no longer ends with one 'run ${nrun}'")
-    deck = deck.replace("\nrun ${nrun}", "\n" + final + "run ${nrun}")
-    finals = []
-    for dumps in (0, 1):
-        run_dir = os.path.join(workdir, f"dumps{dumps}")
-        os.makedirs(run_dir, exist_ok=True)
-        with open(os.path.join(run_dir, "in.deck"), "w", encoding="utf-8") as f:
-            f.write(deck)
-        p = subprocess.run([a.engine, "-in", "in.deck", "-var", "dumps", str(dumps), "-var", "nrun", "1000",
-                            "-log", "log.lammps"], cwd=run_dir, stdout=subprocess.PIPE,
-                           stderr=subprocess.STDOUT, universal_newlines=True, timeout=600)
-        if p.returncode != 0:
-            raise Failure(f"dumps {dumps}: exit {p.returncode}:\n{p.stdout[-3000:]}")
-        with open(os.path.join(run_dir, "final.txt"), encoding="utf-8") as f:
-            finals.append(f.read().split("ITEM: TIMESTEP")[-1])
-    if not os.path.isdir(os.path.join(workdir, "dumps1", "post")):
-        raise Failure("dumps 1 wrote no dumps")
-    if finals[0] != finals[1]:
-        diff = next((x, y) for x, y in zip(finals[0].splitlines(), finals[1].splitlines()) if x != y)
-        raise Failure(f"the dumps changed the run: without them '{diff[0]}', with them '{diff[1]}'")
-    atoms = finals[0].split("ITEM: NUMBER OF ATOMS")[1].split()[0]
-    print(f"the same final state of {atoms} atoms with and without the dumps (compute pair/gran/local among them)")
+        raise Failure("the flagship deck no longer ends with one 'run ${nrun}'")
+    deck = deck.replace("\nrun ${nrun}", "\n" + extra + final + "run ${nrun}")
+    run_dir = os.path.join(workdir, name)
+    os.makedirs(run_dir, exist_ok=True)
+    with open(os.path.join(run_dir, "in.deck"), "w", encoding="utf-8") as f:
+        f.write(deck)
+    p = subprocess.run([a.engine, "-in", "in.deck", "-var", "dumps", str(dumps), "-var", "nrun", str(nrun),
+                        "-log", "log.lammps"], cwd=run_dir, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, universal_newlines=True, timeout=600)
+    if p.returncode != 0:
+        raise Failure(f"{name}: exit {p.returncode}:\n{p.stdout[-3000:]}")
+    with open(os.path.join(run_dir, "final.txt"), encoding="utf-8") as f:
+        rows = f.read().split("ITEM: ATOMS")[-1].splitlines()[1:]
+    return [[float(w) for w in r.split()] for r in rows if r.strip()]
+
+
+def check_callbacks(a, workdir):
+    if a.kind != "liggghts":
+        raise Failure("callbacks: liggghts only")
+    nrun = 300
+    swept = flagship_final(a, workdir, "swept", nrun, "")
+    summed = flagship_final(a, workdir, "callbacks", nrun,
+                            "fix sumnf all property/atom sum_normal_force_ scalar no no no 0.\n")
+    if len(swept) != len(summed) or not swept:
+        raise Failure(f"{len(swept)} and {len(summed)} atoms")
+    worst, where = 0.0, None
+    for c in range(1, 10):   # x, v, omega: each against its column's scale
+        scale = max(abs(r[c]) for r in swept) or 1.0
+        for r, q in zip(swept, summed):
+            d = abs(r[c] - q[c]) / scale
+            if d > worst:
+                worst, where = d, (int(r[0]), c)
+    print(f"{len(swept)} atoms after {nrun} steps: largest difference {worst:.3g} of its column's scale")
+    if worst > 1e-9:
+        raise Failure(f"with the pairs' callbacks applying the bonds' loads the run differs: atom {where[0]}, "
+                      f"column {where[1]}, {worst:.3g} of the column's scale")
 
 
 def parse():
     p = argparse.ArgumentParser()
-    p.add_argument("--mode", required=True, choices=["index", "under", "reform", "observe"])
+    p.add_argument("--mode", required=True, choices=["index", "under", "reform", "observe", "callbacks"])
     p.add_argument("--engine", required=True)
     p.add_argument("--kind", required=True, choices=["lammps", "liggghts"])
     p.add_argument("--mpiexec")
@@ -258,5 +294,6 @@ def parse():
 
 if __name__ == "__main__":
     args = parse()
-    checks = {"index": check_index, "under": check_under, "reform": check_reform, "observe": check_observe}
+    checks = {"index": check_index, "under": check_under, "reform": check_reform, "observe": check_observe,
+              "callbacks": check_callbacks}
     main(lambda: checks[args.mode](args, args.workdir))
