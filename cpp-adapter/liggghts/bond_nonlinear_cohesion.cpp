@@ -64,6 +64,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     offset_(-1),
     outputOffset_(-1),
     status_(0),
+    statusAt_(0),
     clumpIds_(0),
     atoms_(0),
     checkedNatoms_(-1),
@@ -98,6 +99,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
         outputOffset_ = offset_ + static_cast<int>(layout.loads);
         status_ = layout.status;
     }
+    statusAt_ = static_cast<size_t>(offset_) + status_;
     // the name LIGGGHTS-INL publishes, so per-contact tools can find the slots
     cmb->add_history_offset("bondnonlinear_contactflag", offset_);
     cmb->add_history_offset("bondnonlinear_output", outputOffset_);
@@ -276,7 +278,7 @@ inline void BondNonlinearCohesion::addToAtoms(const AtomSums &sums, int i, int j
         subtractScaled3(sums.f + J, relaxJ, out.force_i);
         addScaled3(sums.torque + J, relaxJ, out.torque_j);
     }
-    if (pair_->evflag) {
+    if (sums.virial) {
         const double *xi = atom->x[i], *xj = atom->x[j];
         pair_->ev_tally_xyz(i, j, sums.nlocal, sums.newton, 0.0, 0.0, out.force_i[0], out.force_i[1],
                             out.force_i[2], xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
@@ -339,10 +341,13 @@ void BondNonlinearCohesion::sweepRange(BondIndex &b, size_t first, size_t last, 
     if (first == last) return;
     const size_t breaks = b.broken.size();
     size_t bad = 0;
-    const AtomSums sums = {atom->f[0], atom->torque[0], atom->nlocal, force->newton_pair};
-    const GbStatus status = b.sweep(atom, first, last, true, update->dt, t, bad, [&](size_t k, const GbBondOutput &out) {
-        if (direct_) addToAtoms(sums, b.pairs[2 * k], b.pairs[2 * k + 1], out);
-    });
+    const AtomSums sums = {atom->f[0], atom->torque[0], atom->nlocal, force->newton_pair, pair_->evflag != 0};
+    const GbStatus status =
+        direct_ ? b.sweep(atom, first, last, true, update->dt, t, bad,
+                          [&](size_t k, const GbBondOutput &out) {
+                              addToAtoms(sums, b.pairs[2 * k], b.pairs[2 * k + 1], out);
+                          })
+                : b.sweep(atom, first, last, true, update->dt, t, bad, [](size_t, const GbBondOutput &) {});
     if (status != GB_STATUS_OK) failed(b.pairs[2 * bad], b.pairs[2 * bad + 1], "granbond_bond_sweep");
     settleBroken(b, breaks);
     pruneIndex_ = pruneIndex_ || b.broken.size() > breaks;
@@ -648,7 +653,7 @@ void BondNonlinearCohesion::atomReached(int i)
 inline bool BondNonlinearCohesion::swept(SurfacesCloseData &d)
 {
     if (sweeping_ && d.i != lastAtom_) atomReached(d.i);
-    if (!sweeping_ || !d.contact_history || d.contact_history[offset_ + status_] != GB_BOND_STATUS_INTACT) return false;
+    if (!sweeping_ || !d.contact_history || d.contact_history[statusAt_] != GB_BOND_STATUS_INTACT) return false;
     setContactFlag(d, true);
     return true;
 }
@@ -672,15 +677,14 @@ BondNonlinearCohesion::Formed BondNonlinearCohesion::form(SurfacesCloseData &d, 
 inline bool BondNonlinearCohesion::unbondable(SurfacesCloseData &d)
 {
     if (!sweeping_ || createsNow_ || clumpIds_ || !d.contact_history ||
-        d.contact_history[offset_ + status_] == GB_BOND_STATUS_INTACT)
+        d.contact_history[statusAt_] == GB_BOND_STATUS_INTACT)
         return false;
     if (!parameters_.model(d.itype, d.jtype)) return false;   // the general path reports it
     setContactFlag(d, false);
     return true;
 }
 
-void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
-                                                 ForceData &j_forces)
+void BondNonlinearCohesion::intersecting(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
     if (swept(sidata)) {
         i_forces.reset();
@@ -699,7 +703,7 @@ void BondNonlinearCohesion::endSurfacesIntersect(SurfacesIntersectData &sidata, 
     apply(out, i_forces, j_forces);
 }
 
-void BondNonlinearCohesion::surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
+void BondNonlinearCohesion::close(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
 {
     if (swept(scdata)) {
         if (direct_) return;

@@ -5,6 +5,8 @@
 //
 // Compiled once (bond_nonlinear_cohesion.cpp); the CohesionModel<> template
 // specialisation in cohesion_model_bond_nonlinear.h only inherits from it.
+// The pair callbacks' common case is inline here, so that the engine's pair
+// loop, compiled with each model combination, settles it without a call.
 #ifndef GRANBOND_LIGGGHTS_BOND_NONLINEAR_COHESION_H
 #define GRANBOND_LIGGGHTS_BOND_NONLINEAR_COHESION_H
 
@@ -46,10 +48,23 @@ public:
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &);
 
     // Overlapping spheres: the bond acts in endSurfacesIntersect, after the
-    // normal, tangential and rolling models have added their forces.
+    // normal, tangential and rolling models have added their forces. An
+    // intact bond the pass swept, its loads already at the atoms, only
+    // replaces those forces by nothing and keeps its record.
     void surfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
-    void endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
-    void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
+    void endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (!sweptAtAtoms(sidata)) {
+            intersecting(sidata, i_forces, j_forces);
+            return;
+        }
+        i_forces.reset();
+        j_forces.reset();
+    }
+    void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (!sweptAtAtoms(scdata)) close(scdata, i_forces, j_forces);
+    }
 
     // What per-bond output reads (bond_local.cpp): the pair style, where
     // the bond record (granbond_record_layout without the contact) lies in
@@ -76,6 +91,18 @@ private:
     void pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const;
     void createPair(const SurfacesCloseData &d, const GbBondModel *model, const GbPairKinematics &k,
                     double *state, bool &created);
+    // A pair of an intact bond whose loads this pass's sweep added to the
+    // atoms: its flag set to keep the record.
+    bool sweptAtAtoms(SurfacesCloseData &d)
+    {
+        if (!direct_) return false;
+        if (d.i != lastAtom_) atomReached(d.i);
+        if (!d.contact_history || d.contact_history[statusAt_] != GB_BOND_STATUS_INTACT) return false;
+        if (d.contact_flags) *d.contact_flags |= LIGGGHTS::ContactModels::CONTACT_COHESION_MODEL;
+        return true;
+    }
+    void intersecting(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    void close(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
     bool swept(SurfacesCloseData &d);
     bool unbondable(SurfacesCloseData &d);
     void atomReached(int i);
@@ -91,6 +118,7 @@ private:
     struct AtomSums {
         double *f, *torque;   // atom->f[0], atom->torque[0]
         int nlocal, newton;
+        bool virial;          // the pair style's evflag
     };
     void addToAtoms(const AtomSums &sums, int i, int j, const GbBondOutput &out);
     bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out,
@@ -118,6 +146,7 @@ private:
     int offset_;        // core state slots
     int outputOffset_;  // last output (GB_STATE_KIND_BOND_OUTPUT slots)
     size_t status_;     // the status slot in the state (the core's table)
+    size_t statusAt_;   // ... in the pair's history: offset_ + status_
     BondTally tally_;
     BondBook *book_;    // this instance's book (looked up once: std::map)
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)
