@@ -13,18 +13,21 @@
 //
 // Where the adapter can write the bonds back before the engine moves its
 // records (LAMMPS: fix neigh/history's pre_exchange), the core steps copies
-// of the records side by side in index order (`rows`): the engine's pages
-// hold a record for every neighbour, so the bonds' records lie apart there,
-// and a pass would wait on memory for each. The engine's record stays the
-// bond's home: copied into its row when the index is built, written back
-// when the bond breaks and before the engine reads or moves the records.
+// of the bonds' states side by side in index order (`rows`): the engine's
+// pages hold a record for every neighbour, so the bonds' records lie apart
+// there, and a pass would wait on memory for each. The engine's record
+// stays the bond's home: its bond state copied into the row when the index
+// is built, written back when the bond breaks and before the engine reads
+// or moves the records.
 //
 // The index keeps each bond's output of its latest pass (`outs`), which the
 // core writes anyway for the loads to reach the atoms. A force pass stores
 // the loads in the records only where the engine reads them within the pass
-// (`pass.keep_loads`); otherwise they are filed from `outs` (fileLoads)
-// before anything else reads them: a run's end, a restart file, an output
-// of the bonds (sweep.rs in the core). Rows therefore end before the loads.
+// (`pass.keep_loads`); otherwise they are filed from `outs` (fileLoads) at a
+// break and before anything else reads them: a run's end, a restart file,
+// an output of the bonds (sweep.rs in the core). Filing also settles the
+// rest of a broken bond's record (its contact), so a row needs neither the
+// contact nor the loads.
 #ifndef GRANBOND_BOND_INDEX_H
 #define GRANBOND_BOND_INDEX_H
 
@@ -77,13 +80,16 @@ struct BondIndex {
             2 * sizeof(int32_t) + sizeof(uint8_t) + 2 * sizeof(double *) + sizeof(int *) + sizeof(GbBondOutput);
         return static_cast<double>(rows_.capacity() * sizeof(double) + records.capacity() * perBond);
     }
-    // From now on the bonds are stepped in rows of `layout`'s records, up to
-    // their loads (see the head of this file); the index must be empty.
+    // From now on the bonds' states are stepped in rows (see the head of
+    // this file); `layout` is that of the homes; the index must be empty.
     void useRows(const GbRecordLayout &layout)
     {
-        rowLen_ = layout.loads;
+        rowLen_ = layout.loads - layout.bond;
         contactLen_ = layout.bond;
     }
+    // Bond k's status, from what the core steps (`status`: its place in a
+    // home).
+    double statusOf(size_t k, size_t status) const { return records[k][rowLen_ ? status - contactLen_ : status]; }
     void clear()
     {
         pairs.clear();
@@ -114,7 +120,7 @@ struct BondIndex {
             for (size_t k = 0; k < records.size(); k++) records[k] = rows_.data() + k * rowLen_;
         }
         records.push_back(rows_.data() + rows_.size());
-        rows_.insert(rows_.end(), record, record + rowLen_);
+        rows_.insert(rows_.end(), record + contactLen_, record + contactLen_ + rowLen_);
     }
     // Every bond's row written back to its home, and its loads filed there
     // (before the engine reads or moves its records).
@@ -129,8 +135,7 @@ struct BondIndex {
     {
         if (first >= last) return GB_STATUS_OK;
         size_t failed = 0;
-        return granbond_bond_file_loads(pass.with_contact, last - first, homes.data() + first, outs.data() + first,
-                                        &failed);
+        return granbond_bond_file_loads(&pass, last - first, homes.data() + first, outs.data() + first, &failed);
     }
     // Bond k's whole record as a pass that keeps the loads would leave it,
     // in `scratch`, for outputs of the bonds.
@@ -140,10 +145,10 @@ struct BondIndex {
         status = granbond_record_layout(pass.with_contact, &layout);
         if (status != GB_STATUS_OK) return nullptr;
         scratch.assign(homes[k], homes[k] + layout.len);
-        if (rowLen_) std::copy(records[k], records[k] + rowLen_, scratch.begin());
+        if (rowLen_) std::copy(records[k], records[k] + rowLen_, scratch.begin() + contactLen_);
         double *whole = scratch.data();
         size_t failed = 0;
-        status = granbond_bond_file_loads(pass.with_contact, 1, &whole, &outs[k], &failed);
+        status = granbond_bond_file_loads(&pass, 1, &whole, &outs[k], &failed);
         return whole;
     }
 
@@ -169,8 +174,11 @@ struct BondIndex {
         GbRecordLayout layout;
         const GbStatus laid = granbond_record_layout(pass.with_contact, &layout);
         if (laid != GB_STATUS_OK) return laid;
-        // a setup pass reads the loads filed in the homes; rows end before them
+        // a force pass steps the rows, bond states alone; a setup pass reads
+        // the loads filed in the homes
         double *const *stepped = (rowLen_ && !advance) ? homes.data() : records.data();
+        GbSweepPass stepping = pass;
+        if (rowLen_ && advance) stepping.with_contact = 0;
         for (size_t from = first; from < last; from += kSweepChunk) {
             const size_t n = last - from < kSweepChunk ? last - from : kSweepChunk;
             // the core requests each call's records ahead from its second
@@ -180,7 +188,7 @@ struct BondIndex {
                 for (size_t s = 0; s < layout.len; s += 8) __builtin_prefetch(records[k] + s, 1);
             size_t failed = 0;
             GbBondOutput *const out = outs.data() + from;
-            const GbStatus status = granbond_bond_sweep(model, &pass, n, &arrays, pairs.data() + 2 * from,
+            const GbStatus status = granbond_bond_sweep(model, &stepping, n, &arrays, pairs.data() + 2 * from,
                                                         counted.data() + from, stepped + from, out, &tally,
                                                         &failed);
             if (status != GB_STATUS_OK) {
@@ -196,7 +204,7 @@ struct BondIndex {
                 brokenOut.push_back(out[c]);
                 // the engine's loop reads it now
                 if (rowLen_) copyRow(from + c);
-                if (!pass.keep_loads) {
+                if (rowLen_ || !pass.keep_loads) {
                     const GbStatus filed = fileLoads(from + c, from + c + 1);
                     if (filed != GB_STATUS_OK) {
                         bad = from + c;
@@ -246,18 +254,14 @@ struct BondIndex {
     }
 
 private:
-    // Row k back to its home: the bond, and the contact's state unless the
-    // contact goes on under the bond. Then the contact loop steps the home's
-    // contact state; otherwise nothing writes it while the bond holds, and
-    // the row's is the one the core clears at a break.
-    void copyRow(size_t k)
-    {
-        const size_t from = pass.contact_under_bond ? contactLen_ : 0;
-        std::copy(records[k] + from, records[k] + rowLen_, homes[k] + from);
-    }
+    // Row k's bond state back to its home. The home's contact state is the
+    // contact loop's to step where the contact goes on under the bond;
+    // otherwise nothing writes it while the bond holds, and filing clears it
+    // at a break.
+    void copyRow(size_t k) { std::copy(records[k], records[k] + rowLen_, homes[k] + contactLen_); }
 
     std::vector<double> rows_;
-    size_t rowLen_ = 0;       // 0: the core steps the homes; else layout.loads
+    size_t rowLen_ = 0;       // 0: the core steps the homes; else the bond state's length
     size_t contactLen_ = 0;
     static const size_t kFirstRows = 256;
     static const size_t kSweepChunk = 512;
@@ -288,7 +292,7 @@ std::string checkIndex(const std::vector<BondIndex> &indices, size_t status, boo
         for (size_t k = 0; k < b.size(); k++) {
             entries++;
             if (!indexed.insert(b.homes[k]).second) return "a bond is in the index twice";
-            if (b.records[k][status] != GB_BOND_STATUS_INTACT || b.homes[k][status] != GB_BOND_STATUS_INTACT)
+            if (b.statusOf(k, status) != GB_BOND_STATUS_INTACT || b.homes[k][status] != GB_BOND_STATUS_INTACT)
                 return "the index holds a bond that is not intact";
             if (marked && *b.flags[k] != kSweptMark) return "an indexed bond's pair is not marked";
         }

@@ -1880,20 +1880,23 @@ enum GbStatus granbond_bond_sweep(const struct GbBondModel *model,
 
 /**
  * Files the outputs `outs[k]` of the latest passes of `count` bonds in
- * their pair records `records[k]` (`granbond_record_layout` of
- * `with_contact`), as a pass with `keep_loads` would have: an intact
- * bond's loads stored, a broken bond's cleared; an output no pass wrote
- * (all zero: status unbonded) leaves its record's loads alone. For engines
- * that sweep without `keep_loads`, before anything reads the records'
- * loads: a run's end, a restart file, an output of the bonds. A null or
- * misaligned record is reported, its index written to `failed_index` (if
- * not null), before any is filed.
+ * their whole pair records `records[k]` (`granbond_record_layout` of
+ * `pass->with_contact`), as a force pass of `pass` with `keep_loads` would
+ * have left them: an intact bond's loads stored; those of a bond that broke
+ * in the pass (a break mode) cleared and, unless
+ * `pass->contact_under_bond`, its contact's state; any other output (a bond
+ * broken before, or all zero as no pass wrote it) leaves its record alone. For
+ * engines that sweep without `keep_loads` (or step copies of the bond
+ * states alone, `with_contact` 0), at a break and before anything reads the
+ * records' loads: a run's end, a restart file, an output of the bonds. A
+ * null or misaligned record is reported, its index written to
+ * `failed_index` (if not null), before any is filed.
  *
  * # Safety
  * Pointers must be null or valid: `records` and `outs` hold `count`
  * entries, each `records[k]` a record's length.
  */
-enum GbStatus granbond_bond_file_loads(int32_t with_contact,
+enum GbStatus granbond_bond_file_loads(const struct GbSweepPass *pass,
                                        size_t count,
                                        double *const *records,
                                        const struct GbBondOutput *outs,

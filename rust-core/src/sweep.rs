@@ -114,16 +114,21 @@ pub fn after_force_step(
     }
 }
 
-/// Files the output of a bond's latest pass in its record, as a force pass
-/// that keeps the loads would have: an intact bond's loads stored, a broken
-/// bond's cleared. An output no pass wrote (status unbonded, as zeroed)
-/// leaves the record's loads as they are: the bond was not stepped since
-/// they were filed.
-pub fn file_loads(layout: &RecordLayout, record: &mut [f64], out: &BondOutput) {
-    match out.status {
-        s if s == BondStatus::Intact as i32 => *layout.loads(record) = store_output(out),
-        s if s == BondStatus::Broken as i32 => layout.loads(record).fill(0.0),
-        _ => {}
+/// Files the output of a bond's latest pass in its whole record, as a force
+/// pass of `pass` that keeps the loads would have left it: an intact bond's
+/// loads stored; those of a bond that broke in the pass cleared and, unless
+/// the contact goes on under the bond, its contact's state (so an engine may
+/// step the bond state alone and settle the rest of the record here). Any
+/// other output (a bond broken before the pass; an output no pass wrote,
+/// status unbonded as zeroed) leaves the record as it is.
+pub fn file_loads(layout: &RecordLayout, pass: &SweepPass, record: &mut [f64], out: &BondOutput) {
+    if out.status == BondStatus::Intact as i32 {
+        *layout.loads(record) = store_output(out);
+    } else if out.break_mode != BreakMode::None as i32 {
+        layout.loads(record).fill(0.0);
+        if pass.contact_under_bond == 0 {
+            record[..layout.contact_len].fill(0.0);
+        }
     }
 }
 

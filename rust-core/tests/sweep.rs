@@ -282,7 +282,7 @@ fn a_force_pass_steps_as_the_indexed_entry_and_keeps_the_loads_a_setup_pass_appl
 }
 
 #[test]
-fn loads_filed_after_the_pass_give_the_records_a_pass_that_keeps_them_leaves() {
+fn a_pass_over_the_bond_states_alone_and_its_outputs_filed_leave_the_records_a_keeping_pass_leaves() {
     let (m, s, l) = (model(), scene(), layout(true));
     let counted = vec![1u8; BONDS];
     let mut failed = usize::MAX;
@@ -294,6 +294,8 @@ fn loads_filed_after_the_pass_give_the_records_a_pass_that_keeps_them_leaves() {
             *v = 1.0 + n as f64;
         }
     }
+    // a bond broken before the pass: the pass leaves its record, so must filing
+    kept[11][l.status] = BondStatus::Broken as i32 as f64;
     let stale = kept.clone();
     let mut kept_out = vec![BondOutput::default(); BONDS];
     let mut kept_tally = SweepTally::default();
@@ -309,12 +311,14 @@ fn loads_filed_after_the_pass_give_the_records_a_pass_that_keeps_them_leaves() {
     );
     assert_eq!(status, Status::Ok);
 
-    // the same pass over records cut before the loads, as an engine's rows
-    let mut short: Vec<Vec<f64>> = stale.iter().map(|r| r[..l.loads].to_vec()).collect();
+    // the same pass over the bond states alone, as an engine's rows: records
+    // without the contact, cut before the loads
+    let mut rows: Vec<Vec<f64>> = stale.iter().map(|r| r[l.bond..l.loads].to_vec()).collect();
     let mut out = vec![BondOutput::default(); BONDS];
     let mut tally = SweepTally::default();
     let pass = SweepPass {
         keep_loads: 0,
+        with_contact: 0,
         ..force_pass(false)
     };
     assert_eq!(
@@ -323,7 +327,7 @@ fn loads_filed_after_the_pass_give_the_records_a_pass_that_keeps_them_leaves() {
             &s,
             &pass,
             &counted,
-            &mut short,
+            &mut rows,
             &mut out,
             &mut tally,
             &mut failed
@@ -333,27 +337,55 @@ fn loads_filed_after_the_pass_give_the_records_a_pass_that_keeps_them_leaves() {
     assert_eq!(tally, kept_tally);
     assert!(kept_tally.intact > 0 && kept_tally.broken() > 0);
     for k in 0..BONDS {
-        assert_eq!(bits(&short[k]), bits(&kept[k][..l.loads]), "bond {k}");
+        assert_eq!(bits(&rows[k]), bits(&kept[k][l.bond..l.loads]), "bond {k}");
         assert_eq!(bits(&out[k].force_i), bits(&kept_out[k].force_i));
     }
 
-    // filed into the whole records: what the keeping pass left, bit for bit;
-    // the last bond's output as no pass wrote it leaves its loads alone
+    // the rows back in the whole records and the outputs filed there: what
+    // the keeping pass left, bit for bit, the contact of a bond that broke
+    // cleared; the last bond's output as no pass wrote it leaves its record
+    // alone
     let mut filed: Vec<Vec<f64>> = stale.clone();
-    for (f, r) in filed.iter_mut().zip(&short) {
-        f[..l.loads].copy_from_slice(r);
+    for (f, r) in filed.iter_mut().zip(&rows) {
+        f[l.bond..l.loads].copy_from_slice(r);
     }
     out[BONDS - 1] = BondOutput::default();
+    let whole = force_pass(false);
     let pointers: Vec<*mut f64> = filed.iter_mut().map(|r| r.as_mut_ptr()).collect();
-    let status = unsafe { granbond_bond_file_loads(1, BONDS, pointers.as_ptr(), out.as_ptr(), &mut failed) };
+    let status =
+        unsafe { granbond_bond_file_loads(&whole, BONDS, pointers.as_ptr(), out.as_ptr(), &mut failed) };
     assert_eq!(status, Status::Ok);
     for k in 0..BONDS - 1 {
         assert_eq!(bits(&filed[k]), bits(&kept[k]), "bond {k}");
     }
+    let last = BONDS - 1;
     assert_eq!(
-        bits(&filed[BONDS - 1][l.loads..]),
-        bits(&stale[BONDS - 1][l.loads..])
+        bits(&filed[last][..l.contact_len]),
+        bits(&stale[last][..l.contact_len])
     );
+    assert_eq!(bits(&filed[last][l.loads..]), bits(&stale[last][l.loads..]));
+
+    // where the contact goes on under the bond, filing leaves it
+    let mut under = stale.clone();
+    let goes_on = SweepPass {
+        contact_under_bond: 1,
+        ..whole
+    };
+    let pointers: Vec<*mut f64> = under.iter_mut().map(|r| r.as_mut_ptr()).collect();
+    let status =
+        unsafe { granbond_bond_file_loads(&goes_on, BONDS, pointers.as_ptr(), out.as_ptr(), &mut failed) };
+    assert_eq!(status, Status::Ok);
+    for k in (0..BONDS).filter(|&k| out[k].break_mode != 0) {
+        assert_eq!(
+            bits(&under[k][..l.contact_len]),
+            bits(&stale[k][..l.contact_len]),
+            "bond {k}"
+        );
+        assert!(
+            under[k][l.loads..].iter().all(|&v| v == 0.0),
+            "bond {k}: no loads kept"
+        );
+    }
 
     // a null record is named before any is filed
     for (f, old) in filed.iter_mut().zip(&stale) {
@@ -363,7 +395,8 @@ fn loads_filed_after_the_pass_give_the_records_a_pass_that_keeps_them_leaves() {
     let mut pointers: Vec<*mut f64> = filed.iter_mut().map(|r| r.as_mut_ptr()).collect();
     pointers[7] = std::ptr::null_mut();
     failed = usize::MAX;
-    let status = unsafe { granbond_bond_file_loads(1, BONDS, pointers.as_ptr(), out.as_ptr(), &mut failed) };
+    let status =
+        unsafe { granbond_bond_file_loads(&whole, BONDS, pointers.as_ptr(), out.as_ptr(), &mut failed) };
     assert_eq!(status, Status::NullPointer);
     assert_eq!(failed, 7);
     assert_eq!(bits(&filed.concat()), bits(&before.concat()));

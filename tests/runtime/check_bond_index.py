@@ -166,8 +166,8 @@ def check_impact(a, workdir, failures):
                   f"{last[6]} in compression, {last[7]} in shear")
 
 
-def tangential_force_after_break(a, workdir, under):
-    deck_runner.run_ok([a.engine], f"under_{a.kind}.in", workdir, {"under": under})
+def tangential_force_after_break(a, workdir, under, create=1):
+    deck_runner.run_ok([a.engine], f"under_{a.kind}.in", workdir, {"under": under, "create": create})
     rows = thermo_rows(workdir)
     broke = [k for k, r in enumerate(rows) if r[1] > 0]
     if not broke or broke[0] == 0:
@@ -190,6 +190,16 @@ def check_under(a, workdir):
     if abs(after_no - one_step) > 0.01 * one_step:
         raise Failure(f"{fresh}: the contact force after the break {after_no} N is not one step's spring "
                       f"increment {one_step} N: the contact did not start from zero")
+    if a.kind == "lammps":
+        # a bond formed over a contact that had built its spring: with no,
+        # the contact after the break starts from zero too, not from the
+        # spring it had when the bond formed
+        _, after_late, _ = tangential_force_after_break(a, os.path.join(workdir, "late"), fresh, create=100)
+        print(f"bond formed at step 100 over a sliding contact, {fresh}: {after_late:.6g} N after the break")
+        if abs(after_late - one_step) > 0.01 * one_step:
+            raise Failure(f"{fresh}, the bond formed at step 100: the contact force after the break {after_late} N "
+                          f"is not one step's spring increment {one_step} N: the contact resumed the spring it "
+                          "had before the bond")
     if step_yes != step_no:
         raise Failure(f"the bond broke at step {step_yes} with {keep} and {step_no} with {fresh}: "
                       "the switch changed the bond")

@@ -654,7 +654,7 @@ int test_bond_sweep(void)
         CHECK(memcmp(at[b] + layout.loads, before + (at[b] - records[0]) + layout.loads,
                      GRANBOND_BOND_OUTPUT_LEN * sizeof(double)) == 0,
               say("bond %d: a pass that keeps no loads leaves them", b));
-    EXPECT_OK(granbond_bond_file_loads(1, N_SCATTERED, at, out, &failed), "granbond_bond_file_loads");
+    EXPECT_OK(granbond_bond_file_loads(&pass, N_SCATTERED, at, out, &failed), "granbond_bond_file_loads");
     memcpy(start, records, sizeof records);
 
     memcpy(records, before, sizeof records);

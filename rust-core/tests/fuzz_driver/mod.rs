@@ -1665,13 +1665,7 @@ impl<'t> Session<'t> {
             if pass.keep_loads == 0 {
                 // SAFETY: the records and outputs of the pass, every pointer valid.
                 let status = unsafe {
-                    granbond_bond_file_loads(
-                        pass.with_contact,
-                        count,
-                        records.as_ptr(),
-                        out.as_ptr(),
-                        null_mut(),
-                    )
+                    granbond_bond_file_loads(&pass, count, records.as_ptr(), out.as_ptr(), null_mut())
                 };
                 assert!(
                     self.answer("granbond_bond_file_loads", status),
