@@ -33,11 +33,7 @@ public:
     // values are right without it (0 from the constructor, or restart data).
     void init() { just_created = 0; }
 
-    void post_run()
-    {
-        fileLoads();
-        fileContactHistory();
-    }
+    void post_run() { fileRecords(); }
 
     // Restart files written during a run (`restart N`) take the history
     // from the partner arrays, which LIGGGHTS fills only at neighbour-list
@@ -45,10 +41,7 @@ public:
     // post_run has filed it, and atoms may have changed since.
     void write_restart(FILE *fp)
     {
-        if (update->whichflag != 0) {
-            fileLoads();
-            fileContactHistory();
-        }
+        if (update->whichflag != 0) fileRecords();
         FixGranbondAtoms::write_restart(fp);
     }
 
@@ -68,14 +61,12 @@ protected:
     }
 
 private:
-    // the bonds' loads go into the records first (bond_index.h)
-    void fileLoads()
+    // The bonds' loads into their records (bond_index.h), then the records
+    // into the partner arrays.
+    void fileRecords()
     {
         BondNonlinearCohesion *bonds = BondBook::of(lmp).pairBonds;
         if (bonds) bonds->fileLoads();
-    }
-    void fileContactHistory()
-    {
         LAMMPS_NS::PairGran *pair = static_cast<LAMMPS_NS::PairGran *>(force->pair_match("gran", 0));
         LAMMPS_NS::FixContactHistory *history = pair ? pair->get_fix_history() : 0;
         if (history && pair->list && pair->listgranhistory) history->pre_exchange();

@@ -306,9 +306,7 @@ void BondNonlinearCohesion::indexBonds()
             const int j = jlist[jj] & NEIGHMASK;
             const GbBondModel *model = parameters_.model(atom->type[i], atom->type[j]);
             if (!model) continue;   // the per-pair path reports it
-            BondIndex &b = indexOf(index_, model);
-            b.pass.with_contact = 0;   // LIGGGHTS's own models keep the contact's state
-            b.add(i, j, countsHere(i, j), record, &flags[jj]);
+            indexFor(model).add(i, j, countsHere(i, j), record, &flags[jj]);
         }
     }
     for (BondIndex &b : index_) b.ordered = b.size();
@@ -323,8 +321,7 @@ void BondNonlinearCohesion::indexBonds()
 void BondNonlinearCohesion::sweepIndex()
 {
     if (indexedAt_ != neighbor->ncalls) indexBonds();
-    // the pairs' callbacks read the loads from the records in this pass
-    for (BondIndex &b : index_) b.pass.keep_loads = direct_ ? 0 : 1;
+    for (BondIndex &b : index_) keepLoadsIfRead(b);
     sweptTo_.assign(index_.size(), 0);
     sweepEnd_.resize(index_.size());
     for (size_t x = 0; x < index_.size(); x++) sweepEnd_[x] = index_[x].ordered;
@@ -385,6 +382,20 @@ void BondNonlinearCohesion::settleBroken(BondIndex &b, size_t from)
         brokeNow_.insert(b.records[k]);
     }
 }
+
+// The index of `model`'s bonds, its records without the contact's state
+// (LIGGGHTS's own models keep it), set for this pass.
+BondIndex &BondNonlinearCohesion::indexFor(const GbBondModel *model)
+{
+    BondIndex &b = indexOf(index_, model);
+    b.pass.with_contact = 0;
+    keepLoadsIfRead(b);
+    return b;
+}
+
+// A pass whose pairs' callbacks read the loads from the records (not direct)
+// has the sweep keep them there.
+void BondNonlinearCohesion::keepLoadsIfRead(BondIndex &b) const { b.pass.keep_loads = direct_ ? 0 : 1; }
 
 // Only while the index holds the records of the lists as they stand: an
 // older index's bonds were filed before the engine moved the records.
@@ -661,9 +672,7 @@ inline bool BondNonlinearCohesion::swept(SurfacesCloseData &d)
 // A bond that formed in the loop of a force pass, added to the index.
 BondNonlinearCohesion::Formed BondNonlinearCohesion::form(SurfacesCloseData &d, const GbBondModel *model)
 {
-    BondIndex &b = indexOf(index_, model);
-    b.pass.with_contact = 0;
-    b.pass.keep_loads = direct_ ? 0 : 1;
+    BondIndex &b = indexFor(model);
     b.add(d.i, d.j, countsHere(d.i, d.j), d.contact_history + offset_, d.contact_flags);
     Formed f;
     f.index = static_cast<size_t>(&b - &index_[0]);

@@ -110,6 +110,8 @@ private:
     bool sweepNow(const Formed &f, GbBondOutput &out);
     void applyKept(SurfacesCloseData &d, ForceData &i_forces, ForceData &j_forces);
     void indexBonds();
+    BondIndex &indexFor(const GbBondModel *model);
+    void keepLoadsIfRead(BondIndex &b) const;
     void sweepIndex();
     void sweepAhead(int upto);
     void sweepRange(BondIndex &b, size_t first, size_t last, GbSweepTally &t);

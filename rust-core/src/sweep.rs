@@ -82,9 +82,9 @@ impl SweepTally {
 }
 
 /// The rest of a force pass for one bond its step left with `out`: the
-/// loads filed while it is intact, if the pass keeps them; at a break, the
-/// count, the loads cleared (likewise) and, unless `contact_under_bond`,
-/// the contact's state.
+/// count (intact, or broken by mode); the record settled as [`file_loads`]
+/// would, if the pass keeps the loads, or else only the contact's state
+/// cleared at a break (unless `contact_under_bond`).
 #[inline]
 pub fn after_force_step(
     layout: &RecordLayout,
@@ -95,22 +95,35 @@ pub fn after_force_step(
     tally: &mut SweepTally,
 ) {
     if out.status == BondStatus::Intact as i32 {
+        // the common case, kept to one test of the pass
         if pass.keep_loads != 0 {
             *layout.loads(record) = store_output(out);
         }
         tally.intact += i64::from(counted);
         return;
     }
-    if out.break_mode != BreakMode::None as i32 {
-        if counted {
-            tally.count_break(out.break_mode);
-        }
-        if pass.keep_loads != 0 {
-            layout.loads(record).fill(0.0);
-        }
-        if pass.contact_under_bond == 0 {
-            record[..layout.contact_len].fill(0.0);
-        }
+    after_break(layout, pass, record, out, counted, tally);
+}
+
+/// [`after_force_step`] for a bond that did not hold (broke in the pass, or
+/// was broken before): rare, so kept out of the common path's code.
+#[cold]
+#[inline(never)]
+fn after_break(
+    layout: &RecordLayout,
+    pass: &SweepPass,
+    record: &mut [f64],
+    out: &BondOutput,
+    counted: bool,
+    tally: &mut SweepTally,
+) {
+    if counted {
+        tally.count_break(out.break_mode);
+    }
+    if pass.keep_loads != 0 {
+        file_loads(layout, pass, record, out);
+    } else {
+        clear_contact_at_break(layout, pass, record, out);
     }
 }
 
@@ -121,14 +134,22 @@ pub fn after_force_step(
 /// step the bond state alone and settle the rest of the record here). Any
 /// other output (a bond broken before the pass; an output no pass wrote,
 /// status unbonded as zeroed) leaves the record as it is.
+#[inline]
 pub fn file_loads(layout: &RecordLayout, pass: &SweepPass, record: &mut [f64], out: &BondOutput) {
     if out.status == BondStatus::Intact as i32 {
         *layout.loads(record) = store_output(out);
     } else if out.break_mode != BreakMode::None as i32 {
         layout.loads(record).fill(0.0);
-        if pass.contact_under_bond == 0 {
-            record[..layout.contact_len].fill(0.0);
-        }
+    }
+    clear_contact_at_break(layout, pass, record, out);
+}
+
+/// A bond that broke in the pass: unless the contact goes on under it, the
+/// contact starts afresh, as in BPM and LAMMPS `pair granular`.
+#[inline]
+fn clear_contact_at_break(layout: &RecordLayout, pass: &SweepPass, record: &mut [f64], out: &BondOutput) {
+    if out.break_mode != BreakMode::None as i32 && pass.contact_under_bond == 0 {
+        record[..layout.contact_len].fill(0.0);
     }
 }
 

@@ -214,6 +214,20 @@ impl<P: Pack, F: Fn(usize) -> PairKinematics> LaneMotion<P, F> {
         self.sum = ((self.sum + v.x) + v.y) + v.z;
     }
 
+    /// One 3-vector of each sphere, read from the lanes' pairs and added to
+    /// the check's sum, `i`'s first.
+    #[inline(always)]
+    fn pair_of(
+        &mut self,
+        of_i: impl Fn(&PairKinematics) -> [f64; 3],
+        of_j: impl Fn(&PairKinematics) -> [f64; 3],
+    ) -> (V3<P>, V3<P>) {
+        let (i, j) = (lanes3(&self.kin, of_i), lanes3(&self.kin, of_j));
+        self.add(i);
+        self.add(j);
+        (i, j)
+    }
+
     /// Whether every number of each pair is finite (per lane; true surely,
     /// false maybe).
     #[inline(always)]
@@ -248,19 +262,13 @@ impl<P: Pack, F: Fn(usize) -> PairKinematics> MotionSource<P, V3<P>> for LaneMot
     }
     #[inline(always)]
     fn velocities(&mut self) -> (V3<P>, V3<P>) {
-        let (v_i, v_j) = (lanes3(&self.kin, |k| k.v_i), lanes3(&self.kin, |k| k.v_j));
-        self.add(v_i);
-        self.add(v_j);
         self.velocities = true;
-        (v_i, v_j)
+        self.pair_of(|k| k.v_i, |k| k.v_j)
     }
     #[inline(always)]
     fn spins(&mut self) -> (V3<P>, V3<P>) {
-        let (w_i, w_j) = (lanes3(&self.kin, |k| k.w_i), lanes3(&self.kin, |k| k.w_j));
-        self.add(w_i);
-        self.add(w_j);
         self.spins = true;
-        (w_i, w_j)
+        self.pair_of(|k| k.w_i, |k| k.w_j)
     }
 }
 
