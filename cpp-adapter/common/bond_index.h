@@ -12,7 +12,7 @@
 // (fix_granbond_atoms.h forgets such records before any index is built).
 //
 // Where the adapter can write the bonds back before the engine moves its
-// records (LAMMPS: fix neigh/history's pre_exchange), the core steps copies
+// records (the history fixes' pre_exchange), the core steps copies
 // of the bonds' states side by side in index order (`rows`): the engine's
 // pages hold a record for every neighbour, so the bonds' records lie apart
 // there, and a pass would wait on memory for each. The engine's record
@@ -87,6 +87,9 @@ struct BondIndex {
         rowLen_ = layout.loads - layout.bond;
         contactLen_ = layout.bond;
     }
+    // ... or in their homes (the default); the index must be empty.
+    void useHomes() { rowLen_ = contactLen_ = 0; }
+    bool usesRows() const { return rowLen_ != 0; }
     // Bond k's status, from what the core steps (`status`: its place in a
     // home).
     double statusOf(size_t k, size_t status) const { return records[k][rowLen_ ? status - contactLen_ : status]; }

@@ -26,7 +26,7 @@ class AtomsFix : public FixGranbondAtoms {
 public:
     AtomsFix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) : FixGranbondAtoms(lmp, narg, arg) {}
 
-    int setmask() { return LAMMPS_NS::FixConst::POST_RUN; }
+    int setmask() { return LAMMPS_NS::FixConst::PRE_EXCHANGE | LAMMPS_NS::FixConst::POST_RUN; }
 
     // LIGGGHTS's setup gives every atom a just-created fix's start value
     // after the setup pass, which has already marked the atoms seen; the
@@ -34,6 +34,18 @@ public:
     void init() { just_created = 0; }
 
     void post_run() { fileRecords(); }
+
+    // Before the engine re-neighbours, the bonds' rows go back into their
+    // records (bond_index.h), which fix contact/history's pre_exchange then
+    // moves into the partner arrays. Where that fix comes first in the
+    // engine's order of fixes, it moves them again.
+    void pre_exchange()
+    {
+        BondNonlinearCohesion *bonds = BondBook::of(lmp).pairBonds;
+        if (!bonds || !bonds->writeBack()) return;
+        LAMMPS_NS::FixContactHistory *history = contactHistory();
+        if (history && modify->find_fix(history->id) < modify->find_fix(id)) history->pre_exchange();
+    }
 
     // Restart files written during a run (`restart N`) take the history
     // from the partner arrays, which LIGGGHTS fills only at neighbour-list
@@ -66,10 +78,16 @@ private:
     void fileRecords()
     {
         BondNonlinearCohesion *bonds = BondBook::of(lmp).pairBonds;
-        if (bonds) bonds->fileLoads();
+        if (bonds) bonds->writeBack();
+        LAMMPS_NS::FixContactHistory *history = contactHistory();
+        if (history) history->pre_exchange();
+    }
+    // The pair style's fix contact/history, while its lists exist.
+    LAMMPS_NS::FixContactHistory *contactHistory()
+    {
         LAMMPS_NS::PairGran *pair = static_cast<LAMMPS_NS::PairGran *>(force->pair_match("gran", 0));
         LAMMPS_NS::FixContactHistory *history = pair ? pair->get_fix_history() : 0;
-        if (history && pair->list && pair->listgranhistory) history->pre_exchange();
+        return history && pair->list && pair->listgranhistory ? history : 0;
     }
 };
 

@@ -44,7 +44,7 @@ public:
     {
         invoked_local = update->ntimestep;
         BondNonlinearCohesion *model = bonds();
-        model->fileLoads();   // the loads the records keep (bond_index.h)
+        model->writeBack();   // the bonds and loads into their records (bond_index.h)
         const LAMMPS_NS::PairGran *pair = model->pairStyle();
         const LAMMPS_NS::NeighList *list = pair ? pair->list : 0;
         const LAMMPS_NS::NeighList *history = pair ? pair->listgranhistory : 0;

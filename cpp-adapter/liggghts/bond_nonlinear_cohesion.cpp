@@ -79,6 +79,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     lastAtom_(-1),
     aheadTo_(-1),
     indexedAt_(-1),
+    rows_(false),
     pruneIndex_(false),
     checkIndex_(std::getenv("GRANBOND_CHECK_INDEX") != 0)
 {
@@ -202,7 +203,7 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
     }
     // the per-contact output pass (compute pair/gran/local) applies the
     // loads the records keep
-    if (!sidata.computeflag) fileLoads();
+    if (!sidata.computeflag) writeBack();
     cursor_ = 0;
     lastAtom_ = -1;
     // whether any bond may form in this pass (the core says, per bond type)
@@ -291,6 +292,7 @@ inline void BondNonlinearCohesion::addToAtoms(const AtomSums &sums, int i, int j
 void BondNonlinearCohesion::indexBonds()
 {
     indexedAt_ = neighbor->ncalls;
+    rows_ = direct_;
     for (size_t x = 0; x < index_.size(); x++) index_[x].clear();
     const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
     if (!list || !history || !history->firstneigh || !history->firstdouble) return;
@@ -320,7 +322,10 @@ void BondNonlinearCohesion::indexBonds()
 // them).
 void BondNonlinearCohesion::sweepIndex()
 {
-    if (indexedAt_ != neighbor->ncalls) indexBonds();
+    // rows only where the callbacks need not read the loads from the
+    // records (indexFor): a pass that does indexes the homes again
+    if (indexedAt_ == neighbor->ncalls && rows_ != direct_) writeBack();
+    if (indexedAt_ != neighbor->ncalls || rows_ != direct_) indexBonds();
     for (BondIndex &b : index_) keepLoadsIfRead(b);
     sweptTo_.assign(index_.size(), 0);
     sweepEnd_.resize(index_.size());
@@ -379,16 +384,26 @@ void BondNonlinearCohesion::settleBroken(BondIndex &b, size_t from)
         const size_t k = b.broken[m];
         account(b.model, b.pairs[2 * k], b.pairs[2 * k + 1], 0, b.records[k], false, b.brokenOut[m]);
         *b.flags[k] &= ~CONTACT_COHESION_MODEL;
-        brokeNow_.insert(b.records[k]);
+        brokeNow_.insert(b.homes[k]);
     }
 }
 
 // The index of `model`'s bonds, its records without the contact's state
-// (LIGGGHTS's own models keep it), set for this pass.
+// (LIGGGHTS's own models keep it), set for this pass. Their states are
+// stepped in rows (bond_index.h) where the pass's loads go straight to the
+// atoms: a row has no room for them.
 BondIndex &BondNonlinearCohesion::indexFor(const GbBondModel *model)
 {
     BondIndex &b = indexOf(index_, model);
     b.pass.with_contact = 0;
+    if (b.size() == 0) {
+        GbRecordLayout layout;
+        granbond_record_layout(0, &layout);
+        if (rows_)
+            b.useRows(layout);
+        else
+            b.useHomes();
+    }
     keepLoadsIfRead(b);
     return b;
 }
@@ -398,13 +413,18 @@ BondIndex &BondNonlinearCohesion::indexFor(const GbBondModel *model)
 void BondNonlinearCohesion::keepLoadsIfRead(BondIndex &b) const { b.pass.keep_loads = direct_ ? 0 : 1; }
 
 // Only while the index holds the records of the lists as they stand: an
-// older index's bonds were filed before the engine moved the records.
-void BondNonlinearCohesion::fileLoads()
+// older index's bonds were written back before the engine moved the
+// records (fix granbond/atoms' pre_exchange).
+bool BondNonlinearCohesion::writeBack()
 {
-    if (indexedAt_ != neighbor->ncalls) return;
-    for (BondIndex &b : index_)
-        if (b.fileLoads(0, b.size()) != GB_STATUS_OK)
+    if (indexedAt_ != neighbor->ncalls) return false;
+    bool rows = false;
+    for (BondIndex &b : index_) {
+        rows = rows || (b.usesRows() && b.size() > 0);
+        if (b.writeBack() != GB_STATUS_OK)
             endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: filing the bonds' loads: " + coreReason());
+    }
+    return rows;
 }
 
 // GRANBOND_CHECK_INDEX: the index recounted from the records after a swept

@@ -73,10 +73,12 @@ public:
     int recordOffset() const { return offset_; }
     size_t statusSlot() const { return status_; }
     const GbBondModel *model(int itype, int jtype) const { return parameters_.model(itype, jtype); }
-    // The loads of the latest force pass filed in the pairs' records, for
-    // what reads them after the pass (bond_index.h): a run's end, a restart
-    // file, per-bond and per-contact output.
-    void fileLoads();
+    // The bonds' states stepped in rows, and the loads of the latest force
+    // pass, written back to the pairs' records (bond_index.h), for what
+    // reads or moves them after the pass: the engine's re-neighbouring, a
+    // run's end, a restart file, per-bond and per-contact output. True if
+    // it wrote rows back.
+    bool writeBack();
 
 private:
     // Where a bond that formed in the pair loop lies in the index.
@@ -177,6 +179,7 @@ private:
     // records stay in cache until the loop reads them.
     static const int kSweepAheadAtoms = 128;
     bigint indexedAt_;               // neighbor->ncalls when index_ was built; -1: to be built
+    bool rows_;                      // index_ steps the bonds' states in rows (indexFor)
     std::unordered_set<const double *> brokeNow_;   // records of the bonds this pass's sweep broke
     bool pruneIndex_;                // a bond formed and broke at once in the loop: drop it at the pass's end
     bool checkIndex_;                // GRANBOND_CHECK_INDEX: recount the index after each pass
