@@ -25,8 +25,8 @@
 #   [ROUNDS=1] [BOND_STEPS=5e7] [SIZES="7 10 15 22 32 47 70"] bench/scale.sh [CSV]
 #       CSV defaults to docs/figures/data/perf_scale.csv; then
 #       python3 bench/plot_scale.py draws docs/figures/perf_scale.png.
-# Takes about 6 min per round on 2 cores (the 1e6-bond LIGGGHTS run holds
-# about 0.4 GiB, LAMMPS about 1 GiB).
+# Takes minutes per round on 2 cores, and the 1e6-bond runs hold over 1 GiB
+# each (docs/performance.md gives the measured figures).
 # Needs the build (cmake -S . -B build && cmake --build build -j2), mpirun
 # and /usr/bin/time.
 set -euo pipefail
