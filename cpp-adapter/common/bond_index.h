@@ -141,12 +141,11 @@ struct BondIndex {
         return granbond_bond_file_loads(&pass, last - first, homes.data() + first, outs.data() + first, &failed);
     }
     // Bond k's whole record as a pass that keeps the loads would leave it,
-    // in `scratch`, for outputs of the bonds.
-    const double *wholeRecord(size_t k, std::vector<double> &scratch, GbStatus &status) const
+    // in `scratch`, for outputs of the bonds; `layout` is that of the homes
+    // (granbond_record_layout of `pass.with_contact`).
+    const double *wholeRecord(size_t k, const GbRecordLayout &layout, std::vector<double> &scratch,
+                              GbStatus &status) const
     {
-        GbRecordLayout layout;
-        status = granbond_record_layout(pass.with_contact, &layout);
-        if (status != GB_STATUS_OK) return nullptr;
         scratch.assign(homes[k], homes[k] + layout.len);
         if (rowLen_) std::copy(records[k], records[k] + rowLen_, scratch.begin() + contactLen_);
         double *whole = scratch.data();

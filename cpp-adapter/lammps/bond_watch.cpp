@@ -157,7 +157,7 @@ public:
             const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
             if (!b.counted[k] || !(mask[i] & groupbit) || !(mask[j] & groupbit)) return;
             GbStatus whole = GB_STATUS_OK;
-            const double *r = b.wholeRecord(k, record, whole);
+            const double *r = b.wholeRecord(k, pair->recordLayout(), record, whole);
             if (whole != GB_STATUS_OK ||
                 columns_.row(b.model, 1, r, static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
                              atom->x[i], atom->x[j], row.data()) != GB_STATUS_OK)
