@@ -51,6 +51,23 @@
 #define GRANBOND_WALL_BOND_STATE_LEN (GRANBOND_BOND_STATE_LEN + 3)
 
 /**
+ * What a bond may cost in memory: less than LAMMPS BPM's bonds (228 bytes
+ * measured over the same block without bonds) and LIGGGHTS-INL's (214).
+ */
+#define BOND_BUDGET_BYTES 200
+
+/**
+ * Doubles an atom's packed bonds take: its seen id, the count, and per
+ * bond the partner's id and the state.
+ */
+#define PACKED_PER_BOND (1 + GRANBOND_BOND_STATE_LEN)
+
+/**
+ * Bonds one [`BondStore::step_next`] steps at most.
+ */
+#define CHUNK 64
+
+/**
  * The number of `f64` slots of [`ContactState`].
  */
 #define GRANBOND_CONTACT_STATE_LEN 6
@@ -58,7 +75,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 14
+#define GRANBOND_ABI_VERSION 15
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -71,6 +88,12 @@
  * Capacity of [`CheckReport::message`], terminating NUL included.
  */
 #define GRANBOND_CHECK_MESSAGE_LEN 2048
+
+/**
+ * Bonds one `granbond_bond_store_step_next` steps at most: the length of
+ * its `ends` and `outs` arrays.
+ */
+#define GRANBOND_BOND_STORE_CHUNK CHUNK
 
 /**
  * The recommended step as a fraction of the critical step, for bonds and
@@ -304,6 +327,11 @@ typedef enum GbStatus {
 typedef struct GbBondModel GbBondModel;
 
 /**
+ * The bonds of one rank.
+ */
+typedef struct GbBondStore GbBondStore;
+
+/**
  * A validated Voigt contact type (docs/models/voigt.md) and its step;
  * `GbVoigtModel` in the C ABI.
  */
@@ -379,6 +407,22 @@ typedef struct GbLayout {
    * `sizeof(GbSweepTally)`.
    */
   size_t sweep_tally;
+  /**
+   * `sizeof(GbStoreAtoms)`.
+   */
+  size_t store_atoms;
+  /**
+   * `sizeof(GbLinkReport)`.
+   */
+  size_t link_report;
+  /**
+   * `sizeof(GbStoreCounts)`.
+   */
+  size_t store_counts;
+  /**
+   * `sizeof(GbBrokenBond)`.
+   */
+  size_t broken_bond;
   /**
    * `GRANBOND_BOND_STATE_LEN`.
    */
@@ -970,6 +1014,142 @@ typedef struct GbParameterInfo {
    */
   double default_value;
 } GbParameterInfo;
+
+/**
+ * A rank's atom ids as the engine keeps them: exactly one of `narrow`
+ * (32-bit ids) and `wide` (64-bit) is set, for `count` atoms (local, then
+ * ghost).
+ */
+typedef struct GbAtomIds {
+  /**
+   * 32-bit ids, or null.
+   */
+  const int32_t *narrow;
+  /**
+   * 64-bit ids, or null.
+   */
+  const int64_t *wide;
+  /**
+   * The number of atoms.
+   */
+  size_t count;
+} GbAtomIds;
+
+/**
+ * What the link reads of a rank's atoms.
+ */
+typedef struct GbStoreAtoms {
+  /**
+   * The atoms' ids, local then ghost.
+   */
+  struct GbAtomIds ids;
+  /**
+   * The number of local atoms.
+   */
+  size_t nlocal;
+  /**
+   * Positions, 3 doubles per atom (`ids.count` atoms).
+   */
+  const double *x;
+  /**
+   * Atom types, one per atom.
+   */
+  const int32_t *types;
+} GbStoreAtoms;
+
+/**
+ * What one link found: the bonds it lost, by cause.
+ */
+typedef struct GbLinkReport {
+  /**
+   * Bonds held after the link.
+   */
+  int64_t linked;
+  /**
+   * Lost: the owner left.
+   */
+  int64_t owner_gone;
+  /**
+   * Lost: the partner was not found.
+   */
+  int64_t partner_unreached;
+  /**
+   * Lost: an id was taken over by a new atom.
+   */
+  int64_t id_reused;
+  /**
+   * Lost: no bond model for the atoms' types.
+   */
+  int64_t no_model;
+} GbLinkReport;
+
+/**
+ * A bond that broke in the pass.
+ */
+typedef struct GbBrokenBond {
+  /**
+   * The ids of its owner and partner.
+   */
+  int64_t ids[2];
+  /**
+   * Their local indices.
+   */
+  int32_t ends[2];
+  /**
+   * Its last step's output: status broken, the break mode, the
+   * stresses; no loads.
+   */
+  struct GbBondOutput out;
+} GbBrokenBond;
+
+/**
+ * Counts since the store was made (or restored), on this rank. Summed over
+ * ranks, `created = broken + intact + lost` holds after every pass.
+ */
+typedef struct GbStoreCounts {
+  /**
+   * Bonds created.
+   */
+  int64_t created;
+  /**
+   * Bonds broken by distance.
+   */
+  int64_t broken_distance;
+  /**
+   * Bonds broken by tension.
+   */
+  int64_t broken_tension;
+  /**
+   * Bonds broken by compression.
+   */
+  int64_t broken_compression;
+  /**
+   * Bonds broken by shear.
+   */
+  int64_t broken_shear;
+  /**
+   * Bonds lost because their owner atom left the system (deleted, or
+   * lost through a boundary).
+   */
+  int64_t lost_owner_gone;
+  /**
+   * Bonds lost because their partner was not among this rank's atoms
+   * (deleted, lost, or farther than the communication cutoff).
+   */
+  int64_t lost_partner_unreached;
+  /**
+   * Bonds lost because an atom's id was taken over by a new atom.
+   */
+  int64_t lost_id_reused;
+  /**
+   * Bonds lost because their atoms' types have no bond model any more.
+   */
+  int64_t lost_no_model;
+  /**
+   * Bonds held now.
+   */
+  int64_t intact;
+} GbStoreCounts;
 
 /**
  * Where the parts of a pair record lie, in doubles from its start.
@@ -1828,6 +2008,361 @@ enum GbStatus granbond_voigt_parameter_needed(const struct GbVoigtParams *params
                                               int32_t *needed);
 
 /**
+ * A new, empty store, written to `store`. Free it with
+ * `granbond_bond_store_free`.
+ *
+ * # Safety
+ * `store` must be null or valid for writes.
+ */
+enum GbStatus granbond_bond_store_new(struct GbBondStore **store);
+
+/**
+ * Frees a store from `granbond_bond_store_new` (null is ignored).
+ *
+ * # Safety
+ * `store` must come from `granbond_bond_store_new` and not be used again.
+ */
+void granbond_bond_store_free(struct GbBondStore *store);
+
+/**
+ * The engine's per-atom arrays hold `nmax` atoms now (`grow_arrays`).
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_grow(struct GbBondStore *store, size_t nmax);
+
+/**
+ * Atom `from` was copied over atom `to` (`copy_arrays`): `to` owns
+ * `from`'s bonds now; those `to` owned are lost at the next link.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_copy(struct GbBondStore *store, size_t from, size_t to);
+
+/**
+ * Atom `i` was created (`set_arrays`): it owns no bond, and no link has
+ * seen it.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_clear(struct GbBondStore *store, size_t i);
+
+/**
+ * Atom `i`'s id as the latest link saw it (0: never), for its ghost images
+ * (border communication); 0 for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+int64_t granbond_bond_store_seen(const struct GbBondStore *store, size_t i);
+
+/**
+ * Sets the seen id of ghost atom `i`, as its owner rank sent it.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_set_seen(struct GbBondStore *store, size_t i, int64_t id);
+
+/**
+ * Doubles `granbond_bond_store_pack` writes for atom `i`; 0 for a null
+ * store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+size_t granbond_bond_store_packed_len(const struct GbBondStore *store, size_t i);
+
+/**
+ * The most doubles `granbond_bond_store_pack` writes for one local atom
+ * (a bound for exchange and restart buffers); 0 for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+size_t granbond_bond_store_most_packed_len(const struct GbBondStore *store);
+
+/**
+ * Packs atom `i`'s bonds into `buf` (`capacity` doubles), writing the
+ * doubles used to `written`. With `leaving` non-zero (the atom migrates)
+ * the bonds leave this store; otherwise (a restart file) they stay.
+ *
+ * # Safety
+ * Pointers must be null or valid; `buf` for `capacity` doubles.
+ */
+enum GbStatus granbond_bond_store_pack(struct GbBondStore *store,
+                                       size_t i,
+                                       int32_t leaving,
+                                       double *buf,
+                                       size_t capacity,
+                                       size_t *written);
+
+/**
+ * Unpacks into atom `i` the bonds `granbond_bond_store_pack` wrote to
+ * `buf` (`len` doubles), writing the doubles read to `read`.
+ *
+ * # Safety
+ * Pointers must be null or valid; `buf` for `len` doubles.
+ */
+enum GbStatus granbond_bond_store_unpack(struct GbBondStore *store,
+                                         size_t i,
+                                         const double *buf,
+                                         size_t len,
+                                         size_t *read);
+
+/**
+ * Finds every bond's atoms again after a neighbour-list build (see
+ * `crate::bond_store`'s link): owners among the local atoms, partners as
+ * their images closest to the owners. `kinds[ti * (ntypes + 1) + tj]` is
+ * the bond kind of a pair of types, negative where it has no bond model.
+ * Bonds whose atoms are not found are dropped and counted by cause in
+ * `report`.
+ *
+ * # Safety
+ * Pointers must be null or valid; `kinds` for `(ntypes + 1)^2` ints, the
+ * arrays of `atoms` for `atoms->ids.count` atoms.
+ */
+enum GbStatus granbond_bond_store_link(struct GbBondStore *store,
+                                       const struct GbStoreAtoms *atoms,
+                                       const int32_t *kinds,
+                                       size_t ntypes,
+                                       struct GbLinkReport *report);
+
+/**
+ * Starts a pass: a force pass over `dt` (`advance` non-zero) or a setup
+ * pass. With `remember_breaks` non-zero, pairs whose bonds break are kept
+ * from bonding again at a later creation step.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_begin_pass(struct GbBondStore *store,
+                                             double dt,
+                                             int32_t advance,
+                                             int32_t remember_breaks);
+
+/**
+ * Steps the next chunk of the pass: up to `GRANBOND_BOND_STORE_CHUNK`
+ * bonds of one kind (`models[kind]`, null where a kind has no model), their
+ * atoms' local indices written to `ends` (2 ints a bond) and outputs to
+ * `outs`, the number to `count` (0: the pass has stepped every bond). A
+ * bond that breaks carries no load; `granbond_bond_store_broken` reports
+ * it. On failure nothing of the chunk is kept, and `failed_index` (if not
+ * null) gets the bond's place in the store.
+ *
+ * # Safety
+ * Pointers must be null or valid: `models` for `nkinds` entries, `ends` for
+ * `2 * GRANBOND_BOND_STORE_CHUNK` ints, `outs` for
+ * `GRANBOND_BOND_STORE_CHUNK` outputs, the atoms' arrays as they say.
+ */
+enum GbStatus granbond_bond_store_step_next(struct GbBondStore *store,
+                                            const struct GbBondModel *const *models,
+                                            size_t nkinds,
+                                            const struct GbAtomArrays *atoms,
+                                            const struct GbAtomIds *ids,
+                                            int32_t *ends,
+                                            struct GbBondOutput *outs,
+                                            size_t *count,
+                                            size_t *failed_index);
+
+/**
+ * The number of bonds broken so far in the pass; 0 for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+size_t granbond_bond_store_broken_count(const struct GbBondStore *store);
+
+/**
+ * Bond `k` of those broken so far in the pass, written to `bond`.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_broken(const struct GbBondStore *store,
+                                         size_t k,
+                                         struct GbBrokenBond *bond);
+
+/**
+ * Creates a bond of kind `kind` between local atom `owner` (id
+ * `owner_id`) and atom `partner` (local or ghost, id `partner_id`) if
+ * `model`'s creation rules allow it at `step` for the pair's kinematics
+ * (`i` the owner); `created` says whether it did. For pairs the engine
+ * knows unbonded and created on this rank (`granbond_bond_store_creates_here`).
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_try_create(struct GbBondStore *store,
+                                             const struct GbBondModel *model,
+                                             uint16_t kind,
+                                             size_t owner,
+                                             size_t partner,
+                                             int64_t owner_id,
+                                             int64_t partner_id,
+                                             const struct GbPairKinematics *kinematics,
+                                             int64_t step,
+                                             int32_t *created);
+
+/**
+ * Ends the pass: the bonds broken in it leave the store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_finish_pass(struct GbBondStore *store);
+
+/**
+ * Which atom of a pair found to bond owns the bond on this rank: 0 atom
+ * `i`, 1 atom `j`, -1 if another rank creates it. Local atoms own bonds,
+ * the smaller id where both are local; a pair listed on two ranks
+ * (`newton off`, one atom a ghost) is created where the smaller id is
+ * local.
+ */
+int32_t granbond_bond_store_creates_here(int32_t i_local,
+                                         int32_t j_local,
+                                         int64_t id_i,
+                                         int64_t id_j,
+                                         int32_t listed_on_both);
+
+/**
+ * The store's counts on this rank (created, broken by mode, lost by
+ * cause, intact), written to `counts`.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_counts(const struct GbBondStore *store,
+                                         struct GbStoreCounts *counts);
+
+/**
+ * Restores counts read from a restart file (`intact` is ignored: the
+ * store holds its bonds).
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_restore_counts(struct GbBondStore *store,
+                                                 const struct GbStoreCounts *counts);
+
+/**
+ * The bonds the store holds; 0 for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+size_t granbond_bond_store_len(const struct GbBondStore *store);
+
+/**
+ * The bytes the store holds on the heap; 0 for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+size_t granbond_bond_store_bytes(const struct GbBondStore *store);
+
+/**
+ * Bond `k` as of the latest link: its atoms' local indices (owner first)
+ * to `ends` (2 ints), the partner's id to `partner_id`, its state to
+ * `state` (`GRANBOND_BOND_STATE_LEN` doubles).
+ *
+ * # Safety
+ * Pointers must be null or valid for those sizes.
+ */
+enum GbStatus granbond_bond_store_bond(const struct GbBondStore *store,
+                                       size_t k,
+                                       int32_t *ends,
+                                       int64_t *partner_id,
+                                       double *state);
+
+/**
+ * Doubles one atom's view row takes on this rank (the count and the most
+ * partner ids one local atom owns); a forward communication sends rows of
+ * the largest width over all ranks. 0 for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+size_t granbond_bond_store_view_width(const struct GbBondStore *store);
+
+/**
+ * Packs local atom `i`'s view row (the count and the partner ids of the
+ * bonds it owns) into `row` (`width` doubles), for its ghost images.
+ *
+ * # Safety
+ * Pointers must be null or valid; `row` for `width` doubles.
+ */
+enum GbStatus granbond_bond_store_pack_view(const struct GbBondStore *store,
+                                            size_t i,
+                                            double *row,
+                                            size_t width);
+
+/**
+ * Starts the view over, before the ghosts' rows are unpacked.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_clear_view(struct GbBondStore *store);
+
+/**
+ * Unpacks ghost atom `g`'s view row (`width` doubles, as its owner rank
+ * packed it): its bonds to local atoms join the view. `ids` and `nlocal`
+ * are the rank's atoms as the latest link saw them.
+ *
+ * # Safety
+ * Pointers must be null or valid; `row` for `width` doubles.
+ */
+enum GbStatus granbond_bond_store_unpack_view(struct GbBondStore *store,
+                                              size_t g,
+                                              const double *row,
+                                              size_t width,
+                                              const struct GbAtomIds *ids,
+                                              size_t nlocal);
+
+/**
+ * Ends the view after the ghosts' rows: it can be asked now.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_finish_view(struct GbBondStore *store);
+
+/**
+ * Whether local atom `i` and atom `j` (local or ghost) are bonded as far
+ * as this rank knows (its own bonds and the view): 1 or 0; 0 for null
+ * arguments.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+int32_t granbond_bond_store_bonded(const struct GbBondStore *store,
+                                   size_t i,
+                                   size_t j,
+                                   const struct GbAtomIds *ids);
+
+/**
+ * For a rank that lists a pair another rank bonds (`newton off`): whether
+ * that rank creates the bond between local atom `local` and ghost atom
+ * `ghost` in this pass, by `model`'s creation rules for `kinematics`
+ * (`i` the local atom) at `step`, and unless the pair's bond broke in this
+ * pass. Written to `creates` (1 or 0).
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_would_create(const struct GbBondStore *store,
+                                               const struct GbBondModel *model,
+                                               size_t local,
+                                               size_t ghost,
+                                               const struct GbPairKinematics *kinematics,
+                                               int64_t step,
+                                               int32_t *creates);
+
+/**
  * The layout of a pair record, with the Voigt contact's state first
  * (`with_contact` 1, LAMMPS `pair granbond`) or without it (0, where the
  * engine keeps the contact's state), written to `layout`. The slots'
@@ -1934,6 +2469,10 @@ static inline GbLayout granbond_header_layout(void)
     l.record_layout = sizeof(GbRecordLayout);
     l.sweep_pass = sizeof(GbSweepPass);
     l.sweep_tally = sizeof(GbSweepTally);
+    l.store_atoms = sizeof(GbStoreAtoms);
+    l.link_report = sizeof(GbLinkReport);
+    l.store_counts = sizeof(GbStoreCounts);
+    l.broken_bond = sizeof(GbBrokenBond);
     l.bond_state_len = GRANBOND_BOND_STATE_LEN;
     l.wall_bond_state_len = GRANBOND_WALL_BOND_STATE_LEN;
     l.contact_state_len = GRANBOND_CONTACT_STATE_LEN;

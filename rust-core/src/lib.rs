@@ -14,6 +14,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod bond;
+pub mod bond_store;
 pub mod contact;
 pub mod ffi;
 pub mod integrate;

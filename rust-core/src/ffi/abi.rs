@@ -4,10 +4,12 @@ use super::entry;
 use super::error::{Failure, Status};
 use super::guard::reference;
 use crate::bond::{BondOutput, BondParams, BOND_STATE_LEN, WALL_BOND_STATE_LEN};
+use crate::bond_store::{BrokenBond, LinkReport, StoreCounts};
 use crate::contact::{ContactFrame, ContactOutput, VoigtParams, CONTACT_STATE_LEN};
 use crate::ffi::bond::{AtomArrayPointers, SphereKinematics};
 use crate::ffi::checks::CheckReport;
 use crate::ffi::contact::TangentialOutput;
+use crate::ffi::store::StoreAtoms;
 use crate::kinematics::PairKinematics;
 use crate::record::RecordLayout;
 use crate::sweep::{SweepPass, SweepTally};
@@ -15,7 +17,7 @@ use crate::timestep_check::TypeBodies;
 use std::mem::size_of;
 
 /// Bumped whenever a struct, a function or a meaning changes.
-pub const GRANBOND_ABI_VERSION: u32 = 14;
+pub const GRANBOND_ABI_VERSION: u32 = 15;
 
 /// The meaning of the state slots (`granbond_state_slot`): bumped whenever a
 /// slot is added, removed or changes meaning, so that engines can refuse
@@ -60,6 +62,14 @@ pub struct Layout {
     pub sweep_pass: usize,
     /// `sizeof(GbSweepTally)`.
     pub sweep_tally: usize,
+    /// `sizeof(GbStoreAtoms)`.
+    pub store_atoms: usize,
+    /// `sizeof(GbLinkReport)`.
+    pub link_report: usize,
+    /// `sizeof(GbStoreCounts)`.
+    pub store_counts: usize,
+    /// `sizeof(GbBrokenBond)`.
+    pub broken_bond: usize,
     /// `GRANBOND_BOND_STATE_LEN`.
     pub bond_state_len: usize,
     /// `GRANBOND_WALL_BOND_STATE_LEN`.
@@ -94,6 +104,10 @@ pub fn library_layout() -> Layout {
         record_layout: size_of::<RecordLayout>(),
         sweep_pass: size_of::<SweepPass>(),
         sweep_tally: size_of::<SweepTally>(),
+        store_atoms: size_of::<StoreAtoms>(),
+        link_report: size_of::<LinkReport>(),
+        store_counts: size_of::<StoreCounts>(),
+        broken_bond: size_of::<BrokenBond>(),
         bond_state_len: BOND_STATE_LEN,
         wall_bond_state_len: WALL_BOND_STATE_LEN,
         contact_state_len: CONTACT_STATE_LEN,
@@ -127,7 +141,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
         ));
     }
     let e = reference(expected, "expected")?;
-    let items: [(&str, usize, usize); 17] = [
+    let items: [(&str, usize, usize); 21] = [
         ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
         ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
         ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
@@ -150,6 +164,10 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
         ("sizeof(GbRecordLayout)", e.record_layout, l.record_layout),
         ("sizeof(GbSweepPass)", e.sweep_pass, l.sweep_pass),
         ("sizeof(GbSweepTally)", e.sweep_tally, l.sweep_tally),
+        ("sizeof(GbStoreAtoms)", e.store_atoms, l.store_atoms),
+        ("sizeof(GbLinkReport)", e.link_report, l.link_report),
+        ("sizeof(GbStoreCounts)", e.store_counts, l.store_counts),
+        ("sizeof(GbBrokenBond)", e.broken_bond, l.broken_bond),
         ("bond state length", e.bond_state_len, l.bond_state_len),
         (
             "wall bond state length",

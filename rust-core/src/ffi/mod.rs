@@ -20,6 +20,7 @@ pub mod guard;
 pub mod layout;
 pub mod parameters;
 pub mod results;
+pub mod store;
 pub mod sweep;
 
 pub use error::Status;

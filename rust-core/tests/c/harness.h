@@ -138,6 +138,8 @@ size_t bond_field_count(void);
 
 /* bond_fields.c */
 int test_bond_fields(void);
+/* store.c */
+int test_bond_store(void);
 
 /* layout.c */
 int test_version_and_layout(void);

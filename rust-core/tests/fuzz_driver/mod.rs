@@ -30,6 +30,7 @@ use granbond::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
 };
+use granbond::bond_store::{BrokenBond, LinkReport, StoreCounts};
 use granbond::contact::{
     ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN, VOIGT_PARAMETERS,
 };
@@ -45,6 +46,7 @@ use granbond::ffi::fields::{
 };
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::parameters::{self as fp, ParameterRow};
+use granbond::ffi::store::{self as fs, AtomIds, StoreAtoms, GRANBOND_BOND_STORE_CHUNK};
 use granbond::ffi::sweep::{granbond_bond_file_loads, granbond_bond_sweep, granbond_record_layout};
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
@@ -59,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 61] = [
+pub const ENTRY_POINTS: [&str; 92] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -121,6 +123,37 @@ pub const ENTRY_POINTS: [&str; 61] = [
     "granbond_bond_field_info",
     "granbond_bond_fields",
     "granbond_bond_stress_limits",
+    "granbond_bond_store_new",
+    "granbond_bond_store_free",
+    "granbond_bond_store_grow",
+    "granbond_bond_store_copy",
+    "granbond_bond_store_clear",
+    "granbond_bond_store_seen",
+    "granbond_bond_store_set_seen",
+    "granbond_bond_store_packed_len",
+    "granbond_bond_store_most_packed_len",
+    "granbond_bond_store_pack",
+    "granbond_bond_store_unpack",
+    "granbond_bond_store_link",
+    "granbond_bond_store_begin_pass",
+    "granbond_bond_store_step_next",
+    "granbond_bond_store_broken_count",
+    "granbond_bond_store_broken",
+    "granbond_bond_store_try_create",
+    "granbond_bond_store_finish_pass",
+    "granbond_bond_store_creates_here",
+    "granbond_bond_store_counts",
+    "granbond_bond_store_restore_counts",
+    "granbond_bond_store_len",
+    "granbond_bond_store_bytes",
+    "granbond_bond_store_bond",
+    "granbond_bond_store_view_width",
+    "granbond_bond_store_pack_view",
+    "granbond_bond_store_clear_view",
+    "granbond_bond_store_unpack_view",
+    "granbond_bond_store_finish_view",
+    "granbond_bond_store_bonded",
+    "granbond_bond_store_would_create",
 ];
 
 /// The set-by-name and need entries of one parameter table.
@@ -919,7 +952,7 @@ impl<'t> Session<'t> {
             }
             20 | 21 => self.voigt_compute(input),
             22 => self.voigt_evaluate_then_step(input),
-            23 => self.voigt_evaluate_then_step(input),
+            23 => self.bond_store(input),
             24 => self.voigt_unchecked(input),
             25 | 26 => self.frames(input),
             27 => self.voigt_normal_force(input),
@@ -1513,6 +1546,316 @@ impl<'t> Session<'t> {
     /// the other past the same checks; then what the indexed entry does
     /// not take, where zero bytes mean a force pass over records without
     /// the contact's state, all bonds counted and valid pointers.
+    /// A rank's bond store through its life: atoms linked, bonds created,
+    /// stepped (force and setup passes), broken, packed to another store
+    /// and unpacked there, the per-atom events; ids, types, kinds and
+    /// positions fuzzed, every pointer null, misaligned or valid.
+    fn bond_store(&mut self, input: &mut Input) {
+        let n = 2 + input.below(4);
+        let model = self.bond_model(input);
+        let mut ids: Vec<i64> = (0..n as i64).map(|a| a + 1).collect();
+        let mut x = Vec::with_capacity(3 * n);
+        let mut v = Vec::with_capacity(3 * n);
+        let mut w = Vec::with_capacity(3 * n);
+        let mut radius = Vec::with_capacity(n);
+        for a in 0..n {
+            let k = self.kinematics(input);
+            // a chain along x, about a diameter apart, where the pair is sane
+            let shift = [2e-3 * a as f64, 0.0, 0.0];
+            x.extend((0..3).map(|c| k.x_i[c] - k.x_j[c] + shift[c]));
+            v.extend(k.v_i);
+            w.extend(k.w_i);
+            radius.push(k.radius_i);
+        }
+        let mut types = vec![1i32; n];
+        let mut kinds = [-1i32, -1, -1, 0];
+        if input.below(4) == 3 {
+            let a = input.below(n);
+            ids[a] = input.step();
+            types[input.below(n)] = input.i32();
+            kinds[input.below(4)] = input.i32();
+        }
+        let nlocal = n - input.below(2);
+        let wide_ids = AtomIds {
+            narrow: null(),
+            wide: ids.as_ptr(),
+            count: n,
+        };
+        let store_atoms = StoreAtoms {
+            ids: wide_ids,
+            nlocal,
+            x: x.as_ptr(),
+            types: types.as_ptr(),
+        };
+        let arrays = AtomArrayPointers {
+            x: x.as_ptr(),
+            v: v.as_ptr(),
+            omega: w.as_ptr(),
+            radius: radius.as_ptr(),
+            count: n,
+        };
+        let mut store = Place::new(null_mut::<granbond::bond_store::BondStore>());
+        // SAFETY: null, misaligned or valid for one pointer.
+        let status = unsafe { fs::granbond_bond_store_new(store.ptr(input.late_pointer())) };
+        if !self.answer("granbond_bond_store_new", status) {
+            return;
+        }
+        let st = store.get();
+        let ok = |s: &mut Self, f: &'static str, status: Status| s.answer(f, status);
+        // SAFETY (every call below): `st` is a live store; the other
+        // pointers are null, misaligned or valid for their documented sizes.
+        unsafe {
+            let status = fs::granbond_bond_store_grow(st, n);
+            ok(self, "granbond_bond_store_grow", status);
+            let mut report = Place::new(LinkReport::default());
+            let mut sa = Place::new(store_atoms);
+            let (ha, hr) = (input.late_pointer(), input.late_pointer());
+            let status = fs::granbond_bond_store_link(st, sa.ptr(ha), kinds.as_ptr(), 1, report.ptr(hr));
+            let linked = ok(self, "granbond_bond_store_link", status);
+            let dt = if input.below(8) == 7 { input.f64() } else { 1e-7 };
+            let (advance, remember) = (input.below(4) != 3, input.below(2));
+            let status = fs::granbond_bond_store_begin_pass(st, dt, advance as i32, remember as i32);
+            ok(self, "granbond_bond_store_begin_pass", status);
+            for a in 0..nlocal.min(n - 1) {
+                let owner = fs::granbond_bond_store_creates_here(1, 1, ids[a], ids[a + 1], 0);
+                self.answer_value("granbond_bond_store_creates_here");
+                let (o, p) = if owner == 1 { (a + 1, a) } else { (a, a + 1) };
+                let three = |arr: &[f64], k: usize| [arr[3 * k], arr[3 * k + 1], arr[3 * k + 2]];
+                let k = PairKinematics {
+                    x_i: three(&x, o),
+                    x_j: three(&x, p),
+                    v_i: three(&v, o),
+                    v_j: three(&v, p),
+                    w_i: three(&w, o),
+                    w_j: three(&w, p),
+                    radius_i: radius[o],
+                    radius_j: radius[p],
+                };
+                let mut created = Place::new(-1i32);
+                let step = if input.below(4) == 3 { input.step() } else { 0 };
+                let status = fs::granbond_bond_store_try_create(
+                    st,
+                    model,
+                    input.below(2) as u16,
+                    o,
+                    p,
+                    ids[o],
+                    ids[p],
+                    &k,
+                    step,
+                    created.ptr(input.late_pointer()),
+                );
+                if ok(self, "granbond_bond_store_try_create", status) {
+                    assert!(matches!(created.get(), 0 | 1), "created {}", created.get());
+                }
+            }
+            let models = [model, null()];
+            let mut ends = vec![0i32; 2 * GRANBOND_BOND_STORE_CHUNK + 1];
+            let mut outs = vec![BondOutput::default(); GRANBOND_BOND_STORE_CHUNK + 1];
+            let mut failed = Place::new(usize::MAX);
+            // the pass that created the bonds, then one over the chain
+            // stretched (bonds break past max_distance)
+            for round in 0..2 {
+                if round == 1 {
+                    let stretch = [1e-3, 1e-4, 1e-5, 0.0][input.below(4)];
+                    for (a, xa) in x.chunks_mut(3).enumerate() {
+                        xa[0] += stretch * a as f64;
+                    }
+                    let status = fs::granbond_bond_store_link(
+                        st,
+                        sa.ptr(Pointer::Valid),
+                        kinds.as_ptr(),
+                        1,
+                        report.ptr(Pointer::Valid),
+                    );
+                    ok(self, "granbond_bond_store_link", status);
+                    let status = fs::granbond_bond_store_begin_pass(st, 1e-7, 1, 0);
+                    ok(self, "granbond_bond_store_begin_pass", status);
+                }
+                for _ in 0..4 {
+                    let mut count = Place::new(usize::MAX);
+                    let (he, ho, hc) = (input.late_pointer(), input.late_pointer(), input.late_pointer());
+                    let status = fs::granbond_bond_store_step_next(
+                        st,
+                        models.as_ptr(),
+                        1 + input.below(2),
+                        &arrays,
+                        &wide_ids,
+                        Self::batch_ptr(&mut ends, he),
+                        Self::batch_ptr(&mut outs, ho),
+                        count.ptr(hc),
+                        failed.ptr(input.late_pointer()),
+                    );
+                    if !ok(self, "granbond_bond_store_step_next", status) || count.get() == 0 {
+                        break;
+                    }
+                    assert!(
+                        count.get() <= GRANBOND_BOND_STORE_CHUNK,
+                        "a chunk of {}",
+                        count.get()
+                    );
+                }
+                let broken = fs::granbond_bond_store_broken_count(st);
+                self.answer_value("granbond_bond_store_broken_count");
+                let mut b = Place::new(BrokenBond::default());
+                let k = if input.below(4) == 3 { input.usize() } else { 0 };
+                let status = fs::granbond_bond_store_broken(st, k.min(broken), b.ptr(input.late_pointer()));
+                ok(self, "granbond_bond_store_broken", status);
+                let status = fs::granbond_bond_store_finish_pass(st);
+                ok(self, "granbond_bond_store_finish_pass", status);
+            }
+            let mut counts = Place::new(StoreCounts::default());
+            let status = fs::granbond_bond_store_counts(st, counts.ptr(input.late_pointer()));
+            if ok(self, "granbond_bond_store_counts", status) && linked {
+                let c = counts.get();
+                assert_eq!(
+                    c.created,
+                    c.broken() + c.intact + c.lost(),
+                    "the store's counts: {c:?}"
+                );
+            }
+            let held = fs::granbond_bond_store_len(st);
+            self.answer_value("granbond_bond_store_len");
+            let _ = fs::granbond_bond_store_bytes(st);
+            self.answer_value("granbond_bond_store_bytes");
+            let mut bond_ends = [0i32; 3];
+            let mut partner = Place::new(0i64);
+            let mut state = [0.0f64; BOND_STATE_LEN + 1];
+            let status = fs::granbond_bond_store_bond(
+                st,
+                input.below(held + 1),
+                Self::batch_ptr(&mut bond_ends, input.late_pointer()),
+                partner.ptr(input.late_pointer()),
+                Self::batch_ptr(&mut state, input.late_pointer()),
+            );
+            ok(self, "granbond_bond_store_bond", status);
+
+            // the view: this rank's rows unpacked at ghost images of its atoms
+            let width = fs::granbond_bond_store_view_width(st);
+            self.answer_value("granbond_bond_store_view_width");
+            let mut row = vec![0.0f64; width + 1];
+            let narrow = if input.below(8) == 7 {
+                input.below(width + 1)
+            } else {
+                width
+            };
+            let status = fs::granbond_bond_store_clear_view(st);
+            ok(self, "granbond_bond_store_clear_view", status);
+            for a in 0..n {
+                let status = fs::granbond_bond_store_pack_view(
+                    st,
+                    a,
+                    Self::batch_ptr(&mut row, input.late_pointer()),
+                    narrow,
+                );
+                ok(self, "granbond_bond_store_pack_view", status);
+                if input.below(8) == 7 {
+                    row[input.below(width + 1)] = input.f64();
+                }
+                let status = fs::granbond_bond_store_unpack_view(
+                    st,
+                    (a + 1) % n,
+                    Self::batch_ptr(&mut row, input.late_pointer()),
+                    narrow,
+                    &wide_ids,
+                    nlocal,
+                );
+                ok(self, "granbond_bond_store_unpack_view", status);
+            }
+            let status = fs::granbond_bond_store_finish_view(st);
+            ok(self, "granbond_bond_store_finish_view", status);
+            let bonded =
+                fs::granbond_bond_store_bonded(st, input.below(n + 1), input.below(n + 1), &wide_ids);
+            self.answer_value("granbond_bond_store_bonded");
+            assert!(matches!(bonded, 0 | 1), "bonded {bonded}");
+            let k = self.kinematics(input);
+            let mut creates = Place::new(-1i32);
+            let status = fs::granbond_bond_store_would_create(
+                st,
+                model,
+                input.below(n + 1),
+                input.below(n + 1),
+                &k,
+                input.step(),
+                creates.ptr(input.late_pointer()),
+            );
+            if ok(self, "granbond_bond_store_would_create", status) {
+                assert!(matches!(creates.get(), 0 | 1), "creates {}", creates.get());
+            }
+
+            // an atom migrates to a second store
+            let leaving = input.below(n + 1);
+            let len = fs::granbond_bond_store_packed_len(st, leaving);
+            self.answer_value("granbond_bond_store_packed_len");
+            let most = fs::granbond_bond_store_most_packed_len(st);
+            self.answer_value("granbond_bond_store_most_packed_len");
+            assert!(len <= most.max(2), "packed {len}, most {most}");
+            let mut buf = vec![0.0f64; len + 1];
+            let capacity = if input.below(8) == 7 {
+                input.below(len + 1)
+            } else {
+                len
+            };
+            let mut written = Place::new(0usize);
+            let status = fs::granbond_bond_store_pack(
+                st,
+                leaving,
+                input.below(2) as i32,
+                Self::batch_ptr(&mut buf, input.late_pointer()),
+                capacity,
+                written.ptr(input.late_pointer()),
+            );
+            let packed = ok(self, "granbond_bond_store_pack", status);
+            let mut other = Place::new(null_mut::<granbond::bond_store::BondStore>());
+            if self.answer(
+                "granbond_bond_store_new",
+                fs::granbond_bond_store_new(other.ptr(Pointer::Valid)),
+            ) {
+                let ot = other.get();
+                let mut read = Place::new(0usize);
+                let take = if packed {
+                    written.get()
+                } else {
+                    input.below(len + 1)
+                };
+                if input.below(4) == 3 {
+                    buf[input.below(len + 1)] = input.f64();
+                }
+                let status = fs::granbond_bond_store_unpack(
+                    ot,
+                    input.below(n),
+                    Self::batch_ptr(&mut buf, input.late_pointer()),
+                    take,
+                    read.ptr(input.late_pointer()),
+                );
+                ok(self, "granbond_bond_store_unpack", status);
+                let mut fuzzed = StoreCounts::default();
+                input.mutate(&mut fuzzed);
+                let mut c = Place::new(fuzzed);
+                let status = fs::granbond_bond_store_restore_counts(ot, c.ptr(input.late_pointer()));
+                ok(self, "granbond_bond_store_restore_counts", status);
+                fs::granbond_bond_store_free(ot);
+                self.answer_value("granbond_bond_store_free");
+            }
+            // per-atom events, indices in range and beyond
+            let (i, j) = (input.below(n + 2), input.below(n + 2));
+            let status = fs::granbond_bond_store_copy(st, i, j);
+            ok(self, "granbond_bond_store_copy", status);
+            let status = fs::granbond_bond_store_clear(st, i);
+            ok(self, "granbond_bond_store_clear", status);
+            let status = fs::granbond_bond_store_set_seen(st, j, input.step());
+            ok(self, "granbond_bond_store_set_seen", status);
+            let _ = fs::granbond_bond_store_seen(st, i);
+            self.answer_value("granbond_bond_store_seen");
+        }
+        // SAFETY: from granbond_bond_store_new, not used again; null is allowed.
+        unsafe {
+            fs::granbond_bond_store_free(st);
+            fs::granbond_bond_store_free(null_mut());
+        }
+        self.answer_value("granbond_bond_store_free");
+    }
+
     fn bond_sweep(&mut self, input: &mut Input) {
         const F: &str = "granbond_bond_sweep";
         let mut b = self.indexed_bonds(input);

@@ -1,0 +1,201 @@
+//! The store's side of the engine's per-atom events: arrays grown, an atom
+//! copied over another (sorting, deletion, migration), an atom created, and
+//! an atom's bonds packed into a buffer and unpacked from one (migration,
+//! restart files). The bonds move with their owner atom; the store keeps
+//! them keyed by ids, so the link after the event finds them again.
+
+use super::{BondStore, StoredBond, NONE, PACKED_PER_BOND};
+use crate::bond::{BondState, BondStatus, BOND_STATE_LEN};
+
+/// Ids travel in doubles: exact up to 2^53.
+const LARGEST_ID: i64 = 1 << 53;
+
+/// Why a buffer could not be unpacked.
+#[derive(Clone, Debug, PartialEq)]
+pub enum UnpackError {
+    /// The buffer ends before the bonds it announces.
+    Short {
+        /// Doubles the buffer holds.
+        len: usize,
+        /// Doubles its count announces.
+        wanted: usize,
+    },
+    /// The count or an id is not a whole number in range.
+    Malformed(&'static str),
+}
+
+impl std::fmt::Display for UnpackError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            UnpackError::Short { len, wanted } => {
+                write!(
+                    f,
+                    "the packed bonds need {wanted} doubles, the buffer holds {len}"
+                )
+            }
+            UnpackError::Malformed(what) => write!(f, "the packed bonds hold a malformed {what}"),
+        }
+    }
+}
+
+fn whole(x: f64, what: &'static str) -> Result<i64, UnpackError> {
+    if x.fract() == 0.0 && x.abs() < LARGEST_ID as f64 {
+        Ok(x as i64)
+    } else {
+        Err(UnpackError::Malformed(what))
+    }
+}
+
+impl BondStore {
+    /// The engine's per-atom arrays hold `nmax` atoms now.
+    pub fn grow(&mut self, nmax: usize) {
+        if nmax > self.head.len() {
+            self.head.resize(nmax, NONE);
+            self.seen.resize(nmax, 0);
+        }
+    }
+
+    /// Atom `from` was copied over atom `to` (LAMMPS/LIGGGHTS
+    /// `copy_arrays`): `to` now owns `from`'s bonds. Bonds that `to` owned
+    /// are no atom's now, and the next link counts them lost.
+    pub fn copy(&mut self, from: usize, to: usize) {
+        if from < self.head.len() && to < self.head.len() {
+            self.head[to] = self.head[from];
+            self.seen[to] = self.seen[from];
+        }
+    }
+
+    /// Atom `i` was created: it owns no bond, and no pass has seen it.
+    pub fn clear(&mut self, i: usize) {
+        if i < self.head.len() {
+            self.head[i] = NONE;
+            self.seen[i] = 0;
+        }
+    }
+
+    /// Atom `i`'s id as a link last saw it (0: never), for the engine to
+    /// send to the atom's ghost images.
+    pub fn seen(&self, i: usize) -> i64 {
+        self.seen.get(i).copied().unwrap_or(0)
+    }
+
+    /// The seen id of a ghost image `i`, as its owner rank sent it.
+    pub fn set_seen(&mut self, i: usize, id: i64) {
+        if i < self.seen.len() {
+            self.seen[i] = id;
+        }
+    }
+
+    pub(super) fn owned(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
+        // a list that leads out of the bonds held (a slot the engine
+        // copied after the bonds were laid out again) ends there
+        let valid = move |k: u32| (k as usize) < self.bonds.len();
+        let first = self.head.get(i).copied().unwrap_or(NONE);
+        std::iter::successors(valid(first).then_some(first), move |&k| {
+            let next = self.next[k as usize];
+            valid(next).then_some(next)
+        })
+        .map(|k| k as usize)
+        .filter(move |&k| self.status(k) == BondStatus::Intact)
+    }
+
+    /// Doubles [`Self::pack`] writes for atom `i`.
+    pub fn packed_len(&self, i: usize) -> usize {
+        2 + PACKED_PER_BOND * self.owned(i).count()
+    }
+
+    /// The most doubles [`Self::pack`] writes for one local atom, as of the
+    /// latest link and the bonds created since (a bound for the engine's
+    /// exchange and restart buffers).
+    pub fn most_packed_len(&self) -> usize {
+        2 + PACKED_PER_BOND * self.most_owned
+    }
+
+    /// Packs atom `i`'s bonds into `buf` (at least [`Self::packed_len`]
+    /// doubles): its seen id, the count, then per bond the partner's id and
+    /// the state. With `leaving` (the atom migrates to another rank) the
+    /// bonds leave this store; without (a restart file) they stay. Returns
+    /// the doubles written, or `None` if `buf` is too short.
+    pub fn pack(&mut self, i: usize, leaving: bool, buf: &mut [f64]) -> Option<usize> {
+        let len = self.packed_len(i);
+        if buf.len() < len {
+            return None;
+        }
+        buf[0] = self.seen(i) as f64;
+        let mut at = 2;
+        let owned: Vec<usize> = self.owned(i).collect();
+        buf[1] = owned.len() as f64;
+        for k in owned {
+            let bond = &mut self.bonds[k];
+            buf[at] = bond.partner as f64;
+            buf[at + 1..at + 1 + BOND_STATE_LEN].copy_from_slice(bond.state.as_slots());
+            at += PACKED_PER_BOND;
+            if leaving {
+                // gone from this rank without a count: the next link drops it
+                bond.state.status = BondStatus::Unbonded as i32 as f64;
+            }
+        }
+        if leaving {
+            self.head[i] = NONE;
+            self.linked = false;
+        }
+        Some(at)
+    }
+
+    /// Unpacks into atom `i` (arrived by migration, or read from a restart
+    /// file) the bonds [`Self::pack`] wrote to `buf`; returns the doubles
+    /// read. The bonds join those `i` owns.
+    pub fn unpack(&mut self, i: usize, buf: &[f64]) -> Result<usize, UnpackError> {
+        if buf.len() < 2 {
+            return Err(UnpackError::Short {
+                len: buf.len(),
+                wanted: 2,
+            });
+        }
+        let seen = whole(buf[0], "seen id")?;
+        let count = whole(buf[1], "bond count")?;
+        let count = usize::try_from(count).map_err(|_| UnpackError::Malformed("bond count"))?;
+        let wanted = count
+            .checked_mul(PACKED_PER_BOND)
+            .and_then(|n| n.checked_add(2))
+            .ok_or(UnpackError::Malformed("bond count"))?;
+        if buf.len() < wanted {
+            return Err(UnpackError::Short {
+                len: buf.len(),
+                wanted,
+            });
+        }
+        for b in 0..count {
+            let at = 2 + b * PACKED_PER_BOND;
+            whole(buf[at], "partner id")?;
+        }
+        self.grow(i + 1);
+        self.seen[i] = seen;
+        for b in 0..count {
+            let at = 2 + b * PACKED_PER_BOND;
+            let mut state = BondState::default();
+            state
+                .as_slots_mut()
+                .copy_from_slice(&buf[at + 1..at + 1 + BOND_STATE_LEN]);
+            self.push(
+                i,
+                StoredBond {
+                    partner: buf[at] as i64,
+                    state,
+                },
+            );
+        }
+        self.most_owned = self.most_owned.max(count);
+        self.linked = false;
+        Ok(wanted)
+    }
+
+    /// Adds `bond` to those atom `i` owns.
+    pub(super) fn push(&mut self, i: usize, bond: StoredBond) -> usize {
+        let k = self.bonds.len();
+        self.bonds.push(bond);
+        self.next.push(self.head[i]);
+        self.head[i] = k as u32;
+        k
+    }
+}

@@ -1,0 +1,327 @@
+//! The rule of a pass over the store (docs/models/bond-nonlinear.md,
+//! "Creation" and "Breakage"):
+//!
+//! - a force pass advances each bond with its kind's model, in chunks of
+//!   bonds of one kind that lie side by side; a bond that breaks is counted
+//!   by mode, reported, exerts nothing, and leaves the store when the pass
+//!   finishes; it cannot form again in the same pass;
+//! - a setup pass (a run's start) advances nothing: each bond's loads are
+//!   those of its stored state, a step of a copy over a zero time step;
+//! - a bond that forms in the pass is stepped in it too (the engine asks for
+//!   the chunks left after its contact loop).
+//!
+//! The loads go back to the engine chunk by chunk: nothing is kept per bond.
+
+use super::id_map::Ids;
+use super::{BondStore, StoredBond, NONE};
+use crate::bond::{BondModel, BondOutput, BondState, BondStatus, BreakMode};
+use crate::kinematics::{KinematicsError, PairKinematics};
+use crate::pair_source::{AtomArrays, IndexedPairs};
+
+/// Bonds one [`BondStore::step_next`] steps at most.
+pub const CHUNK: usize = 64;
+
+/// Where the pass stands.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Cursor {
+    active: bool,
+    advance: bool,
+    remember_breaks: bool,
+    dt: f64,
+    next: usize,
+}
+
+/// A bond that broke in the pass.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BrokenBond {
+    /// The ids of its owner and partner.
+    pub ids: [i64; 2],
+    /// Their local indices.
+    pub ends: [i32; 2],
+    /// Its last step's output: status broken, the break mode, the
+    /// stresses; no loads.
+    pub out: BondOutput,
+}
+
+/// Why a chunk could not be stepped.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepFailure {
+    /// The bond (its place in the store).
+    pub bond: usize,
+    /// Its atoms' local indices.
+    pub ends: [i32; 2],
+    /// What went wrong.
+    pub reason: StepFailureReason,
+}
+
+/// What went wrong in a step.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StepFailureReason {
+    /// The store was not linked since atoms moved (an engine's fault).
+    NotLinked,
+    /// No model for the bond's kind.
+    NoModel(u16),
+    /// An atom index beyond the atoms' arrays.
+    IndexOutOfRange,
+    /// The pair's kinematics are unusable (coincident centres, a non-finite
+    /// number).
+    Kinematics(KinematicsError),
+    /// The results were not finite.
+    NonFinite,
+}
+
+/// Which atom of a pair the engine has just found to bond owns the bond on
+/// this rank: `Some(false)` atom `i`, `Some(true)` atom `j`, `None` if
+/// another rank creates it. The owner is a local atom, the one with the
+/// smaller id where both are; a pair listed on two ranks (`newton off`,
+/// one atom a ghost) is created by the rank that owns the smaller id.
+pub fn creates_here(
+    i_local: bool,
+    j_local: bool,
+    id_i: i64,
+    id_j: i64,
+    listed_on_both: bool,
+) -> Option<bool> {
+    match (i_local, j_local) {
+        (true, true) => Some(id_j < id_i),
+        (true, false) => (!listed_on_both || id_i < id_j).then_some(false),
+        (false, true) => (!listed_on_both || id_j < id_i).then_some(true),
+        (false, false) => None,
+    }
+}
+
+impl BondStore {
+    /// Starts a pass: a force pass over `dt` (`advance`) or a setup pass.
+    /// With `remember_breaks` (a creation step lies ahead, without
+    /// `create_always`), the pairs whose bonds break are kept so that the
+    /// creation step does not bond them again.
+    pub fn begin_pass(&mut self, dt: f64, advance: bool, remember_breaks: bool) {
+        self.cursor = Cursor {
+            active: true,
+            advance,
+            remember_breaks,
+            dt: if advance { dt } else { 0.0 },
+            next: 0,
+        };
+        if !remember_breaks {
+            self.broken_pairs = Vec::new();
+        }
+        self.broken_now.clear();
+        self.left_view.clear();
+    }
+
+    /// Steps the next chunk of bonds the pass has not stepped (those formed
+    /// since included): up to [`CHUNK`] bonds of one kind, whose atoms'
+    /// local indices go to `ends` and outputs to `outs`; returns how many
+    /// (0: none left). A bond that breaks carries no load and is in
+    /// [`Self::broken`].
+    pub fn step_next(
+        &mut self,
+        models: &[Option<&BondModel>],
+        atoms: AtomArrays<'_>,
+        ids: Ids<'_>,
+        ends: &mut [[i32; 2]; CHUNK],
+        outs: &mut [BondOutput; CHUNK],
+    ) -> Result<usize, StepFailure> {
+        let first = self.cursor.next;
+        if !self.cursor.active || first >= self.bonds.len() {
+            return Ok(0);
+        }
+        let fail = |bond: usize, ends: [i32; 2], reason| StepFailure { bond, ends, reason };
+        if !self.linked {
+            return Err(fail(first, [-1, -1], StepFailureReason::NotLinked));
+        }
+        let kind = self.kinds[first];
+        let mut last = first + 1;
+        while last < self.bonds.len() && last - first < CHUNK && self.kinds[last] == kind {
+            last += 1;
+        }
+        let n = last - first;
+        let model = models
+            .get(usize::from(kind))
+            .copied()
+            .flatten()
+            .ok_or_else(|| fail(first, self.ends[first], StepFailureReason::NoModel(kind)))?;
+        let pairs = &self.ends[first..last];
+        let kinematics = IndexedPairs::new(atoms, pairs).map_err(|e| {
+            fail(
+                first + e.bond,
+                self.ends[first + e.bond],
+                StepFailureReason::IndexOutOfRange,
+            )
+        })?;
+        for b in first..last {
+            if (self.ends[b][0] as usize) >= ids.len() || (self.ends[b][1] as usize) >= ids.len() {
+                return Err(fail(b, self.ends[b], StepFailureReason::IndexOutOfRange));
+            }
+        }
+        ends[..n].copy_from_slice(pairs);
+        let outs = &mut outs[..n];
+        let stepped = if self.cursor.advance {
+            let mut states: [*mut BondState; CHUNK] = [std::ptr::null_mut(); CHUNK];
+            for (s, bond) in states.iter_mut().zip(&mut self.bonds[first..last]) {
+                *s = &mut bond.state;
+            }
+            // SAFETY: the pointers are to distinct bonds of `self.bonds`,
+            // borrowed mutably for this call, and `&mut BondState` has the
+            // layout of `*mut BondState`.
+            let states =
+                unsafe { std::slice::from_raw_parts_mut(states.as_mut_ptr() as *mut &mut BondState, n) };
+            model.step_indexed(&kinematics, self.cursor.dt, states, outs)
+        } else {
+            let mut copies = [BondState::default(); CHUNK];
+            for (c, bond) in copies.iter_mut().zip(&self.bonds[first..last]) {
+                *c = bond.state;
+            }
+            let mut refs: [*mut BondState; CHUNK] = [std::ptr::null_mut(); CHUNK];
+            for (r, c) in refs.iter_mut().zip(copies.iter_mut()) {
+                *r = c;
+            }
+            // SAFETY: as above, over the copies.
+            let states =
+                unsafe { std::slice::from_raw_parts_mut(refs.as_mut_ptr() as *mut &mut BondState, n) };
+            model.step_indexed(&kinematics, 0.0, states, outs)
+        };
+        match stepped {
+            Ok(None) => {}
+            Ok(Some(k)) => {
+                return Err(fail(
+                    first + k,
+                    self.ends[first + k],
+                    StepFailureReason::NonFinite,
+                ))
+            }
+            Err((k, e)) => {
+                return Err(fail(
+                    first + k,
+                    self.ends[first + k],
+                    StepFailureReason::Kinematics(e),
+                ))
+            }
+        }
+        self.cursor.next = last;
+        for (k, out) in outs.iter_mut().enumerate() {
+            // a bond that is not intact carries no load (the step's rule);
+            // one that broke in a force pass is counted and reported
+            if out.status != BondStatus::Intact as i32 && self.cursor.advance {
+                let b = first + k;
+                let e = self.ends[b];
+                let broken = BrokenBond {
+                    ids: [ids.get(e[0] as usize), self.bonds[b].partner],
+                    ends: e,
+                    out: *out,
+                };
+                self.count_break(out.break_mode);
+                self.broken_now.push(broken);
+            }
+        }
+        Ok(n)
+    }
+
+    fn count_break(&mut self, mode: i32) {
+        let c = &mut self.counts;
+        match mode {
+            m if m == BreakMode::Distance as i32 => c.broken_distance += 1,
+            m if m == BreakMode::Tension as i32 => c.broken_tension += 1,
+            m if m == BreakMode::Compression as i32 => c.broken_compression += 1,
+            _ => c.broken_shear += 1,
+        }
+    }
+
+    /// The bonds broken so far in this pass.
+    pub fn broken(&self) -> &[BrokenBond] {
+        &self.broken_now
+    }
+
+    /// Creates a bond between local atom `owner` and atom `partner` (local
+    /// or ghost, id `partner_id`) of kind `kind` if `model`'s creation rules
+    /// allow it at `step` for the pair's kinematics `kin` (seen from the
+    /// owner); returns whether it did. A pair whose bond broke in this pass
+    /// is not bonded again in it, nor one whose bond broke before unless
+    /// the model creates bonds always. The bond is stepped by the pass's
+    /// next [`Self::step_next`]. The engine calls this only for pairs it
+    /// knows unbonded and owned here ([`creates_here`]).
+    #[allow(clippy::too_many_arguments)]
+    pub fn try_create(
+        &mut self,
+        model: &BondModel,
+        kind: u16,
+        owner: usize,
+        partner: usize,
+        ids: [i64; 2],
+        kin: &PairKinematics,
+        step: i64,
+    ) -> Result<bool, KinematicsError> {
+        if !self.linked || owner >= self.head.len() {
+            return Ok(false);
+        }
+        let same = |e: [i32; 2]| {
+            (e[0] as usize == owner && e[1] as usize == partner)
+                || (e[1] as usize == owner && e[0] as usize == partner)
+        };
+        if self.broken_now.iter().any(|b| same(b.ends)) {
+            return Ok(false);
+        }
+        let mut state = BondState::default();
+        let pair = ordered(ids);
+        if self.broken_pairs.binary_search(&pair).is_ok() {
+            state.status = BondStatus::Broken as i32 as f64;
+        }
+        if !model.try_create(kin, step, &mut state)? {
+            return Ok(false);
+        }
+        self.push(
+            owner,
+            StoredBond {
+                partner: ids[1],
+                state,
+            },
+        );
+        self.ends.push([owner as i32, partner as i32]);
+        self.kinds.push(kind);
+        self.counts.created += 1;
+        let owned = self.owned(owner).count();
+        self.most_owned = self.most_owned.max(owned);
+        Ok(true)
+    }
+
+    /// Ends the pass: the bonds that broke in it leave the store.
+    pub fn finish_pass(&mut self) {
+        self.cursor.active = false;
+        if self.broken_now.is_empty() {
+            self.trim();
+            return;
+        }
+        if self.cursor.remember_breaks {
+            for b in &self.broken_now {
+                self.broken_pairs.push(ordered(b.ids));
+            }
+            self.broken_pairs.sort_unstable();
+            self.broken_pairs.dedup();
+        }
+        self.broken_now.clear();
+        for k in 0..self.bonds.len() {
+            let i = self.ends[k][0] as usize;
+            self.head[i] = NONE;
+        }
+        let mut kept = 0;
+        for k in 0..self.bonds.len() {
+            if self.bonds[k].state.status() == BondStatus::Intact {
+                self.bonds.swap(kept, k);
+                self.ends.swap(kept, k);
+                self.kinds.swap(kept, k);
+                kept += 1;
+            }
+        }
+        self.bonds.truncate(kept);
+        self.ends.truncate(kept);
+        self.kinds.truncate(kept);
+        self.rebuild_lists();
+        self.trim();
+    }
+}
+
+fn ordered(ids: [i64; 2]) -> [i64; 2] {
+    [ids[0].min(ids[1]), ids[0].max(ids[1])]
+}

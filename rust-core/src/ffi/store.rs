@@ -1,0 +1,627 @@
+//! `extern "C"` surface of the bond store (`crate::bond_store`): a rank's
+//! bonds, their per-atom events, the link and the pass.
+
+use super::bond::{atom_arrays, AtomArrayPointers};
+use super::entry;
+use super::error::{Failure, Status};
+use super::guard::{reference, reference_mut, slice, slice_mut, time_step, FailedIndex};
+use super::results::refused;
+use crate::bond::{BondModel, BondOutput, BOND_STATE_LEN};
+use crate::bond_store::{
+    creates_here, BondStore, BrokenBond, Ids, LinkAtoms, LinkReport, StepFailureReason, StoreCounts, CHUNK,
+};
+use crate::kinematics::PairKinematics;
+
+/// Bonds one `granbond_bond_store_step_next` steps at most: the length of
+/// its `ends` and `outs` arrays.
+pub const GRANBOND_BOND_STORE_CHUNK: usize = CHUNK;
+
+/// A rank's atom ids as the engine keeps them: exactly one of `narrow`
+/// (32-bit ids) and `wide` (64-bit) is set, for `count` atoms (local, then
+/// ghost).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct AtomIds {
+    /// 32-bit ids, or null.
+    pub narrow: *const i32,
+    /// 64-bit ids, or null.
+    pub wide: *const i64,
+    /// The number of atoms.
+    pub count: usize,
+}
+
+/// What the link reads of a rank's atoms.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct StoreAtoms {
+    /// The atoms' ids, local then ghost.
+    pub ids: AtomIds,
+    /// The number of local atoms.
+    pub nlocal: usize,
+    /// Positions, 3 doubles per atom (`ids.count` atoms).
+    pub x: *const f64,
+    /// Atom types, one per atom.
+    pub types: *const i32,
+}
+
+unsafe fn ids<'a>(ids: &AtomIds) -> Result<Ids<'a>, Failure> {
+    match (ids.narrow.is_null(), ids.wide.is_null()) {
+        (false, true) => Ok(Ids::Narrow(slice(ids.narrow, ids.count, "ids->narrow")?)),
+        (true, false) => Ok(Ids::Wide(slice(ids.wide, ids.count, "ids->wide")?)),
+        _ => Err(Failure::new(
+            Status::InvalidArgument,
+            "ids: exactly one of ids->narrow and ids->wide must be set",
+        )),
+    }
+}
+
+/// A new, empty store, written to `store`. Free it with
+/// `granbond_bond_store_free`.
+///
+/// # Safety
+/// `store` must be null or valid for writes.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_new(store: *mut *mut BondStore) -> Status {
+    *store = Box::into_raw(Box::new(BondStore::new()));
+    Ok(())
+}
+
+/// Frees a store from `granbond_bond_store_new` (null is ignored).
+///
+/// # Safety
+/// `store` must come from `granbond_bond_store_new` and not be used again.
+#[entry(or = ())]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_free(store: *mut BondStore) {
+    if !store.is_null() {
+        drop(Box::from_raw(store));
+    }
+}
+
+/// The engine's per-atom arrays hold `nmax` atoms now (`grow_arrays`).
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_grow(store: *mut BondStore, nmax: usize) -> Status {
+    store.grow(nmax);
+    Ok(())
+}
+
+/// Atom `from` was copied over atom `to` (`copy_arrays`): `to` owns
+/// `from`'s bonds now; those `to` owned are lost at the next link.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_copy(store: *mut BondStore, from: usize, to: usize) -> Status {
+    store.copy(from, to);
+    Ok(())
+}
+
+/// Atom `i` was created (`set_arrays`): it owns no bond, and no link has
+/// seen it.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_clear(store: *mut BondStore, i: usize) -> Status {
+    store.clear(i);
+    Ok(())
+}
+
+/// Atom `i`'s id as the latest link saw it (0: never), for its ghost images
+/// (border communication); 0 for a null store.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(or = 0, store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_seen(store: *const BondStore, i: usize) -> i64 {
+    store.seen(i)
+}
+
+/// Sets the seen id of ghost atom `i`, as its owner rank sent it.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_set_seen(store: *mut BondStore, i: usize, id: i64) -> Status {
+    store.set_seen(i, id);
+    Ok(())
+}
+
+/// Doubles `granbond_bond_store_pack` writes for atom `i`; 0 for a null
+/// store.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(or = 0, store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_packed_len(store: *const BondStore, i: usize) -> usize {
+    store.packed_len(i)
+}
+
+/// The most doubles `granbond_bond_store_pack` writes for one local atom
+/// (a bound for exchange and restart buffers); 0 for a null store.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(or = 0, store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_most_packed_len(store: *const BondStore) -> usize {
+    store.most_packed_len()
+}
+
+/// Packs atom `i`'s bonds into `buf` (`capacity` doubles), writing the
+/// doubles used to `written`. With `leaving` non-zero (the atom migrates)
+/// the bonds leave this store; otherwise (a restart file) they stay.
+///
+/// # Safety
+/// Pointers must be null or valid; `buf` for `capacity` doubles.
+#[entry(store: reference_mut, written: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_pack(
+    store: *mut BondStore,
+    i: usize,
+    leaving: i32,
+    buf: *mut f64,
+    capacity: usize,
+    written: *mut usize,
+) -> Status {
+    let buf = slice_mut(buf, capacity, "buf")?;
+    *written = store.pack(i, leaving != 0, buf).ok_or_else(|| {
+        Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "buf: atom {i}'s bonds need {} doubles, capacity is {capacity}",
+                store.packed_len(i)
+            ),
+        )
+    })?;
+    Ok(())
+}
+
+/// Unpacks into atom `i` the bonds `granbond_bond_store_pack` wrote to
+/// `buf` (`len` doubles), writing the doubles read to `read`.
+///
+/// # Safety
+/// Pointers must be null or valid; `buf` for `len` doubles.
+#[entry(store: reference_mut, read: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_unpack(
+    store: *mut BondStore,
+    i: usize,
+    buf: *const f64,
+    len: usize,
+    read: *mut usize,
+) -> Status {
+    let buf = slice(buf, len, "buf")?;
+    *read = store
+        .unpack(i, buf)
+        .map_err(|e| Failure::new(Status::InvalidArgument, format!("buf: {e}")))?;
+    Ok(())
+}
+
+/// Finds every bond's atoms again after a neighbour-list build (see
+/// `crate::bond_store`'s link): owners among the local atoms, partners as
+/// their images closest to the owners. `kinds[ti * (ntypes + 1) + tj]` is
+/// the bond kind of a pair of types, negative where it has no bond model.
+/// Bonds whose atoms are not found are dropped and counted by cause in
+/// `report`.
+///
+/// # Safety
+/// Pointers must be null or valid; `kinds` for `(ntypes + 1)^2` ints, the
+/// arrays of `atoms` for `atoms->ids.count` atoms.
+#[entry(store: reference_mut, atoms: reference, report: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_link(
+    store: *mut BondStore,
+    atoms: *const StoreAtoms,
+    kinds: *const i32,
+    ntypes: usize,
+    report: *mut LinkReport,
+) -> Status {
+    let n = atoms.ids.count;
+    let nt1 = ntypes
+        .checked_add(1)
+        .and_then(|t| t.checked_mul(ntypes + 1))
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("ntypes {ntypes} is too large")))?;
+    let view = LinkAtoms {
+        ids: ids(&atoms.ids)?,
+        nlocal: atoms.nlocal,
+        x: slice(atoms.x, n.saturating_mul(3), "atoms->x")?,
+        types: slice(atoms.types, n, "atoms->types")?,
+        kinds: slice(kinds, nt1, "kinds")?,
+        ntypes,
+    };
+    *report = store
+        .link(&view)
+        .map_err(|e| Failure::new(Status::InvalidArgument, e.0))?;
+    Ok(())
+}
+
+/// Starts a pass: a force pass over `dt` (`advance` non-zero) or a setup
+/// pass. With `remember_breaks` non-zero, pairs whose bonds break are kept
+/// from bonding again at a later creation step.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(store: reference_mut, dt: time_step)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_begin_pass(
+    store: *mut BondStore,
+    dt: f64,
+    advance: i32,
+    remember_breaks: i32,
+) -> Status {
+    store.begin_pass(dt, advance != 0, remember_breaks != 0);
+    Ok(())
+}
+
+/// Steps the next chunk of the pass: up to `GRANBOND_BOND_STORE_CHUNK`
+/// bonds of one kind (`models[kind]`, null where a kind has no model), their
+/// atoms' local indices written to `ends` (2 ints a bond) and outputs to
+/// `outs`, the number to `count` (0: the pass has stepped every bond). A
+/// bond that breaks carries no load; `granbond_bond_store_broken` reports
+/// it. On failure nothing of the chunk is kept, and `failed_index` (if not
+/// null) gets the bond's place in the store.
+///
+/// # Safety
+/// Pointers must be null or valid: `models` for `nkinds` entries, `ends` for
+/// `2 * GRANBOND_BOND_STORE_CHUNK` ints, `outs` for
+/// `GRANBOND_BOND_STORE_CHUNK` outputs, the atoms' arrays as they say.
+#[allow(clippy::too_many_arguments)]
+#[entry(failed_index: FailedIndex::new, store: reference_mut, atoms: reference, ids: reference, count: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_step_next(
+    store: *mut BondStore,
+    models: *const *const BondModel,
+    nkinds: usize,
+    atoms: *const AtomArrayPointers,
+    ids: *const AtomIds,
+    ends: *mut i32,
+    outs: *mut BondOutput,
+    count: *mut usize,
+    failed_index: *mut usize,
+) -> Status {
+    *count = 0;
+    let models = slice(models, nkinds, "models")?;
+    let models: Vec<Option<&BondModel>> = models.iter().map(|&m| m.as_ref()).collect();
+    let arrays = atom_arrays(atoms)?;
+    let ids = self::ids(ids)?;
+    let ends = &mut *(slice_mut(ends, 2 * CHUNK, "ends")?.as_mut_ptr() as *mut [[i32; 2]; CHUNK]);
+    let outs = &mut *(slice_mut(outs, CHUNK, "outs")?.as_mut_ptr() as *mut [BondOutput; CHUNK]);
+    *count = store.step_next(&models, arrays, ids, ends, outs).map_err(|f| {
+        let [i, j] = f.ends;
+        let failure = match f.reason {
+            StepFailureReason::NotLinked => Failure::new(
+                Status::InvalidArgument,
+                "the store was not linked since atoms moved (granbond_bond_store_link)",
+            ),
+            StepFailureReason::NoModel(kind) => Failure::new(
+                Status::InvalidArgument,
+                format!("models: no model for bond kind {kind}"),
+            ),
+            StepFailureReason::IndexOutOfRange => {
+                Failure::new(Status::InvalidArgument, "an atom index beyond the atoms' arrays")
+            }
+            StepFailureReason::Kinematics(e) => e.into(),
+            StepFailureReason::NonFinite => refused("force, torque, stress or bond state"),
+        };
+        let failure = Failure {
+            message: format!("the bond of local atoms {i} and {j}: {}", failure.message),
+            ..failure
+        };
+        failed_index.fail("bond", f.bond, failure)
+    })?;
+    Ok(())
+}
+
+/// The number of bonds broken so far in the pass; 0 for a null store.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(or = 0, store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_broken_count(store: *const BondStore) -> usize {
+    store.broken().len()
+}
+
+/// Bond `k` of those broken so far in the pass, written to `bond`.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[entry(store: reference, bond: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_broken(
+    store: *const BondStore,
+    k: usize,
+    bond: *mut BrokenBond,
+) -> Status {
+    *bond = *store.broken().get(k).ok_or_else(|| {
+        Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "k: {k} beyond the {} bonds broken in the pass",
+                store.broken().len()
+            ),
+        )
+    })?;
+    Ok(())
+}
+
+/// Creates a bond of kind `kind` between local atom `owner` (id
+/// `owner_id`) and atom `partner` (local or ghost, id `partner_id`) if
+/// `model`'s creation rules allow it at `step` for the pair's kinematics
+/// (`i` the owner); `created` says whether it did. For pairs the engine
+/// knows unbonded and created on this rank (`granbond_bond_store_creates_here`).
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[allow(clippy::too_many_arguments)]
+#[entry(store: reference_mut, model: reference, kinematics: reference, created: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_try_create(
+    store: *mut BondStore,
+    model: *const BondModel,
+    kind: u16,
+    owner: usize,
+    partner: usize,
+    owner_id: i64,
+    partner_id: i64,
+    kinematics: *const PairKinematics,
+    step: i64,
+    created: *mut i32,
+) -> Status {
+    *created = 0;
+    *created = store.try_create(
+        model,
+        kind,
+        owner,
+        partner,
+        [owner_id, partner_id],
+        kinematics,
+        step,
+    )? as i32;
+    Ok(())
+}
+
+/// Ends the pass: the bonds broken in it leave the store.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_finish_pass(store: *mut BondStore) -> Status {
+    store.finish_pass();
+    Ok(())
+}
+
+/// Which atom of a pair found to bond owns the bond on this rank: 0 atom
+/// `i`, 1 atom `j`, -1 if another rank creates it. Local atoms own bonds,
+/// the smaller id where both are local; a pair listed on two ranks
+/// (`newton off`, one atom a ghost) is created where the smaller id is
+/// local.
+#[entry(or = -1)]
+#[no_mangle]
+pub extern "C" fn granbond_bond_store_creates_here(
+    i_local: i32,
+    j_local: i32,
+    id_i: i64,
+    id_j: i64,
+    listed_on_both: i32,
+) -> i32 {
+    match creates_here(i_local != 0, j_local != 0, id_i, id_j, listed_on_both != 0) {
+        Some(false) => 0,
+        Some(true) => 1,
+        None => -1,
+    }
+}
+
+/// The store's counts on this rank (created, broken by mode, lost by
+/// cause, intact), written to `counts`.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[entry(store: reference, counts: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_counts(
+    store: *const BondStore,
+    counts: *mut StoreCounts,
+) -> Status {
+    *counts = store.counts();
+    Ok(())
+}
+
+/// Restores counts read from a restart file (`intact` is ignored: the
+/// store holds its bonds).
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[entry(store: reference_mut, counts: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_restore_counts(
+    store: *mut BondStore,
+    counts: *const StoreCounts,
+) -> Status {
+    store.restore_counts(counts);
+    Ok(())
+}
+
+/// The bonds the store holds; 0 for a null store.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(or = 0, store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_len(store: *const BondStore) -> usize {
+    store.len()
+}
+
+/// The bytes the store holds on the heap; 0 for a null store.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(or = 0, store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_bytes(store: *const BondStore) -> usize {
+    store.bytes()
+}
+
+/// Bond `k` as of the latest link: its atoms' local indices (owner first)
+/// to `ends` (2 ints), the partner's id to `partner_id`, its state to
+/// `state` (`GRANBOND_BOND_STATE_LEN` doubles).
+///
+/// # Safety
+/// Pointers must be null or valid for those sizes.
+#[entry(store: reference, partner_id: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_bond(
+    store: *const BondStore,
+    k: usize,
+    ends: *mut i32,
+    partner_id: *mut i64,
+    state: *mut f64,
+) -> Status {
+    let ends = slice_mut(ends, 2, "ends")?;
+    let state = slice_mut(state, BOND_STATE_LEN, "state")?;
+    let (bond, e, _) = store.bond(k, |_| 0).ok_or_else(|| {
+        Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "k: {k} beyond the {} bonds held, or the store is not linked",
+                store.len()
+            ),
+        )
+    })?;
+    ends.copy_from_slice(&e);
+    *partner_id = bond.partner;
+    state.copy_from_slice(bond.state.as_slots());
+    Ok(())
+}
+
+/// Doubles one atom's view row takes on this rank (the count and the most
+/// partner ids one local atom owns); a forward communication sends rows of
+/// the largest width over all ranks. 0 for a null store.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(or = 0, store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_view_width(store: *const BondStore) -> usize {
+    store.view_width()
+}
+
+/// Packs local atom `i`'s view row (the count and the partner ids of the
+/// bonds it owns) into `row` (`width` doubles), for its ghost images.
+///
+/// # Safety
+/// Pointers must be null or valid; `row` for `width` doubles.
+#[entry(store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_pack_view(
+    store: *const BondStore,
+    i: usize,
+    row: *mut f64,
+    width: usize,
+) -> Status {
+    let row = slice_mut(row, width, "row")?;
+    store
+        .pack_view(i, row)
+        .map_err(|e| Failure::new(Status::InvalidArgument, format!("width: {}", e.0)))
+}
+
+/// Starts the view over, before the ghosts' rows are unpacked.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_clear_view(store: *mut BondStore) -> Status {
+    store.clear_view();
+    Ok(())
+}
+
+/// Unpacks ghost atom `g`'s view row (`width` doubles, as its owner rank
+/// packed it): its bonds to local atoms join the view. `ids` and `nlocal`
+/// are the rank's atoms as the latest link saw them.
+///
+/// # Safety
+/// Pointers must be null or valid; `row` for `width` doubles.
+#[entry(store: reference_mut, ids: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_unpack_view(
+    store: *mut BondStore,
+    g: usize,
+    row: *const f64,
+    width: usize,
+    ids: *const AtomIds,
+    nlocal: usize,
+) -> Status {
+    let row = slice(row, width, "row")?;
+    let ids = self::ids(ids)?;
+    store
+        .unpack_view(g, row, ids, nlocal)
+        .map_err(|e| Failure::new(Status::InvalidArgument, format!("row: {}", e.0)))
+}
+
+/// Ends the view after the ghosts' rows: it can be asked now.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_finish_view(store: *mut BondStore) -> Status {
+    store.finish_view();
+    Ok(())
+}
+
+/// Whether local atom `i` and atom `j` (local or ghost) are bonded as far
+/// as this rank knows (its own bonds and the view): 1 or 0; 0 for null
+/// arguments.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[entry(or = 0, store: reference, ids: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_bonded(
+    store: *const BondStore,
+    i: usize,
+    j: usize,
+    ids: *const AtomIds,
+) -> i32 {
+    match self::ids(ids) {
+        Ok(ids) => store.bonded(i, j, ids) as i32,
+        Err(_) => 0,
+    }
+}
+
+/// For a rank that lists a pair another rank bonds (`newton off`): whether
+/// that rank creates the bond between local atom `local` and ghost atom
+/// `ghost` in this pass, by `model`'s creation rules for `kinematics`
+/// (`i` the local atom) at `step`, and unless the pair's bond broke in this
+/// pass. Written to `creates` (1 or 0).
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[entry(store: reference, model: reference, kinematics: reference, creates: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_would_create(
+    store: *const BondStore,
+    model: *const BondModel,
+    local: usize,
+    ghost: usize,
+    kinematics: *const PairKinematics,
+    step: i64,
+    creates: *mut i32,
+) -> Status {
+    *creates = 0;
+    *creates = store.would_create(model, local, ghost, kinematics, step)? as i32;
+    Ok(())
+}
