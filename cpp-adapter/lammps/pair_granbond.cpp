@@ -872,58 +872,6 @@ void PairGranbond::countVanished(long long intact)
                                               "when the atom count changes)"));
 }
 
-// ------------------------------------------------------------ restart
-
-// Written ahead of the coefficients: a restart without it, or with another
-// state layout, carries per-pair histories this build would misread.
-static const int kRestartMagic = 0x67626e64;   // "gbnd"
-
-void PairGranbond::write_restart(FILE *fp)
-{
-    const int head[2] = {kRestartMagic, static_cast<int>(GRANBOND_STATE_LAYOUT_VERSION)};
-    fwrite(head, sizeof(int), 2, fp);
-    const int n = atom->ntypes;
-    for (int i = 1; i <= n; i++)
-        for (int j = i; j <= n; j++) {
-            fwrite(&setflag[i][j], sizeof(int), 1, fp);
-            if (setflag[i][j]) fwrite(&pairs_[at(i, j)], sizeof(TypePair), 1, fp);
-        }
-}
-
-void PairGranbond::read_restart(FILE *fp)
-{
-    allocate();
-    const int n = atom->ntypes;
-    const int me = comm->me;
-    int head[2] = {0, 0};
-    if (me == 0) utils::sfread(FLERR, head, sizeof(int), 2, fp, nullptr, error);
-    MPI_Bcast(head, 2, MPI_INT, 0, world);
-    if (head[0] != kRestartMagic)
-        error->all(FLERR, "pair_style granbond: this restart file was written by a granbond whose bond and "
-                          "contact state has an older layout (no state layout version); its per-pair histories "
-                          "cannot be read. Rerun "
-                          "the original deck with this granbond to write a new restart file");
-    if (head[1] != static_cast<int>(GRANBOND_STATE_LAYOUT_VERSION))
-        error->all(FLERR, "pair_style granbond: this restart file has state layout version " +
-                              std::to_string(head[1]) + ", this granbond uses version " +
-                              std::to_string(GRANBOND_STATE_LAYOUT_VERSION) +
-                              "; its per-pair histories cannot be read. Rerun the original deck with this "
-                              "granbond to write a new restart file");
-    for (int i = 1; i <= n; i++)
-        for (int j = i; j <= n; j++) {
-            if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-            MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-            if (!setflag[i][j]) continue;
-            TypePair tp;
-            if (me == 0) utils::sfread(FLERR, &tp, sizeof(TypePair), 1, fp, nullptr, error);
-            MPI_Bcast(&tp, sizeof(TypePair), MPI_BYTE, 0, world);
-            pairs_[at(i, j)] = tp;
-            pairs_[at(j, i)] = tp;
-            setflag[j][i] = 1;
-            buildModel(i, j);
-        }
-}
-
 double PairGranbond::memory_usage()
 {
     double bytes = Pair::memory_usage() + static_cast<double>(pairs_.size() * sizeof(TypePair));

@@ -53,9 +53,16 @@ fn model() -> BondModel {
 
 fn main() {
     let sizes: Vec<usize> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
-    let sizes = if sizes.is_empty() { vec![22, 47, 100, 145] } else { sizes };
+    let sizes = if sizes.is_empty() {
+        vec![22, 47, 100, 145]
+    } else {
+        sizes
+    };
     let model = model();
-    println!("{:>10} {:>10} {:>12} {:>12} {:>12} {:>14}", "atoms", "bonds", "store B/bond", "RSS B/bond", "link ns/bond", "pass ns/bond-step");
+    println!(
+        "{:>10} {:>10} {:>12} {:>12} {:>12} {:>14}",
+        "atoms", "bonds", "store B/bond", "RSS B/bond", "link ns/bond", "pass ns/bond-step"
+    );
     for n in sizes {
         let atoms = n * n * n;
         let mut x = Vec::with_capacity(3 * atoms);

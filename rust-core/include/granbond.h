@@ -1985,6 +1985,27 @@ enum GbStatus granbond_voigt_params_set(struct GbVoigtParams *params,
                                         double value);
 
 /**
+ * The value of parameter `id` of the bond table in `params` (switches 1 or
+ * 0, steps as exact doubles), written to `value`: with the table's
+ * keywords, what an engine writes to a restart file by name.
+ *
+ * # Safety
+ * `params` must be null or point to a `GbBondParams`; `value` null or
+ * valid for writes.
+ */
+enum GbStatus granbond_bond_params_get(const struct GbBondParams *params, size_t id, double *value);
+
+/**
+ * `granbond_bond_params_get` for the Voigt contact.
+ *
+ * # Safety
+ * As `granbond_bond_params_get`, with a `GbVoigtParams`.
+ */
+enum GbStatus granbond_voigt_params_get(const struct GbVoigtParams *params,
+                                        size_t id,
+                                        double *value);
+
+/**
  * Whether a bond model with the switches of `params` reads parameter `id`
  * (1) or ignores it (0): engines that ask the deck for every value ask only
  * for these.

@@ -263,6 +263,56 @@ def check_restart(a, workdir):
     if not any(r[7] != 0.0 for r in want):
         raise Failure("no bond force in the second half: the deck does not test the history")
     same_rows("continuous vs restarted (steps 301..600)", want, got, skip_step0=False)
+    # the settings travel by name: a file that sets a keyword this granbond
+    # does not know, or leaves one out, is refused naming it
+    failures = []
+    original = file_bytes(os.path.join(part, "half.restart"))
+    for label, doctored, name in doctored_restarts(original):
+        d = os.path.join(workdir, label)
+        os.makedirs(d, exist_ok=True)
+        with open(os.path.join(d, "doctored.restart"), "wb") as f:
+            f.write(doctored)
+        rc, text = run_deck([a.engine], "restart_continue.in", d,
+                            dict(WIGGLE, nrun=10, out="second.txt", restart="doctored.restart"))
+        judge_refusal(label, rc, text, name, failures, command="restart file")
+    if failures:
+        raise Failure("; ".join(failures))
+
+
+def doctored_restarts(original):
+    """The restart file with its first type pair's bond table changed: a
+    keyword renamed, and the table's last row removed (what a file of a
+    granbond with another parameter table looks like); and with the head of
+    a file whose settings are raw bytes. Yields (label, bytes, what the
+    refusal must name)."""
+    import struct
+    at = original.find(struct.pack("<i", 0x67626E32))
+    if at < 0:
+        raise Failure("the restart file holds no granbond settings by name")
+    pos = at + 8 + 4 + 8  # magic and layout version, setflag, the two flags
+    tables = []
+    for _ in range(2):  # voigt, then bond/nonlinear
+        (count,) = struct.unpack_from("<i", original, pos)
+        start, pos = pos, pos + 4
+        rows = []
+        for _ in range(count):
+            (length,) = struct.unpack_from("<i", original, pos)
+            name = original[pos + 4:pos + 4 + length].decode()
+            rows.append((pos, name))
+            pos += 4 + length + 8
+        tables.append((start, rows, pos))
+    start, rows, end = tables[1]
+    first_at, first = rows[0]
+    renamed = first[:-1] + ("X" if first[-1] != "X" else "Y")
+    yield ("restart_unknown_keyword",
+           original[:first_at + 4] + renamed.encode() + original[first_at + 4 + len(first):], renamed)
+    # the head of a file that holds each type pair's settings as raw bytes
+    raw = struct.pack("<i", 0x67626E64)
+    yield ("restart_raw_settings", original[:at] + raw + original[at + 4:], "raw bytes")
+    last_at, last = rows[-1]
+    count = struct.pack("<i", len(rows) - 1)
+    yield ("restart_missing_keyword",
+           original[:start] + count + original[start + 4:last_at] + original[end:], last)
 
 
 def check_clear(a, workdir):

@@ -171,6 +171,39 @@ pub unsafe extern "C" fn granbond_voigt_params_set(
     set("voigt", VOIGT_PARAMETERS, params, name, value)
 }
 
+/// The value of parameter `id` of the bond table in `params` (switches 1 or
+/// 0, steps as exact doubles), written to `value`: with the table's
+/// keywords, what an engine writes to a restart file by name.
+///
+/// # Safety
+/// `params` must be null or point to a `GbBondParams`; `value` null or
+/// valid for writes.
+#[entry(params: reference, value: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_params_get(
+    params: *const BondParams,
+    id: usize,
+    value: *mut f64,
+) -> Status {
+    *value = (row_at(PARAMETERS, id)?.get)(params);
+    Ok(())
+}
+
+/// `granbond_bond_params_get` for the Voigt contact.
+///
+/// # Safety
+/// As `granbond_bond_params_get`, with a `GbVoigtParams`.
+#[entry(params: reference, value: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_params_get(
+    params: *const VoigtParams,
+    id: usize,
+    value: *mut f64,
+) -> Status {
+    *value = (row_at(VOIGT_PARAMETERS, id)?.get)(params);
+    Ok(())
+}
+
 /// Whether a bond model with the switches of `params` reads parameter `id`
 /// (1) or ignores it (0): engines that ask the deck for every value ask only
 /// for these.

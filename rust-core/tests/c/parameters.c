@@ -129,6 +129,21 @@ int test_parameter_tables(void)
            "set k_fn1 = -1");
     EXPECT_MESSAGE("k_fn1 (stiffnessPerUnitAreaK_fn1) must be finite and >= 0; got -1");
     CHECK(granbond_last_error_parameter() == 1, "the refused row's id");
+    {
+        /* what is set by name reads back by row, as restart files hold it */
+        double back = 0.0;
+        EXPECT_OK(granbond_bond_params_set(&p, "k_fn1", 2.5e9), "set k_fn1 = 2.5e9");
+        EXPECT_OK(granbond_bond_params_get(&p, 1, &back), "granbond_bond_params_get(k_fn1)");
+        CHECK(back == 2.5e9, "k_fn1 reads back");
+        EXPECT(granbond_bond_params_get(&p, N_BOND_FIELDS, &back), GB_STATUS_INVALID_ARGUMENT, "get(count)");
+        {
+            GbVoigtParams v;
+            granbond_voigt_params_default(&v);
+            EXPECT_OK(granbond_voigt_params_get(&v, 0, &back), "granbond_voigt_params_get(row 0)");
+            EXPECT(granbond_voigt_params_get(&v, N_VOIGT_FIELDS, &back), GB_STATUS_INVALID_ARGUMENT,
+                   "voigt get(count)");
+        }
+    }
     EXPECT(granbond_bond_params_set(&p, "damping", 0.5), GB_STATUS_INVALID_PARAMETER, "set damping = 0.5");
     EXPECT(granbond_bond_params_set(&p, "create_step", 2.5), GB_STATUS_INVALID_PARAMETER, "set create_step = 2.5");
     {

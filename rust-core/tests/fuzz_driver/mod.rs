@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 92] = [
+pub const ENTRY_POINTS: [&str; 94] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -106,6 +106,8 @@ pub const ENTRY_POINTS: [&str; 92] = [
     "granbond_bond_parameter_info",
     "granbond_voigt_parameter_info",
     "granbond_bond_params_set",
+    "granbond_bond_params_get",
+    "granbond_voigt_params_get",
     "granbond_voigt_params_set",
     "granbond_bond_parameter_needed",
     "granbond_voigt_parameter_needed",
@@ -162,6 +164,8 @@ struct TableEntries<T: 'static> {
     table: &'static [granbond::parameters::ParameterInfo<T>],
     set_name: &'static str,
     set: unsafe extern "C" fn(*mut T, *const c_char, f64) -> Status,
+    get_name: &'static str,
+    get: unsafe extern "C" fn(*const T, usize, *mut f64) -> Status,
     needed_name: &'static str,
     needed: unsafe extern "C" fn(*const T, usize, *mut i32) -> Status,
 }
@@ -171,6 +175,8 @@ const BOND_TABLE: TableEntries<BondParams> = TableEntries {
     table: PARAMETERS,
     set_name: "granbond_bond_params_set",
     set: fp::granbond_bond_params_set,
+    get_name: "granbond_bond_params_get",
+    get: fp::granbond_bond_params_get,
     needed_name: "granbond_bond_parameter_needed",
     needed: fp::granbond_bond_parameter_needed,
 };
@@ -180,6 +186,8 @@ const VOIGT_TABLE: TableEntries<VoigtParams> = TableEntries {
     table: VOIGT_PARAMETERS,
     set_name: "granbond_voigt_params_set",
     set: fp::granbond_voigt_params_set,
+    get_name: "granbond_voigt_params_get",
+    get: fp::granbond_voigt_params_get,
     needed_name: "granbond_voigt_parameter_needed",
     needed: fp::granbond_voigt_parameter_needed,
 };
@@ -1153,6 +1161,13 @@ impl<'t> Session<'t> {
                 "{} stored a value out of range: {ranges:?}",
                 t.set_name
             );
+        }
+        // row `id` read back (the pointers of the need's call)
+        let mut value_back = Place::new(f64::NAN);
+        // SAFETY: as above.
+        let status = unsafe { (t.get)(p.ptr(hd), id, value_back.ptr(hn)) };
+        if self.answer(t.get_name, status) {
+            assert!(id < t.table.len(), "{}: row {id} answered", t.get_name);
         }
         // SAFETY: as above.
         let status = unsafe { (t.needed)(p.ptr(hd), id, needed.ptr(hn)) };
