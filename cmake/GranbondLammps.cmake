@@ -39,7 +39,8 @@ message(STATUS "granbond: LAMMPS headers from Debian source ${GRANBOND_LAMMPS_DE
 
 set(LAMMPS_ADAPTER_DIR "${PROJECT_SOURCE_DIR}/cpp-adapter/lammps")
 set(GRANBOND_LAMMPS_SOURCES ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp ${LAMMPS_ADAPTER_DIR}/pair_coeff.cpp
-    ${LAMMPS_ADAPTER_DIR}/bond_watch.cpp ${LAMMPS_ADAPTER_DIR}/pair_restart.cpp ${LAMMPS_ADAPTER_DIR}/plugin.cpp)
+    ${LAMMPS_ADAPTER_DIR}/bond_watch.cpp ${LAMMPS_ADAPTER_DIR}/pair_restart.cpp ${LAMMPS_ADAPTER_DIR}/bond_store_fix.cpp
+    ${LAMMPS_ADAPTER_DIR}/plugin.cpp)
 add_library(granbond_lammps SHARED ${GRANBOND_LAMMPS_SOURCES})
 # the installed headers first, the source package's for what they lack
 target_include_directories(granbond_lammps PRIVATE "${LAMMPS_ADAPTER_DIR}" "${PROJECT_SOURCE_DIR}/cpp-adapter/common")
@@ -164,6 +165,10 @@ function(granbond_lammps_api target include_dir)
   file(READ "${include_dir}/neighbor.h" _neighbor)
   if(_pair MATCHES "transfer_history\\(double \\*, double \\*, int, int\\)")
     target_compile_definitions(${target} PRIVATE GRANBOND_LAMMPS_TRANSFER_HISTORY_IJ=1)
+  endif()
+  file(READ "${include_dir}/comm.h" _comm)
+  if(_comm MATCHES "forward_comm\\(class Fix \\*")
+    target_compile_definitions(${target} PRIVATE GRANBOND_LAMMPS_COMM_FIX_OVERLOAD=1)
   endif()
   if(_neighbor MATCHES "add_request\\(class Pair \\*")
     target_compile_definitions(${target} PRIVATE GRANBOND_LAMMPS_ADD_REQUEST=1)

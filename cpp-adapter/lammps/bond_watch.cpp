@@ -26,29 +26,6 @@ using namespace LAMMPS_NS;
 namespace granbond {
 namespace lammps {
 
-bool PairGranbond::indexCurrent() const
-{
-    return passStep_ == update->ntimestep && passAtoms_ == static_cast<bigint>(atom->nlocal) + atom->nghost;
-}
-
-// The bonds of `b` that broke in this force pass's latest sweep, each on
-// the rank that counts it.
-void PairGranbond::logBreaks(const BondIndex &b)
-{
-    for (size_t m = 0; m < b.broken.size(); m++) {
-        const size_t k = b.broken[m];
-        const GbBondOutput &out = b.brokenOut[m];
-        if (out.break_mode == GB_BREAK_MODE_NONE || !b.counted[k]) continue;
-        const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
-        BreakEvent e;
-        if (makeBreakEvent(b.model, out, atom->x[i], atom->x[j], atom->radius[i], atom->radius[j],
-                           static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
-                           static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
-            failPair(i, j, "the break log's event");
-        breaks_.push_back(e);
-    }
-}
-
 namespace {
 
 // The pair granbond of this run, or an error naming `who`.
@@ -62,20 +39,33 @@ PairGranbond *pairOf(LAMMPS *lmp, const char *who)
 
 // Every intact bond of the latest pass: f(index, k) for bond k of each
 // index; an error naming `who` if the latest pass is not of this step.
+// Calls f(i, j, kind, k, state) for each bond of this rank after the
+// latest pass: its owner i (local), its partner j (local or ghost), its
+// kind (the type pair's model) and place k in the store, its state.
 template<class F>
 void forEachBond(LAMMPS *lmp, PairGranbond *pair, const char *who, F f)
 {
-    if (!pair->indexCurrent())
+    if (!pair->storeCurrent())
         lmp->error->all(FLERR, std::string(who) + ": pair granbond has no force pass at step " +
                                    std::to_string(static_cast<long long>(lmp->update->ntimestep)) +
                                    " for the present atoms (use it in a run's output, not between runs)");
-    for (const BondIndex &b : pair->bondIndex())
-        for (size_t k = 0; k < b.size(); k++) f(b, k);
+    GbBondStore *store = pair->bondStore();
+    if (!store) return;
+    const size_t n = granbond_bond_store_len(store);
+    const int ntypes1 = lmp->atom->ntypes + 1;
+    const int *type = lmp->atom->type;
+    double state[GRANBOND_BOND_STATE_LEN];
+    for (size_t k = 0; k < n; k++) {
+        int32_t ends[2];
+        int64_t partner = 0;
+        if (granbond_bond_store_bond(store, k, ends, &partner, state) != GB_STATUS_OK)
+            lmp->error->one(FLERR, std::string(who) + ": " + coreReason());
+        const int i = ends[0], j = ends[1];
+        const size_t kind = static_cast<size_t>(std::min(type[i], type[j])) * ntypes1 + std::max(type[i], type[j]);
+        f(i, j, kind, k, state);
+    }
 }
 
-// ------------------------------------------------------------ per atom
-// compute ID group granbond/atom: the number of intact bonds of each atom
-// of the group (0 for the others), the analogue of BPM's nbond/atom.
 class ComputeGranbondAtom : public Compute {
 public:
     ComputeGranbondAtom(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg), nmax_(0), count_(nullptr)
@@ -87,14 +77,7 @@ public:
     }
     ~ComputeGranbondAtom() override { memory->destroy(count_); }
 
-    void init() override
-    {
-        pairOf(lmp, "compute granbond/atom");
-        // a pair straddling two ranks is on both ranks' lists only with
-        // newton off, and so is its count on each side
-        if (force->newton_pair)
-            error->all(FLERR, "compute granbond/atom needs newton_pair off (newton off), as pair granbond");
-    }
+    void init() override { pairOf(lmp, "compute granbond/atom"); }
 
     void compute_peratom() override
     {
@@ -106,14 +89,15 @@ public:
             vector_atom = count_;
         }
         const int nlocal = atom->nlocal;
-        for (int i = 0; i < nlocal; i++) count_[i] = 0.0;
-        forEachBond(lmp, pairOf(lmp, "compute granbond/atom"), "compute granbond/atom",
-                    [&](const BondIndex &b, size_t k) {
-                        for (int side = 0; side < 2; side++) {
-                            const int a = b.pairs[2 * k + side];
-                            if (a < nlocal) count_[a] += 1.0;
-                        }
-                    });
+        PairGranbond *pair = pairOf(lmp, "compute granbond/atom");
+        forEachBond(lmp, pair, "compute granbond/atom", [](int, int, size_t, size_t, const double *) {});
+        // the bonds of this rank's atoms, wherever they are stored
+        std::vector<uint32_t> counts(static_cast<size_t>(nlocal), 0);
+        GbBondStore *store = pair->bondStore();
+        const GbAtomIds ids = pair->atomIds();
+        if (store && granbond_bond_store_count_atoms(store, counts.data(), counts.size(), &ids) != GB_STATUS_OK)
+            error->one(FLERR, std::string("compute granbond/atom: ") + coreReason());
+        for (int i = 0; i < nlocal; i++) count_[i] = counts[i];
         const int *mask = atom->mask;
         for (int i = 0; i < nlocal; i++)
             if (!(mask[i] & groupbit)) count_[i] = 0.0;
@@ -140,9 +124,14 @@ public:
         size_local_rows = 0;
         size_local_cols = columns_.size() == 1 ? 0 : static_cast<int>(columns_.size());
     }
-    ~ComputeGranbondLocal() override { std::free(data_); std::free(pointers_); }
+    ~ComputeGranbondLocal() override
+    {
+        listen(nullptr);
+        std::free(data_);
+        std::free(pointers_);
+    }
 
-    void init() override { pairOf(lmp, "compute granbond/local"); }
+    void init() override { listen(pairOf(lmp, "compute granbond/local")); }
 
     void compute_local() override
     {
@@ -152,17 +141,23 @@ public:
         const size_t ncols = columns_.size();
         std::vector<double> &rows = buffer_;
         rows.clear();
-        std::vector<double> row(ncols), record;
-        forEachBond(lmp, pair, "compute granbond/local", [&](const BondIndex &b, size_t k) {
-            const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
-            if (!b.counted[k] || !(mask[i] & groupbit) || !(mask[j] & groupbit)) return;
-            GbStatus whole = GB_STATUS_OK;
-            const double *r = b.wholeRecord(k, pair->recordLayout(), record, whole);
-            if (whole != GB_STATUS_OK ||
-                columns_.row(b.model, 1, r, static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
-                             atom->x[i], atom->x[j], row.data()) != GB_STATUS_OK)
-                error->one(FLERR, "compute granbond/local: atoms " + std::to_string(static_cast<long long>(atom->tag[i])) +
-                                      " and " + std::to_string(static_cast<long long>(atom->tag[j])) + ": " +
+        std::vector<double> row(ncols);
+        double record[GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN];
+        const std::vector<GbBondOutput> &outs = pair->bondOutputs();
+        forEachBond(lmp, pair, "compute granbond/local", [&](int i, int j, size_t kind, size_t k, const double *state) {
+            if (!(mask[i] & groupbit) || !(mask[j] & groupbit)) return;
+            // the record the core's fields read: the state, then the loads
+            // of the latest force pass
+            std::copy(state, state + GRANBOND_BOND_STATE_LEN, record);
+            GbBondOutput none;
+            std::memset(&none, 0, sizeof none);
+            const GbBondOutput &o = k < outs.size() ? outs[k] : none;
+            const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = lo == i ? j : i;
+            if (granbond_bond_output_store(&o, record + GRANBOND_BOND_STATE_LEN) != GB_STATUS_OK ||
+                columns_.row(pair->bondModel(kind), 0, record, static_cast<double>(atom->tag[i]),
+                             static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j], row.data()) != GB_STATUS_OK)
+                error->one(FLERR, "compute granbond/local: atoms " + std::to_string(static_cast<long long>(atom->tag[lo])) +
+                                      " and " + std::to_string(static_cast<long long>(atom->tag[hi])) + ": " +
                                       coreReason());
             rows.insert(rows.end(), row.begin(), row.end());
         });
@@ -183,6 +178,18 @@ public:
     double memory_usage() override { return static_cast<double>(buffer_.capacity()) * 2 * sizeof(double); }
 
 private:
+    // Follows `pair` from now on (null: none); the pair keeps its bonds'
+    // outputs only while a compute follows it.
+    void listen(PairGranbond *pair)
+    {
+        PairGranbond *current = force ? dynamic_cast<PairGranbond *>(force->pair_match("granbond", 1)) : nullptr;
+        if (pair_ && pair_ == current) pair_->bondOutputUsers--;
+        pair_ = pair;
+        if (pair_) pair_->bondOutputUsers++;
+    }
+
+    PairGranbond *pair_ = nullptr;
+
     BondColumns columns_;
     std::vector<double> buffer_;
     int rows_;

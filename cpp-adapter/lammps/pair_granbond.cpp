@@ -1,7 +1,6 @@
 #include "pair_granbond.h"
 #include "core_message.h"
-#include "fix_granbond_atoms.h"
-#include "history_prefetch.h"
+#include "bond_store_fix.h"
 #include "vector_adds.h"
 
 #include "atom.h"
@@ -24,6 +23,8 @@
 //   GRANBOND_LAMMPS_ADD_REQUEST          neighbor->add_request(pair, flags)
 //                                        (else request() + NeighRequest fields)
 //   GRANBOND_LAMMPS_TRANSFER_HISTORY_IJ  Pair::transfer_history(src, dst, i, j)
+//   GRANBOND_LAMMPS_COMM_FIX_OVERLOAD    comm->forward_comm(fix, size) (else
+//                                        forward_comm_fix; bond_store_fix.cpp)
 #ifndef GRANBOND_LAMMPS_ADD_REQUEST
 #include "neigh_request.h"
 #endif
@@ -53,51 +54,37 @@ void copy3(double *to, const double *from)
     to[2] = from[2];
 }
 
-// fix neigh/history, which first has the bonds' rows written back to their
-// records (bond_index.h): its pre_exchange gathers the records before atoms
-// migrate, lists are rebuilt and restart files are written, and at a run's
-// end (post_run).
-class FixGranbondHistory : public FixNeighHistory {
-public:
-    FixGranbondHistory(LAMMPS *lmp, int narg, char **arg) : FixNeighHistory(lmp, narg, arg) {}
-    void pre_exchange() override
-    {
-        if (owner) owner->writeBackBonds();
-        FixNeighHistory::pre_exchange();
-    }
-    PairGranbond *owner = nullptr;
-};
-
-Fix *createHistoryFix(LAMMPS *lmp, int narg, char **arg) { return new FixGranbondHistory(lmp, narg, arg); }
+// The contact history's flag of a pair: 0 apart (its history all zero), 1
+// touching, kBondedMark bonded. The last is a cache of the bond store,
+// marked again from it after every list build and wherever a bond breaks
+// or forms (fix neigh/history keeps only whether a flag is set).
+const int kBondedMark = 2;
 
 }
 
+
 PairGranbond::PairGranbond(LAMMPS *lmp) :
     Pair(lmp),
-    checkIndex_(std::getenv("GRANBOND_CHECK_INDEX") != nullptr),
+    checkStore_(std::getenv("GRANBOND_CHECK_STORE") != nullptr),
     sizeHistory_(0),
     anyBond_(false),
     fixHistory_(nullptr),
-    atoms_(nullptr),
+    bonds_(nullptr),
     checkedNatoms_(-1),
-    firstStep_(-1),
-    created_(0),
-    broken_(0),
-    brokenBy_{0, 0, 0, 0},
-    vanished_(0),
-    lossCheck_(false)
+    firstStep_(-1)
 {
     single_enable = 0;
     no_virial_fdotr_compute = 1;
     centroidstressflag = CENTROID_NOTAVAIL;
     restartinfo = 1;
-    // history is kept beyond contact (bonds) and transferred by us
+    // history is kept for pairs apart too (bonded pairs, pairs that may
+    // bond) and transferred by us, with the core's swap rules
     beyond_contact = 1;
     nondefault_history_transfer = 1;
     // `compute ID all pair granbond` (summed over ranks by the compute):
     // bonds created and broken since the first run, intact after the latest
     // pass, broken by mode (distance, tension, compression, shear), and
-    // vanished without breaking (docs/reference/pair_granbond.md)
+    // lost without breaking (docs/reference/pair_granbond.md)
     nextra = 8;
     pvector = new double[nextra]();
 
@@ -106,7 +93,6 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
         error->all(FLERR, std::string("pair granbond: the adapter was built against another granbond.h "
                                       "than the core it links: ") +
                               coreReason());
-    granbond_record_layout(1, &layout_);
 
     // one history fix per LAMMPS instance: a second granbond (pair_style
     // hybrid granbond granbond) would take over the first one's
@@ -118,6 +104,9 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     modify->add_fix(std::string(kFixDummy) + " all DUMMY");
 }
 
+// The bonds stay with their atoms in fix granbond/bonds when the style goes
+// (another pair_style, or the end): a later pair_style granbond takes them
+// up again.
 PairGranbond::~PairGranbond()
 {
     delete[] pvector;
@@ -139,7 +128,6 @@ size_t PairGranbond::at(int i, int j) const
 
 void PairGranbond::freeModels()
 {
-    index_.clear();   // keyed by model
     for (GbVoigtModel *m : voigt_) granbond_voigt_model_free(m);
     for (GbBondModel *m : bond_) granbond_bond_model_free(m);
     std::fill(voigt_.begin(), voigt_.end(), nullptr);
@@ -159,8 +147,6 @@ void PairGranbond::allocate()
     voigt_.assign(m, nullptr);
     bond_.assign(m, nullptr);
     createsNow_.assign(m, 0);
-    index_.assign(m, BondIndex());
-    formed_.assign(m, 0);
 }
 
 // ------------------------------------------------------------ init
@@ -174,27 +160,29 @@ void PairGranbond::init_style()
 
     const int n = atom->ntypes;
     anyBond_ = false;
+    // the bond kind of each pair of types: the index of its model
+    kinds_.assign(static_cast<size_t>(n + 1) * (n + 1), -1);
     for (int i = 1; i <= n; i++)
-        for (int j = i; j <= n; j++)
-            if (setflag[i][j] && pairs_[at(i, j)].hasBond) anyBond_ = true;
+        for (int j = 1; j <= n; j++) {
+            const size_t k = at(std::min(i, j), std::max(i, j));
+            if (setflag[std::min(i, j)][std::max(i, j)] && pairs_[k].hasBond) {
+                anyBond_ = true;
+                kinds_[at(i, j)] = static_cast<int32_t>(k);
+            }
+        }
 
-    // history: the core's pair record (contact, bond, the bond's loads) if
-    // any type pair bonds, else the contact's state alone, with the core's
-    // swap rule of each slot (transfer_history)
-    const GbStateKind kind = anyBond_ ? GB_STATE_KIND_PAIR_RECORD : GB_STATE_KIND_CONTACT;
-    const int size = static_cast<int>(granbond_state_len(kind));
+    // history: the contact's state, with the core's swap rule of each slot
+    // (transfer_history); the bonds live in fix granbond/bonds
+    const int size = static_cast<int>(granbond_state_len(GB_STATE_KIND_CONTACT));
     transferSign_.assign(size, 1.0);
     for (int k = 0; k < size; k++) {
         int32_t flips = 0;
         const char *name = nullptr;
-        if (granbond_state_slot(kind, k, &name, &flips) != GB_STATUS_OK)
+        if (granbond_state_slot(GB_STATE_KIND_CONTACT, k, &name, &flips) != GB_STATUS_OK)
             error->all(FLERR, std::string("pair_style granbond: ") + coreReason());
         transferSign_[k] = flips ? -1.0 : 1.0;
     }
 
-    // A half list cut by init_one()'s distances, not the size-based list of
-    // pair granular: that one ignores the pair cutoff, so stretched bonds
-    // would drop out of it.
 #ifdef GRANBOND_LAMMPS_ADD_REQUEST
     neighbor->add_request(this, NeighConst::REQ_HISTORY);
 #else
@@ -202,59 +190,39 @@ void PairGranbond::init_style()
     neighbor->requests[irequest]->history = 1;
 #endif
 
-    if (fixHistory_ && sizeHistory_ != size)
-        error->all(FLERR, "pair granbond: pair_coeff changed whether bonds exist after a run; "
-                          "use a new pair_style granbond command");
     if (!fixHistory_) {
         sizeHistory_ = size;
-        // made by our class under the stock style's name: restart files bring
-        // a fix's per-atom values back by its ID and style; no suffix
-        // (`-sf omp` would make the stock fix's threaded variant instead)
-        auto &styles = *modify->fix_map;
-        const auto stock = styles["NEIGH_HISTORY"];
-        styles["NEIGH_HISTORY"] = &createHistoryFix;
         Fix *made = modify->replace_fix(kFixDummy, std::string(kFix) + " all NEIGH_HISTORY " + std::to_string(size), 0);
-        styles["NEIGH_HISTORY"] = stock;
         fixHistory_ = static_cast<FixNeighHistory *>(made);
         fixHistory_->pair = this;
     }
-    const int ifix = modify->find_fix(kFix);
-    FixGranbondHistory *history = ifix < 0 ? nullptr : dynamic_cast<FixGranbondHistory *>(modify->fix[ifix]);
-    if (!history) error->all(FLERR, "pair granbond: its fix neigh/history was deleted or replaced");
-    history->owner = this;
-    fixHistory_ = history;
+    if (modify->find_fix(kFix) < 0) error->all(FLERR, "pair granbond: its fix neigh/history was deleted or replaced");
 
     // per-type radii (for the cutoffs) and masses, all ranks
     bodies_ = gatherTypeBodies(n, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
     if (firstStep_ < 0) firstStep_ = update->ntimestep;
-    if (checkIndex_ && anyBond_ && comm->me == 0)
-        utils::logmesg(lmp, "pair granbond: checking the index of bonds after every pass (GRANBOND_CHECK_INDEX)\n");
-    if (anyBond_) checkRenumbering();
-    runChecks(bodies_, true);
-}
-
-namespace {
-
-LAMMPS_NS::Fix *createAtomsFix(LAMMPS *lmp, int narg, char **arg) { return new FixGranbondAtoms(lmp, narg, arg); }
-
-}
-
-// Ends the run if atoms were renumbered since the previous run while bonds
-// may exist (countRenumbered). Creates the per-atom record of which atoms
-// were seen (fix_granbond_atoms.h) on the first bonded run, or takes the
-// one a restart file brought back.
-void PairGranbond::checkRenumbering()
-{
-    int ifix = modify->find_fix(atomsFixId());
-    if (ifix < 0) {
-        (*modify->fix_map)[atomsFixStyle()] = &createAtomsFix;
-        modify->add_fix(std::string(atomsFixId()) + " all " + atomsFixStyle());
-        ifix = modify->find_fix(atomsFixId());
+    // a restart file's bonds come back with their fix; a run without bonds
+    // makes none
+    if (anyBond_ || modify->find_fix(bondsFixId()) >= 0) bonds_ = bondsFix(lmp);
+    // ids changed since the bonds were made (reset_atom_ids, delete_atoms
+    // with compress yes) would hand them to other atoms
+    if (bonds_ && bondsExist()) {
+        long long mine = 0, all = 0;
+        for (int i = 0; i < atom->nlocal; i++) {
+            const int64_t seen = granbond_bond_store_seen(bonds_->store(), static_cast<size_t>(i));
+            if (seen != 0 && seen != static_cast<int64_t>(atom->tag[i])) mine++;
+        }
+        MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+        if (all > 0) error->all(FLERR, renumberedMessage("pair granbond (bond/nonlinear)", all));
     }
-    if (ifix < 0) error->all(FLERR, "pair granbond: fix granbond/atoms could not be created");
-    atoms_ = static_cast<FixGranbondAtoms *>(modify->fix[ifix]);
-    const long long renumbered = countRenumbered(atom->nlocal, atom->tag, atoms_->seen, world);
-    if (renumbered > 0) error->all(FLERR, renumberedMessage("pair granbond (bond/nonlinear)", renumbered));
+    if (anyBond_ && comm->me == 0 && currentCommand(lmp) == "rerun")
+        error->warning(FLERR, "rerun: pair granbond's bonds live in its store (restart files), not in dump files: "
+                              "this rerun has the bonds of its own system (" +
+                              std::to_string(static_cast<long long>(bonds_ ? granbond_bond_store_len(bonds_->store()) : 0)) +
+                              " on rank 0) and forms none, so its forces are those of the contacts and of those bonds");
+    if (checkStore_ && anyBond_ && comm->me == 0)
+        utils::logmesg(lmp, "pair granbond: recounting the bonds after every pass (GRANBOND_CHECK_STORE)\n");
+    runChecks(bodies_, true);
 }
 
 // The core's checks: the time step against the stiffest contact and bond
@@ -285,6 +253,9 @@ void PairGranbond::runChecks(const std::vector<GbTypeBodies> &bodies, bool runSt
         if (comm->me == 0) error->warning(FLERR, line);
 }
 
+// The neighbour list reaches as far as two spheres of the types touch, or
+// bond at a creation step; the ghost atoms as far as a bond stretches
+// before it breaks (the core's reach), so that each bond finds its partner.
 double PairGranbond::init_one(int i, int j)
 {
     if (!setflag[i][j])
@@ -296,14 +267,15 @@ double PairGranbond::init_one(int i, int j)
     if (b && std::isfinite(rmin) && rmin > 0.0) {
         const std::string pairCoeff = "pair_coeff " + std::to_string(std::min(i, j)) + " " +
                                       std::to_string(std::max(i, j)) + " bond/nonlinear: ";
-        // the core's neighbour-list reach that keeps every intact bond
-        double factor = 0.0;
-        if (granbond_bond_contact_distance_factor(b, rmin, &factor) != GB_STATUS_OK)
+        double factor = 0.0, creates = 0.0;
+        if (granbond_bond_contact_distance_factor(b, rmin, &factor) != GB_STATUS_OK ||
+            granbond_bond_creation_reach(b, update->ntimestep, &creates) != GB_STATUS_OK)
             error->all(FLERR, pairCoeff + coreReason());
         if (!std::isfinite(factor))
-            error->all(FLERR, pairCoeff + "the bond never breaks, so no neighbour list can keep it: "
+            error->all(FLERR, pairCoeff + "the bond never breaks, so no ghost atoms reach every partner: "
                                           "set 'break distance <rmax>' or 'break stress <sigma_max> <tau_max>'");
-        cut = std::max(cut, factor * 2.0 * rmin);
+        cut = std::max(cut, creates);
+        comm->cutghostuser = std::max(comm->cutghostuser, factor * 2.0 * rmin + neighbor->skin);
     }
     return cut;
 }
@@ -336,7 +308,7 @@ void PairGranbond::failPair(int i, int j, const char *what)
     std::abort();   // not reached
 }
 
-// Forces of a contact (or an intact bond) on i and j. `f` and `torque` are
+// Forces of a contact (or a bond) on i and j. `f` and `torque` are
 // atom->f[0] and atom->torque[0], read once per pass: the arrays are blocks
 // of 3 doubles per atom (memory->create), and indexing them directly spares
 // the load of a row pointer, which a core call in between forces the
@@ -413,29 +385,13 @@ void PairGranbond::compute(int eflag, int vflag)
     const int ntypes1 = atom->ntypes + 1;
     const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
 
-    if (atom->natoms != checkedNatoms_) {
+    if (atom->natoms != checkedNatoms_)
         runChecks(gatherTypeBodies(atom->ntypes, nlocal, type, radius, atom->rmass, world), false);
-        lossCheck_ = anyBond_;
-    }
     if (update->setupflag) {
-        lossCheck_ = anyBond_;   // atoms may have been deleted between runs
         const std::string thin = thinPeriodicBox("pair granbond", domain->periodicity, domain->prd,
                                                  neighbor->cutneighmax, neighbor->skin);
         if (!thin.empty()) error->all(FLERR, thin);
     }
-    // the index of bonds is built from the records whenever the lists are
-    // (the records move with them), after the records of atoms no pass
-    // has seen are forgotten
-    const bool listBuilt = update->setupflag || neighbor->ago == 0;
-    if (anyBond_ && listBuilt)
-        forgetRecordsOfNewborn(*atoms_, nlocal, atom->nghost, atom->tag, list->inum, list->ilist, list->numneigh,
-                               list->firstneigh, fixHistory_->firstflag, fixHistory_->firstvalue, sizeHistory_);
-    if (anyBond_ && (listBuilt || writtenBack_)) indexBonds();
-    // the pairs the contact loop visits, while the list stands
-    const bool trimmed = anyBond_;
-    if (trimmed && (update->setupflag || nearBuilt_ != neighbor->ncalls ||
-                    nearFirst_.size() != static_cast<size_t>(list->inum) + 1))
-        trimToReach();
 
     // setup (run/minimize start) evaluates forces without advancing history
     const bool advance = !update->setupflag;
@@ -443,18 +399,23 @@ void PairGranbond::compute(int eflag, int vflag)
     for (size_t tp = 0; tp < bond_.size(); tp++)
         createsNow_[tp] = advance && bond_[tp] && granbond_bond_creates_at(bond_[tp], step);
 
-    // the bonds, swept; those that broke go back to the contact loop
-    GbSweepTally tally = {};
-    for (BondIndex &b : index_)
-        if (b.size()) {
-            sweep(b, 0, advance, tally);
-            for (size_t k : b.broken) {
-                *b.flags[k] = kBrokeMark;
-                if (trimmed) nearLive_[nearAt_[b.pairs[2 * k]]]++;   // a contact from now on
-            }
-            b.keepIntact();
+    // the bonds, from their store; those that broke go back to the contact loop
+    if (anyBond_) {
+        if (update->setupflag || neighbor->ago == 0) linkBonds();
+        // a creation step ahead: pairs whose bonds break are kept from it
+        bool remember = false;
+        for (const GbBondModel *b : bond_) {
+            double reach = 0.0;
+            if (b && granbond_bond_creation_reach(b, step + 1, &reach) == GB_STATUS_OK && reach > 0.0) remember = true;
         }
-    for (size_t tp = 0; tp < index_.size(); tp++) formed_[tp] = index_[tp].size();
+        if (granbond_bond_store_begin_pass(bonds_->store(), update->dt, advance ? 1 : 0, remember ? 1 : 0) !=
+            GB_STATUS_OK)
+            error->one(FLERR, "pair granbond: " + coreReason());
+        ghostLoads_ = force->newton_pair ? nullptr : bonds_->ghostLoads();
+        if (bondOutputUsers > 0 && advance) outputs_.clear();
+        stepBonds(advance);
+        takeBroken(advance);
+    }
 
     // the contacts, and the bonds that form
     const int inum = list->inum;
@@ -464,7 +425,6 @@ void PairGranbond::compute(int eflag, int vflag)
     int **firsttouch = fixHistory_->firstflag;
     double **firsthistory = fixHistory_->firstvalue;
     const int size = sizeHistory_;
-    const size_t contactLen = layout_.contact_len;
     double *const f0 = atom->f[0], *const t0 = atom->torque[0];
     const int newtonPair = force->newton_pair;
     // per type pair, fetched once for the same reason as `reads`
@@ -472,164 +432,85 @@ void PairGranbond::compute(int eflag, int vflag)
     const TypePair *const pairs = pairs_.data();
     const GbBondModel *const *const bonds = bond_.data();
     const char *const createsNow = createsNow_.data();
-    const int *const nearFirst = nearFirst_.data(), *const near = near_.data();
-    bool underBond = false;   // whether any intact bond's contact is stepped in this pass
-    for (size_t tp = 0; tp < pairs_.size(); tp++) underBond = underBond || (advance && pairs[tp].contactUnderBond);
-    int *const live = nearLive_.data();
-    // one loop compiled for each kind of list: the whole list (no bonds) or
-    // the pairs kept within reach
-    const auto atoms = [&](auto trimmedKind) {
-        constexpr bool kept = decltype(trimmedKind)::value;
-        for (int ii = 0; ii < inum; ii++) {
-            // the next atom's records, requested while this atom's pairs are
-            // computed (history_prefetch.h)
-            if (ii + 1 < inum) {
-                const int next = ilist[ii + 1];
-                if (kept) {
-                    if (live[ii + 1] || underBond)
-                        prefetchFlaggedSlots(firsttouch[next], firsthistory[next], near + nearFirst[ii + 1],
-                                             nearFirst[ii + 2] - nearFirst[ii + 1], size, kSweptMark);
-                } else {
-                    prefetchFlaggedRecords(firsttouch[next], firsthistory[next], numneigh[next], size, kSweptMark);
-                }
-            }
-            // an atom whose visited pairs are all intact bonds: nothing to do
-            if (kept && !live[ii] && !underBond) continue;
-            const int i = ilist[ii];
-            const int itype = type[i];
-            const double radi = radius[i];
-            const double *const xi = x0 + 3 * static_cast<size_t>(i);
-            const int *jlist = firstneigh[i];
-            int *touch = firsttouch[i];
-            double *allhistory = firsthistory[i];
-
-            const auto pair = [&](int jj) __attribute__((always_inline)) {
-                if (kept && touch[jj] == kSweptMark && !underBond) return;   // most bonds: no lookup
-                const int j = jlist[jj] & NEIGHMASK;
-                const int jtype = type[j];
-                const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype
-                                                 : static_cast<size_t>(jtype) * ntypes1 + itype;
-                // an intact bond: swept above. Its contact's state goes on
-                // under it only where the deck asks for it.
-                if (touch[jj] == kSweptMark && !(advance && pairs[tp].contactUnderBond)) return;
-                const double *const xj = x0 + 3 * static_cast<size_t>(j);
-                const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
-                const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-                const double radsum = radi + radius[j];
-                const bool touching = rsq < radsum * radsum;
-                double *history = &allhistory[size * jj];
-                if (touch[jj] == kSweptMark) {
-                    if (touching) {
-                        GbContactOutput unused;
-                        voigtStep(reads, tp, i, j, del, rsq, history, unused);
-                    } else {
-                        std::fill(history, history + contactLen, 0.0);
-                    }
-                    return;
-                }
-                const GbBondModel *bondModel = bonds[tp];
-                // apart, and no bond can form: a pair not marked touching has an
-                // all-zero record (every path that clears the mark zeroes it),
-                // so it is not read
-                if (!touching && !(bondModel && createsNow[tp])) {
-                    if (touch[jj]) {
-                        touch[jj] = 0;
-                        std::fill(history, history + size, 0.0);
-                    }
-                    return;
-                }
-                if (!bondModel && advance) {   // a plain contact, touching: inline, the loads applied here
-                    touch[jj] = 1;
-                    GbContactOutput cout;
-                    voigtStep(reads, tp, i, j, del, rsq, history, cout);
-                    apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newtonPair);
-                    return;
-                }
-                if (bondModel && createsNow[tp] && touch[jj] != kBrokeMark &&
-                    granbond_bond_may_create(bondModel, history + layout_.bond, step)) {
-                    GbPairKinematics k;
-                    pairKinematics(i, j, k);
-                    int32_t created = 0;
-                    if (granbond_bond_try_create(bondModel, &k, step, history + layout_.bond, &created) != GB_STATUS_OK)
-                        failPair(i, j, "the bond's creation");
-                    if (created) {
-                        const bool counts = countsHere(i, j);
-                        if (counts) created_++;
-                        index_[tp].add(i, j, counts, history, &touch[jj]);
-                        touch[jj] = kSweptMark;
-                        if (kept) live[ii]--;
-                        return;
-                    }
-                }
-                contactOf(tp, i, j, &touch[jj], history, advance, touching, del, rsq);
-            };
-            if (kept)
-                for (int s = nearFirst[ii]; s < nearFirst[ii + 1]; s++) pair(near[s]);
-            else
-                for (int jj = 0, jnum = numneigh[i]; jj < jnum; jj++) pair(jj);
-        }
-    };
-    if (trimmed)
-        atoms(std::true_type());
-    else
-        atoms(std::false_type());
-
-    // the bonds formed in this pass, advanced in it
-    for (size_t tp = 0; tp < index_.size(); tp++) {
-        BondIndex &b = index_[tp];
-        if (b.size() == formed_[tp]) continue;
-        sweep(b, formed_[tp], advance, tally);
-        for (size_t k : b.broken) {   // broke at once: a contact after all
-            const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
-            const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+    for (int ii = 0; ii < inum; ii++) {
+        const int i = ilist[ii];
+        const int itype = type[i];
+        const double radi = radius[i];
+        const double *const xi = x0 + 3 * static_cast<size_t>(i);
+        const int *jlist = firstneigh[i];
+        int *touch = firsttouch[i];
+        double *allhistory = firsthistory[i];
+        for (int jj = 0, jnum = numneigh[i]; jj < jnum; jj++) {
+            const int j = jlist[jj] & NEIGHMASK;
+            const int jtype = type[j];
+            const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype
+                                             : static_cast<size_t>(jtype) * ntypes1 + itype;
+            // a bond: stepped above. Its contact's state goes on under it
+            // only where the deck asks for it.
+            if (touch[jj] == kBondedMark && !(advance && pairs[tp].contactUnderBond)) continue;
+            const double *const xj = x0 + 3 * static_cast<size_t>(j);
             const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-            const double radsum = radius[i] + radius[j];
-            *b.flags[k] = 1;
-            if (trimmed) nearLive_[nearAt_[i]]++;
-            contactOf(tp, i, j, b.flags[k], b.homes[k], advance, rsq < radsum * radsum, del, rsq);
+            const double radsum = radi + radius[j];
+            const bool touching = rsq < radsum * radsum;
+            double *history = &allhistory[size * jj];
+            if (touch[jj] == kBondedMark) {
+                if (touching) {
+                    GbContactOutput unused;
+                    voigtStep(reads, tp, i, j, del, rsq, history, unused);
+                } else {
+                    std::fill(history, history + size, 0.0);
+                }
+                continue;
+            }
+            const GbBondModel *bondModel = bonds[tp];
+            // apart, and no bond can form: a pair not marked touching has an
+            // all-zero record (every path that clears the mark zeroes it),
+            // so it is not read
+            if (!touching && !(bondModel && createsNow[tp])) {
+                if (touch[jj]) {
+                    touch[jj] = 0;
+                    std::fill(history, history + size, 0.0);
+                }
+                continue;
+            }
+            if (!bondModel && advance) {   // a plain contact, touching: inline, the loads applied here
+                touch[jj] = 1;
+                GbContactOutput cout;
+                voigtStep(reads, tp, i, j, del, rsq, history, cout);
+                apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newtonPair);
+                continue;
+            }
+            if (bondModel && createsNow[tp] && tryBond(tp, i, j, &touch[jj], history)) continue;
+            contactOf(tp, i, j, &touch[jj], history, advance, touching, del, rsq);
         }
-        b.keepIntact();
     }
 
-    const long long byMode[4] = {tally.broken_distance, tally.broken_tension, tally.broken_compression,
-                                 tally.broken_shear};
-    for (int m = 0; m < 4; m++) {
-        brokenBy_[m] += byMode[m];
-        broken_ += byMode[m];
+    if (anyBond_) {
+        // the bonds formed in this pass, advanced in it
+        stepBonds(advance);
+        if (granbond_bond_store_finish_pass(bonds_->store()) != GB_STATUS_OK)
+            error->one(FLERR, "pair granbond: " + coreReason());
+        if (bondOutputUsers > 0 && advance) {
+            // in store order: the bonds that broke have left it
+            outputs_.erase(std::remove_if(outputs_.begin(), outputs_.end(),
+                                          [](const GbBondOutput &o) { return o.status != GB_BOND_STATUS_INTACT; }),
+                           outputs_.end());
+        }
+        if (!force->newton_pair) bonds_->returnGhostLoads();
+        // bonds formed on any rank: the view shows them from now on
+        int mine = changedLastPass_, any = 0;
+        MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+        changedLastPass_ = false;
+        if (any) {
+            bonds_->sendView();
+            bonds_->sizeExchange();
+        }
+        countBonds();
+        if (checkStore_) checkStore();
     }
-    if (checkIndex_ && anyBond_) checkIndex();
-    if (lossCheck_) countVanished(tally.intact);
-    pvector[0] = static_cast<double>(created_);
-    pvector[1] = static_cast<double>(broken_);
-    pvector[2] = static_cast<double>(tally.intact);
-    for (int m = 0; m < 4; m++) pvector[3 + m] = static_cast<double>(brokenBy_[m]);
-    pvector[7] = static_cast<double>(vanished_);
     passStep_ = update->ntimestep;
     passAtoms_ = static_cast<bigint>(atom->nlocal) + atom->nghost;
-}
-
-// One core call over the bonds of `b` from `first` on, and their loads
-// added to the atoms (those of the bonds that held).
-void PairGranbond::sweep(BondIndex &b, size_t first, bool advance, GbSweepTally &tally)
-{
-    size_t bad = 0;
-    double *const f0 = atom->f[0];
-    double *const t0 = atom->torque[0];
-    const double *const x0 = atom->x[0];
-    const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-    if (b.sweep(atom, first, b.size(), advance, update->dt, tally, bad, [&](size_t k, const GbBondOutput &out) {
-            const int i = b.pairs[2 * k], j = b.pairs[2 * k + 1];
-            if (!evflag) {   // the separation is only for the virial
-                apply(f0, t0, i, j, out.force_i, out.torque_i, out.torque_j, nullptr, nlocal, newton_pair);
-                return;
-            }
-            const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
-            const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
-            apply(f0, t0, i, j, out.force_i, out.torque_i, out.torque_j, del, nlocal, newton_pair);
-        }) != GB_STATUS_OK)
-        failPair(b.pairs[2 * bad], b.pairs[2 * bad + 1], "the bond");
-    if (breakLogUsers > 0 && advance) logBreaks(b);
 }
 
 // A pair that is no bond in this pass: touching, the Voigt contact (a
@@ -656,227 +537,327 @@ void PairGranbond::contactOf(size_t tp, int i, int j, int *touch, double *histor
           force->newton_pair);
 }
 
-// The index, built from the records of the lists just built: every pair of
-// a bonded type pair whose record holds an intact bond.
-void PairGranbond::indexBonds()
+// ------------------------------------------------------------ bonds
+
+GbAtomIds PairGranbond::atomIds() const
 {
-    for (size_t tp = 0; tp < index_.size(); tp++) {
-        index_[tp].clear();
-        index_[tp].model = bond_[tp];
-        index_[tp].pass.with_contact = 1;
-        index_[tp].pass.contact_under_bond = pairs_[tp].contactUnderBond;
-        index_[tp].useRows(layout_);
+    GbAtomIds ids;
+    ids.narrow = sizeof(tagint) == 4 ? reinterpret_cast<const int32_t *>(atom->tag) : nullptr;
+    ids.wide = sizeof(tagint) == 8 ? reinterpret_cast<const int64_t *>(atom->tag) : nullptr;
+    ids.count = static_cast<size_t>(atom->nlocal + atom->nghost);
+    return ids;
+}
+
+GbAtomArrays PairGranbond::atomArrays() const
+{
+    const bool any = atom->nmax > 0;
+    GbAtomArrays a;
+    a.x = any ? atom->x[0] : nullptr;
+    a.v = any ? atom->v[0] : nullptr;
+    a.omega = any ? atom->omega[0] : nullptr;
+    a.radius = atom->radius;
+    a.count = static_cast<size_t>(atom->nlocal + atom->nghost);
+    return a;
+}
+
+GbBondStore *PairGranbond::bondStore() const { return bonds_ ? bonds_->store() : nullptr; }
+
+bool PairGranbond::storeCurrent() const
+{
+    return passStep_ == update->ntimestep && passAtoms_ == static_cast<bigint>(atom->nlocal) + atom->nghost;
+}
+
+// After a list build: every bond finds its atoms again (the losses counted
+// and told with their cause), the view reaches the ghosts, and the contact
+// history's flags are marked from the store.
+void PairGranbond::linkBonds()
+{
+    GbStoreAtoms sa;
+    sa.ids = atomIds();
+    sa.nlocal = static_cast<size_t>(atom->nlocal);
+    sa.x = atom->nmax > 0 ? atom->x[0] : nullptr;
+    sa.types = atom->type;
+    sa.reach = comm->cutghostuser;
+    GbLinkReport report;
+    if (granbond_bond_store_link(bonds_->store(), &sa, kinds_.data(), static_cast<size_t>(atom->ntypes), &report) !=
+        GB_STATUS_OK)
+        error->one(FLERR, "pair granbond: finding the bonds' atoms: " + coreReason());
+    const long long mine[4] = {report.owner_gone, report.partner_unreached, report.id_reused, report.no_model};
+    long long all[4];
+    MPI_Allreduce(mine, all, 4, MPI_LONG_LONG, MPI_SUM, world);
+    const long long lost = all[0] + all[1] + all[2] + all[3];
+    if (lost > 0 && comm->me == 0) {
+        std::string causes;
+        const char *const why[4] = {
+            "their atom left the system (deleted, or lost through a boundary)",
+            "their partner was not among the atoms within the communication cutoff (deleted, lost, or moved "
+            "farther than the bond's reach between runs)",
+            "an atom's id was taken over by a new atom",
+            "their atoms' types have no bond model any more (set type, or pair_coeff without bond/nonlinear)"};
+        for (int c = 0; c < 4; c++)
+            if (all[c] > 0) causes += (causes.empty() ? "" : "; ") + std::to_string(all[c]) + " because " + why[c];
+        error->warning(FLERR, "pair granbond (bond/nonlinear): " + std::to_string(lost) + " bonds lost at step " +
+                                  std::to_string(static_cast<long long>(update->ntimestep)) +
+                                  " without breaking: " + causes +
+                                  " (counted in compute pair granbond's 8th value)");
     }
-    writtenBack_ = false;
+    bonds_->sendView();
+    markBonded(true);
+}
+
+// The flags of the listed pairs from the store and its view: bonded, or
+// not any more (a bond that broke or was lost: its contact starts afresh,
+// unless it went on under the bond).
+void PairGranbond::markBonded(bool)
+{
+    GbBondStore *store = bonds_->store();
+    const GbAtomIds ids = atomIds();
     const int ntypes1 = atom->ntypes + 1;
+    const int *type = atom->type;
     for (int ii = 0; ii < list->inum; ii++) {
         const int i = list->ilist[ii];
         const int *jlist = list->firstneigh[i];
         int *touch = fixHistory_->firstflag[i];
         double *allhistory = fixHistory_->firstvalue[i];
         for (int jj = 0; jj < list->numneigh[i]; jj++) {
-            if (!touch[jj]) continue;   // an unmarked pair's record is all zero
             const int j = jlist[jj] & NEIGHMASK;
-            const int ti = atom->type[i], tj = atom->type[j];
-            const size_t tp = static_cast<size_t>(std::min(ti, tj)) * ntypes1 + std::max(ti, tj);
-            double *record = &allhistory[sizeHistory_ * jj];
-            if (!bond_[tp] || record[layout_.status] != GB_BOND_STATUS_INTACT) {
-                touch[jj] = 1;
-                continue;
-            }
-            index_[tp].add(i, j, countsHere(i, j), record, &touch[jj]);
-            touch[jj] = kSweptMark;
-        }
-    }
-}
-
-// The bonds' rows back in their records and their loads filed there, once
-// per index (fix neigh/history's pre_exchange; bond_index.h): the next pass
-// indexes the records again.
-void PairGranbond::writeBackBonds()
-{
-    if (writtenBack_) return;
-    for (BondIndex &b : index_)
-        if (b.writeBack() != GB_STATUS_OK) error->one(FLERR, "pair granbond: filing the bonds' loads: " + coreReason());
-    writtenBack_ = true;
-}
-
-// The pairs of the list just built that the contact loop visits until the
-// next build: those that may touch (per-type radii of the run, as init_one's
-// cutoffs) or bond (the core's creation reach from this step on) before
-// atoms move a skin's worth, and every indexed bond's. The list itself
-// reaches as far as an intact bond may stretch, a reach few pairs ever need
-// for contact. A pair left out that is marked touching is forgotten now,
-// as the loop would on meeting it apart.
-void PairGranbond::trimToReach()
-{
-    const int ntypes1 = atom->ntypes + 1;
-    std::vector<double> reachSq(bond_.size(), 0.0);   // per type pair
-    for (int ti = 1; ti < ntypes1; ti++)
-        for (int tj = ti; tj < ntypes1; tj++) {
-            const size_t tp = at(ti, tj);
-            double reach = bodies_[ti].radius_max + bodies_[tj].radius_max;
-            double creates = 0.0;
-            if (bond_[tp] && granbond_bond_creation_reach(bond_[tp], update->ntimestep, &creates) != GB_STATUS_OK)
-                error->one(FLERR, "pair granbond: " + coreReason());
-            reach = std::max(reach, creates) + neighbor->skin;
-            reachSq[tp] = reach > 0.0 ? reach * reach : 0.0;
-        }
-    const int inum = list->inum;
-    const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
-    nearFirst_.resize(static_cast<size_t>(inum) + 1);
-    near_.clear();
-    nearLive_.assign(static_cast<size_t>(inum), 0);
-    nearAt_.assign(static_cast<size_t>(atom->nlocal), -1);
-    for (int ii = 0; ii < inum; ii++) {
-        nearFirst_[ii] = static_cast<int>(near_.size());
-        const int i = list->ilist[ii];
-        nearAt_[i] = ii;
-        const int ti = atom->type[i];
-        const double *xi = x0 + 3 * static_cast<size_t>(i);
-        const int *jlist = list->firstneigh[i];
-        int *touch = fixHistory_->firstflag[i];
-        double *allhistory = fixHistory_->firstvalue[i];
-        for (int jj = 0; jj < list->numneigh[i]; jj++) {
-            if (touch[jj] == kSweptMark) {
-                near_.push_back(jj);
-                continue;
-            }
-            const int j = jlist[jj] & NEIGHMASK;
-            const int tj = atom->type[j];
-            const double *xj = x0 + 3 * static_cast<size_t>(j);
-            const double d[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
-            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reachSq[at(std::min(ti, tj), std::max(ti, tj))]) {
-                near_.push_back(jj);
-                nearLive_[ii]++;
-                continue;
-            }
-            if (touch[jj]) {
+            const size_t tp = static_cast<size_t>(std::min(type[i], type[j])) * ntypes1 + std::max(type[i], type[j]);
+            if (!bond_[tp]) continue;
+            if (granbond_bond_store_bonded(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids)) {
+                touch[jj] = kBondedMark;
+            } else if (touch[jj] == kBondedMark) {
                 touch[jj] = 0;
-                std::fill(allhistory + static_cast<size_t>(sizeHistory_) * jj,
-                          allhistory + static_cast<size_t>(sizeHistory_) * (jj + 1), 0.0);
+                if (!pairs_[tp].contactUnderBond)
+                    std::fill(allhistory + sizeHistory_ * jj, allhistory + sizeHistory_ * (jj + 1), 0.0);
             }
         }
     }
-    nearFirst_[inum] = static_cast<int>(near_.size());
-    nearBuilt_ = neighbor->ncalls;
 }
 
-// GRANBOND_CHECK_INDEX: the index recounted from the records after a pass
-// (bond_index.h, checkIndex); a mismatch ends the run.
-void PairGranbond::checkIndex()
+// Steps the bonds of the pass not stepped yet and adds their loads to the
+// atoms: both atoms' forces and torques (a ghost's for the engine's reverse
+// communication under newton on, else for the fix's), the virial of each
+// bond once.
+void PairGranbond::stepBonds(bool advance)
 {
+    GbBondStore *store = bonds_->store();
+    const GbAtomArrays arrays = atomArrays();
+    const GbAtomIds ids = atomIds();
+    int32_t ends[2 * GRANBOND_BOND_STORE_CHUNK];
+    GbBondOutput outs[GRANBOND_BOND_STORE_CHUNK];
+    double *const f0 = atom->f[0], *const t0 = atom->torque[0];
+    const double *const x0 = atom->x[0];
+    const int nlocal = atom->nlocal;
+    for (;;) {
+        size_t n = 0, bad = 0;
+        if (granbond_bond_store_step_next(store, bond_.data(), bond_.size(), &arrays, &ids, ends, outs, &n, &bad) !=
+            GB_STATUS_OK) {
+            int32_t e[2] = {-1, -1};
+            int64_t partner = 0;
+            double state[GRANBOND_BOND_STATE_LEN];
+            const std::string why = coreReason();
+            if (granbond_bond_store_bond(store, bad, e, &partner, state) == GB_STATUS_OK && e[0] >= 0)
+                failPair(e[0], e[1], "the bond");
+            error->one(FLERR, "pair granbond: the bonds: " + why);
+        }
+        if (n == 0) break;
+        for (size_t k = 0; k < n; k++) {
+            const int i = ends[2 * k], j = ends[2 * k + 1];
+            const GbBondOutput &o = outs[k];
+            add3(f0 + 3 * static_cast<size_t>(i), o.force_i);
+            add3(t0 + 3 * static_cast<size_t>(i), o.torque_i);
+            if (j < nlocal || force->newton_pair) {
+                subtract3(f0 + 3 * static_cast<size_t>(j), o.force_i);
+                add3(t0 + 3 * static_cast<size_t>(j), o.torque_j);
+            } else {
+                double *g = ghostLoads_ + 6 * static_cast<size_t>(j - nlocal);
+                subtract3(g, o.force_i);
+                add3(g + 3, o.torque_j);
+            }
+            if (evflag) {
+                const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+                // each bond is stepped on one rank: its whole virial here
+                ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, o.force_i[0], o.force_i[1], o.force_i[2], xi[0] - xj[0],
+                             xi[1] - xj[1], xi[2] - xj[2]);
+            }
+        }
+        if (bondOutputUsers > 0 && advance) outputs_.insert(outputs_.end(), outs, outs + n);
+    }
+}
+
+// The bonds that broke in the pass so far: their pairs leave the bonded
+// flag (the contact starts afresh, unless it went on under the bond), the
+// break log gets them; then, where any rank broke a bond, the view goes
+// round again and the flags follow it.
+void PairGranbond::takeBroken(bool advance)
+{
+    GbBondStore *store = bonds_->store();
+    const size_t nb = granbond_bond_store_broken_count(store);
+    const int nlocal = atom->nlocal;
     const int ntypes1 = atom->ntypes + 1;
-    const std::string wrong = granbond::checkIndex(index_, layout_.status, true, [&](auto seen) {
-        for (int ii = 0; ii < list->inum; ii++) {
-            const int i = list->ilist[ii];
-            for (int jj = 0; jj < list->numneigh[i]; jj++) {
-                const int j = list->firstneigh[i][jj] & NEIGHMASK;
-                const int ti = atom->type[i], tj = atom->type[j];
-                if (!bond_[static_cast<size_t>(std::min(ti, tj)) * ntypes1 + std::max(ti, tj)]) continue;
-                seen(&fixHistory_->firstvalue[i][sizeHistory_ * jj], &fixHistory_->firstflag[i][jj]);
-            }
+    for (size_t m = 0; m < nb; m++) {
+        GbBrokenBond b;
+        if (granbond_bond_store_broken(store, m, &b) != GB_STATUS_OK) error->one(FLERR, "pair granbond: " + coreReason());
+        const int i = b.ends[0], j = b.ends[1];
+        const size_t tp =
+            static_cast<size_t>(std::min(atom->type[i], atom->type[j])) * ntypes1 + std::max(atom->type[i], atom->type[j]);
+        // the pair in the list: under i, or under j where j is local
+        for (int side = 0; side < 2; side++) {
+            const int a = side ? j : i, other = side ? i : j;
+            if (a >= nlocal) continue;
+            const int *jlist = list->firstneigh[a];
+            int *touch = fixHistory_->firstflag[a];
+            for (int jj = 0; jj < list->numneigh[a]; jj++)
+                if ((jlist[jj] & NEIGHMASK) == other && touch[jj] == kBondedMark) {
+                    touch[jj] = 0;
+                    if (!pairs_[tp].contactUnderBond) {
+                        double *h = fixHistory_->firstvalue[a] + sizeHistory_ * jj;
+                        std::fill(h, h + sizeHistory_, 0.0);
+                    }
+                }
         }
-    });
-    const std::string missed = wrong.empty() ? checkNear() : std::string();
-    if (!wrong.empty() || !missed.empty())
-        error->one(FLERR, "pair granbond: index check at step " + std::to_string(update->ntimestep) + ": " + wrong +
-                              missed);
-}
-
-// Every pair of the list the contact loop passed over (trimToReach) is one
-// it would have left alone: unmarked, apart, and out of the creation reach;
-// and each atom's count of visited pairs that are not intact bonds (an
-// atom without any is passed over) is right.
-// What is wrong, or an empty string.
-std::string PairGranbond::checkNear() const
-{
-    const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
-    for (int ii = 0; ii < list->inum; ii++) {
-        const int i = list->ilist[ii];
-        const int *jlist = list->firstneigh[i];
-        const int *touch = fixHistory_->firstflag[i];
-        const int *nearOf = near_.data() + nearFirst_[ii], *const nearEnd = near_.data() + nearFirst_[ii + 1];
-        int live = 0;
-        for (const int *s = nearOf; s < nearEnd; s++) live += touch[*s] != kSweptMark;
-        if (live != nearLive_[ii])
-            return "atom " + std::to_string(atom->tag[i]) + " has " + std::to_string(live) +
-                   " visited pairs that are not intact bonds, the contact loop counts " +
-                   std::to_string(nearLive_[ii]);
-        for (int jj = 0; jj < list->numneigh[i]; jj++) {
-            if (nearOf < nearEnd && *nearOf == jj) {
-                nearOf++;
-                continue;
-            }
-            const int j = jlist[jj] & NEIGHMASK;
-            const int ti = atom->type[i], tj = atom->type[j];
-            const GbBondModel *model = bond_[at(std::min(ti, tj), std::max(ti, tj))];
-            double reach = atom->radius[i] + atom->radius[j], creates = 0.0;
-            if (model && granbond_bond_creation_reach(model, update->ntimestep, &creates) == GB_STATUS_OK)
-                reach = std::max(reach, creates);
-            const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
-            const double d[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
-            if (touch[jj] || d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach)
-                return "the contact loop passed over atoms " + std::to_string(atom->tag[i]) + " and " +
-                       std::to_string(atom->tag[j]) + ", " + (touch[jj] ? "marked" : "within reach");
+        if (breakLogUsers > 0 && advance) {
+            BreakEvent e;
+            const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = lo == i ? j : i;
+            if (makeBreakEvent(bond_[tp], b.out, atom->x[lo], atom->x[hi], atom->radius[lo], atom->radius[hi],
+                               static_cast<double>(atom->tag[lo]), static_cast<double>(atom->tag[hi]),
+                               static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
+                failPair(i, j, "the break log's event");
+            breaks_.push_back(e);
         }
     }
-    return std::string();
+    int mine = nb > 0, any = 0;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any) {
+        bonds_->sendView();
+        markBonded(false);
+    }
 }
 
-inline bool PairGranbond::countsHere(int i, int j) const
+// A pair within the creation rules at a creation step: bonded if the core
+// says so, by this rank (the pair's owner is local here) or by the rank
+// that owns it (newton off: both list the pair). Returns whether it is a
+// bond now.
+bool PairGranbond::tryBond(size_t tp, int i, int j, int *touch, double *history)
 {
-    return pairCountsHere(i, j, atom->nlocal, atom->tag);
+    GbBondStore *store = bonds_->store();
+    const tagint *tag = atom->tag;
+    const int nlocal = atom->nlocal;
+    const int owner = granbond_bond_store_creates_here(i < nlocal, j < nlocal, tag[i], tag[j], !force->newton_pair);
+    GbPairKinematics k;
+    int32_t made = 0;
+    if (owner < 0) {
+        pairKinematics(i, j, k);
+        if (granbond_bond_store_would_create(store, bond_[tp], static_cast<size_t>(i), static_cast<size_t>(j), &k,
+                                             update->ntimestep, &made) != GB_STATUS_OK)
+            failPair(i, j, "the bond's creation");
+    } else {
+        const int o = owner == 0 ? i : j, p = owner == 0 ? j : i;
+        pairKinematics(o, p, k);
+        if (granbond_bond_store_try_create(store, bond_[tp], static_cast<uint16_t>(tp), static_cast<size_t>(o),
+                                           static_cast<size_t>(p), tag[o], tag[p], &k, update->ntimestep,
+                                           &made) != GB_STATUS_OK)
+            failPair(i, j, "the bond's creation");
+        if (made) changedLastPass_ = true;
+    }
+    if (!made) return false;
+    *touch = kBondedMark;
+    if (!pairs_[tp].contactUnderBond) std::fill(history, history + sizeHistory_, 0.0);
+    return true;
 }
 
-namespace {
-// fix neigh/history keeps each atom's partners (restored by read_restart
-// before the first pass) protected; a derived class may name them, and the
-// member pointers read them from the engine's fix.
-struct HistoryPartners : FixNeighHistory {
-    static int *FixNeighHistory::*count() { return &HistoryPartners::npartner; }
-    static double **FixNeighHistory::*values() { return &HistoryPartners::valuepartner; }
-};
+// compute pair granbond's values: this rank's counts (the compute sums
+// them over the ranks).
+void PairGranbond::countBonds()
+{
+    const GbStoreCounts c = bonds_->counts();
+    pvector[0] = static_cast<double>(c.created);
+    pvector[1] = static_cast<double>(c.broken_distance + c.broken_tension + c.broken_compression + c.broken_shear);
+    pvector[2] = static_cast<double>(c.intact);
+    pvector[3] = static_cast<double>(c.broken_distance);
+    pvector[4] = static_cast<double>(c.broken_tension);
+    pvector[5] = static_cast<double>(c.broken_compression);
+    pvector[6] = static_cast<double>(c.broken_shear);
+    pvector[7] = static_cast<double>(c.lost_owner_gone + c.lost_partner_unreached + c.lost_id_reused + c.lost_no_model);
 }
 
-// Whether an intact bond exists on any rank, read from the partners' history
-// the engine keeps per atom; collective.
+// GRANBOND_CHECK_STORE: after a pass, the bonds recounted against the
+// engine's atoms: every pair of the lists flagged bonded exactly when the
+// store or its view holds its bond; each bond stored once over all ranks,
+// between an owner that is local and a partner with the id it names; and
+// created = broken + intact + lost over all ranks. A mismatch ends the run.
+void PairGranbond::checkStore()
+{
+    GbBondStore *store = bonds_->store();
+    const GbAtomIds ids = atomIds();
+    std::string wrong;
+    for (int ii = 0; ii < list->inum && wrong.empty(); ii++) {
+        const int i = list->ilist[ii];
+        for (int jj = 0; jj < list->numneigh[i] && wrong.empty(); jj++) {
+            const int j = list->firstneigh[i][jj] & NEIGHMASK;
+            const bool flagged = fixHistory_->firstflag[i][jj] == kBondedMark;
+            const bool bonded = granbond_bond_store_bonded(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids);
+            if (flagged != bonded)
+                wrong = "the pair of atoms " + std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
+                        std::to_string(static_cast<long long>(atom->tag[j])) + (flagged ? " is flagged bonded, but no bond" : " is bonded, but not flagged");
+        }
+    }
+    const size_t n = granbond_bond_store_len(store);
+    std::vector<double> mine;
+    for (size_t k = 0; k < n && wrong.empty(); k++) {
+        int32_t e[2];
+        int64_t partner = 0;
+        double state[GRANBOND_BOND_STATE_LEN];
+        if (granbond_bond_store_bond(store, k, e, &partner, state) != GB_STATUS_OK)
+            wrong = "bond " + std::to_string(k) + ": " + coreReason();
+        else if (e[0] < 0 || e[0] >= atom->nlocal || e[1] < 0 || static_cast<int64_t>(atom->tag[e[1]]) != partner)
+            wrong = "bond " + std::to_string(k) + " does not join its owner and its partner " + std::to_string(partner);
+        else {
+            const double a = static_cast<double>(atom->tag[e[0]]), b = static_cast<double>(partner);
+            mine.push_back(std::min(a, b));
+            mine.push_back(std::max(a, b));
+        }
+    }
+    // every bond once: the pairs of all ranks, gathered
+    int count = static_cast<int>(mine.size());
+    std::vector<int> counts(comm->nprocs), offsets(comm->nprocs + 1, 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+    for (int r = 0; r < comm->nprocs; r++) offsets[r + 1] = offsets[r] + counts[r];
+    std::vector<double> all(static_cast<size_t>(offsets[comm->nprocs]));
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
+    std::vector<std::pair<double, double>> pairs;
+    for (size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
+    std::sort(pairs.begin(), pairs.end());
+    for (size_t k = 1; k < pairs.size() && wrong.empty(); k++)
+        if (pairs[k] == pairs[k - 1])
+            wrong = "the bond of atoms " + std::to_string(static_cast<long long>(pairs[k].first)) + " and " +
+                    std::to_string(static_cast<long long>(pairs[k].second)) + " is stored twice";
+    const GbStoreCounts c = bonds_->counts();
+    const long long local[4] = {c.created, c.broken_distance + c.broken_tension + c.broken_compression + c.broken_shear,
+                                c.intact, c.lost_owner_gone + c.lost_partner_unreached + c.lost_id_reused + c.lost_no_model};
+    long long sums[4];
+    MPI_Allreduce(local, sums, 4, MPI_LONG_LONG, MPI_SUM, world);
+    if (wrong.empty() && sums[0] != sums[1] + sums[2] + sums[3])
+        wrong = std::to_string(sums[0]) + " bonds created, " + std::to_string(sums[1]) + " broken, " +
+                std::to_string(sums[2]) + " intact, " + std::to_string(sums[3]) + " lost";
+    int bad = !wrong.empty(), anyBad = 0;
+    MPI_Allreduce(&bad, &anyBad, 1, MPI_INT, MPI_MAX, world);
+    if (bad) error->one(FLERR, "pair granbond: store check at step " + std::to_string(update->ntimestep) + ": " + wrong);
+    if (anyBad) error->all(FLERR, "pair granbond: store check failed on another rank");
+}
+
+// Whether a bond exists on any rank; collective.
 bool PairGranbond::bondsExist() const
 {
-    int mine = 0, any = 0;
-    const int *npartner = fixHistory_ ? fixHistory_->*HistoryPartners::count() : nullptr;
-    double **values = fixHistory_ ? fixHistory_->*HistoryPartners::values() : nullptr;
-    if (npartner && values)
-        for (int i = 0; i < atom->nlocal && !mine; i++)
-            for (int k = 0; k < npartner[i] && !mine; k++)
-                mine = values[i][sizeHistory_ * k + layout_.status] == GB_BOND_STATUS_INTACT;
+    int mine = bonds_ && granbond_bond_store_len(bonds_->store()) > 0, any = 0;
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
     return any != 0;
 }
 
-// The bonds intact after this pass (`intact` on this rank), balanced
-// against the created and broken ones since the previous count
-// (BondBalance); collective.
-void PairGranbond::countVanished(long long intact)
-{
-    lossCheck_ = false;
-    const double mine[3] = {static_cast<double>(created_), static_cast<double>(broken_),
-                            static_cast<double>(intact)};
-    double all[3];
-    MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
-    const long long vanished = balance_.vanished(all[0], all[1], all[2]);
-    if (comm->me == 0) vanished_ += vanished;   // counted once: the compute sums over ranks
-    if (vanished > 0 && comm->me == 0)
-        error->warning(FLERR, vanishedMessage("pair granbond (bond/nonlinear)", vanished, update->ntimestep,
-                                              "warned each time bonds are found missing (at a run's start, and "
-                                              "when the atom count changes)"));
-}
-
 double PairGranbond::memory_usage()
 {
-    double bytes = Pair::memory_usage() + static_cast<double>(pairs_.size() * sizeof(TypePair));
-    for (const BondIndex &b : index_) bytes += b.bytes();
-    return bytes;
+    return Pair::memory_usage() + static_cast<double>(pairs_.size() * sizeof(TypePair)) +
+           static_cast<double>(outputs_.capacity() * sizeof(GbBondOutput));
 }
 
 }

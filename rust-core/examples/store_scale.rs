@@ -91,6 +91,7 @@ fn main() {
             types: &types,
             kinds: &kinds,
             ntypes: 1,
+            reach: 0.0,
         };
         store.link(&link_atoms).expect("a well-formed rank");
         // every touching pair, as a pair loop at the creation step finds them

@@ -1055,6 +1055,11 @@ typedef struct GbStoreAtoms {
    * Atom types, one per atom.
    */
   const int32_t *types;
+  /**
+   * The farthest a bond's atoms may be apart and still be found (the
+   * ghost atoms' reach); not above 0: no limit.
+   */
+  double reach;
 } GbStoreAtoms;
 
 /**
@@ -2382,6 +2387,20 @@ enum GbStatus granbond_bond_store_would_create(const struct GbBondStore *store,
                                                const struct GbPairKinematics *kinematics,
                                                int64_t step,
                                                int32_t *creates);
+
+/**
+ * The bonds of each local atom, wherever they are stored (owned here,
+ * partner here, or owned on another rank as the view says), each bond
+ * once per atom, written to `counts` (`nlocal` entries, the local atoms of
+ * the latest link).
+ *
+ * # Safety
+ * Pointers must be null or valid; `counts` for `nlocal` entries.
+ */
+enum GbStatus granbond_bond_store_count_atoms(const struct GbBondStore *store,
+                                              uint32_t *counts,
+                                              size_t nlocal,
+                                              const struct GbAtomIds *ids);
 
 /**
  * The layout of a pair record, with the Voigt contact's state first

@@ -93,6 +93,7 @@ impl Atoms {
             types: &self.types,
             kinds,
             ntypes: 1,
+            reach: 0.0,
         }
     }
 
@@ -613,6 +614,23 @@ fn a_bond_across_a_periodic_boundary_takes_its_partners_closest_image() {
     );
 }
 
+/// Atoms 1 and 2 touching, both local, bonded by `model`, linked.
+fn bonded_pair(model: &BondModel) -> (BondStore, Atoms) {
+    let mut atoms = Atoms::default();
+    sphere(&mut atoms, 1, 0.0);
+    sphere(&mut atoms, 2, 2.0 * R);
+    atoms.nlocal = 2;
+    let mut store = BondStore::new();
+    store.grow(2);
+    link(&mut store, &atoms);
+    store.begin_pass(1e-7, true, false);
+    assert!(store
+        .try_create(model, 0, 0, 1, [1, 2], &atoms.kinematics(0, 1), 1)
+        .unwrap());
+    store.finish_pass();
+    (store, atoms)
+}
+
 #[test]
 fn a_broken_bond_leaves_the_store_and_cannot_form_again_in_its_pass() {
     let p = BondParams {
@@ -620,18 +638,7 @@ fn a_broken_bond_leaves_the_store_and_cannot_form_again_in_its_pass() {
         ..common::params()
     };
     let model = bond_model(p);
-    let mut atoms = Atoms::default();
-    atoms.add(1, [0.0; 3], 1);
-    atoms.add(2, [2.0 * R, 0.0, 0.0], 2);
-    atoms.nlocal = 2;
-    let mut store = BondStore::new();
-    store.grow(2);
-    link(&mut store, &atoms);
-    store.begin_pass(1e-7, true, false);
-    assert!(store
-        .try_create(&model, 0, 0, 1, [1, 2], &atoms.kinematics(0, 1), 1)
-        .unwrap());
-    store.finish_pass();
+    let (mut store, mut atoms) = bonded_pair(&model);
     atoms.x[3] = 2.1 * R;
     link(&mut store, &atoms);
     store.begin_pass(1e-7, true, false);
@@ -812,4 +819,20 @@ fn pass_chunks(store: &mut BondStore, model: &BondModel, atoms: &Atoms) {
         .expect("a usable pass")
         > 0
     {}
+}
+
+#[test]
+fn a_bond_stretched_beyond_the_ghosts_reach_is_lost_on_one_rank_as_on_several() {
+    let model = bond_model(common::params());
+    let (mut store, mut atoms) = bonded_pair(&model);
+    // moved far apart between runs: on several ranks the partner would be
+    // beyond the ghost atoms; on one it is local, and is not taken either
+    atoms.x[3] = 20.0 * R;
+    let reached = LinkAtoms {
+        reach: 5.0 * R,
+        ..atoms.link_atoms(&KINDS)
+    };
+    let report = store.link(&reached).unwrap();
+    assert_eq!(report.partner_unreached, 1, "{report:?}");
+    assert!(balanced(&store.counts()));
 }

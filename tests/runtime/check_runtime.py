@@ -5,15 +5,16 @@
   continuity  free motion (fix nve/sphere) continued by a second `run` or
               by write_restart + read_restart ends, at step 2N, in the state
               of the uninterrupted run: bit for bit (17 digits of every
-              position, velocity, spin, force and torque) for run N + run N
-              on 1 and 2 ranks, and for restarts 1 -> 1 and 2 -> 1. A
-              restart 2 -> 2 is held to 1e-12 (relative) where several
-              loads sum on one atom (the cluster): LAMMPS orders the
-              neighbour list of the restarted run differently, so those
-              sums round differently; one load per atom (the pair) is held
-              bit for bit there too. Scenes: --scene cluster (LAMMPS: 8
-              bonded spheres, bond damping on) and --scene pair (a voigt
-              pair, sliding and rolling; both engines).
+              position, velocity, spin, force and torque) for a contact
+              (--scene pair, a voigt pair sliding and rolling; both
+              engines) for run N + run N on 1 and 2 ranks and restarts
+              1 -> 1, 2 -> 1 and 2 -> 2. Bonds (--scene cluster, LAMMPS: 8
+              bonded spheres, bond damping on) to 1e-7 relative: a run's
+              setup pass evaluates the bonds' loads from their state, with
+              the damping of the velocities the run starts with (keeping
+              the last pass's loads would cost 72 bytes a bond), and on 2
+              ranks the loads on ghost atoms reach their atoms in another
+              order.
 
   timestep    the core's time-step check, in both engines: above the
               recommended step a run warns (EXCEEDS above the critical
@@ -138,15 +139,20 @@ def check_continuity(a, workdir):
     if not any(float(x) != 0.0 for row in want for x in row[10:13]):
         raise Failure("no force at step 2N: the scene does not test the history")
     results = []
+    # LAMMPS bonds (the cluster): a run's setup pass evaluates the bonds'
+    # damping at the velocities the run starts with, and the ghosts' loads
+    # reach their atoms in another order on 2 ranks, so those agree to
+    # within `bound`; one contact per atom (the pair) agrees bit for bit
+    exact = a.scene == "pair"
+    bound = 1e-12 if exact else 1e-7
     for n, command in ranks.items():
         if n == "2":
-            results.append(("run 2N on 2 ranks", continuity_run(a, command, d("whole-2"), "whole"), True))
-        results.append((f"run N; run N on {n} rank(s)", continuity_run(a, command, d(f"two-{n}"), "two"), True))
+            results.append(("run 2N on 2 ranks", continuity_run(a, command, d("whole-2"), "whole"), exact))
+        results.append((f"run N; run N on {n} rank(s)", continuity_run(a, command, d(f"two-{n}"), "two"), exact))
         continuity_run(a, command, d(f"write-{n}"), "write", restart="half.restart")
         restart = d(f"write-{n}", "half.restart")
-        results.append((f"restart {n} -> 1", continuity_run(a, one, d(f"read-{n}-1"), "read", restart), True))
+        results.append((f"restart {n} -> 1", continuity_run(a, one, d(f"read-{n}-1"), "read", restart), exact))
         if n == "2":
-            exact = a.scene == "pair"
             results.append(("restart 2 -> 2", continuity_run(a, command, d("read-2-2"), "read", restart), exact))
     failed = []
     for label, got, exact in results:
@@ -156,7 +162,7 @@ def check_continuity(a, workdir):
             print(f"{label}: bit for bit the uninterrupted run")
         else:
             print(f"{label}: differs, largest relative difference {worst:.3g}")
-        if (exact and not same) or worst > 1e-12:
+        if (exact and not same) or worst > bound:
             failed.append(label)
     if failed:
         raise Failure("not continuous: " + ", ".join(failed))
@@ -299,10 +305,12 @@ def check_lost(a, workdir):
         run_ok(command, f"lost_{a.kind}.in", os.path.join(workdir, f"np{n}"), {})
         warned = [x for x in warnings_in_log(os.path.join(workdir, f"np{n}")) if "bonds vanished" in x]
         if a.kind == "lammps":
-            # no bond counter: each loss is warned with its number
-            if len(warned) != 2 or "2 bonds vanished" not in warned[0] or "1 bonds vanished" not in warned[1]:
+            # no bond counter: each loss is warned with its number and cause
+            warned = [x for x in warnings_in_log(os.path.join(workdir, f"np{n}")) if "bonds lost" in x]
+            if (len(warned) != 2 or "2 bonds lost" not in warned[0] or "1 bonds lost" not in warned[1]
+                    or "their atom left the system" not in warned[0] or "partner was not among" not in warned[1]):
                 raise Failure(f"{n} rank(s): want a warning naming the 2 bonds of the deleted atom, then one "
-                              f"naming the bond of the pair that left the box: {warned}")
+                              f"naming the bond of the pair that left the box, each with its cause: {warned}")
             print(f"{n} rank(s): {' / '.join(w[:70] for w in warned)}")
             continue
         with open(os.path.join(workdir, f"np{n}", "log.lammps"), encoding="utf-8") as f:

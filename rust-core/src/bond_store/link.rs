@@ -27,6 +27,10 @@ pub struct LinkAtoms<'a> {
     pub kinds: &'a [i32],
     /// The number of atom types.
     pub ntypes: usize,
+    /// The farthest a bond's atoms may be apart and still be found (the
+    /// reach of the ghost atoms), so that a bond is found alike on one rank
+    /// and on several; not above 0: no limit.
+    pub reach: f64,
 }
 
 /// Why a bond left the store without breaking.
@@ -171,6 +175,7 @@ impl BondStore {
             self.seen[i] = atoms.ids.get(i);
         }
         report.linked = self.bonds.len() as i64;
+        self.nlocal = atoms.nlocal;
         self.counts.lost_owner_gone += report.owner_gone;
         self.counts.lost_partner_unreached += report.partner_unreached;
         self.counts.lost_id_reused += report.id_reused;
@@ -190,6 +195,14 @@ impl BondStore {
         let j = self
             .closest_image(atoms, i, self.bonds[b].partner)
             .ok_or(LossCause::PartnerUnreached)?;
+        if atoms.reach > 0.0 {
+            let d2: f64 = (0..3)
+                .map(|c| (atoms.x[3 * i + c] - atoms.x[3 * j + c]).powi(2))
+                .sum();
+            if d2 > atoms.reach * atoms.reach {
+                return Err(LossCause::PartnerUnreached);
+            }
+        }
         // an atom no link has seen under this id is a new atom that took it
         // over (its owner rank marks it seen at every link, and the mark
         // reaches its ghost images with the next border exchange)

@@ -119,6 +119,8 @@ pub struct BondStore {
     kinds: Vec<u16>,
     /// Whether `ends` and `kinds` describe every bond held.
     linked: bool,
+    /// The local atoms of the latest link.
+    nlocal: usize,
     /// The most bonds one local atom owns, from the latest link and the
     /// bonds created since.
     most_owned: usize,

@@ -90,6 +90,40 @@ impl BondStore {
         }
     }
 
+    /// The bonds of each local atom, wherever they are stored: those it
+    /// owns, those it is the partner of on this rank, and those the view
+    /// holds for it (owned on another rank), each bond once per atom.
+    /// `counts` holds the local atoms; `ids` are the rank's atom ids as the
+    /// latest link saw them.
+    pub fn count_atoms(&self, counts: &mut [u32], ids: Ids<'_>) {
+        counts.fill(0);
+        if !self.linked {
+            return;
+        }
+        let nlocal = counts.len().min(self.nlocal);
+        // a ghost image of a local atom stands for that atom
+        let local_of = |a: usize| -> Option<usize> {
+            if a < nlocal {
+                return Some(a);
+            }
+            (a < ids.len())
+                .then(|| self.map.images(ids, ids.get(a)).find(|&l| l < nlocal))
+                .flatten()
+        };
+        for e in &self.ends {
+            for &a in e {
+                if let Some(l) = local_of(a as usize) {
+                    counts[l] += 1;
+                }
+            }
+        }
+        for &(g, i) in &self.view {
+            if local_of(g as usize).is_none() && (i as usize) < nlocal {
+                counts[i as usize] += 1;
+            }
+        }
+    }
+
     /// Whether local atom `i` and atom `j` (local or ghost) are bonded, as
     /// far as this rank knows: a bond one of them owns here, or one the
     /// view holds. `ids` are the rank's atom ids.

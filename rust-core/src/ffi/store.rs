@@ -42,6 +42,9 @@ pub struct StoreAtoms {
     pub x: *const f64,
     /// Atom types, one per atom.
     pub types: *const i32,
+    /// The farthest a bond's atoms may be apart and still be found (the
+    /// ghost atoms' reach); not above 0: no limit.
+    pub reach: f64,
 }
 
 unsafe fn ids<'a>(ids: &AtomIds) -> Result<Ids<'a>, Failure> {
@@ -239,6 +242,7 @@ pub unsafe extern "C" fn granbond_bond_store_link(
         types: slice(atoms.types, n, "atoms->types")?,
         kinds: slice(kinds, nt1, "kinds")?,
         ntypes,
+        reach: atoms.reach,
     };
     *report = store
         .link(&view)
@@ -623,5 +627,26 @@ pub unsafe extern "C" fn granbond_bond_store_would_create(
 ) -> Status {
     *creates = 0;
     *creates = store.would_create(model, local, ghost, kinematics, step)? as i32;
+    Ok(())
+}
+
+/// The bonds of each local atom, wherever they are stored (owned here,
+/// partner here, or owned on another rank as the view says), each bond
+/// once per atom, written to `counts` (`nlocal` entries, the local atoms of
+/// the latest link).
+///
+/// # Safety
+/// Pointers must be null or valid; `counts` for `nlocal` entries.
+#[entry(store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_count_atoms(
+    store: *const BondStore,
+    counts: *mut u32,
+    nlocal: usize,
+    ids: *const AtomIds,
+) -> Status {
+    let counts = slice_mut(counts, nlocal, "counts")?;
+    let ids = self::ids(reference(ids, "ids")?)?;
+    store.count_atoms(counts, ids);
     Ok(())
 }

@@ -40,6 +40,7 @@ static GbStoreAtoms store_atoms(const TwoAtoms *a)
     s.nlocal = 2;
     s.x = a->x;
     s.types = a->types;
+    s.reach = 0.0;
     return s;
 }
 
@@ -152,6 +153,11 @@ int test_bond_store(void)
         EXPECT_OK(granbond_bond_store_would_create(store, m, 0, 1, &k, CREATE_STEP, &creates),
                   "granbond_bond_store_would_create");
         CHECK(creates == 1, "the creation rules hold for the pair at the creation step");
+        {
+            uint32_t counts[2] = {9, 9};
+            EXPECT_OK(granbond_bond_store_count_atoms(store, counts, 2, &ids), "granbond_bond_store_count_atoms");
+            CHECK(counts[0] == 1 && counts[1] == 1, "one bond on each atom, though the view holds it too");
+        }
     }
 
     /* Atom 1 migrates to another store, with its bond. */

@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 94] = [
+pub const ENTRY_POINTS: [&str; 95] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -156,6 +156,7 @@ pub const ENTRY_POINTS: [&str; 94] = [
     "granbond_bond_store_finish_view",
     "granbond_bond_store_bonded",
     "granbond_bond_store_would_create",
+    "granbond_bond_store_count_atoms",
 ];
 
 /// The set-by-name and need entries of one parameter table.
@@ -1601,6 +1602,7 @@ impl<'t> Session<'t> {
             nlocal,
             x: x.as_ptr(),
             types: types.as_ptr(),
+            reach: [0.0, 3e-3, -1.0, f64::NAN][input.below(4)],
         };
         let arrays = AtomArrayPointers {
             x: x.as_ptr(),
@@ -1779,6 +1781,22 @@ impl<'t> Session<'t> {
             }
             let status = fs::granbond_bond_store_finish_view(st);
             ok(self, "granbond_bond_store_finish_view", status);
+            let mut counts = vec![0u32; nlocal + 1];
+            let status = fs::granbond_bond_store_count_atoms(
+                st,
+                Self::batch_ptr(&mut counts, input.late_pointer()),
+                nlocal,
+                &wide_ids,
+            );
+            if ok(self, "granbond_bond_store_count_atoms", status) {
+                // each bond counts at most twice on a rank, once an end
+                let held = fs::granbond_bond_store_len(st);
+                let total: u32 = counts[..nlocal].iter().sum();
+                assert!(
+                    total as usize <= 2 * held + n * n,
+                    "counts {counts:?} of {held} bonds"
+                );
+            }
             let bonded =
                 fs::granbond_bond_store_bonded(st, input.below(n + 1), input.below(n + 1), &wide_ids);
             self.answer_value("granbond_bond_store_bonded");

@@ -1,0 +1,121 @@
+"""Engine-level checks that a LAMMPS bond lives with its atoms, in the
+bond store (docs/development.md, "Where a bond lives"), whatever the deck
+does around it. The decks in decks/bond_home/ are the testers' (written
+for the defects they found when bonds lived in the contact history). One
+claim per mode:
+
+  newton     the bonded block in free motion under LAMMPS's default
+             `newton on` on 3 ranks, and under `newton off`: at every
+             output the intact bonds equal created - broken, none is lost,
+             nothing is warned, and both settings end with the same
+             counts.
+  switch     `pair_style granular` (or `zero`) for 10 steps, then
+             `pair_style granbond` again: the 267 bonds are kept (the run
+             that only re-issues granbond keeps them too), and the run
+             under the other style is told that they wait.
+  settype    atoms set to a type pair without bonds: the bonds dropped
+             are warned with that cause, not as vanished atoms.
+  data       `write_data` says that the bonds are not in the data file
+             and names the restart route.
+  rerun      `rerun` of a bonded trajectory says that the bonds cannot be
+             rebuilt from a dump.
+
+usage: check_bond_home.py --mode MODE --kind lammps --engine BIN
+                          [--mpiexec MPIEXEC] --workdir DIR
+"""
+
+import argparse
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "support"))
+sys.path.insert(0, HERE)
+
+import deck_runner  # noqa: E402
+from check_bond_index import launcher  # noqa: E402
+from check_runtime import thermo_column, warnings_in_log  # noqa: E402
+from deck_runner import Failure, main, run_ok  # noqa: E402
+
+DECKS = os.path.join(HERE, "decks", "bond_home")
+BASE = {"base": os.path.join(DECKS, "base")}
+
+
+def run(a, n, deck, workdir, variables=None):
+    deck_runner.DECKS = DECKS
+    return run_ok(launcher(a, n), deck, workdir, dict(BASE, **(variables or {})))
+
+
+def check_newton(a, workdir):
+    n = 3 if a.mpiexec else 1
+    finals = {}
+    for newton in ("default", "off"):
+        d = os.path.join(workdir, newton)
+        text = run(a, n, "newton_default_counts.in", d, {"newton": newton})
+        intact, lost, expect = thermo_column(text, "c_pg[3]"), thermo_column(text, "c_pg[8]"), thermo_column(text, "v_expect")
+        if not intact or intact != expect or any(v != 0 for v in lost):
+            raise Failure(f"newton {newton}, {n} ranks: intact {intact} against created - broken {expect}, lost {lost}")
+        warned = warnings_in_log(d)
+        if warned:
+            raise Failure(f"newton {newton}: a correct deck warned: {warned}")
+        finals[newton] = intact[-1]
+        print(f"ok: newton {newton}, {n} ranks: intact = created - broken at every output ({intact[-1]:g} at the end)")
+    if finals["default"] != finals["off"]:
+        raise Failure(f"newton on and off end with {finals['default']} and {finals['off']} intact bonds")
+
+
+def check_switch(a, workdir):
+    kept = run(a, 1, "pair_style_switch.in", os.path.join(workdir, "style"), {"mode": "style"})
+    want = thermo_column(kept, "c_pg[3]")[-1]
+    if want <= 0:
+        raise Failure("no bond in the reference run: the deck does not test them")
+    for mode, style in (("switch", "granular"), ("zero", "zero")):
+        d = os.path.join(workdir, mode)
+        text = run(a, 1, "pair_style_switch.in", d, {"mode": mode})
+        got = thermo_column(text, "c_pg[3]")[-1]
+        told = [w for w in warnings_in_log(d) if f"{want:g} bonds of pair_style granbond are kept" in w and style in w]
+        if got != want or not told:
+            raise Failure(f"pair_style {style} and back: {got:g} intact bonds (want {want:g}); warnings "
+                          f"{warnings_in_log(d)}")
+        print(f"ok: pair_style {style} and back: the {got:g} bonds kept, and told: {told[0][:100]}")
+
+
+def check_settype(a, workdir):
+    d = os.path.join(workdir, "settype")
+    run(a, 1, "set_type.in", d)
+    told = [w for w in warnings_in_log(d) if "bonds lost" in w]
+    if len(told) != 1 or "no bond model" not in told[0] or "left the system" in told[0]:
+        raise Failure(f"set type: want one warning with the types' cause: {warnings_in_log(d)}")
+    print(f"ok: set type: {told[0][:140]}")
+
+
+def check_data(a, workdir):
+    d = os.path.join(workdir, "data")
+    run(a, 1, "write_read_data_a.in", d)
+    told = [w for w in warnings_in_log(d) if w.startswith("WARNING: write_data") and "not in the data file" in w
+            and "write_restart" in w]
+    if not told:
+        raise Failure(f"write_data: no warning that the bonds are not in the data file: {warnings_in_log(d)}")
+    print(f"ok: {told[0][:140]}")
+
+
+def check_rerun(a, workdir):
+    d = os.path.join(workdir, "rerun")
+    run(a, 1, "rerun.in", d)
+    told = [w for w in warnings_in_log(d) if w.startswith("WARNING: rerun") and "not in dump files" in w]
+    if not told:
+        raise Failure(f"rerun: no warning that the bonds cannot come from a dump: {warnings_in_log(d)}")
+    print(f"ok: {told[0][:140]}")
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--mode", required=True)
+    parser.add_argument("--kind", required=True)
+    parser.add_argument("--engine", required=True)
+    parser.add_argument("--mpiexec")
+    parser.add_argument("--workdir", required=True)
+    a = parser.parse_args()
+    checks = {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
+              "rerun": check_rerun}
+    main(lambda: checks[a.mode](a, os.path.abspath(a.workdir)))
