@@ -73,6 +73,12 @@ public:
     std::vector<BreakEvent> &breakEvents() { return breaks_; }
     int breakLogUsers = 0;
     int bondOutputUsers = 0;
+    // The contact history's flag of a pair: 0 apart (its history all
+    // zero), 1 touching, kBondedMark bonded. The last is a cache of the
+    // bond store, marked again from it after every list build and wherever
+    // a bond breaks or forms (fix neigh/history keeps only whether a flag
+    // is set).
+    static const int kBondedMark = 2;
     GbAtomIds atomIds() const;
 
 private:
@@ -107,7 +113,7 @@ private:
     void contactOf(size_t tp, int i, int j, int *touch, double *history, bool advance, bool touching,
                    const double *del, double rsq);
 
-    // The bond pass (pair_granbond.cpp, "bonds"): the store linked after a
+    // The bond pass (pair_bonds.cpp): the store linked after a
     // list build, the contact history's flags marked from it, its chunks
     // stepped and their loads added to the atoms, the bonds that broke
     // taken out of the contact loop, the view sent again where bonds broke
