@@ -103,18 +103,24 @@ void PairGranbond::markBonded(bool)
     const GbAtomIds ids = atomIds();
     const int ntypes1 = atom->ntypes + 1;
     const int *type = atom->type;
+    livePairs_.assign(static_cast<size_t>(list->inum), 0);
+    listPosition_.assign(static_cast<size_t>(atom->nlocal), -1);
     for (int ii = 0; ii < list->inum; ii++) {
         const int i = list->ilist[ii];
         const int *jlist = list->firstneigh[i];
         int *touch = fixHistory_->firstflag[i];
         double *allhistory = fixHistory_->firstvalue[i];
+        listPosition_[i] = ii;
         for (int jj = 0; jj < list->numneigh[i]; jj++) {
             const int j = jlist[jj] & NEIGHMASK;
             const size_t tp = static_cast<size_t>(std::min(type[i], type[j])) * ntypes1 + std::max(type[i], type[j]);
-            if (!bond_[tp]) continue;
-            if (granbond_bond_store_bonded(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids)) {
+            if (bond_[tp] &&
+                granbond_bond_store_bonded(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids)) {
                 touch[jj] = kBondedMark;
-            } else if (touch[jj] == kBondedMark) {
+                continue;
+            }
+            livePairs_[ii]++;
+            if (touch[jj] == kBondedMark) {
                 touch[jj] = 0;
                 if (!pairs_[tp].contactUnderBond)
                     std::fill(allhistory + sizeHistory_ * jj, allhistory + sizeHistory_ * (jj + 1), 0.0);
@@ -199,6 +205,8 @@ void PairGranbond::takeBroken(bool advance)
             for (int jj = 0; jj < list->numneigh[a]; jj++)
                 if ((jlist[jj] & NEIGHMASK) == other && touch[jj] == kBondedMark) {
                     touch[jj] = 0;
+                    if (static_cast<size_t>(a) < listPosition_.size() && listPosition_[a] >= 0)
+                        livePairs_[listPosition_[a]]++;
                     if (!pairs_[tp].contactUnderBond) {
                         double *h = fixHistory_->firstvalue[a] + sizeHistory_ * jj;
                         std::fill(h, h + sizeHistory_, 0.0);

@@ -426,7 +426,13 @@ void PairGranbond::compute(int eflag, int vflag)
     const TypePair *const pairs = pairs_.data();
     const GbBondModel *const *const bonds = bond_.data();
     const char *const createsNow = createsNow_.data();
+    // whether a bonded pair's contact is stepped in this pass at all
+    bool underBond = false;
+    for (size_t tp = 0; tp < pairs_.size(); tp++) underBond = underBond || (advance && pairs[tp].contactUnderBond);
+    const int *const live = anyBond_ && !underBond && livePairs_.size() == static_cast<size_t>(inum) ? livePairs_.data() : nullptr;
     for (int ii = 0; ii < inum; ii++) {
+        // an atom whose listed pairs are all bonds: nothing to do
+        if (live && live[ii] == 0) continue;
         const int i = ilist[ii];
         const int itype = type[i];
         const double radi = radius[i];
@@ -435,6 +441,7 @@ void PairGranbond::compute(int eflag, int vflag)
         int *touch = firsttouch[i];
         double *allhistory = firsthistory[i];
         for (int jj = 0, jnum = numneigh[i]; jj < jnum; jj++) {
+            if (touch[jj] == kBondedMark && !underBond) continue;   // most bonds: no lookup
             const int j = jlist[jj] & NEIGHMASK;
             const int jtype = type[j];
             const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype

@@ -135,6 +135,9 @@ private:
     std::vector<GbTypeBodies> bodies_;      // per type, over all ranks, at the latest run start
     std::vector<double> transferSign_;      // per history slot: +1 copy, -1 negate
     std::vector<GbBondOutput> outputs_;     // per bond, the latest force pass (bondOutputUsers)
+    // per position of the list: its pairs that are not bonds (the contact
+    // loop passes over an atom without any); per local atom: its position
+    std::vector<int> livePairs_, listPosition_;
     double *ghostLoads_ = nullptr;          // this pass's loads on ghost atoms (newton off)
     bool checkStore_;                       // GRANBOND_CHECK_STORE: recount the bonds after each pass
     int sizeHistory_;

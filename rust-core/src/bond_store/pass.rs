@@ -151,21 +151,18 @@ impl BondStore {
                 StepFailureReason::IndexOutOfRange,
             )
         })?;
-        for b in first..last {
-            if (self.ends[b][0] as usize) >= ids.len() || (self.ends[b][1] as usize) >= ids.len() {
-                return Err(fail(b, self.ends[b], StepFailureReason::IndexOutOfRange));
-            }
-        }
         ends[..n].copy_from_slice(pairs);
         let outs = &mut outs[..n];
         let stepped = if self.cursor.advance {
-            let mut states: [*mut BondState; CHUNK] = [std::ptr::null_mut(); CHUNK];
+            // left uninitialised beyond the chunk: a chunk of a few bonds
+            // would otherwise pay for clearing all CHUNK of them
+            let mut states = [const { std::mem::MaybeUninit::<*mut BondState>::uninit() }; CHUNK];
             for (s, bond) in states.iter_mut().zip(&mut self.bonds[first..last]) {
-                *s = &mut bond.state;
+                s.write(&mut bond.state);
             }
-            // SAFETY: the pointers are to distinct bonds of `self.bonds`,
-            // borrowed mutably for this call, and `&mut BondState` has the
-            // layout of `*mut BondState`.
+            // SAFETY: the first n pointers are written, to distinct bonds of
+            // `self.bonds` borrowed mutably for this call, and `&mut
+            // BondState` has the layout of `*mut BondState`.
             let states =
                 unsafe { std::slice::from_raw_parts_mut(states.as_mut_ptr() as *mut &mut BondState, n) };
             model.step_indexed(&kinematics, self.cursor.dt, states, outs)
@@ -207,8 +204,12 @@ impl BondStore {
             if out.status != BondStatus::Intact as i32 && self.cursor.advance {
                 let b = first + k;
                 let e = self.ends[b];
+                let owner = e[0] as usize;
+                if owner >= ids.len() {
+                    return Err(fail(b, e, StepFailureReason::IndexOutOfRange));
+                }
                 let broken = BrokenBond {
-                    ids: [ids.get(e[0] as usize), self.bonds[b].partner],
+                    ids: [ids.get(owner), self.bonds[b].partner],
                     ends: e,
                     out: *out,
                 };
