@@ -108,9 +108,16 @@ impl TorqueLaw {
 
     /// Bending torque on `i` for the (advanced) angle `theta_t`, with the
     /// stored history (`beta` is brought into the current tangent plane
-    /// here): `-h(x; x_max) I theta_t / x`, `x = |theta_t|`, where `x_max` is
-    /// the extreme of the side `theta_t` is on (`theta_t . beta >= 0`:
-    /// leading). Zero for a zero angle.
+    /// here): the gradient of the bending energy
+    /// [`super::energy::bend_work`] at the
+    /// updated history, `-I dE/dtheta_t`. Zero for a zero angle.
+    ///
+    /// The history is updated first (docs/models/bond-nonlinear.md,
+    /// "Bending"): on the leading side (`theta_t . beta >= 0`) past
+    /// `|beta|`, `beta` turns to `theta_t` when `|theta_t|` is beyond both
+    /// extremes, and only grows along its own direction otherwise; on the
+    /// opposite side `beta_opp` grows to `|theta_t|`. Each update lowers
+    /// the energy at the current angle, so no update releases work.
     #[inline(always)]
     pub fn bend<R: Real, V: Vector<R>>(
         &self,
@@ -119,32 +126,51 @@ impl TorqueLaw {
         history: BendHistory<R, V>,
         inertia: R,
     ) -> (Torque<R, V>, BendHistory<R, V>) {
-        let zero = R::splat(0.0);
+        let (zero, one, half) = (R::splat(0.0), R::splat(1.0), R::splat(0.5));
         let mut beta = tangential_part(history.leading, n);
         let mut opposite = history.opposite;
         let (x, mut extreme) = R::sqrt2(theta_t.norm_squared(), beta.norm_squared());
-        let mut leading = theta_t.dot(&beta).ge(zero);
+        let along = theta_t.dot(&beta);
+        let mut leading = along.ge(zero);
+        // Read only where both angles are non-zero (NaN elsewhere).
+        let mut cosine = along / (x * extreme);
         if self.history_reset {
             // Entering the opposite side makes it the leading side, with a
             // fresh history.
             beta = V::select(leading, beta, theta_t);
             extreme = select(leading, extreme, x);
             opposite = select(leading, opposite, zero);
+            cosine = select(leading, cosine, one);
             leading = R::mask(true);
         }
         let grows = leading & x.gt(extreme);
-        beta = V::select(grows, theta_t, beta);
+        let turns = grows & (x.ge(opposite) | !extreme.gt(zero));
+        beta = V::select(turns, theta_t, V::select(grows, beta * (x / extreme), beta));
+        cosine = select(turns, one, cosine).clamp(-1.0, 1.0);
         extreme = select(grows, x, extreme);
         opposite = select(leading, opposite, opposite.max(x));
-        let h = self.hysteresis.value(x, select(leading, extreme, opposite));
+
+        let h = &self.hysteresis;
+        let (h_lead, h_opp) = (h.value(x, extreme), h.value(x, opposite));
+        let spread = half * (h.work(x, extreme) - h.work(x, opposite));
+        // E = ((1 + c) E_lead + (1 - c) E_opp) / 2 with c = cosine; its
+        // gradient: a radial part, and (E_lead - E_opp)/2 times the
+        // gradient of c, (beta/|beta| - c theta_t/x) / x.
+        let radial = half * ((one + cosine) * h_lead + (one - cosine) * h_opp);
+        let (inv_x, inv_beta) = R::div2(one, x, one, extreme);
+        let across = spread * inv_x;
+        let torque = (theta_t * ((radial - across * cosine) * inv_x) + beta * (across * inv_beta)) * -inertia;
+        // Not from the law's parts: the part across the angle is a small
+        // difference of two vectors where the angle is close to the
+        // history's direction.
+        let magnitude = torque.norm();
         // A zero angle has no direction: no torque (the selected-away side
         // is NaN there).
         let on = x.gt(zero);
-        let torque = theta_t * (-h * inertia / x);
         (
             Torque {
                 torque: V::select(on, torque, V::zeros()),
-                magnitude: select(on, h.abs() * inertia, zero),
+                magnitude: select(on, magnitude, zero),
             },
             BendHistory {
                 leading: beta,
