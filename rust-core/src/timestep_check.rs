@@ -139,10 +139,13 @@ pub struct AtRest {
     pub ratio: f64,
     /// The bond type's percentage damping of the normal force, as counted.
     pub eta_fn: f64,
-    /// The recommended step of the same bonds regularised at `1e-3 rb`.
+    /// The regularisation suggested
+    /// ([`crate::bond::BondModel::rest_regularisation`]).
+    pub regularisation: f64,
+    /// Whether it matches the tension slope at rest (else `1e-3 rb`).
+    pub matched: bool,
+    /// The recommended step of the same bonds so regularised.
     pub regularised: f64,
-    /// Bond radius (the regularisation suggested is a fraction of it).
-    pub rb: f64,
 }
 
 /// The estimates of one type pair at the deck's step.
@@ -256,6 +259,8 @@ pub struct CitedNames {
     pub compression_linear_below: &'static str,
     /// The deck's name of `ku_fn1`.
     pub ku_fn1: &'static str,
+    /// The deck's name of `k_fn2`.
+    pub k_fn2: &'static str,
     /// The deck's name of `eta_fn`.
     pub eta_fn: &'static str,
 }
@@ -355,13 +360,21 @@ impl TimestepVerdict {
                      {recommended} {s} ({measured}): this law cannot be integrated stably at rest"
                 )
             };
+            let why = if r.matched {
+                format!(
+                    "({k1}/{k2})^2, where the compression slope at rest equals the tension slope",
+                    k1 = names.k_fn1,
+                    k2 = names.k_fn2
+                )
+            } else {
+                "1e-3 of the bond radius".to_string()
+            };
             text += &format!(
                 ". Bonds rest at zero compression, where the plain square root's stiffness is unbounded \
-                 ({clb} not set); there they {gain}. Remedy: the linear regularisation {clb} (for example 1e-3 \
-                 of the bond radius, {eps} {l}; recommended step then {reg} {s}), or more hysteresis \
-                 ({k}) or damping ({eta})",
+                 ({clb} not set); there they {gain}. Remedy: the linear regularisation {clb} {eps} {l} \
+                 ({why}; recommended step then {reg} {s}), or more hysteresis ({k}) or damping ({eta})",
                 clb = names.compression_linear_below,
-                eps = short(1e-3 * r.rb),
+                eps = short(r.regularisation),
                 reg = short(r.regularised),
                 k = names.ku_fn1,
                 eta = names.eta_fn,
@@ -427,6 +440,7 @@ mod tests {
         k_fn1: "k_fn1",
         compression_linear_below: "compression_linear_below",
         ku_fn1: "ku_fn1",
+        k_fn2: "k_fn2",
         eta_fn: "eta_fn",
     };
 

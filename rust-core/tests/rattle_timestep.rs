@@ -235,7 +235,7 @@ fn elastic_bonds_at_rest_under_the_plain_square_root_are_warned_at_every_step() 
             "cannot be integrated stably at rest",
             &format!("down to 0.05 of the recommended step {} s", short(step)),
             &format!("the linear regularisation {clb}"),
-            "for example 1e-3 of the bond radius, 6e-7 m",
+            "6e-7 m (1e-3 of the bond radius",
         ] {
             assert!(msg.contains(part), "no '{part}' in: {msg}");
         }

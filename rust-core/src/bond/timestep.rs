@@ -306,6 +306,24 @@ impl BondModel {
         REST_STABLE[row][column]
     }
 
+    /// The `compression_linear_below` that lets bonds rest stably: where
+    /// tension carries and it stays within the bond radius `rb`,
+    /// `(k_fn1 / k_fn2)^2`, at which the compression slope at rest
+    /// (`k_fn1 / sqrt(eps)`) equals the tension slope `k_fn2`, so a bond at
+    /// rest sees one stiffness on both sides (measured stable up to the
+    /// recommended step; a smaller one leaves a kink there, which still
+    /// gains energy above 0.2 of the step, docs/speed-accuracy.md);
+    /// otherwise `1e-3 rb`.
+    pub fn rest_regularisation(&self, rb: f64) -> f64 {
+        let p = &self.params;
+        let matched = (p.k_fn1 / p.k_fn2).powi(2);
+        if self.features & TENSION != 0 && matched.is_finite() && matched > 0.0 && matched <= rb {
+            matched
+        } else {
+            1e-3 * rb
+        }
+    }
+
     /// The percentage damping of the normal force that holds bonds at rest
     /// ([`BondModel::rest_stable_fraction`]): `eta_fn` with plain damping,
     /// none without or with smooth damping.

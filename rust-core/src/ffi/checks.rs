@@ -127,6 +127,7 @@ fn cited_names(naming: Naming) -> CitedNames {
         k_fn1: parameter_name("k_fn1", naming),
         compression_linear_below: parameter_name("compression_linear_below", naming),
         ku_fn1: parameter_name("ku_fn1", naming),
+        k_fn2: parameter_name("k_fn2", naming),
         eta_fn: parameter_name("eta_fn", naming),
     }
 }
@@ -155,8 +156,9 @@ fn bond_step_limits(
     let at_rest = rest_step.is_finite().then(|| {
         let rb = section(model.params.lambda, radius_i, radius_j).rb;
         let p = &model.params;
+        let regularisation = model.rest_regularisation(rb);
         let regularised = BondModel::new(BondParams {
-            compression_linear_below: 1e-3 * rb,
+            compression_linear_below: regularisation,
             ..p.clone()
         })
         .map_or(recommended, |m| {
@@ -168,8 +170,9 @@ fn bond_step_limits(
             recommended,
             ratio: p.ku_fn1 / p.k_fn1,
             eta_fn: model.rest_damping(),
+            regularisation,
+            matched: regularisation != 1e-3 * rb,
             regularised,
-            rb,
         }
     });
     StepLimits {
