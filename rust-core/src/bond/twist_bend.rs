@@ -144,7 +144,8 @@ impl TorqueLaw {
             leading = R::mask(true);
         }
         let grows = leading & x.gt(extreme);
-        let turns = grows & (x.ge(opposite) | !extreme.gt(zero));
+        // (Along `beta` itself turning is growing: the same history.)
+        let turns = grows & (x.ge(opposite) | !extreme.gt(zero) | cosine.ge(one));
         beta = V::select(turns, theta_t, V::select(grows, beta * (x / extreme), beta));
         cosine = select(turns, one, cosine).clamp(-1.0, 1.0);
         extreme = select(grows, x, extreme);
@@ -158,12 +159,15 @@ impl TorqueLaw {
         // gradient of c, (beta/|beta| - c theta_t/x) / x.
         let radial = half * ((one + cosine) * h_lead + (one - cosine) * h_opp);
         let (inv_x, inv_beta) = R::div2(one, x, one, extreme);
-        let across = spread * inv_x;
-        let torque = (theta_t * ((radial - across * cosine) * inv_x) + beta * (across * inv_beta)) * -inertia;
-        // Not from the law's parts: the part across the angle is a small
-        // difference of two vectors where the angle is close to the
-        // history's direction.
-        let magnitude = torque.norm();
+        let across = beta * inv_beta - theta_t * (cosine * inv_x);
+        // In one plane `across` is zero, exactly so where the plane holds a
+        // coordinate axis (`c = +-1` and both unit vectors exact): the torque
+        // and its size are then the signed law's, bit for bit.
+        let torque = theta_t * (-radial * inertia / x) + across * (-(spread * inv_x) * inertia);
+        // Off the line, the norm of the sum: the part across the angle is a
+        // small difference of two vectors near the history's line.
+        let off_line = across.norm_squared().gt(zero);
+        let magnitude = select(off_line, torque.norm(), radial.abs() * inertia);
         // A zero angle has no direction: no torque (the selected-away side
         // is NaN there).
         let on = x.gt(zero);
