@@ -289,12 +289,18 @@ impl TimestepVerdict {
             time: s,
             stress: pa,
         } = *units;
+        // Where no step is stable (bonds at rest under the plain square
+        // root, elastic and undamped) there is no step to exceed.
+        let compared = if limit > 0.0 {
+            format!("{verb} the {limit_name} step {} {s} of", short(limit))
+        } else {
+            "is not stable for".to_string()
+        };
         let mut text = format!(
-            "{style}: time step {dt} {s} {verb} the {limit_name} step {limit} {s} of the stiffest {what} \
+            "{style}: time step {dt} {s} {compared} the stiffest {what} \
              (atom types {a} and {b}, smallest radius {ra} / {rb} {l}, lightest mass {ma} / {mb} {kg}; \
              critical step {c} {s}",
             dt = short(self.dt),
-            limit = short(limit),
             ra = short(bodies[a].radius_min),
             rb = short(bodies[b].radius_min),
             ma = short(bodies[a].mass_min),

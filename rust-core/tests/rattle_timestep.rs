@@ -240,6 +240,8 @@ fn elastic_bonds_at_rest_under_the_plain_square_root_are_warned_at_every_step() 
             assert!(msg.contains(part), "no '{part}' in: {msg}");
         }
         assert!(!msg.contains("Use timestep <="), "no step is stable: {msg}");
+        assert!(msg.contains("is not stable for the stiffest bond"), "{msg}");
+        assert!(!msg.contains("step 0e0 s"), "no step is stable: {msg}");
     }
 }
 
