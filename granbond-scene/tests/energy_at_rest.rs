@@ -53,7 +53,7 @@ fn run(params: BondParams, fraction: f64, duration: f64) -> (f64, f64, f64) {
     let mass = DENSITY * 4.0 / 3.0 * std::f64::consts::PI * RADIUS.powi(3);
     let recommended = model.recommended_timestep(RADIUS, RADIUS, mass, mass);
     let mut scene = Scene::new(fraction * recommended);
-    let h = 0.0014142135623730951;
+    let h = std::f64::consts::SQRT_2 * RADIUS;
     for x in [[0.0, 0.0, 0.0], [h, h, 0.0], [h, 0.0, h], [0.0, h, h]] {
         scene
             .spheres

@@ -159,7 +159,7 @@ fn bond_step_limits(
         let regularisation = model.rest_regularisation(rb);
         let regularised = BondModel::new(BondParams {
             compression_linear_below: regularisation,
-            ..p.clone()
+            ..*p
         })
         .map_or(recommended, |m| {
             m.recommended_timestep(radius_i, radius_j, mass_i, mass_j)
