@@ -8,9 +8,12 @@
 //! turn, so its sides are defined by the history itself: the vector `beta`
 //! is the extreme reached on the *leading* side (its direction says which
 //! side that is), the scalar `beta_opp` the extreme reached on the
-//! *opposite* side. Only dot products and lengths enter, so the law does not
-//! depend on the coordinate axes; for bending in a fixed plane it is the
-//! signed twisting law along that plane's axis.
+//! *opposite* side. The bending torque is the gradient of the two sides'
+//! energies blended by the cosine between the angle and `beta`, so it does
+//! no work over a closed path at a fixed history; only dot products and
+//! lengths enter, so the law does not depend on the coordinate axes; for
+//! bending in a fixed plane it is the signed twisting law along that
+//! plane's axis.
 
 use super::hysteresis::{select, update_extremes, Loop};
 use crate::real::Real;
