@@ -124,6 +124,30 @@ pub struct Rattle {
     pub rb: f64,
 }
 
+/// Bonds at rest under the plain square root, for the message
+/// ([`crate::bond::BondModel::rest_timestep`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AtRest {
+    /// The longest step at which they gain no energy (0: none).
+    pub step: f64,
+    /// That step as a fraction of the recommended one.
+    pub fraction: f64,
+    /// The recommended step by the other rules (the critical step's
+    /// fraction, the rattle).
+    pub recommended: f64,
+    /// The bond type's `ku_fn1 / k_fn1`.
+    pub ratio: f64,
+    /// The bond type's percentage damping of the normal force, as counted.
+    pub eta_fn: f64,
+    /// The regularisation suggested
+    /// ([`crate::bond::BondModel::rest_regularisation`]).
+    pub regularisation: f64,
+    /// Whether it matches the tension slope at rest (else `1e-3 rb`).
+    pub matched: bool,
+    /// The recommended step of the same bonds so regularised.
+    pub regularised: f64,
+}
+
 /// The estimates of one type pair at the deck's step.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepLimits {
@@ -136,6 +160,8 @@ pub struct StepLimits {
     pub modes: Option<ModeLimits>,
     /// Where bonds can break in compression from the rattle.
     pub rattle: Option<Rattle>,
+    /// Where bonds at rest gain energy below the recommended step.
+    pub at_rest: Option<AtRest>,
 }
 
 impl StepLimits {
@@ -146,6 +172,7 @@ impl StepLimits {
             recommended: RECOMMENDED_FRACTION * critical,
             modes: None,
             rattle: None,
+            at_rest: None,
         }
     }
 }
@@ -230,6 +257,12 @@ pub struct CitedNames {
     pub k_fn1: &'static str,
     /// The deck's name of `compression_linear_below`.
     pub compression_linear_below: &'static str,
+    /// The deck's name of `ku_fn1`.
+    pub ku_fn1: &'static str,
+    /// The deck's name of `k_fn2`.
+    pub k_fn2: &'static str,
+    /// The deck's name of `eta_fn`.
+    pub eta_fn: &'static str,
 }
 
 impl TimestepVerdict {
@@ -256,12 +289,18 @@ impl TimestepVerdict {
             time: s,
             stress: pa,
         } = *units;
+        // Where no step is stable (bonds at rest under the plain square
+        // root, elastic and undamped) there is no step to exceed.
+        let compared = if limit > 0.0 {
+            format!("{verb} the {limit_name} step {} {s} of", short(limit))
+        } else {
+            "is not stable for".to_string()
+        };
         let mut text = format!(
-            "{style}: time step {dt} {s} {verb} the {limit_name} step {limit} {s} of the stiffest {what} \
+            "{style}: time step {dt} {s} {compared} the stiffest {what} \
              (atom types {a} and {b}, smallest radius {ra} / {rb} {l}, lightest mass {ma} / {mb} {kg}; \
              critical step {c} {s}",
             dt = short(self.dt),
-            limit = short(limit),
             ra = short(bodies[a].radius_min),
             rb = short(bodies[b].radius_min),
             ma = short(bodies[a].mass_min),
@@ -303,17 +342,73 @@ impl TimestepVerdict {
                 eps = short(1e-3 * r.rb),
             );
         }
-        let rule = if self.limits.recommended < RECOMMENDED_FRACTION * self.critical {
-            "set by the rattle".to_string()
-        } else {
-            format!("{RECOMMENDED_FRACTION} of the critical")
-        };
-        text += &format!(
-            ". Use timestep <= {r} {s} (the core's recommended step, {rule})",
-            r = short(self.recommended)
-        );
+        let at_rest = self.limits.at_rest.filter(|r| self.dt > r.step);
+        if let Some(r) = at_rest {
+            let measured = format!(
+                "{k}/{k1} = {ratio}, {eta} = {e}",
+                k = names.ku_fn1,
+                k1 = names.k_fn1,
+                ratio = plain(r.ratio),
+                eta = names.eta_fn,
+                e = plain(r.eta_fn),
+            );
+            let recommended = short(r.recommended);
+            let gain = if r.step > 0.0 {
+                format!(
+                    "gain energy above {f} of the recommended step {recommended} {s}, at {step} {s} \
+                     (measured for {measured})",
+                    f = r.fraction,
+                    step = short(r.step),
+                )
+            } else {
+                format!(
+                    "gain energy at every time step measured, down to 0.05 of the recommended step \
+                     {recommended} {s} ({measured}): this law cannot be integrated stably at rest"
+                )
+            };
+            let why = if r.matched {
+                format!(
+                    "({k1}/{k2})^2, where the compression slope at rest equals the tension slope",
+                    k1 = names.k_fn1,
+                    k2 = names.k_fn2
+                )
+            } else {
+                "1e-3 of the bond radius".to_string()
+            };
+            text += &format!(
+                ". Bonds rest at zero compression, where the plain square root's stiffness is unbounded \
+                 ({clb} not set); there they {gain}. Remedy: the linear regularisation {clb} {eps} {l} \
+                 ({why}; recommended step then {reg} {s}), or more hysteresis ({k}) or damping ({eta})",
+                clb = names.compression_linear_below,
+                eps = short(r.regularisation),
+                reg = short(r.regularised),
+                k = names.ku_fn1,
+                eta = names.eta_fn,
+            );
+        }
+        if self.recommended > 0.0 {
+            let rule = if at_rest.is_some_and(|r| r.step <= self.recommended) {
+                "set by the bonds at rest".to_string()
+            } else if self.limits.recommended < RECOMMENDED_FRACTION * self.critical {
+                "set by the rattle".to_string()
+            } else {
+                format!("{RECOMMENDED_FRACTION} of the critical")
+            };
+            text += &format!(
+                ". Use timestep <= {r} {s} (the core's recommended step, {rule})",
+                r = short(self.recommended)
+            );
+        }
         text
     }
+}
+
+/// A ratio or fraction in messages: four significant digits, written out
+/// (`1.1`, `0.001`, `0`).
+pub fn plain(x: f64) -> String {
+    short(x)
+        .parse::<f64>()
+        .map_or_else(|_| short(x), |v| v.to_string())
 }
 
 /// A number in messages: four significant digits, trailing zeros dropped
@@ -350,6 +445,9 @@ mod tests {
         max_sigma: "max_sigma",
         k_fn1: "k_fn1",
         compression_linear_below: "compression_linear_below",
+        ku_fn1: "ku_fn1",
+        k_fn2: "k_fn2",
+        eta_fn: "eta_fn",
     };
 
     #[test]

@@ -8,6 +8,7 @@
 
 use granbond_test_support as common;
 
+use common::signed_law::{Branch, SignedLaw};
 use common::*;
 use granbond::bond::section::section;
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BOND_SLOTS};
@@ -18,56 +19,6 @@ use granbond::vector::{v3, Vec3};
 const DT: f64 = 1e-6;
 /// Angular speed of the prescribed rotation: 1e-6 rad per step.
 const SPIN: f64 = 1.0;
-
-/// Branch of the three-branch loop `h(x; x_max)`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-enum Branch {
-    Virgin,
-    Unloading,
-    Reverse,
-}
-
-/// `h(x; x_max)` of the law's table, and which branch gave it.
-fn loop_value(k: f64, ku: f64, kc: f64, x: f64, x_max: f64) -> (f64, Branch) {
-    let c = (ku - k) / (ku + kc);
-    if x >= x_max {
-        (k * x, Branch::Virgin)
-    } else if x >= c * x_max {
-        (ku * x + (k - ku) * x_max, Branch::Unloading)
-    } else {
-        (-kc * x, Branch::Reverse)
-    }
-}
-
-/// The signed two-sided law of one angle `s`, history updated before the
-/// law (`reset`: the other side's extreme is forgotten while on one side).
-#[derive(Default)]
-struct SignedLaw {
-    max: f64,
-    min: f64,
-}
-
-impl SignedLaw {
-    fn value(&mut self, (k, ku, kc): (f64, f64, f64), s: f64, reset: bool) -> (f64, Branch, bool) {
-        if reset {
-            if s > 0.0 {
-                self.min = 0.0;
-            }
-            if s < 0.0 {
-                self.max = 0.0;
-            }
-        }
-        self.max = self.max.max(s);
-        self.min = self.min.min(s);
-        if s >= 0.0 {
-            let (h, b) = loop_value(k, ku, kc, s, self.max);
-            (h, b, true)
-        } else {
-            let (h, b) = loop_value(k, ku, kc, -s, -self.min);
-            (-h, b, false)
-        }
-    }
-}
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Dof {

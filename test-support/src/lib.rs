@@ -3,6 +3,7 @@
 //! pair kinematics, rotations; proptest strategies; the header's names.
 
 pub mod header;
+pub mod signed_law;
 pub mod strategies;
 
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState};

@@ -1,9 +1,17 @@
-//! Elastic energy stored in a bond: the integral of each law's loading curve
-//! (`k`, the virgin branch), so it is exact for elastic bonds (`ku = k`,
-//! `kc = 0`), where every branch is the loading curve. For hysteretic bonds
-//! it is the energy the same deformation would store on first loading, not a
-//! state function (the loop dissipates). Used by energy-balance checks and
-//! the speed/accuracy study (docs/speed-accuracy.md).
+//! Energy of a bond, two measures.
+//!
+//! The energy it stores now ([`BondModel::stored_energy`]): each law
+//! integrated from zero deformation to the present one at the present
+//! history (docs/models/bond-nonlinear.md, "Energy"). At a fixed history
+//! every law is the gradient of it, so the loads do work only by changing
+//! it; a history update never raises it, so what the loads take out of the
+//! bond beyond it is what the hysteresis dissipated. After a yield it can
+//! be negative: the well of a permanent set lies below zero deformation.
+//!
+//! The loading-curve energy ([`BondModel::elastic_energy`]): the integral of
+//! each law's virgin branch (`k`), exact for elastic bonds (`ku = k`,
+//! `kc = 0`), where every branch is the loading curve; used by the
+//! speed/accuracy study (docs/speed-accuracy.md):
 //!
 //! ```text
 //! tension        k_n2 A d^2 / 2                          (d = r0 - r < 0)
@@ -16,6 +24,7 @@
 //! ```
 
 use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
+use super::hysteresis::Loop;
 use super::model::BondModel;
 use super::section::section;
 use super::state::{BondState, BondStatus};
@@ -100,5 +109,127 @@ impl BondModel {
             e.bend = linear_energy(p.k_tt * sec.inertia, v3(state.bend_angle).norm());
         }
         e
+    }
+}
+
+/// `E(q) = integral of h(s(q'); s(q_max)) dq'` over `0 <= q' <= q`: the
+/// work of one side of the normal law per unit area at a fixed history,
+/// for a loading measure `s` (compression: the square root continued
+/// linearly below `eps`; tension: `s(q) = q`). On each branch `h` is
+/// `a s + b`, so its integral is `a (P(q2) - P(q1)) + b (q2 - q1)` with
+/// `P(q) = integral of s` ([`compression_energy`] per unit stiffness).
+fn measured_loop_work(l: &Loop, q: f64, q_max: f64, eps: Option<f64>) -> f64 {
+    let s = |q: f64| match eps {
+        Some(e) if q < e => q / e.sqrt(),
+        Some(_) => q.sqrt(),
+        None => q,
+    };
+    let s_inv = |y: f64| match eps {
+        Some(e) if y * y < e => y * e.sqrt(),
+        Some(_) => y * y,
+        None => y,
+    };
+    let p = |q: f64| match eps {
+        Some(e) => compression_energy(1.0, q, e),
+        None => 0.5 * q * q,
+    };
+    let m = s(q_max);
+    let q_kink = s_inv(l.c * m).min(q_max);
+    let reverse_end = q.min(q_kink);
+    let mut work = -l.kc * p(reverse_end);
+    if q > q_kink {
+        let end = q.min(q_max);
+        work += l.ku * (p(end) - p(q_kink)) + (l.k - l.ku) * m * (end - q_kink);
+    }
+    if q > q_max {
+        work += l.k * (p(q) - p(q_max));
+    }
+    work
+}
+
+impl BondModel {
+    /// The energy a bond with state `state` at compression `delta = r0 - r`
+    /// and axis `axis` (`n`, from `j` to `i`; it signs the twisting angle)
+    /// stores now, between spheres of radii `radius_i`, `radius_j` (J): each
+    /// law switched on integrated from zero deformation to its present one
+    /// at the history in `state` (as a step leaves it: updated for the
+    /// deformation it holds). Normal: the branches of eq. 6 from 0 to
+    /// `delta`; shear: `|Ft|^2 / (2 k_ft A)`; twisting: [`twist_work`] times
+    /// `J`; bending: [`bend_work`] times `I`. Zero for a bond that is not
+    /// intact.
+    pub fn stored_energy(
+        &self,
+        state: &BondState,
+        axis: [f64; 3],
+        delta: f64,
+        radius_i: f64,
+        radius_j: f64,
+    ) -> BondEnergy {
+        if state.status() != BondStatus::Intact {
+            return BondEnergy::default();
+        }
+        let f = self.features;
+        let sec = section(self.params.lambda, radius_i, radius_j);
+        let normal = &self.normal;
+        let mut e = BondEnergy::default();
+        if delta < 0.0 && f & TENSION != 0 {
+            e.normal =
+                sec.area * measured_loop_work(&normal.tension, -delta, -state.delta_min.min(0.0), None);
+        }
+        if delta >= 0.0 && f & COMPRESSION != 0 {
+            let eps = normal.linear_below;
+            e.normal = sec.area
+                * measured_loop_work(&normal.compression, delta, state.delta_max.max(0.0), Some(eps));
+        }
+        if f & SHEAR != 0 {
+            e.shear = spring_energy_from_force(v3(state.shear_force).norm(), self.params.k_ft * sec.area);
+        }
+        if f & TWIST != 0 {
+            let phi = v3(state.twist_angle).dot(&v3(axis));
+            e.twist = sec.polar * twist_work(&self.twist.hysteresis, phi, state.twist_max, state.twist_min);
+        }
+        if f & BEND != 0 {
+            e.bend = sec.inertia
+                * bend_work(
+                    &self.bend.hysteresis,
+                    state.bend_angle,
+                    state.bend_history,
+                    state.bend_opposite,
+                );
+        }
+        e
+    }
+}
+
+/// The bending energy per unit `I` of the angle `theta_t` at the history
+/// `beta`, `beta_opp` (docs/models/bond-nonlinear.md, "Bending"):
+/// `((1 + c) E(x; |beta|) + (1 - c) E(x; beta_opp)) / 2`, `x = |theta_t|`,
+/// `c` the cosine of the angle between `theta_t` and `beta` (1 while
+/// `beta` is zero), `E` the loop's [`Loop::work`]. On the line of `beta`
+/// it is the signed law's energy; off it the two sides' energies blend
+/// continuously, so the torque, its gradient, does no work over a closed
+/// path at a fixed history.
+pub fn bend_work(law: &Loop, theta_t: [f64; 3], beta: [f64; 3], beta_opp: f64) -> f64 {
+    let (theta, beta) = (v3(theta_t), v3(beta));
+    let (x, extreme) = (theta.norm(), beta.norm());
+    if x == 0.0 {
+        return 0.0;
+    }
+    let cosine = if extreme > 0.0 {
+        (theta.dot(&beta) / (x * extreme)).clamp(-1.0, 1.0)
+    } else {
+        1.0
+    };
+    0.5 * ((1.0 + cosine) * law.work(x, extreme) + (1.0 - cosine) * law.work(x, beta_opp))
+}
+
+/// The twisting energy per unit `J` of the signed angle `phi` at the
+/// history `phi_max >= 0`, `phi_min <= 0`: the loop's [`Loop::work`] on
+/// the side `phi` is on.
+pub fn twist_work(law: &Loop, phi: f64, phi_max: f64, phi_min: f64) -> f64 {
+    if phi >= 0.0 {
+        law.work(phi, phi_max)
+    } else {
+        law.work(-phi, -phi_min)
     }
 }

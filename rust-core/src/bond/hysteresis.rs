@@ -62,6 +62,30 @@ impl Loop {
         )
     }
 
+    /// `E(x; x_max)`, the integral of `h(s; x_max)` over `0 <= s <= x` at
+    /// that history: the work it takes to deform the law from zero to `x`
+    /// while the history stays `x_max`, so `dE/dx = h` (for `x > x_max`
+    /// the virgin line continues it). Each branch is linear in `s`, so
+    /// the trapezoid from the branch's start is exact:
+    /// `E(x) = E(b) + (x - b) (h(x) + h(b)) / 2`, `b` = 0, `c x_max` or
+    /// `x_max`.
+    #[inline(always)]
+    pub fn work<R: Real>(&self, x: R, x_max: R) -> R {
+        let half = R::splat(0.5);
+        let zero = R::splat(0.0);
+        let kink = R::splat(self.c) * x_max;
+        let at_kink = R::splat(-self.kc) * kink;
+        let work_kink = half * at_kink * kink;
+        let at_max = R::splat(self.k) * x_max;
+        let work_max = work_kink + half * (x_max - kink) * (at_max + at_kink);
+        let virgin = x.ge(x_max);
+        let unloading = x.ge(kink);
+        let start = select(virgin, x_max, select(unloading, kink, zero));
+        let h_start = select(virgin, at_max, select(unloading, at_kink, zero));
+        let w_start = select(virgin, work_max, select(unloading, work_kink, zero));
+        w_start + half * (x - start) * (self.value(x, x_max) + h_start)
+    }
+
     /// The largest slope `|dh/dx|` anywhere on the loop.
     pub fn max_slope(&self) -> f64 {
         self.k.max(self.ku).max(self.kc)

@@ -2,7 +2,7 @@
 //! modes, each with the stiffest slope of its hysteresis loop. Percentage
 //! damping is not viscous and does not enter the limit.
 
-use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
+use super::features::{BEND, COMPRESSION, DAMPING, SHEAR, SMOOTH, TENSION, TWIST};
 use super::model::BondModel;
 use super::params::BondParams;
 use super::section::section;
@@ -242,5 +242,109 @@ impl BondModel {
         let m_eff = mass_i * mass_j / (mass_i + mass_j);
         let root = self.normal.compression.max_slope() * sec.area * dt * dt / (8.0 * m_eff);
         16.0 * root * root
+    }
+}
+
+/// `ku_fn1 / k_fn1` of the measured rows of [`REST_STABLE`].
+pub const REST_RATIOS: [f64; 9] = [1.0, 1.02, 1.05, 1.1, 1.2, 1.35, 1.5, 2.0, 3.0];
+
+/// `eta_fn` of the measured columns of [`REST_STABLE`].
+pub const REST_DAMPING: [f64; 6] = [0.0, 0.001, 0.003, 0.01, 0.03, 0.1];
+
+/// The largest fraction of the recommended step at which bonds resting at
+/// zero compression under the plain square root gained no energy, by
+/// `ku_fn1 / k_fn1` (rows, [`REST_RATIOS`]) and `eta_fn` (columns,
+/// [`REST_DAMPING`]); 1: none gained at any fraction up to 0.99, 0: all
+/// gained, even at 0.05. Measured on the tetrahedron of
+/// `shared/repro/energy/in.tetra` (four spheres, six bonds formed at zero
+/// compression, one sphere started at 0.1 m/s, `ku = fu k` on every part,
+/// `kc = 0`, percentage damping `eta` on every part), 0.2 to 0.3 s, at
+/// 0.05, 0.1, 0.2, 0.3, 0.5, 0.7 and 0.99 of the deck's recommended step
+/// (LAMMPS); stable: the kinetic energy never above its start.
+/// docs/speed-accuracy.md has the table and the commands.
+pub const REST_STABLE: [[f64; 6]; 9] = [
+    // eta_fn: 0,  0.001, 0.003, 0.01, 0.03, 0.1
+    [0.0, 0.3, 0.5, 0.5, 0.5, 1.0], // ku_fn1 = k_fn1
+    [0.1, 0.3, 0.5, 0.7, 0.7, 1.0], // 1.02
+    [0.1, 0.3, 0.5, 0.7, 1.0, 1.0], // 1.05
+    [0.2, 0.5, 0.7, 0.7, 1.0, 1.0], // 1.1
+    [0.3, 0.5, 0.7, 1.0, 1.0, 1.0], // 1.2
+    [0.3, 0.7, 1.0, 1.0, 1.0, 1.0], // 1.35
+    [0.5, 0.7, 1.0, 1.0, 1.0, 1.0], // 1.5
+    [0.7, 1.0, 1.0, 1.0, 1.0, 1.0], // 2
+    [1.0, 1.0, 1.0, 1.0, 1.0, 1.0], // 3
+];
+
+impl BondModel {
+    /// The fraction of [`BondModel::recommended_timestep`] up to which bonds
+    /// that rest at zero compression (every bond does when it is formed)
+    /// are integrated without gaining energy: the plain square root's
+    /// stiffness is unbounded there, and each crossing of zero compression
+    /// feeds the vibration; hysteresis (`ku_fn1 > k_fn1`: the bond comes to
+    /// rest at a permanent set instead) and damping take it out again.
+    /// [`REST_STABLE`] at the measured point at or below this type's
+    /// `ku_fn1 / k_fn1` and `eta_fn` (smooth damping counts as none: it
+    /// fades at the small speeds of a bond at rest). 1 where it does not
+    /// apply: compression off or without stiffness, or the law regularised
+    /// (`compression_linear_below > 0`, bounded stiffness).
+    pub fn rest_stable_fraction(&self) -> f64 {
+        let p = &self.params;
+        let f = self.features;
+        if f & COMPRESSION == 0 || !(p.k_fn1 > 0.0) || p.compression_linear_below > 0.0 {
+            return 1.0;
+        }
+        let (ratio, eta) = (p.ku_fn1 / p.k_fn1, self.rest_damping());
+        // The measured point below: a ratio written as 1.1 is 1.1 here too.
+        let row = REST_RATIOS
+            .iter()
+            .rposition(|&r| ratio >= r * (1.0 - 1e-9))
+            .unwrap_or(0);
+        let column = REST_DAMPING
+            .iter()
+            .rposition(|&e| eta >= e * (1.0 - 1e-9))
+            .unwrap_or(0);
+        REST_STABLE[row][column]
+    }
+
+    /// The `compression_linear_below` that lets bonds rest stably: where
+    /// tension carries and it stays within the bond radius `rb`,
+    /// `(k_fn1 / k_fn2)^2`, at which the compression slope at rest
+    /// (`k_fn1 / sqrt(eps)`) equals the tension slope `k_fn2`, so a bond at
+    /// rest sees one stiffness on both sides (measured stable up to the
+    /// recommended step; a smaller one leaves a kink there, which still
+    /// gains energy above 0.2 of the step, docs/speed-accuracy.md);
+    /// otherwise `1e-3 rb`.
+    pub fn rest_regularisation(&self, rb: f64) -> f64 {
+        let p = &self.params;
+        let matched = (p.k_fn1 / p.k_fn2).powi(2);
+        if self.features & TENSION != 0 && matched.is_finite() && matched > 0.0 && matched <= rb {
+            matched
+        } else {
+            1e-3 * rb
+        }
+    }
+
+    /// The percentage damping of the normal force that holds bonds at rest
+    /// ([`BondModel::rest_stable_fraction`]): `eta_fn` with plain damping,
+    /// none without or with smooth damping.
+    pub fn rest_damping(&self) -> f64 {
+        if self.features & (DAMPING | SMOOTH) == DAMPING {
+            self.params.eta_fn
+        } else {
+            0.0
+        }
+    }
+
+    /// The longest step at which bonds resting at zero compression gain no
+    /// energy ([`BondModel::rest_stable_fraction`] of the recommended
+    /// step): infinite where the rule does not apply or every measured
+    /// fraction was stable, 0 where none was.
+    pub fn rest_timestep(&self, radius_i: f64, radius_j: f64, mass_i: f64, mass_j: f64) -> f64 {
+        let fraction = self.rest_stable_fraction();
+        if fraction >= 1.0 {
+            f64::INFINITY
+        } else {
+            fraction * self.recommended_timestep(radius_i, radius_j, mass_i, mass_j)
+        }
     }
 }

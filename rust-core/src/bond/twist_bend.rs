@@ -8,9 +8,12 @@
 //! turn, so its sides are defined by the history itself: the vector `beta`
 //! is the extreme reached on the *leading* side (its direction says which
 //! side that is), the scalar `beta_opp` the extreme reached on the
-//! *opposite* side. Only dot products and lengths enter, so the law does not
-//! depend on the coordinate axes; for bending in a fixed plane it is the
-//! signed twisting law along that plane's axis.
+//! *opposite* side. The bending torque is the gradient of the two sides'
+//! energies blended by the cosine between the angle and `beta`, so it does
+//! no work over a closed path at a fixed history; only dot products and
+//! lengths enter, so the law does not depend on the coordinate axes; for
+//! bending in a fixed plane it is the signed twisting law along that
+//! plane's axis.
 
 use super::hysteresis::{select, update_extremes, Loop};
 use crate::real::Real;
@@ -108,9 +111,16 @@ impl TorqueLaw {
 
     /// Bending torque on `i` for the (advanced) angle `theta_t`, with the
     /// stored history (`beta` is brought into the current tangent plane
-    /// here): `-h(x; x_max) I theta_t / x`, `x = |theta_t|`, where `x_max` is
-    /// the extreme of the side `theta_t` is on (`theta_t . beta >= 0`:
-    /// leading). Zero for a zero angle.
+    /// here): the gradient of the bending energy
+    /// [`super::energy::bend_work`] at the
+    /// updated history, `-I dE/dtheta_t`. Zero for a zero angle.
+    ///
+    /// The history is updated first (docs/models/bond-nonlinear.md,
+    /// "Bending"): on the leading side (`theta_t . beta >= 0`) past
+    /// `|beta|`, `beta` turns to `theta_t` when `|theta_t|` is beyond both
+    /// extremes, and only grows along its own direction otherwise; on the
+    /// opposite side `beta_opp` grows to `|theta_t|`. Each update lowers
+    /// the energy at the current angle, so no update releases work.
     #[inline(always)]
     pub fn bend<R: Real, V: Vector<R>>(
         &self,
@@ -119,32 +129,55 @@ impl TorqueLaw {
         history: BendHistory<R, V>,
         inertia: R,
     ) -> (Torque<R, V>, BendHistory<R, V>) {
-        let zero = R::splat(0.0);
+        let (zero, one, half) = (R::splat(0.0), R::splat(1.0), R::splat(0.5));
         let mut beta = tangential_part(history.leading, n);
         let mut opposite = history.opposite;
         let (x, mut extreme) = R::sqrt2(theta_t.norm_squared(), beta.norm_squared());
-        let mut leading = theta_t.dot(&beta).ge(zero);
+        let along = theta_t.dot(&beta);
+        let mut leading = along.ge(zero);
+        // Read only where both angles are non-zero (NaN elsewhere).
+        let mut cosine = along / (x * extreme);
         if self.history_reset {
             // Entering the opposite side makes it the leading side, with a
             // fresh history.
             beta = V::select(leading, beta, theta_t);
             extreme = select(leading, extreme, x);
             opposite = select(leading, opposite, zero);
+            cosine = select(leading, cosine, one);
             leading = R::mask(true);
         }
         let grows = leading & x.gt(extreme);
-        beta = V::select(grows, theta_t, beta);
+        // (Along `beta` itself turning is growing: the same history.)
+        let turns = grows & (x.ge(opposite) | !extreme.gt(zero) | cosine.ge(one));
+        beta = V::select(turns, theta_t, V::select(grows, beta * (x / extreme), beta));
+        cosine = select(turns, one, cosine).clamp(-1.0, 1.0);
         extreme = select(grows, x, extreme);
         opposite = select(leading, opposite, opposite.max(x));
-        let h = self.hysteresis.value(x, select(leading, extreme, opposite));
+
+        let h = &self.hysteresis;
+        let (h_lead, h_opp) = (h.value(x, extreme), h.value(x, opposite));
+        let spread = half * (h.work(x, extreme) - h.work(x, opposite));
+        // E = ((1 + c) E_lead + (1 - c) E_opp) / 2 with c = cosine; its
+        // gradient: a radial part, and (E_lead - E_opp)/2 times the
+        // gradient of c, (beta/|beta| - c theta_t/x) / x.
+        let radial = half * ((one + cosine) * h_lead + (one - cosine) * h_opp);
+        let (inv_x, inv_beta) = R::div2(one, x, one, extreme);
+        let across = beta * inv_beta - theta_t * (cosine * inv_x);
+        // In one plane `across` is zero, exactly so where the plane holds a
+        // coordinate axis (`c = +-1` and both unit vectors exact): the torque
+        // and its size are then the signed law's, bit for bit.
+        let torque = theta_t * (-radial * inertia / x) + across * (-(spread * inv_x) * inertia);
+        // Off the line, the norm of the sum: the part across the angle is a
+        // small difference of two vectors near the history's line.
+        let off_line = across.norm_squared().gt(zero);
+        let magnitude = select(off_line, torque.norm(), radial.abs() * inertia);
         // A zero angle has no direction: no torque (the selected-away side
         // is NaN there).
         let on = x.gt(zero);
-        let torque = theta_t * (-h * inertia / x);
         (
             Torque {
                 torque: V::select(on, torque, V::zeros()),
-                magnitude: select(on, h.abs() * inertia, zero),
+                magnitude: select(on, magnitude, zero),
             },
             BendHistory {
                 leading: beta,

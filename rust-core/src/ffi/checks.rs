@@ -10,7 +10,9 @@ use crate::bond::creation_check::{findings, message, parameter_name, Naming};
 use crate::bond::section::section;
 use crate::bond::{BondModel, BondParams};
 use crate::contact::VoigtModel;
-use crate::timestep_check::{scan, CitedNames, Rattle, StepLimits, TimestepLevel, TypeBodies, UnitNames};
+use crate::timestep_check::{
+    scan, AtRest, CitedNames, Rattle, StepLimits, TimestepLevel, TypeBodies, UnitNames,
+};
 use std::ffi::{c_char, CStr};
 
 /// Capacity of [`CheckReport::message`], terminating NUL included.
@@ -124,6 +126,9 @@ fn cited_names(naming: Naming) -> CitedNames {
         max_sigma: parameter_name("max_sigma", naming),
         k_fn1: parameter_name("k_fn1", naming),
         compression_linear_below: parameter_name("compression_linear_below", naming),
+        ku_fn1: parameter_name("ku_fn1", naming),
+        k_fn2: parameter_name("k_fn2", naming),
+        eta_fn: parameter_name("eta_fn", naming),
     }
 }
 
@@ -146,11 +151,37 @@ fn bond_step_limits(
         k_fn1: model.params.k_fn1,
         rb: section(model.params.lambda, radius_i, radius_j).rb,
     });
+    let recommended = model.recommended_timestep(radius_i, radius_j, mass_i, mass_j);
+    let rest_step = model.rest_timestep(radius_i, radius_j, mass_i, mass_j);
+    let at_rest = rest_step.is_finite().then(|| {
+        let rb = section(model.params.lambda, radius_i, radius_j).rb;
+        let p = &model.params;
+        let regularisation = model.rest_regularisation(rb);
+        let regularised = BondModel::new(BondParams {
+            compression_linear_below: regularisation,
+            ..*p
+        })
+        .map_or(recommended, |m| {
+            m.recommended_timestep(radius_i, radius_j, mass_i, mass_j)
+        });
+        AtRest {
+            step: rest_step,
+            fraction: model.rest_stable_fraction(),
+            recommended,
+            ratio: p.ku_fn1 / p.k_fn1,
+            eta_fn: model.rest_damping(),
+            regularisation,
+            matched: regularisation != 1e-3 * rb,
+            regularised,
+        }
+    });
     StepLimits {
         critical: model.critical_timestep(radius_i, radius_j, mass_i, mass_j),
-        recommended: model.recommended_timestep(radius_i, radius_j, mass_i, mass_j),
+        // The check warns above the step at which the run is stable.
+        recommended: recommended.min(rest_step),
         modes: Some(model.mode_limits(radius_i, radius_j, mass_i, mass_j)),
         rattle,
+        at_rest,
     }
 }
 
