@@ -192,8 +192,21 @@ void PairGranbond::init_style()
     }
     if (modify->find_fix(kFix) < 0) error->all(FLERR, "pair granbond: its fix neigh/history was deleted or replaced");
 
-    // per-type radii (for the cutoffs) and masses, all ranks
+    // per-type radii (for the cutoffs) and masses, all ranks, and the
+    // spheres fix pour and fix deposit will insert during the run (as pair
+    // granular takes them)
     bodies_ = gatherTypeBodies(n, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
+    for (int k = 0; k < modify->nfix; k++) {
+        const std::string style = modify->fix[k]->style;
+        if (style.rfind("pour", 0) != 0 && style.rfind("deposit", 0) != 0) continue;
+        for (int t = 1; t <= n; t++) {
+            int type = t;
+            const double *r = static_cast<const double *>(modify->fix[k]->extract("radius", type));
+            if (!r || !(*r > 0.0)) continue;
+            bodies_[t].radius_max = std::max(bodies_[t].radius_max, *r);
+            bodies_[t].radius_min = std::min(bodies_[t].radius_min, *r);
+        }
+    }
     if (firstStep_ < 0) firstStep_ = update->ntimestep;
     // a restart file's bonds come back with their fix; a run without bonds
     // makes none
