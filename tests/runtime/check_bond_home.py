@@ -19,6 +19,12 @@ claim per mode:
              and names the restart route.
   rerun      `rerun` of a bonded trajectory says that the bonds cannot be
              rebuilt from a dump.
+  momentum   a bonded block in free flight, spinning, its bonds breaking, a
+             sphere inserted far away between two runs, on 1 and 3 ranks
+             under `newton on` and `off`: the total linear momentum and
+             the angular momentum about the origin (orbital and spin) stay
+             what they were to round-off (1e-12 of their size), and
+             created = broken + intact + lost at every output.
 
 usage: check_bond_home.py --mode MODE --kind lammps --engine BIN
                           [--mpiexec MPIEXEC] --workdir DIR
@@ -108,6 +114,30 @@ def check_rerun(a, workdir):
     print(f"ok: {told[0][:140]}")
 
 
+def check_momentum(a, workdir):
+    counts = [1, 3] if a.mpiexec else [1]
+    for n in counts:
+        for newton in ("default", "off"):
+            d = os.path.join(workdir, f"np{n}-{newton}")
+            text = run(a, n, "free_body_momentum.in", d, {"newton": newton})
+            cols = [thermo_column(text, c) for c in ("c_pg[1]", "c_pg[2]", "c_pg[3]", "c_pg[8]")]
+            unbalanced = [r for r in zip(*cols) if r[0] != r[1] + r[2] + r[3]]
+            broken = cols[1][-1] if cols[1] else 0
+            if not cols[0] or unbalanced or broken == 0:
+                raise Failure(f"{n} ranks, newton {newton}: created != broken + intact + lost at {unbalanced[:3]}, "
+                              f"or no bond broke ({broken})")
+            moments = [thermo_column(text, f"c_L[{k}]") for k in range(1, 7)]
+            worst = 0.0
+            for group in (moments[:3], moments[3:]):
+                size = max(sum(v * v for v in row) ** 0.5 for row in zip(*group))
+                for values in group:
+                    worst = max(worst, (max(values) - min(values)) / size)
+            if worst > 1e-12:
+                raise Failure(f"{n} ranks, newton {newton}: momentum or angular momentum moved by {worst:.3g} of its size")
+            print(f"ok: {n} ranks, newton {newton}: {broken:g} bonds broke, momentum and angular momentum "
+                  f"within {worst:.2g} of their size")
+
+
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--mode", required=True)
@@ -117,5 +147,5 @@ if __name__ == "__main__":
     parser.add_argument("--workdir", required=True)
     a = parser.parse_args()
     checks = {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
-              "rerun": check_rerun}
+              "rerun": check_rerun, "momentum": check_momentum}
     main(lambda: checks[a.mode](a, os.path.abspath(a.workdir)))
