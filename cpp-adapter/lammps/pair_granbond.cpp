@@ -296,13 +296,12 @@ double PairGranbond::init_one(int i, int j)
     if (b && std::isfinite(rmin) && rmin > 0.0) {
         const std::string pairCoeff = "pair_coeff " + std::to_string(std::min(i, j)) + " " +
                                       std::to_string(std::max(i, j)) + " bond/nonlinear: ";
-        // the core's neighbour-list reach that keeps every intact bond
+        // the core's neighbour-list reach that keeps every intact bond; it
+        // refuses one the lists cannot hold, naming what sets it
         double factor = 0.0;
-        if (granbond_bond_contact_distance_factor(b, rmin, &factor) != GB_STATUS_OK)
+        if (granbond_bond_neighbour_reach(b, rmin, std::min(i, j), std::max(i, j), 0, update->unit_style, &factor) !=
+            GB_STATUS_OK)
             error->all(FLERR, pairCoeff + coreReason());
-        if (!std::isfinite(factor))
-            error->all(FLERR, pairCoeff + "the bond never breaks, so no neighbour list can keep it: "
-                                          "set 'break distance <rmax>' or 'break stress <sigma_max> <tau_max>'");
         cut = std::max(cut, factor * 2.0 * rmin);
     }
     return cut;

@@ -3,6 +3,7 @@
 //! LIGGGHTS-INL runs a deck with any such combination, so each
 //! finding is a warning that names the parameters as the deck spells them.
 
+use super::laws::BondLaws;
 use super::params::{BondParams, PARAMETERS};
 use crate::timestep_check::{TypeBodies, UnitNames};
 
@@ -160,6 +161,146 @@ pub fn message(
             s = p.create_step,
         ),
     }
+}
+
+/// The largest neighbour-list reach a bond type may ask of the engines, in
+/// diameters of the smallest spheres it joins: the reach the engines'
+/// lists hold without their binning failing (LIGGGHTS's own limit).
+pub const MAX_REACH_DIAMETERS: f64 = 10.0;
+
+/// Why the neighbour reach a bond type needs cannot be held, as the deck
+/// names the parameters (`None` when it can): a bond that never breaks by
+/// stretching, or a reach of more than [`MAX_REACH_DIAMETERS`] diameters of
+/// the smallest spheres (radius `min_radius`). `pair` names the atom types.
+pub fn reach_refusal(laws: &BondLaws, min_radius: f64, naming: Naming, pair: &str, units: &UnitNames) -> Option<String> {
+    let p = &laws.params;
+    let l = units.length;
+    let name = |field| parameter_name(field, naming);
+    let stress = BondParams::switch(p.stress_break);
+    let diameters = |x: f64| 1.1 * x / (2.0 * min_radius);
+    let factor = laws.contact_distance_factor(min_radius);
+    if diameters(p.create_distance) > MAX_REACH_DIAMETERS {
+        return Some(format!(
+            "{pair}: {c} {v:e} {l} reaches {d:.1} diameters of the smallest spheres (radius {min_radius:e} {l}; with a 10% margin), beyond the {MAX_REACH_DIAMETERS} diameters the neighbour lists hold: pairs that far apart do not touch; set {c} near the contact distance {contact:e} {l}",
+            c = name("create_distance"),
+            v = p.create_distance,
+            d = diameters(p.create_distance),
+            contact = 2.0 * min_radius,
+        ));
+    }
+    if factor.is_finite() && factor <= MAX_REACH_DIAMETERS {
+        return None;
+    }
+    let cause = if !stress {
+        let r = name("max_distance");
+        if factor.is_finite() {
+            format!("{r} {v:e} {l} lets a bond stretch to {factor:.1} diameters of the smallest spheres (radius {min_radius:e} {l}; with a 10% margin), beyond the {MAX_REACH_DIAMETERS} diameters the neighbour lists hold; set a smaller {r}", v = p.max_distance)
+        } else {
+            let phrases = match naming {
+                Naming::Lammps => " ('break distance R', or break by stress: 'break stress S T')",
+                Naming::Liggghts => "",
+            };
+            format!("{r} is inf: a bond never breaks by stretching, so no neighbour list can keep it; set a finite {r}{phrases}")
+        }
+    } else if !BondParams::switch(p.tension) {
+        let t = name("tension");
+        format!("{t} is off in stress mode: a bond never breaks by stretching, so no neighbour list can keep it; switch {t} on or break by distance")
+    } else if !(p.k_fn2 > 0.0) {
+        let k = name("k_fn2");
+        format!("{k} is {v}: in stress mode a bond without tension stiffness never reaches its tensile strength, so no neighbour list can keep it; set {k} > 0", v = p.k_fn2)
+    } else {
+        let ratio = if BondParams::switch(p.use_ratio) {
+            format!(" x {g} {v}", g = name("tension_compression_ratio"), v = p.tension_compression_ratio)
+        } else {
+            String::new()
+        };
+        let stretch = laws.max_bond_distance(p.create_distance) - p.create_distance;
+        let what = if factor.is_finite() {
+            format!("stretches a bond by {stretch:e} {l} before it breaks, to {factor:.1} diameters of the smallest spheres (radius {min_radius:e} {l}; with a 10% margin), beyond the {MAX_REACH_DIAMETERS} diameters the neighbour lists hold")
+        } else {
+            "never breaks a bond by stretching, so no neighbour list can keep it".to_string()
+        };
+        format!(
+            "the tensile strength {s} {sv:e}{ratio} over {k} {kv:e} {what}; lower {s}{or_ratio} or raise {k}",
+            s = name("max_sigma"),
+            sv = p.max_sigma,
+            k = name("k_fn2"),
+            kv = p.k_fn2,
+            or_ratio = if BondParams::switch(p.use_ratio) {
+                format!(" or {}", name("tension_compression_ratio"))
+            } else {
+                String::new()
+            },
+        )
+    };
+    Some(format!("{pair}: {cause}"))
+}
+
+/// Why a bond type of atom types `a`, `b` cannot run with the spheres
+/// present (`None` when it can), naming the parameters as the deck spells
+/// them: no compression stiffness while the bond, replacing the contact,
+/// must hold compression; a linear continuation of the compression law
+/// beyond the bond radius, which leaves the bond almost no compression
+/// stiffness; a neighbour reach the engines cannot hold
+/// ([`reach_refusal`]).
+pub fn refusal(laws: &BondLaws, a: usize, b: usize, bodies: &[TypeBodies], wall: bool, naming: Naming, units: &UnitNames) -> Option<String> {
+    let p = &laws.params;
+    let l = units.length;
+    let name = |field| parameter_name(field, naming);
+    let pair = if wall {
+        format!("atom type {a} on the wall")
+    } else {
+        format!("atom types {a} and {b}")
+    };
+    if BondParams::switch(p.compression) && p.k_fn1 == 0.0 {
+        return Some(format!(
+            "{pair}: {k} is 0 (also its value when left out) while {c} is on: an intact bond replaces the contact, so bonded spheres pushed together would pass through each other; set {k} > 0",
+            k = name("k_fn1"),
+            c = name("compression"),
+        ));
+    }
+    let min_radius = if wall {
+        bodies[a].radius_min
+    } else {
+        bodies[a].radius_min.min(bodies[b].radius_min)
+    };
+    let rb = p.lambda * min_radius;
+    if BondParams::switch(p.compression) && p.compression_linear_below > rb {
+        return Some(format!(
+            "{pair}: {e} {v:e} {l} exceeds the bond radius {rb:e} {l} of the smallest spheres ({lambda} {lv} x radius {min_radius:e} {l}): the compression law would be linear, with the slope it has at {e}, over every compression a bond takes, far softer than the law, and bonded spheres pushed together would pass through each other; set {e} well below the bond radius (e.g. 1e-3 of it), or 0 for the law itself",
+            e = name("compression_linear_below"),
+            v = p.compression_linear_below,
+            lambda = name("lambda"),
+            lv = p.lambda,
+        ));
+    }
+    reach_refusal(laws, min_radius, naming, &pair, units)
+}
+
+/// The first [`refusal`] among the pairs of types `1..=ntypes` present (as
+/// in [`findings`]), with `laws(a, b)` the bond type of `a`, `b`.
+pub fn first_refusal<'a>(
+    ntypes: usize,
+    bodies: &[TypeBodies],
+    laws: impl Fn(usize, usize) -> Option<&'a BondLaws>,
+    wall: bool,
+    naming: Naming,
+    units: &UnitNames,
+) -> Option<String> {
+    for a in 1..=ntypes {
+        let first_b = if wall { 1 } else { a };
+        for b in first_b..=ntypes {
+            if !bodies[a].present() || !(wall || bodies[b].present()) {
+                continue;
+            }
+            if let Some(m) = laws(a, b) {
+                if let Some(message) = refusal(m, a, b, bodies, wall, naming, units) {
+                    return Some(message);
+                }
+            }
+        }
+    }
+    None
 }
 
 #[cfg(test)]
