@@ -249,9 +249,16 @@ private:
             givenValue_[id] = v;
         }
         if (set_(&params_, keyword, v) == GB_STATUS_OK) return;
-        if (granbond_last_error_parameter() >= 0 && static_cast<size_t>(granbond_last_error_parameter()) < rows_.size())
-            a_.fail(std::string(keyword) + " must be " + rows_[granbond_last_error_parameter()].range + ", got " +
-                    written);
+        if (granbond_last_error_parameter() >= 0 && static_cast<size_t>(granbond_last_error_parameter()) < rows_.size()) {
+            // the core's requirement (the row's range, or more), with the
+            // value as the deck wrote it
+            const std::string reason = coreReason();
+            const size_t from = reason.find(" must be "), to = reason.rfind("; got ");
+            const std::string need = from != std::string::npos && to != std::string::npos && to > from
+                                         ? reason.substr(from + 9, to - from - 9)
+                                         : std::string(rows_[granbond_last_error_parameter()].range);
+            a_.fail(std::string(keyword) + " must be " + need + ", got " + written);
+        }
         a_.fail(coreReason());
     }
 

@@ -80,6 +80,13 @@
 #define GRANBOND_CHECK_MESSAGE_LEN 2048
 
 /**
+ * The largest magnitude a finite real parameter may have: beyond it the
+ * products the models form (section areas and moments, stiffness times
+ * area) overflow. No parameter of any engine's unit style comes near it.
+ */
+#define MAX_MAGNITUDE 1e100
+
+/**
  * The recommended step as a fraction of the critical step, for bonds and
  * contacts alike (docs/speed-accuracy.md). The estimates are the limit of
  * one bond or contact between two spheres; a sphere bonded to six

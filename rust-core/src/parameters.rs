@@ -46,6 +46,26 @@ impl Range {
     }
 }
 
+/// The largest magnitude a finite real parameter may have: beyond it the
+/// products the models form (section areas and moments, stiffness times
+/// area) overflow. No parameter of any engine's unit style comes near it.
+pub const MAX_MAGNITUDE: f64 = 1e100;
+
+/// The requirement a finite value beyond [`MAX_MAGNITUDE`] fails, for
+/// messages.
+fn magnitude_requirement(range: Range) -> String {
+    format!(
+        "{} and at most {MAX_MAGNITUDE:e} in magnitude (beyond it the model's products overflow)",
+        range.describe()
+    )
+}
+
+/// Whether a finite real `x` exceeds [`MAX_MAGNITUDE`] (`inf`, where a
+/// range admits it, is not a magnitude).
+fn too_large(kind: ParameterKind, x: f64) -> bool {
+    kind == ParameterKind::Real && x.is_finite() && x.abs() > MAX_MAGNITUDE
+}
+
 /// How a deck writes a value.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -169,6 +189,15 @@ pub fn set_by_name<T>(
             value,
         )));
     }
+    if too_large(info.kind(), value) {
+        return Err(SetError::Refused(refuse(
+            model,
+            table,
+            info.name,
+            &magnitude_requirement(info.range),
+            value,
+        )));
+    }
     (info.set)(params, value);
     Ok(id)
 }
@@ -228,6 +257,15 @@ pub fn check_ranges<T>(model: &str, table: &[ParameterInfo<T>], params: &T) -> R
         let x = (info.get)(params);
         if !info.range.admits(x) {
             return Err(refuse(model, table, info.name, info.range.describe(), x));
+        }
+        if too_large(info.kind(), x) {
+            return Err(refuse(
+                model,
+                table,
+                info.name,
+                &magnitude_requirement(info.range),
+                x,
+            ));
         }
     }
     Ok(())

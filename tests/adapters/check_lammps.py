@@ -290,8 +290,8 @@ BAD = [
     ("damping ratio >= 1 (core)", f"{VOIGT} bond/nonlinear {bond_with('eta_fn', '1.0')} {BREAK['distance']}", "eta_fn"),
     ("ku < k (core)", f"{VOIGT} bond/nonlinear {bond_with('ku_fn2', '5e8')} {BREAK['distance']}", "ku_fn2"),
     ("lambda 0 (core)", f"{VOIGT} bond/nonlinear {bond_with('lambda', '0')} {BREAK['distance']}", "lambda"),
-    ("lambda 1e300: no time-step estimate (core)", f"{VOIGT} bond/nonlinear {bond_with('lambda', '1e300')} {BREAK['distance']}",
-     "a stiffness or damping parameter of this type pair"),
+    ("lambda 1e300: beyond the magnitude the models can form (core)",
+     f"{VOIGT} bond/nonlinear {bond_with('lambda', '1e300')} {BREAK['distance']}", "lambda must be"),
     ("switch not yes/no", f"{VOIGT} bond/nonlinear {BOND} history_reset maybe {BREAK['distance']}",
      "history_reset"),
     ("unknown break mode", f"{VOIGT} bond/nonlinear {BOND} break strain 1", "strain"),
@@ -304,10 +304,9 @@ BAD = [
 ]
 
 
-# The command a BAD case's error names: pair_coeff, but for the time-step
-# check of the run (the pair style's, with the type pair in its message).
-COMMAND = {"lambda 1e300: no time-step estimate (core)": "pair granbond (bond/nonlinear)",
-           "a bond that never breaks": "pair granbond (bond/nonlinear)"}
+# The command a BAD case's error names: pair_coeff, but for the checks of the
+# run's start (the pair style's, with the type pair in its message).
+COMMAND = {"a bond that never breaks": "pair granbond (bond/nonlinear)"}
 
 
 def check_bad_input(a, workdir):

@@ -4,7 +4,7 @@
 //! finding is a warning that names the parameters as the deck spells them.
 
 use super::laws::BondLaws;
-use super::params::{BondParams, PARAMETERS};
+use super::params::{BondParams, ParameterError, PARAMETERS};
 use crate::timestep_check::{TypeBodies, UnitNames};
 
 /// Which spelling of the parameter names the messages use.
@@ -172,7 +172,13 @@ pub const MAX_REACH_DIAMETERS: f64 = 10.0;
 /// names the parameters (`None` when it can): a bond that never breaks by
 /// stretching, or a reach of more than [`MAX_REACH_DIAMETERS`] diameters of
 /// the smallest spheres (radius `min_radius`). `pair` names the atom types.
-pub fn reach_refusal(laws: &BondLaws, min_radius: f64, naming: Naming, pair: &str, units: &UnitNames) -> Option<String> {
+pub fn reach_refusal(
+    laws: &BondLaws,
+    min_radius: f64,
+    naming: Naming,
+    pair: &str,
+    units: &UnitNames,
+) -> Option<ParameterError> {
     let p = &laws.params;
     let l = units.length;
     let name = |field| parameter_name(field, naming);
@@ -180,7 +186,7 @@ pub fn reach_refusal(laws: &BondLaws, min_radius: f64, naming: Naming, pair: &st
     let diameters = |x: f64| 1.1 * x / (2.0 * min_radius);
     let factor = laws.contact_distance_factor(min_radius);
     if diameters(p.create_distance) > MAX_REACH_DIAMETERS {
-        return Some(format!(
+        return refused("create_distance", format!(
             "{pair}: {c} {v:e} {l} reaches {d:.1} diameters of the smallest spheres (radius {min_radius:e} {l}; with a 10% margin), beyond the {MAX_REACH_DIAMETERS} diameters the neighbour lists hold: pairs that far apart do not touch; set {c} near the contact distance {contact:e} {l}",
             c = name("create_distance"),
             v = p.create_distance,
@@ -191,9 +197,9 @@ pub fn reach_refusal(laws: &BondLaws, min_radius: f64, naming: Naming, pair: &st
     if factor.is_finite() && factor <= MAX_REACH_DIAMETERS {
         return None;
     }
-    let cause = if !stress {
+    let (field, cause) = if !stress {
         let r = name("max_distance");
-        if factor.is_finite() {
+        let cause = if factor.is_finite() {
             format!("{r} {v:e} {l} lets a bond stretch to {factor:.1} diameters of the smallest spheres (radius {min_radius:e} {l}; with a 10% margin), beyond the {MAX_REACH_DIAMETERS} diameters the neighbour lists hold; set a smaller {r}", v = p.max_distance)
         } else {
             let phrases = match naming {
@@ -201,16 +207,21 @@ pub fn reach_refusal(laws: &BondLaws, min_radius: f64, naming: Naming, pair: &st
                 Naming::Liggghts => "",
             };
             format!("{r} is inf: a bond never breaks by stretching, so no neighbour list can keep it; set a finite {r}{phrases}")
-        }
+        };
+        ("max_distance", cause)
     } else if !BondParams::switch(p.tension) {
         let t = name("tension");
-        format!("{t} is off in stress mode: a bond never breaks by stretching, so no neighbour list can keep it; switch {t} on or break by distance")
+        ("tension", format!("{t} is off in stress mode: a bond never breaks by stretching, so no neighbour list can keep it; switch {t} on or break by distance"))
     } else if !(p.k_fn2 > 0.0) {
         let k = name("k_fn2");
-        format!("{k} is {v}: in stress mode a bond without tension stiffness never reaches its tensile strength, so no neighbour list can keep it; set {k} > 0", v = p.k_fn2)
+        ("k_fn2", format!("{k} is {v}: in stress mode a bond without tension stiffness never reaches its tensile strength, so no neighbour list can keep it; set {k} > 0", v = p.k_fn2))
     } else {
         let ratio = if BondParams::switch(p.use_ratio) {
-            format!(" x {g} {v}", g = name("tension_compression_ratio"), v = p.tension_compression_ratio)
+            format!(
+                " x {g} {v}",
+                g = name("tension_compression_ratio"),
+                v = p.tension_compression_ratio
+            )
         } else {
             String::new()
         };
@@ -220,7 +231,7 @@ pub fn reach_refusal(laws: &BondLaws, min_radius: f64, naming: Naming, pair: &st
         } else {
             "never breaks a bond by stretching, so no neighbour list can keep it".to_string()
         };
-        format!(
+        let cause = format!(
             "the tensile strength {s} {sv:e}{ratio} over {k} {kv:e} {what}; lower {s}{or_ratio} or raise {k}",
             s = name("max_sigma"),
             sv = p.max_sigma,
@@ -231,9 +242,19 @@ pub fn reach_refusal(laws: &BondLaws, min_radius: f64, naming: Naming, pair: &st
             } else {
                 String::new()
             },
-        )
+        );
+        ("max_sigma", cause)
     };
-    Some(format!("{pair}: {cause}"))
+    refused(field, format!("{pair}: {cause}"))
+}
+
+/// The refusal of row `field` with `message`.
+fn refused(field: &str, message: String) -> Option<ParameterError> {
+    let parameter = PARAMETERS
+        .iter()
+        .position(|r| r.name == field)
+        .expect("a field of the parameter table");
+    Some(ParameterError { parameter, message })
 }
 
 /// Why a bond type of atom types `a`, `b` cannot run with the spheres
@@ -243,7 +264,15 @@ pub fn reach_refusal(laws: &BondLaws, min_radius: f64, naming: Naming, pair: &st
 /// beyond the bond radius, which leaves the bond almost no compression
 /// stiffness; a neighbour reach the engines cannot hold
 /// ([`reach_refusal`]).
-pub fn refusal(laws: &BondLaws, a: usize, b: usize, bodies: &[TypeBodies], wall: bool, naming: Naming, units: &UnitNames) -> Option<String> {
+pub fn refusal(
+    laws: &BondLaws,
+    a: usize,
+    b: usize,
+    bodies: &[TypeBodies],
+    wall: bool,
+    naming: Naming,
+    units: &UnitNames,
+) -> Option<ParameterError> {
     let p = &laws.params;
     let l = units.length;
     let name = |field| parameter_name(field, naming);
@@ -253,7 +282,7 @@ pub fn refusal(laws: &BondLaws, a: usize, b: usize, bodies: &[TypeBodies], wall:
         format!("atom types {a} and {b}")
     };
     if BondParams::switch(p.compression) && p.k_fn1 == 0.0 {
-        return Some(format!(
+        return refused("k_fn1", format!(
             "{pair}: {k} is 0 (also its value when left out) while {c} is on: an intact bond replaces the contact, so bonded spheres pushed together would pass through each other; set {k} > 0",
             k = name("k_fn1"),
             c = name("compression"),
@@ -266,7 +295,7 @@ pub fn refusal(laws: &BondLaws, a: usize, b: usize, bodies: &[TypeBodies], wall:
     };
     let rb = p.lambda * min_radius;
     if BondParams::switch(p.compression) && p.compression_linear_below > rb {
-        return Some(format!(
+        return refused("compression_linear_below", format!(
             "{pair}: {e} {v:e} {l} exceeds the bond radius {rb:e} {l} of the smallest spheres ({lambda} {lv} x radius {min_radius:e} {l}): the compression law would be linear, with the slope it has at {e}, over every compression a bond takes, far softer than the law, and bonded spheres pushed together would pass through each other; set {e} well below the bond radius (e.g. 1e-3 of it), or 0 for the law itself",
             e = name("compression_linear_below"),
             v = p.compression_linear_below,
@@ -286,7 +315,7 @@ pub fn first_refusal<'a>(
     wall: bool,
     naming: Naming,
     units: &UnitNames,
-) -> Option<String> {
+) -> Option<ParameterError> {
     for a in 1..=ntypes {
         let first_b = if wall { 1 } else { a };
         for b in first_b..=ntypes {

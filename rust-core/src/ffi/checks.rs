@@ -311,8 +311,15 @@ pub unsafe extern "C" fn granbond_bond_creation_check(
     let units = unit_names(units)?;
     let (n, models, bodies) = tables(ntypes, models, bodies)?;
     let wall = wall != 0;
-    if let Some(refused) = first_refusal(n, bodies, |a, b| models[a * (n + 1) + b].map(|m| &**m), wall, naming, &units) {
-        return Err(Failure::new(Status::InvalidParameter, refused));
+    if let Some(refused) = first_refusal(
+        n,
+        bodies,
+        |a, b| models[a * (n + 1) + b].map(|m| &**m),
+        wall,
+        naming,
+        &units,
+    ) {
+        return Err(refused.into());
     }
     let table: Vec<Option<BondParams>> = models.iter().map(|m| m.map(|m| m.params)).collect();
     let found = findings(
@@ -361,7 +368,7 @@ pub unsafe extern "C" fn granbond_bond_neighbour_reach(
     let units = unit_names(units)?;
     let pair = format!("atom types {type_a} and {type_b}");
     if let Some(refused) = reach_refusal(model, min_radius, naming, &pair, &units) {
-        return Err(Failure::new(Status::InvalidParameter, refused));
+        return Err(refused.into());
     }
     *out = model.contact_distance_factor(min_radius);
     Ok(())

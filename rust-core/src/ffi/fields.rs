@@ -111,7 +111,8 @@ pub unsafe extern "C" fn granbond_bond_fields(
     let fields = bond_fields(model, state, loads, x_i, x_j);
     // centres so close or so far apart that their distance under- or
     // overflows; a strength of inf is the documented "never"
-    let never = |k: usize| fields[k] == f64::INFINITY && matches!(BOND_FIELDS[k].name, "sigma_max" | "tau_max");
+    let never =
+        |k: usize| fields[k] == f64::INFINITY && matches!(BOND_FIELDS[k].name, "sigma_max" | "tau_max");
     if let Some(k) = (0..fields.len()).find(|&k| !fields[k].is_finite() && !never(k)) {
         return Err(Failure::new(
             Status::NonFiniteResult,

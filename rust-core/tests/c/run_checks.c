@@ -69,6 +69,38 @@ int test_run_checks(void)
     EXPECT(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 0, 2, "si", "c", &report), GB_STATUS_INVALID_ARGUMENT,
            "granbond_bond_creation_check, naming = 2");
 
+    EXPECT(granbond_bond_timestep_check(bonds, 2, bodies, 0.0, 0, "si", "s", &report), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_bond_timestep_check, dt = 0");
+    EXPECT_MESSAGE("timestep");
+
+    /* the neighbour reach: 1.1 x 2.08e-3 / 2e-3 of distance mode; 25 diameters refused, naming the reach */
+    EXPECT_OK(granbond_bond_neighbour_reach(bond, 1e-3, 1, 1, 1, "si", &critical), "granbond_bond_neighbour_reach");
+    CHECK(fabs(critical - 1.1 * 2.08e-3 / 2e-3) < 1e-12, say("reach factor %.17g", critical));
+    p.max_distance = 0.05;
+    p.create_distance = 2.05e-3;
+    granbond_bond_model_free(bond);
+    bond = NULL;
+    EXPECT_OK(granbond_bond_model_new(&p, &bond), "granbond_bond_model_new");
+    EXPECT(granbond_bond_neighbour_reach(bond, 1e-3, 1, 1, 1, "si", &critical), GB_STATUS_INVALID_PARAMETER,
+           "granbond_bond_neighbour_reach, 27.5 diameters");
+    EXPECT_MESSAGE("maxDistanceBondnonlinear");
+    EXPECT(granbond_bond_neighbour_reach(bond, 1e-3, 1, 1, 0, "si", &critical), GB_STATUS_INVALID_PARAMETER,
+           "granbond_bond_neighbour_reach, 27.5 diameters, LAMMPS names");
+    EXPECT_MESSAGE("max_distance");
+    /* no compression stiffness while compression is on: refused at the run's start */
+    bonds[1 * 3 + 1] = bonds[1 * 3 + 2] = bond;
+    p.max_distance = 2.08e-3;
+    p.k_fn1 = 0.0;
+    granbond_bond_model_free(bond);
+    bond = NULL;
+    EXPECT_OK(granbond_bond_model_new(&p, &bond), "granbond_bond_model_new, k_fn1 = 0");
+    bonds[1 * 3 + 1] = bonds[1 * 3 + 2] = bond;
+    EXPECT(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 0, 1, "si", "c", &report), GB_STATUS_INVALID_PARAMETER,
+           "granbond_bond_creation_check, k_fn1 = 0");
+    EXPECT_MESSAGE("stiffnessPerUnitAreaK_fn1");
+    EXPECT(granbond_bond_neighbour_reach(NULL, 1e-3, 1, 1, 1, "si", &critical), GB_STATUS_NULL_POINTER,
+           "granbond_bond_neighbour_reach, model = NULL");
+
     granbond_bond_model_free(bond);
     granbond_voigt_model_free(voigt);
     return 0;
