@@ -204,7 +204,7 @@ void PairGranbond::init_style()
 
     if (fixHistory_ && sizeHistory_ != size)
         error->all(FLERR, "pair granbond: pair_coeff changed whether bonds exist after a run; "
-                          "use a new pair_style granbond command");
+                          "give 'pair_style none' and then a new pair_style granbond command");
     if (!fixHistory_) {
         sizeHistory_ = size;
         // made by our class under the stock style's name: restart files bring

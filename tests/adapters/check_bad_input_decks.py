@@ -117,7 +117,11 @@ def check_all(engines, workdir):
                 f.write(text)
         label = f"{engine} {deck} {variables}"
         # the decks are run in their folder's copy: -in takes the path as given
-        rc, text = run_deck([engines[engine]], os.path.join(where, deck), where, variables)
+        try:
+            rc, text = run_deck([engines[engine]], os.path.join(where, deck), where, variables)
+        except Failure as e:   # a signal
+            failures.append(f"{label}: {str(e).splitlines()[0]}")
+            continue
         errors = [line for line in text.splitlines() if "ERROR" in line]
         if words is not None:
             if rc == 0:

@@ -31,6 +31,12 @@ pub enum Finding {
     /// `create_distance` below the contact distance of the smallest spheres:
     /// only pairs overlapping by the difference bond.
     CreateBelowContact,
+    /// `create_distance` reaches more than a radius of the smallest spheres
+    /// beyond their contact distance: such spheres bond without touching.
+    CreateBeyondContact,
+    /// A law switched on whose loading stiffness is 0 (the value of a
+    /// stiffness left out): the bond resists nothing in that direction.
+    ZeroStiffness,
     /// `create_step` is not after the step the model's first run started
     /// from, bonds are not created every step, and no bond exists: this
     /// model never forms a bond (the first force step of a run is the one
@@ -82,6 +88,12 @@ pub fn findings(
             if p.create_distance < contact {
                 note(Finding::CreateBelowContact, a, b);
             }
+            if !zero_stiffness(&p).is_empty() {
+                note(Finding::ZeroStiffness, a, b);
+            }
+            if p.create_distance - contact > smallest_radius(bodies, a, b, wall) {
+                note(Finding::CreateBeyondContact, a, b);
+            }
             if !BondParams::switch(p.create_always) && p.create_step <= first_step && !bonds_exist {
                 note(Finding::CreateStepPassed, a, b);
             }
@@ -94,6 +106,34 @@ pub fn findings(
 /// (centre to surface for a wall).
 fn contact_distance(bodies: &[TypeBodies], a: usize, b: usize, wall: bool) -> f64 {
     bodies[a].radius_min + if wall { 0.0 } else { bodies[b].radius_min }
+}
+
+/// The laws switched on with a loading stiffness of 0, as (switch,
+/// stiffness) fields. Compression is not among them: without its stiffness
+/// the bond is refused ([`refusal`]); tension in stress mode neither
+/// ([`reach_refusal`]).
+fn zero_stiffness(p: &BondParams) -> Vec<(&'static str, &'static str)> {
+    let stress = BondParams::switch(p.stress_break);
+    [
+        ("tension", "k_fn2", p.tension, p.k_fn2, !stress),
+        ("shear", "k_ft", p.shear, p.k_ft, true),
+        ("twist", "k_tn", p.twist, p.k_tn, true),
+        ("bend", "k_tt", p.bend, p.k_tt, true),
+    ]
+    .into_iter()
+    .filter(|&(_, _, on, k, checked)| checked && BondParams::switch(on) && k == 0.0)
+    .map(|(law, k, _, _, _)| (law, k))
+    .collect()
+}
+
+/// The smallest radius of the spheres of types `a` and `b` (of `a` for a
+/// wall).
+fn smallest_radius(bodies: &[TypeBodies], a: usize, b: usize, wall: bool) -> f64 {
+    if wall {
+        bodies[a].radius_min
+    } else {
+        bodies[a].radius_min.min(bodies[b].radius_min)
+    }
 }
 
 /// A parameter's name as the engine's decks spell it.
@@ -151,6 +191,24 @@ pub fn message(
                 r = p.max_distance,
             )
         }
+        Finding::ZeroStiffness => {
+            let zero = zero_stiffness(p);
+            let list = |names: Vec<&str>| names.join(", ");
+            let stiffnesses = list(zero.iter().map(|z| parameter_name(z.1, naming)).collect());
+            let laws = list(zero.iter().map(|z| parameter_name(z.0, naming)).collect());
+            format!(
+                "{style} ({pair}): {stiffnesses} 0 (also the value when left out) while {laws} on: the bonds resist nothing there; set the stiffness, or switch the law off"
+            )
+        }
+        Finding::CreateBelowContact if p.create_distance == 0.0 => format!(
+            "{style} ({pair}): {create} is 0 (also its value when left out): no pair bonds; set {create} near the contact distance {contact:e} {l} of the smallest spheres",
+        ),
+        Finding::CreateBeyondContact => format!(
+            "{style} ({pair}): {create} {c:e} {l} is {d:e} {l} beyond the contact distance {contact:e} {l} of the smallest spheres, more than their radius {r:e} {l}: such spheres bond without touching",
+            c = p.create_distance,
+            d = p.create_distance - contact,
+            r = smallest_radius(bodies, a, b, wall),
+        ),
         Finding::CreateBelowContact => format!(
             "{style} ({pair}): {create} {c:e} {l} is below the contact distance {contact:e} {l} of the smallest spheres: only pairs overlapping by more than {d:e} {l} bond",
             c = p.create_distance,
@@ -349,6 +407,13 @@ mod tests {
 
     fn bond(create: f64, reach: f64, step: i64, always: bool) -> BondParams {
         BondParams {
+            k_fn2: 1e9,
+            ku_fn2: 1e9,
+            k_ft: 1e9,
+            k_tn: 1e9,
+            ku_tn: 1e9,
+            k_tt: 1e9,
+            ku_tt: 1e9,
             create_distance: create,
             max_distance: reach,
             create_step: step,
@@ -400,6 +465,70 @@ mod tests {
             kinds(bond(2.05e-3, 2.08e-3, 100, false), 100),
             [Finding::CreateStepPassed]
         );
+    }
+
+    #[test]
+    fn a_creation_distance_a_radius_beyond_contact_is_found_and_zero_says_no_bond_forms() {
+        let far = BondParams {
+            stress_break: 1,
+            ..bond(3.2e-3, 2.08e-3, 1, false)
+        };
+        assert_eq!(kinds(far, 0), [Finding::CreateBeyondContact]);
+        let near = BondParams {
+            stress_break: 1,
+            ..bond(2.9e-3, 2.08e-3, 1, false)
+        };
+        assert!(kinds(near, 0).is_empty());
+        let never = bond(0.0, 2.08e-3, 1, false);
+        assert_eq!(kinds(never, 0), [Finding::CreateBelowContact]);
+        let text = message(
+            Finding::CreateBelowContact,
+            1,
+            1,
+            &never,
+            &spheres(1e-3),
+            0,
+            false,
+            Naming::Liggghts,
+            &UnitNames::SI,
+            "x",
+        );
+        assert!(
+            text.contains("createDistanceBondnonlinear is 0") && text.contains("no pair bonds"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn a_law_switched_on_without_stiffness_is_named_with_its_switch() {
+        let p = BondParams {
+            k_ft: 0.0,
+            k_tt: 0.0,
+            ..bond(2.05e-3, 2.08e-3, 1, false)
+        };
+        assert_eq!(kinds(p, 0), [Finding::ZeroStiffness]);
+        let text = message(
+            Finding::ZeroStiffness,
+            1,
+            1,
+            &p,
+            &spheres(1e-3),
+            0,
+            false,
+            Naming::Lammps,
+            &UnitNames::SI,
+            "x",
+        );
+        assert!(
+            text.contains("k_ft, k_tt 0") && text.contains("shear, bend on"),
+            "{text}"
+        );
+        let off = BondParams {
+            shear: 0,
+            bend: 0,
+            ..p
+        };
+        assert!(kinds(off, 0).is_empty());
     }
 
     #[test]

@@ -19,6 +19,7 @@ int test_run_checks(void)
     granbond_bond_params_default(&p);
     p.k_fn1 = p.ku_fn1 = p.kc_fn1 = 1e9;
     p.k_fn2 = p.ku_fn2 = p.kc_fn2 = 1e9;
+    p.k_ft = p.k_tn = p.ku_tn = p.k_tt = p.ku_tt = 1e9;
     p.create_distance = 2.2e-3;
     p.max_distance = 2.08e-3;
     p.create_step = 1;
