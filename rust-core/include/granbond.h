@@ -80,13 +80,6 @@
 #define GRANBOND_CHECK_MESSAGE_LEN 2048
 
 /**
- * The largest magnitude a finite real parameter may have: beyond it the
- * products the models form (section areas and moments, stiffness times
- * area) overflow. No parameter of any engine's unit style comes near it.
- */
-#define MAX_MAGNITUDE 1e100
-
-/**
  * The recommended step as a fraction of the critical step, for bonds and
  * contacts alike (docs/speed-accuracy.md). The estimates are the limit of
  * one bond or contact between two spheres; a sphere bonded to six
@@ -1415,7 +1408,8 @@ enum GbStatus granbond_voigt_timestep_check(const struct GbVoigtModel *const *mo
  * the step the model's first run started from, while no bond exists:
  * `bonds_exist` non-zero when intact bonds of these models exist over all
  * ranks, as in a run continued from a restart file). `wall` non-zero: wall
- * bonds (the sphere's radius alone is the contact distance; the wall's type
+ * bonds (measured to the stand-in sphere of the particle's radius behind
+ * the wall, so twice the radius is the contact distance; the wall's type
  * needs no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the
  * message; `units`: the engine's `units` style. `out->level` is the number
  * of findings. A bond type that cannot run with the spheres present (no

@@ -102,10 +102,16 @@ pub fn findings(
     found
 }
 
-/// Centre distance of the smallest touching spheres of types `a` and `b`
-/// (centre to surface for a wall).
+/// Centre distance of the smallest touching spheres of types `a` and `b`;
+/// for a wall, to the stand-in sphere of the particle's radius behind it
+/// (`wall.rs`), which is the distance wall bonds form and break by.
 fn contact_distance(bodies: &[TypeBodies], a: usize, b: usize, wall: bool) -> f64 {
-    bodies[a].radius_min + if wall { 0.0 } else { bodies[b].radius_min }
+    bodies[a].radius_min
+        + if wall {
+            bodies[a].radius_min
+        } else {
+            bodies[b].radius_min
+        }
 }
 
 /// The laws switched on with a loading stiffness of 0, as (switch,
@@ -541,12 +547,13 @@ mod tests {
     }
 
     #[test]
-    fn a_wall_counts_only_the_sphere() {
+    fn a_wall_bond_is_measured_to_the_stand_in_sphere_behind_the_wall() {
         let bodies = spheres(1e-3);
-        let p = bond(1.05e-3, 1.1e-3, 1, false);
+        let p = bond(2.05e-3, 2.08e-3, 1, false);
         assert!(findings(1, &bodies, |_, _| Some(p), 0, false, true).is_empty());
+        let near = bond(1.05e-3, 1.1e-3, 1, false);
         assert_eq!(
-            findings(1, &bodies, |_, _| Some(p), 0, false, false)[0].0,
+            findings(1, &bodies, |_, _| Some(near), 0, false, true)[0].0,
             Finding::CreateBelowContact
         );
     }

@@ -280,7 +280,8 @@ pub unsafe extern "C" fn granbond_voigt_timestep_check(
 /// the step the model's first run started from, while no bond exists:
 /// `bonds_exist` non-zero when intact bonds of these models exist over all
 /// ranks, as in a run continued from a restart file). `wall` non-zero: wall
-/// bonds (the sphere's radius alone is the contact distance; the wall's type
+/// bonds (measured to the stand-in sphere of the particle's radius behind
+/// the wall, so twice the radius is the contact distance; the wall's type
 /// needs no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the
 /// message; `units`: the engine's `units` style. `out->level` is the number
 /// of findings. A bond type that cannot run with the spheres present (no
