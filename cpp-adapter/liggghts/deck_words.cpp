@@ -5,7 +5,6 @@
 #include "fix_property_global.h"
 #include "modify.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -107,19 +106,18 @@ LAMMPS_NS::Fix *checkedPropertyGlobal(LAMMPS_NS::LAMMPS *lmp, int narg, char **a
         for (int k = first; k < narg; k++) {
             const std::string word = arg[k];
             const std::string where = typesOf(k - first, n, row->perTypePair);
-            if (row->infinite && (word == "inf" || word == "+inf")) {
+            char *end = nullptr;
+            const double v = std::strtod(arg[k], &end);
+            const bool parsed = end != arg[k] && *end == '\0';
+            if (parsed && std::isinf(v)) {
+                if (!row->infinite || v < 0.0)
+                    endRun(lmp->error, FLERR, command + where + ": '" + word + "' is not a finite number");
                 arg[k] = kInfinity;
                 continue;
             }
-            errno = 0;
-            char *end = nullptr;
-            const double v = std::strtod(arg[k], &end);
-            if (end == arg[k] || *end != '\0')
+            // a number, in the characters the engine's number reader takes
+            if (!parsed || word.find_first_not_of("0123456789+-.eE") != std::string::npos)
                 endRun(lmp->error, FLERR, command + where + ": '" + word + "' is not a number");
-            if (!std::isfinite(v) || errno == ERANGE)
-                endRun(lmp->error, FLERR, command + where + ": '" + word + "' is " +
-                                              (std::isnan(v) ? "not a number" : "not a finite number") +
-                                              (row->infinite ? " (inf means never)" : ""));
         }
         // a second line for the same property: the engine would refuse it
         // without naming the property, or keep one of the two silently
