@@ -230,7 +230,9 @@ void PairGranbond::init_style()
     if (checkIndex_ && anyBond_ && comm->me == 0)
         utils::logmesg(lmp, "pair granbond: checking the index of bonds after every pass (GRANBOND_CHECK_INDEX)\n");
     if (anyBond_) checkRenumbering();
-    runChecks(bodies_, true);
+    // an init outside a run or minimization (reset_atom_ids, write_data)
+    // may see atoms before their radii are set: the checks wait for a run
+    if (update->whichflag != 0) runChecks(bodies_, true);
 }
 
 namespace {

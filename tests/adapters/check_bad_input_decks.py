@@ -1,14 +1,16 @@
-"""The decks of bad input users wrote stop with an ERROR naming it, or run as documented.
+"""Decks of bad input stop with an ERROR naming it; decks that are right run without a word.
 
-decks/bad_input/ holds decks that once crashed an engine, gave nan or were
-accepted as nonsense: a switch without a value at the end of a LIGGGHTS
-line, a bond without compression stiffness, a linear compression law
-beyond the bond radius, creation far beyond contact, a break reach beyond
-the neighbour lists, a strength of `inf` under per-bond output, repeated
+decks/bad_input/ holds decks users wrote with bad input: a switch without a
+value at the end of a LIGGGHTS line, a bond without compression
+stiffness, a linear compression law beyond the bond radius, creation far
+beyond contact, a break reach beyond the neighbour lists, repeated
 keywords and phrases, coincident centres, a property in the wrong style,
-`timestep 0`. Each case runs one deck (in a copy of the folder) and
-expects either an ERROR line naming every word listed, no signal, or a
-clean run with the property the case states.
+`timestep 0`; and decks that are right: a strength of `inf` under
+per-bond output, the intended values of the same decks, radii set after
+an early init (`reset_atom_ids` before `set diameter`). Each case runs one
+deck (in a copy of the folder) and expects either an ERROR line naming
+every word listed, no signal, or a clean run with the property the case
+states.
 
 usage: check_bad_input_decks.py --liggghts EXE --lammps EXE --workdir DIR
 """
@@ -50,6 +52,17 @@ def apart(text):
         return "no thermo rows"
     if any(r[1] <= 0.0 for r in rows):
         return f"the spheres passed through each other: r = {[r[1] for r in rows]}"
+    return None
+
+
+def quiet_and_bonded(text):
+    """No warning, and the bond formed (created count 1 at the last row)."""
+    warnings = [l for l in text.splitlines() if l.startswith("WARNING")]
+    if warnings:
+        return f"warned about a deck whose radii are set before its run: {warnings}"
+    rows = thermo_rows(text, "Step")
+    if not rows or rows[-1][1] != 1.0:
+        return f"no bond formed: {rows}"
     return None
 
 
@@ -96,6 +109,7 @@ CASES = [
     ("liggghts", "in.linear_below", {"spec": "scalar 5e-7"}, ["compressionLinearBelowBondnonlinear", "scalar"],
      None),
     ("liggghts", "in.linear_below", {"spec": "peratomtypepair 1 5e-7"}, None, None),
+    ("lammps", "early_init.in", {}, None, quiet_and_bonded),
     ("lammps", variant("lammps_stress.in", "timestep_zero.in", "timestep     2e-7", "timestep 0"), {},
      ["timestep"], None),
     ("liggghts", variant("liggghts_stress.in", "timestep_zero_liggghts.in", "timestep     2e-7", "timestep 0"), {},
