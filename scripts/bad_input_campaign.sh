@@ -8,7 +8,7 @@
 #   scripts/bad_input_campaign.sh [BUILD_DIR] [WORK_DIR]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-build="${1:-$root/build}"
+build="$(cd "${1:-$root/build}" && pwd)"
 work="${2:-$(mktemp -d)}"
 python3 "$root/tests/adapters/check_deck_mutations.py" --all --report \
   --liggghts "$build/bin/liggghts-granbond" --lammps "$build/bin/lmp-granbond" --workdir "$work"
