@@ -79,6 +79,14 @@ private:
     std::string command_, clause_;
 };
 
+bool isNumber(const std::string &s)
+{
+    if (s.empty()) return false;
+    char *end = nullptr;
+    std::strtod(s.c_str(), &end);
+    return end != s.c_str() && *end == '\0';
+}
+
 // A deck's value for a row of `kind`, as the core takes it (switches 1 or 0,
 // steps as exact doubles).
 double value(Args &a, GbParameterKind kind, const std::string &what)
@@ -117,14 +125,27 @@ public:
         for (size_t id = 0; info(id, &row) == GB_STATUS_OK; id++) rows_.push_back(row);
         GbPhrase p;
         for (size_t id = 0; phrase(id, &p) == GB_STATUS_OK; id++) phrases_.push_back(p);
+        givenBy_.assign(rows_.size(), std::string());
+        givenValue_.assign(rows_.size(), 0.0);
         a_.clause(model_);
     }
 
     // The values that follow the model's name.
     void head()
     {
-        for (const GbPhrase &p : phrases_)
-            if (!*p.words) read(p, "");
+        for (const GbPhrase &p : phrases_) {
+            if (*p.words) continue;
+            // too few numbers: name the values the model expects, not the
+            // word that stood where the last one should
+            const std::vector<std::string> reads = split(p.reads);
+            size_t k = 0;
+            while (k < reads.size() && isNumber(a_.peek(static_cast<int>(k)))) k++;
+            if (k < reads.size() && (a_.peek(static_cast<int>(k)).empty() || !isNumber(a_.peek(static_cast<int>(k)))))
+                a_.fail(std::string(model_) + " expects " + std::to_string(reads.size()) + " numbers (" + p.reads +
+                        "), got " + std::to_string(k) +
+                        (a_.peek(static_cast<int>(k)).empty() ? std::string() : " before '" + a_.peek(static_cast<int>(k)) + "'"));
+            read(p, "");
+        }
     }
 
     // Reads the phrase or keyword at the next word; false when the word is
@@ -154,7 +175,7 @@ public:
         if (const GbParameterInfo *row = find(w)) {
             a_.skip(1);
             const double v = value(a_, row->kind, w);
-            store(row->keyword, v, a_.peek(-1));
+            store(row->keyword, v, a_.peek(-1), w + " " + a_.peek(-1));
             return true;
         }
         // the opening word of phrases whose next word is wrong
@@ -203,21 +224,41 @@ private:
             if (!row) a_.fail("the core's phrase '" + name + "' reads '" + keyword + "', which its table lacks");
             const std::string what = name.empty() ? keyword : reads.size() == 1 ? name : name + " " + keyword;
             const double v = value(a_, row->kind, what);
-            store(row->keyword, v, a_.peek(-1));
+            store(row->keyword, v, a_.peek(-1), name.empty() ? std::string(model_) : name);
         }
+        // what the values after the model's name imply is a default that a
+        // later phrase may change (`rolling` after `voigt`)
         const std::vector<std::string> sets = split(p.sets);
         for (size_t k = 0; k + 1 < sets.size(); k += 2)
-            store(sets[k].c_str(), std::strtod(sets[k + 1].c_str(), nullptr), sets[k + 1]);
+            store(sets[k].c_str(), std::strtod(sets[k + 1].c_str(), nullptr), sets[k + 1], name);
     }
 
     // The core refuses a value out of range; the message names the keyword
-    // and the value as the deck wrote it.
-    void store(const char *keyword, double v, const std::string &written)
+    // and the value as the deck wrote it. A row given twice on the line with
+    // different values is refused, naming both (`origin`: the words that
+    // gave it; empty for a default the values after the model's name imply).
+    void store(const char *keyword, double v, const std::string &written, const std::string &origin)
     {
+        const GbParameterInfo *row = find(keyword);
+        const size_t id = row ? static_cast<size_t>(row - rows_.data()) : rows_.size();
+        if (id < rows_.size() && !origin.empty()) {
+            if (!givenBy_[id].empty() && givenValue_[id] != v)
+                a_.fail("'" + origin + "' conflicts with '" + givenBy_[id] + "' given before on this line (" + keyword +
+                        " set twice to different values); give each keyword once");
+            givenBy_[id] = origin;
+            givenValue_[id] = v;
+        }
         if (set_(&params_, keyword, v) == GB_STATUS_OK) return;
-        if (granbond_last_error_parameter() >= 0 && static_cast<size_t>(granbond_last_error_parameter()) < rows_.size())
-            a_.fail(std::string(keyword) + " must be " + rows_[granbond_last_error_parameter()].range + ", got " +
-                    written);
+        if (granbond_last_error_parameter() >= 0 && static_cast<size_t>(granbond_last_error_parameter()) < rows_.size()) {
+            // the core's requirement (the row's range, or more), with the
+            // value as the deck wrote it
+            const std::string reason = coreReason();
+            const size_t from = reason.find(" must be "), to = reason.rfind("; got ");
+            const std::string need = from != std::string::npos && to != std::string::npos && to > from
+                                         ? reason.substr(from + 9, to - from - 9)
+                                         : std::string(rows_[granbond_last_error_parameter()].range);
+            a_.fail(std::string(keyword) + " must be " + need + ", got " + written);
+        }
         a_.fail(coreReason());
     }
 
@@ -228,6 +269,8 @@ private:
     std::vector<GbParameterInfo> rows_;
     std::vector<GbPhrase> phrases_;
     std::string last_;   // the phrase just read, for one that may only follow it
+    std::vector<std::string> givenBy_;   // per row: the words that gave it on this line
+    std::vector<double> givenValue_;     // ... and the value they gave
 };
 
 }
@@ -267,10 +310,15 @@ void PairGranbond::coeff(int narg, char **arg)
         tp.hasBond = 1;
         Clause<GbBondParams> bond(a, kBond, &granbond_bond_parameter_info, &granbond_bond_phrase_info,
                                   &granbond_bond_params_set, tp.bond);
+        bool underBondGiven = false;
         while (!a.done()) {
             if (a.peek() == kContactUnderBond) {
                 a.skip(1);
-                tp.contactUnderBond = static_cast<int32_t>(value(a, GB_PARAMETER_KIND_SWITCH, kContactUnderBond));
+                const int32_t v = static_cast<int32_t>(value(a, GB_PARAMETER_KIND_SWITCH, kContactUnderBond));
+                if (underBondGiven && v != tp.contactUnderBond)
+                    a.fail(std::string(kContactUnderBond) + " is given twice with different values; give it once");
+                underBondGiven = true;
+                tp.contactUnderBond = v;
             } else if (!bond.next()) {
                 a.fail("unknown keyword '" + a.peek() + "' (known: " + bond.known() + " " + kContactUnderBond + ")");
             }

@@ -4,6 +4,7 @@
 #include "core_bridge.h"
 #include "fix_granbond_atoms.h"
 #include "combination_check.h"
+#include "deck_words.h"
 
 #include "compute.h"
 #include "fix.h"
@@ -246,6 +247,8 @@ void registerBondStyles(LAMMPS_NS::LAMMPS *lmp)
     if (computes) (*computes)["pair/gran/local/bond"] = &createPairGranLocalBond;
     if (fixes) (*fixes)["bond/breaklog"] = &createBreakLog;
     if (fixes) (*fixes)[atomsFixStyle()] = &createAtomsFix;
+    // granbond's property lines are checked before the engine reads them
+    if (fixes) checkPropertyLines(*fixes);
     // each LAMMPS constructor re-registers the engine's "gran" selector
     installCombinationCheck();
 }

@@ -715,6 +715,13 @@ inline bool BondNonlinearCohesion::unbondable(SurfacesCloseData &d)
 
 void BondNonlinearCohesion::intersecting(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
+    // the contact models have no normal to work with (the engine's would
+    // give nan), nor has the bond: stop, as the core does in LAMMPS
+    if (!isWall_ && sidata.rsq == 0.0)
+        endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: atoms " + std::to_string(static_cast<long>(atom->tag[sidata.i])) +
+                                         " and " + std::to_string(static_cast<long>(atom->tag[sidata.j])) + " at step " +
+                                         std::to_string(static_cast<long long>(update->ntimestep)) +
+                                         ": coincident centres: the pair has no axis; place the atoms apart");
     if (swept(sidata)) {
         i_forces.reset();
         j_forces.reset();

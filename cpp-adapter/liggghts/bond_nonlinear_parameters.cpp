@@ -2,6 +2,8 @@
 #include "core_message.h"
 #include "core_bridge.h"
 
+#include "update.h"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -171,31 +173,13 @@ void BondNonlinearParameters::registerContactDistanceFactor(PropertyRegistry &re
     if (!(minRadius > 0.0))
         error->all(FLERR, "cohesion bond/nonlinear: the smallest particle radius is not known or not positive; "
                           "define the particles (or their templates) before the first run");
-    const bool stressBreak = switches_.stress_break != 0;
-    const char *limit = stressBreak ? "maxSigmaBondnonlinear (or raise stiffnessPerUnitAreaK_fn2)"
-                                     : "maxDistanceBondnonlinear";
+    // the core refuses a reach the lists cannot hold, naming what sets it
     double factor = 1.0;
     for (int a = 1; a <= ntypes_; a++)
         for (int b = 1; b <= ntypes_; b++) {
             double f = 0.0;
-            if (granbond_bond_contact_distance_factor(model(a, b), minRadius, &f) != GB_STATUS_OK) {
+            if (granbond_bond_neighbour_reach(model(a, b), minRadius, a, b, 1, update->unit_style, &f) != GB_STATUS_OK)
                 endRun(error, FLERR, std::string(kCaller) + ": " + coreReason());
-            }
-            char msg[640];
-            if (!std::isfinite(f)) {
-                snprintf(msg, sizeof msg,
-                         "%s: bonds of atom types %d and %d never break by stretching, so no neighbour list "
-                         "can keep them; set a finite %s%s", kCaller, a, b, limit,
-                         stressBreak ? " and keep tensionStress on" : "");
-                endRun(error, FLERR, msg);
-            }
-            if (f > 10.0) {
-                snprintf(msg, sizeof msg,
-                         "%s: bonds of atom types %d and %d stretch up to %g x particle diameter (neighbour "
-                         "reach, +10%%), exceeding 10 x particle diameter; please reduce %s", kCaller, a, b, f,
-                         limit);
-                endRun(error, FLERR, msg);
-            }
             if (f > factor) factor = f;
         }
     neighbor->register_contact_dist_factor(factor);

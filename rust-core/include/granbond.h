@@ -9,6 +9,13 @@
 #include <stdint.h>
 
 /**
+ * The largest neighbour-list reach a bond type may ask of the engines, in
+ * diameters of the smallest spheres it joins: the reach the engines'
+ * lists hold without their binning failing (LIGGGHTS's own limit).
+ */
+#define MAX_REACH_DIAMETERS 10.0
+
+/**
  * Number of fields of [`BOND_FIELDS`].
  */
 #define BOND_FIELD_COUNT 23
@@ -1586,10 +1593,15 @@ enum GbStatus granbond_voigt_timestep_check(const struct GbVoigtModel *const *mo
  * the step the model's first run started from, while no bond exists:
  * `bonds_exist` non-zero when intact bonds of these models exist over all
  * ranks, as in a run continued from a restart file). `wall` non-zero: wall
- * bonds (the sphere's radius alone is the contact distance; the wall's type
+ * bonds (measured to the stand-in sphere of the particle's radius behind
+ * the wall, so twice the radius is the contact distance; the wall's type
  * needs no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the
  * message; `units`: the engine's `units` style. `out->level` is the number
- * of findings.
+ * of findings. A bond type that cannot run with the spheres present (no
+ * compression stiffness while compression is on, a linear continuation of
+ * the compression law beyond the bond radius, a neighbour reach beyond
+ * what the lists hold) is refused (`GB_STATUS_INVALID_PARAMETER`) with a
+ * message naming the parameters.
  *
  * # Safety
  * As `granbond_bond_timestep_check`.
@@ -1604,6 +1616,28 @@ enum GbStatus granbond_bond_creation_check(const struct GbBondModel *const *mode
                                            const char *units,
                                            const char *style,
                                            struct GbCheckReport *out);
+
+/**
+ * The neighbour-list reach, as a multiple of the contact distance
+ * `2 min_radius` of the smallest spheres, that keeps every intact bond of
+ * `model` (atom types `type_a`, `type_b`, for the message) in the engine's
+ * lists, written to `out`. A bond that never breaks by stretching, or a
+ * reach (or creation distance) of more than ten diameters, is refused
+ * (`GB_STATUS_INVALID_PARAMETER`) with a message naming the parameters
+ * that set it (`naming`: 0 LAMMPS keywords, 1 LIGGGHTS names; `units`: the
+ * engine's `units` style).
+ *
+ * # Safety
+ * `model` must be null or a model; `units` a NUL-terminated string; `out`
+ * null or valid for writes.
+ */
+enum GbStatus granbond_bond_neighbour_reach(const struct GbBondModel *model,
+                                            double min_radius,
+                                            int32_t type_a,
+                                            int32_t type_b,
+                                            int32_t naming,
+                                            const char *units,
+                                            double *out);
 
 /**
  * Fills `params` with the defaults of docs/models/voigt.md's parameter
@@ -1902,7 +1936,8 @@ enum GbStatus granbond_bond_field_info(size_t id,
  * (`GB_STATUS_NON_FINITE_INPUT`), coincident centres
  * (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument, and fields
  * that come out non-finite (centres whose distance under- or overflows:
- * `GB_STATUS_NON_FINITE_RESULT`, naming the field).
+ * `GB_STATUS_NON_FINITE_RESULT`, naming the field). A strength of `inf`
+ * (never breaks) is written as it is.
  *
  * # Safety
  * `model` must be null or a model; `record` null or valid for the

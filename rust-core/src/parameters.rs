@@ -15,7 +15,7 @@ pub enum Range {
     Fraction,
     /// 0 or 1.
     Switch,
-    /// Any integer.
+    /// Any integer a double holds exactly (magnitude below 9e15).
     Step,
 }
 
@@ -29,7 +29,7 @@ impl Range {
             Range::PositiveOrInfinite => "> 0 (inf for never)",
             Range::Fraction => "in [0, 1)",
             Range::Switch => "0 (off) or 1 (on)",
-            Range::Step => "an integer",
+            Range::Step => "an integer of magnitude below 9e15",
         }
     }
 
@@ -44,6 +44,32 @@ impl Range {
             Range::Step => true,
         }
     }
+}
+
+/// The magnitudes a finite, non-zero real parameter may have: beyond them
+/// the products the models form (section areas and moments, stiffness
+/// times area) overflow or vanish. No parameter of any engine's unit style
+/// comes near them.
+pub const MAGNITUDES: (f64, f64) = (1e-100, 1e100);
+
+/// The requirement a finite value outside [`MAGNITUDES`] fails, for
+/// messages.
+fn magnitude_requirement(range: Range) -> String {
+    format!(
+        "{}, 0 or between {:e} and {:e} in magnitude (beyond, the model's products overflow or vanish)",
+        range.describe(),
+        MAGNITUDES.0,
+        MAGNITUDES.1
+    )
+}
+
+/// Whether a finite, non-zero real `x` lies outside [`MAGNITUDES`] (`inf`,
+/// where a range admits it, is not a magnitude).
+fn out_of_magnitude(kind: ParameterKind, x: f64) -> bool {
+    kind == ParameterKind::Real
+        && x.is_finite()
+        && x != 0.0
+        && !(MAGNITUDES.0..=MAGNITUDES.1).contains(&x.abs())
 }
 
 /// How a deck writes a value.
@@ -169,6 +195,15 @@ pub fn set_by_name<T>(
             value,
         )));
     }
+    if out_of_magnitude(info.kind(), value) {
+        return Err(SetError::Refused(refuse(
+            model,
+            table,
+            info.name,
+            &magnitude_requirement(info.range),
+            value,
+        )));
+    }
     (info.set)(params, value);
     Ok(id)
 }
@@ -228,6 +263,15 @@ pub fn check_ranges<T>(model: &str, table: &[ParameterInfo<T>], params: &T) -> R
         let x = (info.get)(params);
         if !info.range.admits(x) {
             return Err(refuse(model, table, info.name, info.range.describe(), x));
+        }
+        if out_of_magnitude(info.kind(), x) {
+            return Err(refuse(
+                model,
+                table,
+                info.name,
+                &magnitude_requirement(info.range),
+                x,
+            ));
         }
     }
     Ok(())

@@ -420,3 +420,33 @@ fn the_rolling_part_is_what_rolling_resistance_reads() {
         }
     }
 }
+
+#[test]
+fn finite_values_beyond_the_magnitudes_the_models_form_are_refused_by_name() {
+    use granbond::parameters::{set_by_name, SetError};
+    for (name, value) in [("k_ft", 1e300), ("lambda", 1e-300), ("max_sigma", 1e101)] {
+        let mut p = BondParams::default();
+        match set_by_name("bond/nonlinear", PARAMETERS, &mut p, name, value) {
+            Err(SetError::Refused(e)) => {
+                assert_eq!(PARAMETERS[e.parameter].name, name);
+                assert!(
+                    e.message.contains(name) && e.message.contains("in magnitude"),
+                    "{}",
+                    e.message
+                );
+            }
+            other => panic!("{name} {value} accepted: {other:?}"),
+        }
+    }
+    // 0 and inf where the range takes them are not magnitudes
+    let mut p = BondParams::default();
+    assert!(set_by_name("bond/nonlinear", PARAMETERS, &mut p, "k_ft", 0.0).is_ok());
+    assert!(set_by_name("bond/nonlinear", PARAMETERS, &mut p, "max_tau", f64::INFINITY).is_ok());
+    let huge = BondParams {
+        k_tn: 1e200,
+        ku_tn: 1e200,
+        ..p
+    };
+    let e = huge.validate().expect_err("refused");
+    assert_eq!(PARAMETERS[e.parameter].name, "k_tn");
+}

@@ -324,17 +324,24 @@ def check_clear(a, workdir):
     print(f"clear: pair_style granbond accepted before and after clear ({runs} loop summaries)")
 
 
+def bond_with(keyword, value):
+    """BOND with one keyword's value changed (a keyword given twice is refused)."""
+    words = BOND.split()
+    words[words.index(keyword) + 1] = value
+    return " ".join(words)
+
+
 BAD = [
     # (label, pair_coeff arguments after "* *", text the ERROR line must contain;
     # it names the deck's command too, COMMAND below)
     ("unknown bond keyword", f"{VOIGT} bond/nonlinear {BOND} k_fnx 1e9 {BREAK['distance']}", "k_fnx"),
-    ("value not a number", f"{VOIGT} bond/nonlinear {BOND} k_fn2 abc {BREAK['distance']}", "k_fn2"),
-    ("negative stiffness (core)", f"{VOIGT} bond/nonlinear {BOND} k_fn2 -1e9 {BREAK['distance']}", "k_fn2"),
-    ("damping ratio >= 1 (core)", f"{VOIGT} bond/nonlinear {BOND} eta_fn 1.0 {BREAK['distance']}", "eta_fn"),
-    ("ku < k (core)", f"{VOIGT} bond/nonlinear {BOND} ku_fn2 5e8 {BREAK['distance']}", "ku_fn2"),
-    ("lambda 0 (core)", f"{VOIGT} bond/nonlinear {BOND} lambda 0 {BREAK['distance']}", "lambda"),
-    ("lambda 1e300: no time-step estimate (core)", f"{VOIGT} bond/nonlinear {BOND} lambda 1e300 {BREAK['distance']}",
-     "a stiffness or damping parameter of this type pair"),
+    ("value not a number", f"{VOIGT} bond/nonlinear {bond_with('k_fn2', 'abc')} {BREAK['distance']}", "k_fn2"),
+    ("negative stiffness (core)", f"{VOIGT} bond/nonlinear {bond_with('k_fn2', '-1e9')} {BREAK['distance']}", "k_fn2"),
+    ("damping ratio >= 1 (core)", f"{VOIGT} bond/nonlinear {bond_with('eta_fn', '1.0')} {BREAK['distance']}", "eta_fn"),
+    ("ku < k (core)", f"{VOIGT} bond/nonlinear {bond_with('ku_fn2', '5e8')} {BREAK['distance']}", "ku_fn2"),
+    ("lambda 0 (core)", f"{VOIGT} bond/nonlinear {bond_with('lambda', '0')} {BREAK['distance']}", "lambda"),
+    ("lambda 1e300: beyond the magnitude the models can form (core)",
+     f"{VOIGT} bond/nonlinear {bond_with('lambda', '1e300')} {BREAK['distance']}", "lambda must be"),
     ("switch not yes/no", f"{VOIGT} bond/nonlinear {BOND} history_reset maybe {BREAK['distance']}",
      "history_reset"),
     ("unknown break mode", f"{VOIGT} bond/nonlinear {BOND} break strain 1", "strain"),
@@ -347,9 +354,9 @@ BAD = [
 ]
 
 
-# The command a BAD case's error names: pair_coeff, but for the time-step
-# check of the run (the pair style's, with the type pair in its message).
-COMMAND = {"lambda 1e300: no time-step estimate (core)": "pair granbond (bond/nonlinear)"}
+# The command a BAD case's error names: pair_coeff, but for the checks of the
+# run's start (the pair style's, with the type pair in its message).
+COMMAND = {"a bond that never breaks": "pair granbond (bond/nonlinear)"}
 
 
 def check_bad_input(a, workdir):

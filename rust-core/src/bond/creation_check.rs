@@ -3,7 +3,8 @@
 //! LIGGGHTS-INL runs a deck with any such combination, so each
 //! finding is a warning that names the parameters as the deck spells them.
 
-use super::params::{BondParams, PARAMETERS};
+use super::laws::BondLaws;
+use super::params::{BondParams, ParameterError, PARAMETERS};
 use crate::timestep_check::{TypeBodies, UnitNames};
 
 /// Which spelling of the parameter names the messages use.
@@ -30,6 +31,12 @@ pub enum Finding {
     /// `create_distance` below the contact distance of the smallest spheres:
     /// only pairs overlapping by the difference bond.
     CreateBelowContact,
+    /// `create_distance` reaches more than a radius of the smallest spheres
+    /// beyond their contact distance: such spheres bond without touching.
+    CreateBeyondContact,
+    /// A law switched on whose loading stiffness is 0 (the value of a
+    /// stiffness left out): the bond resists nothing in that direction.
+    ZeroStiffness,
     /// `create_step` is not after the step the model's first run started
     /// from, bonds are not created every step, and no bond exists: this
     /// model never forms a bond (the first force step of a run is the one
@@ -81,6 +88,12 @@ pub fn findings(
             if p.create_distance < contact {
                 note(Finding::CreateBelowContact, a, b);
             }
+            if !zero_stiffness(&p).is_empty() {
+                note(Finding::ZeroStiffness, a, b);
+            }
+            if p.create_distance - contact > smallest_radius(bodies, a, b, wall) {
+                note(Finding::CreateBeyondContact, a, b);
+            }
             if !BondParams::switch(p.create_always) && p.create_step <= first_step && !bonds_exist {
                 note(Finding::CreateStepPassed, a, b);
             }
@@ -89,10 +102,44 @@ pub fn findings(
     found
 }
 
-/// Centre distance of the smallest touching spheres of types `a` and `b`
-/// (centre to surface for a wall).
+/// Centre distance of the smallest touching spheres of types `a` and `b`;
+/// for a wall, to the stand-in sphere of the particle's radius behind it
+/// (`wall.rs`), which is the distance wall bonds form and break by.
 fn contact_distance(bodies: &[TypeBodies], a: usize, b: usize, wall: bool) -> f64 {
-    bodies[a].radius_min + if wall { 0.0 } else { bodies[b].radius_min }
+    bodies[a].radius_min
+        + if wall {
+            bodies[a].radius_min
+        } else {
+            bodies[b].radius_min
+        }
+}
+
+/// The laws switched on with a loading stiffness of 0, as (switch,
+/// stiffness) fields. Compression is not among them: without its stiffness
+/// the bond is refused ([`refusal`]); tension in stress mode neither
+/// ([`reach_refusal`]).
+fn zero_stiffness(p: &BondParams) -> Vec<(&'static str, &'static str)> {
+    let stress = BondParams::switch(p.stress_break);
+    [
+        ("tension", "k_fn2", p.tension, p.k_fn2, !stress),
+        ("shear", "k_ft", p.shear, p.k_ft, true),
+        ("twist", "k_tn", p.twist, p.k_tn, true),
+        ("bend", "k_tt", p.bend, p.k_tt, true),
+    ]
+    .into_iter()
+    .filter(|&(_, _, on, k, checked)| checked && BondParams::switch(on) && k == 0.0)
+    .map(|(law, k, _, _, _)| (law, k))
+    .collect()
+}
+
+/// The smallest radius of the spheres of types `a` and `b` (of `a` for a
+/// wall).
+fn smallest_radius(bodies: &[TypeBodies], a: usize, b: usize, wall: bool) -> f64 {
+    if wall {
+        bodies[a].radius_min
+    } else {
+        bodies[a].radius_min.min(bodies[b].radius_min)
+    }
 }
 
 /// A parameter's name as the engine's decks spell it.
@@ -150,6 +197,24 @@ pub fn message(
                 r = p.max_distance,
             )
         }
+        Finding::ZeroStiffness => {
+            let zero = zero_stiffness(p);
+            let list = |names: Vec<&str>| names.join(", ");
+            let stiffnesses = list(zero.iter().map(|z| parameter_name(z.1, naming)).collect());
+            let laws = list(zero.iter().map(|z| parameter_name(z.0, naming)).collect());
+            format!(
+                "{style} ({pair}): {stiffnesses} 0 (also the value when left out) while {laws} on: the bonds resist nothing there; set the stiffness, or switch the law off"
+            )
+        }
+        Finding::CreateBelowContact if p.create_distance == 0.0 => format!(
+            "{style} ({pair}): {create} is 0 (also its value when left out): no pair bonds; set {create} near the contact distance {contact:e} {l} of the smallest spheres",
+        ),
+        Finding::CreateBeyondContact => format!(
+            "{style} ({pair}): {create} {c:e} {l} is {d:e} {l} beyond the contact distance {contact:e} {l} of the smallest spheres, more than their radius {r:e} {l}: such spheres bond without touching",
+            c = p.create_distance,
+            d = p.create_distance - contact,
+            r = smallest_radius(bodies, a, b, wall),
+        ),
         Finding::CreateBelowContact => format!(
             "{style} ({pair}): {create} {c:e} {l} is below the contact distance {contact:e} {l} of the smallest spheres: only pairs overlapping by more than {d:e} {l} bond",
             c = p.create_distance,
@@ -160,6 +225,175 @@ pub fn message(
             s = p.create_step,
         ),
     }
+}
+
+/// The largest neighbour-list reach a bond type may ask of the engines, in
+/// diameters of the smallest spheres it joins: the reach the engines'
+/// lists hold without their binning failing (LIGGGHTS's own limit).
+pub const MAX_REACH_DIAMETERS: f64 = 10.0;
+
+/// Why the neighbour reach a bond type needs cannot be held, as the deck
+/// names the parameters (`None` when it can): a bond that never breaks by
+/// stretching, or a reach of more than [`MAX_REACH_DIAMETERS`] diameters of
+/// the smallest spheres (radius `min_radius`). `pair` names the atom types.
+pub fn reach_refusal(
+    laws: &BondLaws,
+    min_radius: f64,
+    naming: Naming,
+    pair: &str,
+    units: &UnitNames,
+) -> Option<ParameterError> {
+    let p = &laws.params;
+    let l = units.length;
+    let name = |field| parameter_name(field, naming);
+    let stress = BondParams::switch(p.stress_break);
+    let diameters = |x: f64| 1.1 * x / (2.0 * min_radius);
+    let factor = laws.contact_distance_factor(min_radius);
+    if diameters(p.create_distance) > MAX_REACH_DIAMETERS {
+        return refused("create_distance", format!(
+            "{pair}: {c} {v:e} {l} reaches {d:.1} diameters of the smallest spheres (radius {min_radius:e} {l}; with a 10% margin), beyond the {MAX_REACH_DIAMETERS} diameters the neighbour lists hold: pairs that far apart do not touch; set {c} near the contact distance {contact:e} {l}",
+            c = name("create_distance"),
+            v = p.create_distance,
+            d = diameters(p.create_distance),
+            contact = 2.0 * min_radius,
+        ));
+    }
+    if factor.is_finite() && factor <= MAX_REACH_DIAMETERS {
+        return None;
+    }
+    let (field, cause) = if !stress {
+        let r = name("max_distance");
+        let cause = if factor.is_finite() {
+            format!("{r} {v:e} {l} lets a bond stretch to {factor:.1} diameters of the smallest spheres (radius {min_radius:e} {l}; with a 10% margin), beyond the {MAX_REACH_DIAMETERS} diameters the neighbour lists hold; set a smaller {r}", v = p.max_distance)
+        } else {
+            let phrases = match naming {
+                Naming::Lammps => " ('break distance R', or break by stress: 'break stress S T')",
+                Naming::Liggghts => "",
+            };
+            format!("{r} is inf: a bond never breaks by stretching, so no neighbour list can keep it; set a finite {r}{phrases}")
+        };
+        ("max_distance", cause)
+    } else if !BondParams::switch(p.tension) {
+        let t = name("tension");
+        ("tension", format!("{t} is off in stress mode: a bond never breaks by stretching, so no neighbour list can keep it; switch {t} on or break by distance"))
+    } else if !(p.k_fn2 > 0.0) {
+        let k = name("k_fn2");
+        ("k_fn2", format!("{k} is {v}: in stress mode a bond without tension stiffness never reaches its tensile strength, so no neighbour list can keep it; set {k} > 0", v = p.k_fn2))
+    } else {
+        let ratio = if BondParams::switch(p.use_ratio) {
+            format!(
+                " x {g} {v}",
+                g = name("tension_compression_ratio"),
+                v = p.tension_compression_ratio
+            )
+        } else {
+            String::new()
+        };
+        let stretch = laws.max_bond_distance(p.create_distance) - p.create_distance;
+        let what = if factor.is_finite() {
+            format!("stretches a bond by {stretch:e} {l} before it breaks, to {factor:.1} diameters of the smallest spheres (radius {min_radius:e} {l}; with a 10% margin), beyond the {MAX_REACH_DIAMETERS} diameters the neighbour lists hold")
+        } else {
+            "never breaks a bond by stretching, so no neighbour list can keep it".to_string()
+        };
+        let cause = format!(
+            "the tensile strength {s} {sv:e}{ratio} over {k} {kv:e} {what}; lower {s}{or_ratio} or raise {k}",
+            s = name("max_sigma"),
+            sv = p.max_sigma,
+            k = name("k_fn2"),
+            kv = p.k_fn2,
+            or_ratio = if BondParams::switch(p.use_ratio) {
+                format!(" or {}", name("tension_compression_ratio"))
+            } else {
+                String::new()
+            },
+        );
+        ("max_sigma", cause)
+    };
+    refused(field, format!("{pair}: {cause}"))
+}
+
+/// The refusal of row `field` with `message`.
+fn refused(field: &str, message: String) -> Option<ParameterError> {
+    let parameter = PARAMETERS
+        .iter()
+        .position(|r| r.name == field)
+        .expect("a field of the parameter table");
+    Some(ParameterError { parameter, message })
+}
+
+/// Why a bond type of atom types `a`, `b` cannot run with the spheres
+/// present (`None` when it can), naming the parameters as the deck spells
+/// them: no compression stiffness while the bond, replacing the contact,
+/// must hold compression; a linear continuation of the compression law
+/// beyond the bond radius, which leaves the bond almost no compression
+/// stiffness; a neighbour reach the engines cannot hold
+/// ([`reach_refusal`]).
+pub fn refusal(
+    laws: &BondLaws,
+    a: usize,
+    b: usize,
+    bodies: &[TypeBodies],
+    wall: bool,
+    naming: Naming,
+    units: &UnitNames,
+) -> Option<ParameterError> {
+    let p = &laws.params;
+    let l = units.length;
+    let name = |field| parameter_name(field, naming);
+    let pair = if wall {
+        format!("atom type {a} on the wall")
+    } else {
+        format!("atom types {a} and {b}")
+    };
+    if BondParams::switch(p.compression) && p.k_fn1 == 0.0 {
+        return refused("k_fn1", format!(
+            "{pair}: {k} is 0 (also its value when left out) while {c} is on: an intact bond replaces the contact, so bonded spheres pushed together would pass through each other; set {k} > 0",
+            k = name("k_fn1"),
+            c = name("compression"),
+        ));
+    }
+    let min_radius = if wall {
+        bodies[a].radius_min
+    } else {
+        bodies[a].radius_min.min(bodies[b].radius_min)
+    };
+    let rb = p.lambda * min_radius;
+    if BondParams::switch(p.compression) && p.compression_linear_below > rb {
+        return refused("compression_linear_below", format!(
+            "{pair}: {e} {v:e} {l} exceeds the bond radius {rb:e} {l} of the smallest spheres ({lambda} {lv} x radius {min_radius:e} {l}): the compression law would be linear, with the slope it has at {e}, over every compression a bond takes, far softer than the law, and bonded spheres pushed together would pass through each other; set {e} well below the bond radius (e.g. 1e-3 of it), or 0 for the law itself",
+            e = name("compression_linear_below"),
+            v = p.compression_linear_below,
+            lambda = name("lambda"),
+            lv = p.lambda,
+        ));
+    }
+    reach_refusal(laws, min_radius, naming, &pair, units)
+}
+
+/// The first [`refusal`] among the pairs of types `1..=ntypes` present (as
+/// in [`findings`]), with `laws(a, b)` the bond type of `a`, `b`.
+pub fn first_refusal<'a>(
+    ntypes: usize,
+    bodies: &[TypeBodies],
+    laws: impl Fn(usize, usize) -> Option<&'a BondLaws>,
+    wall: bool,
+    naming: Naming,
+    units: &UnitNames,
+) -> Option<ParameterError> {
+    for a in 1..=ntypes {
+        let first_b = if wall { 1 } else { a };
+        for b in first_b..=ntypes {
+            if !bodies[a].present() || !(wall || bodies[b].present()) {
+                continue;
+            }
+            if let Some(m) = laws(a, b) {
+                if let Some(message) = refusal(m, a, b, bodies, wall, naming, units) {
+                    return Some(message);
+                }
+            }
+        }
+    }
+    None
 }
 
 #[cfg(test)]
@@ -179,6 +413,13 @@ mod tests {
 
     fn bond(create: f64, reach: f64, step: i64, always: bool) -> BondParams {
         BondParams {
+            k_fn2: 1e9,
+            ku_fn2: 1e9,
+            k_ft: 1e9,
+            k_tn: 1e9,
+            ku_tn: 1e9,
+            k_tt: 1e9,
+            ku_tt: 1e9,
             create_distance: create,
             max_distance: reach,
             create_step: step,
@@ -233,6 +474,70 @@ mod tests {
     }
 
     #[test]
+    fn a_creation_distance_a_radius_beyond_contact_is_found_and_zero_says_no_bond_forms() {
+        let far = BondParams {
+            stress_break: 1,
+            ..bond(3.2e-3, 2.08e-3, 1, false)
+        };
+        assert_eq!(kinds(far, 0), [Finding::CreateBeyondContact]);
+        let near = BondParams {
+            stress_break: 1,
+            ..bond(2.9e-3, 2.08e-3, 1, false)
+        };
+        assert!(kinds(near, 0).is_empty());
+        let never = bond(0.0, 2.08e-3, 1, false);
+        assert_eq!(kinds(never, 0), [Finding::CreateBelowContact]);
+        let text = message(
+            Finding::CreateBelowContact,
+            1,
+            1,
+            &never,
+            &spheres(1e-3),
+            0,
+            false,
+            Naming::Liggghts,
+            &UnitNames::SI,
+            "x",
+        );
+        assert!(
+            text.contains("createDistanceBondnonlinear is 0") && text.contains("no pair bonds"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn a_law_switched_on_without_stiffness_is_named_with_its_switch() {
+        let p = BondParams {
+            k_ft: 0.0,
+            k_tt: 0.0,
+            ..bond(2.05e-3, 2.08e-3, 1, false)
+        };
+        assert_eq!(kinds(p, 0), [Finding::ZeroStiffness]);
+        let text = message(
+            Finding::ZeroStiffness,
+            1,
+            1,
+            &p,
+            &spheres(1e-3),
+            0,
+            false,
+            Naming::Lammps,
+            &UnitNames::SI,
+            "x",
+        );
+        assert!(
+            text.contains("k_ft, k_tt 0") && text.contains("shear, bend on"),
+            "{text}"
+        );
+        let off = BondParams {
+            shear: 0,
+            bend: 0,
+            ..p
+        };
+        assert!(kinds(off, 0).is_empty());
+    }
+
+    #[test]
     fn stress_mode_has_no_break_distance() {
         let p = BondParams {
             stress_break: 1,
@@ -242,12 +547,13 @@ mod tests {
     }
 
     #[test]
-    fn a_wall_counts_only_the_sphere() {
+    fn a_wall_bond_is_measured_to_the_stand_in_sphere_behind_the_wall() {
         let bodies = spheres(1e-3);
-        let p = bond(1.05e-3, 1.1e-3, 1, false);
+        let p = bond(2.05e-3, 2.08e-3, 1, false);
         assert!(findings(1, &bodies, |_, _| Some(p), 0, false, true).is_empty());
+        let near = bond(1.05e-3, 1.1e-3, 1, false);
         assert_eq!(
-            findings(1, &bodies, |_, _| Some(p), 0, false, false)[0].0,
+            findings(1, &bodies, |_, _| Some(near), 0, false, true)[0].0,
             Finding::CreateBelowContact
         );
     }

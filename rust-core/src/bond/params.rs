@@ -285,11 +285,18 @@ impl BondParams {
         ] {
             if ku < k {
                 let loading = ku_name.replacen("ku", "k", 1);
+                let row = PARAMETERS
+                    .iter()
+                    .find(|r| r.name == loading)
+                    .expect("every unloading stiffness has its loading row");
                 return Err(refuse(
                     MODEL,
                     PARAMETERS,
                     ku_name,
-                    &format!(">= {} = {} (unloading at least as stiff as loading)", loading, k),
+                    &format!(
+                        ">= {} ({}) = {:e} (unloading at least as stiff as loading)",
+                        row.name, row.liggghts_name, k
+                    ),
                     ku,
                 ));
             }

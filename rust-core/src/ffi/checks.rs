@@ -5,8 +5,8 @@
 
 use super::entry;
 use super::error::{Failure, Status};
-use super::guard::{reference, reference_mut, slice, time_step};
-use crate::bond::creation_check::{findings, message, parameter_name, Naming};
+use super::guard::{positive, reference, reference_mut, slice, time_step};
+use crate::bond::creation_check::{findings, first_refusal, message, parameter_name, reach_refusal, Naming};
 use crate::bond::section::section;
 use crate::bond::{BondModel, BondParams};
 use crate::contact::VoigtModel;
@@ -201,6 +201,12 @@ unsafe fn timestep_check<M>(
 ) -> Result<(), Failure> {
     report.clear();
     let dt = time_step(dt, "dt")?;
+    if dt == 0.0 {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            "the time step (timestep) is 0: nothing would move and no bond or contact would be stepped; set timestep > 0",
+        ));
+    }
     let style = style_name(style)?;
     let units = unit_names(units)?;
     let (n, table, bodies) = tables(ntypes, models, bodies)?;
@@ -305,10 +311,15 @@ pub unsafe extern "C" fn granbond_voigt_timestep_check(
 /// the step the model's first run started from, while no bond exists:
 /// `bonds_exist` non-zero when intact bonds of these models exist over all
 /// ranks, as in a run continued from a restart file). `wall` non-zero: wall
-/// bonds (the sphere's radius alone is the contact distance; the wall's type
+/// bonds (measured to the stand-in sphere of the particle's radius behind
+/// the wall, so twice the radius is the contact distance; the wall's type
 /// needs no atoms). `naming`: 0 LAMMPS keywords, 1 LIGGGHTS names in the
 /// message; `units`: the engine's `units` style. `out->level` is the number
-/// of findings.
+/// of findings. A bond type that cannot run with the spheres present (no
+/// compression stiffness while compression is on, a linear continuation of
+/// the compression law beyond the bond radius, a neighbour reach beyond
+/// what the lists hold) is refused (`GB_STATUS_INVALID_PARAMETER`) with a
+/// message naming the parameters.
 ///
 /// # Safety
 /// As `granbond_bond_timestep_check`.
@@ -331,8 +342,18 @@ pub unsafe extern "C" fn granbond_bond_creation_check(
     let style = style_name(style)?;
     let units = unit_names(units)?;
     let (n, models, bodies) = tables(ntypes, models, bodies)?;
-    let table: Vec<Option<BondParams>> = models.iter().map(|m| m.map(|m| m.params)).collect();
     let wall = wall != 0;
+    if let Some(refused) = first_refusal(
+        n,
+        bodies,
+        |a, b| models[a * (n + 1) + b].map(|m| &**m),
+        wall,
+        naming,
+        &units,
+    ) {
+        return Err(refused.into());
+    }
+    let table: Vec<Option<BondParams>> = models.iter().map(|m| m.map(|m| m.params)).collect();
     let found = findings(
         n,
         bodies,
@@ -349,5 +370,38 @@ pub unsafe extern "C" fn granbond_bond_creation_check(
         })
         .collect();
     out.write(found.len() as i32, &text.join("\n"));
+    Ok(())
+}
+
+/// The neighbour-list reach, as a multiple of the contact distance
+/// `2 min_radius` of the smallest spheres, that keeps every intact bond of
+/// `model` (atom types `type_a`, `type_b`, for the message) in the engine's
+/// lists, written to `out`. A bond that never breaks by stretching, or a
+/// reach (or creation distance) of more than ten diameters, is refused
+/// (`GB_STATUS_INVALID_PARAMETER`) with a message naming the parameters
+/// that set it (`naming`: 0 LAMMPS keywords, 1 LIGGGHTS names; `units`: the
+/// engine's `units` style).
+///
+/// # Safety
+/// `model` must be null or a model; `units` a NUL-terminated string; `out`
+/// null or valid for writes.
+#[entry(model: reference, out: reference_mut, min_radius: positive)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_neighbour_reach(
+    model: *const BondModel,
+    min_radius: f64,
+    type_a: i32,
+    type_b: i32,
+    naming: i32,
+    units: *const c_char,
+    out: *mut f64,
+) -> Status {
+    let naming = naming_of(naming)?;
+    let units = unit_names(units)?;
+    let pair = format!("atom types {type_a} and {type_b}");
+    if let Some(refused) = reach_refusal(model, min_radius, naming, &pair, &units) {
+        return Err(refused.into());
+    }
+    *out = model.contact_distance_factor(min_radius);
     Ok(())
 }

@@ -67,7 +67,8 @@ pub unsafe extern "C" fn granbond_bond_field_info(
 /// (`GB_STATUS_NON_FINITE_INPUT`), coincident centres
 /// (`GB_STATUS_INVALID_ARGUMENT`), each naming the argument, and fields
 /// that come out non-finite (centres whose distance under- or overflows:
-/// `GB_STATUS_NON_FINITE_RESULT`, naming the field).
+/// `GB_STATUS_NON_FINITE_RESULT`, naming the field). A strength of `inf`
+/// (never breaks) is written as it is.
 ///
 /// # Safety
 /// `model` must be null or a model; `record` null or valid for the
@@ -109,8 +110,10 @@ pub unsafe extern "C" fn granbond_bond_fields(
     }
     let fields = bond_fields(model, state, loads, x_i, x_j);
     // centres so close or so far apart that their distance under- or
-    // overflows
-    if let Some(k) = fields.iter().position(|v| !v.is_finite()) {
+    // overflows; a strength of inf is the documented "never"
+    let never =
+        |k: usize| fields[k] == f64::INFINITY && matches!(BOND_FIELDS[k].name, "sigma_max" | "tau_max");
+    if let Some(k) = (0..fields.len()).find(|&k| !fields[k].is_finite() && !never(k)) {
         return Err(Failure::new(
             Status::NonFiniteResult,
             format!(

@@ -22,6 +22,7 @@ int test_run_checks(void)
     /* regularised: elastic bonds at rest under the plain square root are
        warned at every step (rattle_timestep.rs) */
     p.compression_linear_below = 1e-6;
+    p.k_ft = p.k_tn = p.ku_tn = p.k_tt = p.ku_tt = 1e9;
     p.create_distance = 2.2e-3;
     p.max_distance = 2.08e-3;
     p.create_step = 1;
@@ -71,6 +72,38 @@ int test_run_checks(void)
     CHECK(strstr(report.message, "create_distance 2.2e-3 m > max_distance"), say("LAMMPS names: %s", report.message));
     EXPECT(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 0, 2, "si", "c", &report), GB_STATUS_INVALID_ARGUMENT,
            "granbond_bond_creation_check, naming = 2");
+
+    EXPECT(granbond_bond_timestep_check(bonds, 2, bodies, 0.0, 0, "si", "s", &report), GB_STATUS_INVALID_ARGUMENT,
+           "granbond_bond_timestep_check, dt = 0");
+    EXPECT_MESSAGE("timestep");
+
+    /* the neighbour reach: 1.1 x 2.08e-3 / 2e-3 of distance mode; 25 diameters refused, naming the reach */
+    EXPECT_OK(granbond_bond_neighbour_reach(bond, 1e-3, 1, 1, 1, "si", &critical), "granbond_bond_neighbour_reach");
+    CHECK(fabs(critical - 1.1 * 2.08e-3 / 2e-3) < 1e-12, say("reach factor %.17g", critical));
+    p.max_distance = 0.05;
+    p.create_distance = 2.05e-3;
+    granbond_bond_model_free(bond);
+    bond = NULL;
+    EXPECT_OK(granbond_bond_model_new(&p, &bond), "granbond_bond_model_new");
+    EXPECT(granbond_bond_neighbour_reach(bond, 1e-3, 1, 1, 1, "si", &critical), GB_STATUS_INVALID_PARAMETER,
+           "granbond_bond_neighbour_reach, 27.5 diameters");
+    EXPECT_MESSAGE("maxDistanceBondnonlinear");
+    EXPECT(granbond_bond_neighbour_reach(bond, 1e-3, 1, 1, 0, "si", &critical), GB_STATUS_INVALID_PARAMETER,
+           "granbond_bond_neighbour_reach, 27.5 diameters, LAMMPS names");
+    EXPECT_MESSAGE("max_distance");
+    /* no compression stiffness while compression is on: refused at the run's start */
+    bonds[1 * 3 + 1] = bonds[1 * 3 + 2] = bond;
+    p.max_distance = 2.08e-3;
+    p.k_fn1 = 0.0;
+    granbond_bond_model_free(bond);
+    bond = NULL;
+    EXPECT_OK(granbond_bond_model_new(&p, &bond), "granbond_bond_model_new, k_fn1 = 0");
+    bonds[1 * 3 + 1] = bonds[1 * 3 + 2] = bond;
+    EXPECT(granbond_bond_creation_check(bonds, 2, bodies, 0, 0, 0, 1, "si", "c", &report), GB_STATUS_INVALID_PARAMETER,
+           "granbond_bond_creation_check, k_fn1 = 0");
+    EXPECT_MESSAGE("stiffnessPerUnitAreaK_fn1");
+    EXPECT(granbond_bond_neighbour_reach(NULL, 1e-3, 1, 1, 1, "si", &critical), GB_STATUS_NULL_POINTER,
+           "granbond_bond_neighbour_reach, model = NULL");
 
     granbond_bond_model_free(bond);
     granbond_voigt_model_free(voigt);

@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 95] = [
+pub const ENTRY_POINTS: [&str; 96] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -82,6 +82,7 @@ pub const ENTRY_POINTS: [&str; 95] = [
     "granbond_bond_centre",
     "granbond_bond_max_distance",
     "granbond_bond_contact_distance_factor",
+    "granbond_bond_neighbour_reach",
     "granbond_bond_critical_timestep",
     "granbond_bond_recommended_timestep",
     "granbond_bond_timestep_check",
@@ -2328,9 +2329,13 @@ impl<'t> Session<'t> {
         let how = input.pointer();
         // SAFETY: null, misaligned or valid.
         let (function, status) = unsafe {
-            if input.below(2) == 0 {
+            let which = input.below(3);
+            if which == 0 {
                 let st = fb::granbond_bond_max_distance(m, length, out.ptr(how));
                 ("granbond_bond_max_distance", st)
+            } else if which == 2 {
+                let st = fk::granbond_bond_neighbour_reach(m, length, 1, 1, 1, c"si".as_ptr(), out.ptr(how));
+                ("granbond_bond_neighbour_reach", st)
             } else {
                 let st = fb::granbond_bond_contact_distance_factor(m, length, out.ptr(how));
                 ("granbond_bond_contact_distance_factor", st)
