@@ -192,6 +192,12 @@ void PairGranbond::init_style()
     }
     if (modify->find_fix(kFix) < 0) error->all(FLERR, "pair granbond: its fix neigh/history was deleted or replaced");
 
+    // the ghost atoms' reach: the deck's own (comm_modify cutoff), raised
+    // by init_one for this init only, so that radii not set yet at an
+    // early init leave nothing behind
+    if (comm->cutghostuser != ghostReachSet_) deckGhostReach_ = comm->cutghostuser;
+    comm->cutghostuser = deckGhostReach_;
+
     // per-type radii (for the cutoffs) and masses, all ranks, and the
     // spheres fix pour and fix deposit will insert during the run (as pair
     // granular takes them)
@@ -285,6 +291,7 @@ double PairGranbond::init_one(int i, int j)
             error->all(FLERR, pairCoeff + coreReason());
         cut = std::max(cut, creates);
         comm->cutghostuser = std::max(comm->cutghostuser, factor * 2.0 * rmin + neighbor->skin);
+        ghostReachSet_ = comm->cutghostuser;
     }
     return cut;
 }

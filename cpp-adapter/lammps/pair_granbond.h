@@ -150,6 +150,8 @@ private:
     TimestepWarning contactWarning_, bondWarning_;
     SaidOnce said_;
     bool changedLastPass_ = false;          // bonds formed here in this pass
+    double deckGhostReach_ = 0.0;           // comm_modify cutoff as the deck set it
+    double ghostReachSet_ = -1.0;           // the ghost reach init_one set last
     std::vector<BreakEvent> breaks_;
     LAMMPS_NS::bigint passStep_ = -1;       // step and atom count (local + ghost) of the latest pass
     LAMMPS_NS::bigint passAtoms_ = -1;
