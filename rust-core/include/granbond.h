@@ -11,7 +11,7 @@
 /**
  * Number of fields of [`BOND_FIELDS`].
  */
-#define BOND_FIELD_COUNT 23
+#define BOND_FIELD_COUNT 38
 
 /**
  * Number of `double` slots of a bond output as engines keep it
