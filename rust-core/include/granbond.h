@@ -58,7 +58,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 14
+#define GRANBOND_ABI_VERSION 15
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a

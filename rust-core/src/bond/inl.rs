@@ -15,8 +15,15 @@
 //!   min(R_i, R_j) / dt`;
 //! - stress breakage: strictly above the strength, the stresses from the
 //!   lengths of the undamped load vectors;
-//! - walls: the bond runs to the contact point, not to a mirror sphere (half
-//!   the centre distance, the particle's lever arm and half its spin).
+//! - walls: the bond runs from the centre to the contact point of its
+//!   creation, carried with the wall (not to a mirror sphere): `r` is the
+//!   distance to it, so is the shear's lever arm, and half the particle's
+//!   spin enters the slip;
+//! - a run's setup pass: a trial step (`commit` off), whose loads are the
+//!   next step's; only the history extremes move.
+//!
+//! The arithmetic follows INL's order of operations, and `powf` where INL
+//! calls `pow`, so that both give the same bits (`tests/validation/inl/`).
 //!
 //! The state is the 19 slots of [`BondState`]: the per-component extremes
 //! fit because the reset rule leaves at most one side of a component

@@ -5,7 +5,9 @@
 //! extra state slots, after the pair slots. (The reference measures `r` to
 //! the contact point itself and doubles it only for creation; the mirror
 //! sphere gives the same `r` throughout and lever arms of `R_i` on both
-//! sides, so the shear and its torque see the same contact point.)
+//! sides, so the shear and its torque see the same contact point.) Under
+//! `inl_compatible` the partner slots hold the contact point itself and
+//! the bond follows INL's geometry (`bond::inl`).
 
 use super::inl::inl_step;
 use super::model::BondModel;
