@@ -42,6 +42,22 @@ public:
         return std::string();
     }
 
+    // LIGGGHTS-INL's columns 10-27 of `compute pair/gran/local/bond`
+    // without keywords: the force on i, its normal and tangential parts,
+    // the torque on i, its normal and tangential parts (fields of the
+    // core). Returns what is wrong, or an empty string.
+    std::string parseInlLoads()
+    {
+        static const char *const words[] = {
+            "force_x",         "force_y",         "force_z",         "force_normal_x",      "force_normal_y",
+            "force_normal_z",  "force_tangential_x", "force_tangential_y", "force_tangential_z", "torque_x",
+            "torque_y",        "torque_z",        "torque_normal_x", "torque_normal_y",     "torque_normal_z",
+            "torque_tangential_x", "torque_tangential_y", "torque_tangential_z"};
+        std::vector<char *> arg;
+        for (const char *w : words) arg.push_back(const_cast<char *>(w));
+        return parse(static_cast<int>(arg.size()), arg.data());
+    }
+
     size_t size() const { return columns_.size(); }
 
     // The row of one bond: its model and pair record

@@ -7,6 +7,7 @@
 #include "run_checks.h"
 
 #include "compute.h"
+#include "domain.h"
 #include "pair_gran.h"
 
 #include <cstdlib>
@@ -23,14 +24,19 @@ using LAMMPS_NS::LAMMPS;
 class ComputePairGranLocalBond : public LAMMPS_NS::Compute {
 public:
     ComputePairGranLocalBond(LAMMPS *lmp, int &iarg, int narg, char **arg) :
-        Compute(lmp, iarg, narg, arg), data_(0), pointers_(0)
+        Compute(lmp, iarg, narg, arg), inl_(narg == iarg), data_(0), pointers_(0)
     {
-        const std::string wrong = columns_.parse(narg - iarg, arg + iarg);
+        // Without keywords, LIGGGHTS-INL's layout: both centres, both ids
+        // and the periodic flag, the loads (inlLayout), the pair's history.
+        const std::string wrong = inl_ ? columns_.parseInlLoads() : columns_.parse(narg - iarg, arg + iarg);
         if (!wrong.empty()) endRun(error, FLERR, "compute pair/gran/local/bond: " + wrong);
         iarg = narg;
         local_flag = 1;
         size_local_rows = 0;
         size_local_cols = columns_.size() == 1 ? 0 : static_cast<int>(columns_.size());
+        // dump local reads the width when the dump is defined: the pair
+        // style, with its history, must be defined before this compute
+        if (inl_) inlWidth();
     }
     ~ComputePairGranLocalBond()
     {
@@ -38,7 +44,11 @@ public:
         std::free(pointers_);
     }
 
-    void init() { bonds(); }
+    void init()
+    {
+        bonds();
+        if (inl_) inlWidth();
+    }
 
     void compute_local()
     {
@@ -54,7 +64,8 @@ public:
             const int offset = model->recordOffset();
             const size_t status = model->statusSlot();
             const int *mask = atom->mask;
-            std::vector<double> row(columns_.size());
+            const size_t head = inl_ ? kInlHead : 0, tail = inl_ ? static_cast<size_t>(dnum) : 0;
+            std::vector<double> row(head + columns_.size() + tail);
             for (int ii = 0; ii < list->inum; ii++) {
                 const int i = list->ilist[ii];
                 const int *jlist = list->firstneigh[i];
@@ -66,9 +77,11 @@ public:
                     if (!pairCountsHere(i, j, atom->nlocal, atom->tag)) continue;
                     if (!(mask[i] & groupbit) || !(mask[j] & groupbit)) continue;
                     const GbBondModel *m = model->model(atom->type[i], atom->type[j]);
+                    if (inl_) inlHead(i, j, row.data());
+                    if (tail) std::copy(record - offset, record - offset + dnum, row.data() + head + columns_.size());
                     if (!m || columns_.row(m, 0, record, static_cast<double>(atom->tag[i]),
                                            static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j],
-                                           row.data()) != GB_STATUS_OK)
+                                           row.data() + head) != GB_STATUS_OK)
                         endRunOnThisRank(lmp, FLERR,
                                          "compute pair/gran/local/bond: atoms " +
                                              std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
@@ -78,7 +91,7 @@ public:
                 }
             }
         }
-        const size_t ncols = columns_.size();
+        const size_t ncols = static_cast<size_t>(size_local_cols > 0 ? size_local_cols : 1);
         size_local_rows = static_cast<int>(rows_.size() / ncols);
         // dump local reads vector_local, or array_local as row pointers
         data_ = static_cast<double *>(std::realloc(data_, sizeof(double) * (rows_.size() + 1)));
@@ -95,6 +108,31 @@ public:
     double memory_usage() { return static_cast<double>(rows_.capacity()) * 2 * sizeof(double); }
 
 private:
+    // LIGGGHTS-INL's first 9 columns: both centres (in the box), both ids,
+    // 1 if either atom is a periodic image.
+    static const size_t kInlHead = 9;
+    void inlWidth()
+    {
+        const BondNonlinearCohesion *b = BondBook::of(lmp).pairBonds;
+        if (!b || !b->pairStyle())
+            endRun(error, FLERR, "compute pair/gran/local/bond without keywords needs pair_style gran with "
+                                 "cohesion bond/nonlinear defined before it");
+        size_local_cols = static_cast<int>(kInlHead + columns_.size()) + b->pairStyle()->dnum();
+    }
+    void inlHead(int i, int j, double *row)
+    {
+        double xi[3] = {atom->x[i][0], atom->x[i][1], atom->x[i][2]};
+        double xj[3] = {atom->x[j][0], atom->x[j][1], atom->x[j][2]};
+        domain->remap(xi);
+        domain->remap(xj);
+        std::copy(xi, xi + 3, row);
+        std::copy(xj, xj + 3, row + 3);
+        row[6] = static_cast<double>(atom->tag[i]);
+        row[7] = static_cast<double>(atom->tag[j]);
+        const int nlocal = atom->nlocal;
+        row[8] = (i < nlocal && j < nlocal) ? 0.0 : (domain->is_periodic_ghost(i) || domain->is_periodic_ghost(j)) ? 1.0 : 0.0;
+    }
+
     BondNonlinearCohesion *bonds()
     {
         BondNonlinearCohesion *b = BondBook::of(lmp).pairBonds;
@@ -104,6 +142,7 @@ private:
         return b;
     }
 
+    const bool inl_;   // no keywords: LIGGGHTS-INL's layout
     BondColumns columns_;
     std::vector<double> rows_;
     double *data_;

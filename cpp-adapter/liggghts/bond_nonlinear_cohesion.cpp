@@ -10,6 +10,7 @@
 #include "neighbor.h"
 #include "pair_gran.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
@@ -59,6 +60,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
                                              ContactModelBase *cmb) :
     CohesionModelBase(lmp, hsetup, cmb),
     parameters_(lmp),
+    keepsTangential_(false),
     isWall_(cmb->is_wall()),
     stateLen_(granbond_state_len(cmb->is_wall() ? GB_STATE_KIND_WALL_BOND : GB_STATE_KIND_BOND)),
     offset_(-1),
@@ -69,6 +71,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     atoms_(0),
     checkedNatoms_(-1),
     firstStep_(-1),
+    saidLaw_(false),
     lossCheck_(false),
     warnedLost_(false),
     pair_(cmb->is_wall() ? 0 : dynamic_cast<LAMMPS_NS::PairGran *>(hsetup)),
@@ -120,9 +123,19 @@ BondNonlinearCohesion::~BondNonlinearCohesion()
     if (book_->pairBonds == this) book_->pairBonds = nullptr;
 }
 
+bool BondNonlinearCohesion::keepsTangentialFor(int itype, int jtype) const
+{
+    const GbBondModel *m = parameters_.model(itype, jtype);
+    return m && granbond_bond_keeps_contact_tangential(m) != 0;
+}
+
 void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
 {
     parameters_.connectToProperties(registry);
+    keepsTangential_ = false;
+    for (int a = 1; a <= parameters_.ntypes(); a++)
+        for (int b = 1; b <= parameters_.ntypes(); b++)
+            if (keepsTangentialFor(a, b)) keepsTangential_ = true;
     // `bonded yes` stores a clump id per atom under this name (LIGGGHTS-INL
     // looks for "bondnonlinear_random_id", which no fix creates)
     clumpIds_ = isWall_ ? 0
@@ -464,6 +477,8 @@ void BondNonlinearCohesion::runChecks(bool runStart)
         endRun(error, FLERR, std::string(style) + ": " + coreReason());
     if (timestepWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
     if (!runStart) return;
+    if (!saidLaw_ && comm->me == 0) sayLaw(style);
+    saidLaw_ = true;
     const long long dropped = book_->takeDropped(world);
     if (dropped > 0 && comm->me == 0) error->warning(FLERR, droppedMessage(dropped).c_str());
     if (granbond_bond_creation_check(parameters_.table(), ntypes, bodies.data(), firstStep_, 0, isWall_ ? 1 : 0, 1,
@@ -472,6 +487,24 @@ void BondNonlinearCohesion::runChecks(bool runStart)
     const std::vector<std::string> lines = said_.fresh(report);
     for (size_t k = 0; k < lines.size(); k++)
         if (comm->me == 0) error->warning(FLERR, lines[k].c_str());
+}
+
+// The run's opening lines say which law the bonds follow (the core's
+// words), each different line once: LIGGGHTS-INL's decks run with the
+// write-up's law unless they ask for INL's code.
+void BondNonlinearCohesion::sayLaw(const char *style)
+{
+    std::vector<std::string> said;
+    for (int a = 1; a <= parameters_.ntypes(); a++)
+        for (int b = a; b <= parameters_.ntypes(); b++) {
+            const GbBondModel *m = parameters_.model(a, b);
+            char line[512];
+            if (!m || granbond_bond_law_line(m, 1, line, sizeof line) != GB_STATUS_OK) continue;
+            if (std::find(said.begin(), said.end(), std::string(line)) != said.end()) continue;
+            said.push_back(line);
+            if (screen) fprintf(screen, "%s: %s\n", style, line);
+            if (logfile) fprintf(logfile, "%s: %s\n", style, line);
+        }
 }
 
 bool BondNonlinearCohesion::countsHere(int i, int j) const
@@ -534,9 +567,12 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out)
     // (compute pair/gran/local, wall/gran/local). Both report what the last
     // force pass applied, so a run continued (or restarted) starts from the
     // same forces as an uninterrupted one.
+    // A law that computes a setup pass's loads afresh (the core says which)
+    // does so in the setup pass only.
     if (!d.computeflag || !d.shearupdate) {
         if (history[status_] != GB_BOND_STATUS_INTACT) return false;
-        if (granbond_bond_output_load(outputSlots, &out) != GB_STATUS_OK)
+        if (!(d.computeflag && setupAfresh(d, model, history, out)) &&
+            granbond_bond_output_load(outputSlots, &out) != GB_STATUS_OK)
             failed(d.i, d.j, "granbond_bond_output_load");
         if (d.computeflag) {
             book_->beginPassIfNew(tally_, update);
@@ -611,6 +647,32 @@ void BondNonlinearCohesion::createPair(const SurfacesCloseData &d, const GbBondM
             failed(d.i, d.j, "granbond_bond_create_now");
     }
     created = made != 0;
+}
+
+bool BondNonlinearCohesion::setupAfresh(SurfacesCloseData &d, const GbBondModel *model, double *state,
+                                        GbBondOutput &out)
+{
+    int32_t recomputed = 0;
+    if (isWall_) {
+        GbSphereKinematics s;
+        readAtom(atom, d.i, s.x, s.v, s.w);
+        s.radius = d.radi;
+        double wallVelocity[3] = {0.0, 0.0, 0.0};
+        if (d.v_j) copy3(wallVelocity, d.v_j);
+        if (granbond_wall_bond_setup_compute(model, &s, wallVelocity, update->dt, state, &recomputed, &out) !=
+            GB_STATUS_OK)
+            failed(d.i, d.j, "granbond_wall_bond_setup_compute");
+    } else {
+        GbPairKinematics k;
+        pairKinematics(d, k);
+        if (granbond_bond_setup_compute(model, &k, update->dt, state, &recomputed, &out) != GB_STATUS_OK)
+            failed(d.i, d.j, "granbond_bond_setup_compute");
+    }
+    // The trial step moved the record's history extremes: the next swept
+    // pass indexes the records again rather than stepping rows copied
+    // before it.
+    if (recomputed) indexedAt_ = -1;
+    return recomputed != 0;
 }
 
 bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state,

@@ -50,16 +50,18 @@ public:
     // Overlapping spheres: the bond acts in endSurfacesIntersect, after the
     // normal, tangential and rolling models have added their forces. An
     // intact bond the pass swept, its loads already at the atoms, only
-    // replaces those forces by nothing and keeps its record.
-    void surfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    // replaces those forces by nothing and keeps its record. A model that
+    // keeps the contact's tangential and rolling loads under the bond (the
+    // core's granbond_bond_keeps_contact_tangential) acts here instead,
+    // between the normal model and the tangential one, and so replaces the
+    // normal load alone.
+    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (keepsTangential(sidata)) bondOverlapping(sidata, i_forces, j_forces);
+    }
     void endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
-        if (!sweptAtAtoms(sidata)) {
-            intersecting(sidata, i_forces, j_forces);
-            return;
-        }
-        i_forces.reset();
-        j_forces.reset();
+        if (!keepsTangential(sidata)) bondOverlapping(sidata, i_forces, j_forces);
     }
     void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
     {
@@ -103,6 +105,20 @@ private:
         if (d.contact_flags) *d.contact_flags |= LIGGGHTS::ContactModels::CONTACT_COHESION_MODEL;
         return true;
     }
+    void bondOverlapping(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    {
+        if (!sweptAtAtoms(sidata)) {
+            intersecting(sidata, i_forces, j_forces);
+            return;
+        }
+        i_forces.reset();
+        j_forces.reset();
+    }
+    bool keepsTangential(const SurfacesIntersectData &d) const
+    {
+        return keepsTangential_ && keepsTangentialFor(d.itype, d.jtype);
+    }
+    bool keepsTangentialFor(int itype, int jtype) const;
     void intersecting(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
     void close(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
     bool swept(SurfacesCloseData &d);
@@ -125,6 +141,9 @@ private:
         bool virial;          // the pair style's evflag
     };
     void addToAtoms(const AtomSums &sums, int i, int j, const GbBondOutput &out);
+    // The loads of a setup pass where the model computes them afresh
+    // (granbond_bond_setup_compute); false: apply the kept ones.
+    bool setupAfresh(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out);
     bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out,
                      bool &created);
     void apply(const GbBondOutput &out, ForceData &i_forces, ForceData &j_forces);
@@ -138,6 +157,7 @@ private:
     // the atom count changes if the limit moved) and, at a run's start, of
     // the creation rules (each finding once).
     void runChecks(bool runStart);
+    void sayLaw(const char *style);
     // Counts the bonds that vanished with their atoms (pair bonds; see the
     // definition); collective, at the end of a pass.
     void countVanished();
@@ -145,6 +165,7 @@ private:
     void forgetRecordsOfNewborn();
 
     BondNonlinearParameters parameters_;
+    bool keepsTangential_;      // some type pair's model keeps the contact's tangential loads
     const bool isWall_;
     const size_t stateLen_;
     int offset_;        // core state slots
@@ -161,6 +182,7 @@ private:
     bigint firstStep_;          // where this model's first run started
     TimestepWarning timestepWarning_;
     SaidOnce said_;
+    bool saidLaw_;              // the law's line is printed (sayLaw)
     bool lossCheck_;            // count vanished bonds at the end of this pass
     bool warnedLost_;
     BondBalance balance_;

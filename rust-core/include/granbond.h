@@ -18,7 +18,7 @@
 /**
  * Number of fields of [`BOND_FIELDS`].
  */
-#define BOND_FIELD_COUNT 23
+#define BOND_FIELD_COUNT 38
 
 /**
  * Number of `double` slots of a bond output as engines keep it
@@ -82,7 +82,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 15
+#define GRANBOND_ABI_VERSION 16
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -610,6 +610,13 @@ typedef struct GbBondParams {
    * The bending torque.
    */
   int32_t bend;
+  /**
+   * LIGGGHTS-INL's code instead of the write-up's law (`bond::inl`):
+   * compression without the section area, INL's history rule, damping
+   * and twisting and bending per Cartesian component, and the contact's
+   * tangential and rolling loads kept under an overlapping bond.
+   */
+  int32_t inl_compatible;
 } GbBondParams;
 
 /**
@@ -1346,6 +1353,33 @@ int32_t granbond_bond_may_create(const struct GbBondModel *model,
 int32_t granbond_bond_creates_at(const struct GbBondModel *model, int64_t step);
 
 /**
+ * The line a run's opening output gives for `model`: which law it steps
+ * (the write-up's, naming the switch for LIGGGHTS-INL's code, or that
+ * code), in `naming`'s words (0 LAMMPS, 1 LIGGGHTS), written to `out`
+ * (at most `capacity` bytes with the terminating NUL; a longer line is
+ * cut).
+ *
+ * # Safety
+ * Pointers must be null or valid (`model` from `granbond_bond_model_new`,
+ * `out` writable for `capacity` bytes).
+ */
+enum GbStatus granbond_bond_law_line(const struct GbBondModel *model,
+                                     int32_t naming,
+                                     char *out,
+                                     size_t capacity);
+
+/**
+ * 1 if the contact's tangential and rolling loads act on an overlapping
+ * pair while its bond is intact (LIGGGHTS-INL's code, `inl_compatible`),
+ * so an engine drops only the contact's normal load under the bond; 0 if
+ * the bond replaces every contact load. 0 for a null or misaligned `model`.
+ *
+ * # Safety
+ * `model` must be null or from `granbond_bond_model_new`.
+ */
+int32_t granbond_bond_keeps_contact_tangential(const struct GbBondModel *model);
+
+/**
  * The centre distance within which `granbond_bond_try_create` may create
  * a bond at `from_step` or any later step, written to `reach`:
  * `create_distance` while a creation step lies ahead (or bonds are created
@@ -1386,6 +1420,24 @@ enum GbStatus granbond_bond_compute(const struct GbBondModel *model,
                                     double dt,
                                     double *state,
                                     struct GbBondOutput *out);
+
+/**
+ * The loads a run's setup pass applies for one bond where its law computes
+ * them afresh (LIGGGHTS-INL's code, `inl_compatible`: a trial step that
+ * moves only the history extremes and breaks nothing): written to `out`,
+ * and `recomputed` set to 1. For a law that applies the loads of the
+ * latest force pass, `recomputed` is 0 and nothing is written (the engine
+ * applies the kept loads).
+ *
+ * # Safety
+ * Pointers must be null or valid; `state` holds `GRANBOND_BOND_STATE_LEN` doubles.
+ */
+enum GbStatus granbond_bond_setup_compute(const struct GbBondModel *model,
+                                          const struct GbPairKinematics *kinematics,
+                                          double dt,
+                                          double *state,
+                                          int32_t *recomputed,
+                                          struct GbBondOutput *out);
 
 /**
  * `granbond_bond_compute` over `count` bonds whose states lie apart in
@@ -1440,6 +1492,21 @@ enum GbStatus granbond_wall_bond_compute(const struct GbBondModel *model,
                                          double dt,
                                          double *state,
                                          struct GbBondOutput *out);
+
+/**
+ * `granbond_bond_setup_compute` for a wall bond: the wall's stand-in does
+ * not move.
+ *
+ * # Safety
+ * Pointers must be null or valid; `state` holds `GRANBOND_WALL_BOND_STATE_LEN` doubles.
+ */
+enum GbStatus granbond_wall_bond_setup_compute(const struct GbBondModel *model,
+                                               const struct GbSphereKinematics *sphere,
+                                               const double *wall_velocity,
+                                               double dt,
+                                               double *state,
+                                               int32_t *recomputed,
+                                               struct GbBondOutput *out);
 
 /**
  * Packs a bond step's output into the `GRANBOND_BOND_OUTPUT_LEN` doubles

@@ -278,16 +278,22 @@ proptest! {
     }
 }
 
-/// Each of the 128 combinations of switches, in both breakage modes, on the
-/// same 20 bonds drawn once.
-#[test]
-fn every_kernel_gives_every_bond_the_bits_of_a_single_step() {
+/// 20 bonds and a parameter set, drawn once, the same in every run.
+fn twenty_bonds_and_params() -> (Vec<(PairKinematics, BondState)>, BondParams) {
     let mut runner = TestRunner::deterministic();
     let bonds = prop::collection::vec(bond(), 20)
         .new_tree(&mut runner)
         .unwrap()
         .current();
     let base = any_params().new_tree(&mut runner).unwrap().current();
+    (bonds, base)
+}
+
+/// Each of the 128 combinations of switches, in both breakage modes, on the
+/// same 20 bonds drawn once.
+#[test]
+fn every_kernel_gives_every_bond_the_bits_of_a_single_step() {
+    let (bonds, base) = twenty_bonds_and_params();
     for features in 0..128u32 {
         for stress_break in [0, 1] {
             let on = |bit: u32| (features >> bit & 1) as i32;
@@ -527,4 +533,28 @@ fn scattered_step_runs_in_lanes_where_the_cpu_has_them() {
     }
     let scalar = model.with_simd(Simd::Scalar).unwrap();
     assert_eq!(scalar.simd(), Simd::Scalar);
+}
+
+/// LIGGGHTS-INL's law (`inl_compatible`) has no lane step: the model steps
+/// it one bond at a time on every path, with the bits of a single step,
+/// and offers no other instruction set.
+#[test]
+fn inl_compatible_runs_scalar_on_every_path_with_the_bits_of_a_single_step() {
+    let (bonds, base) = twenty_bonds_and_params();
+    for (damping, damping_smooth, stress_break) in [(0, 0, 0), (1, 0, 1), (1, 1, 0)] {
+        let p = BondParams {
+            inl_compatible: 1,
+            damping,
+            damping_smooth,
+            stress_break,
+            eta_fn: 0.3,
+            eta_ft: 0.2,
+            ..base
+        };
+        let model = BondModel::new(p).unwrap();
+        assert_eq!(model.simd(), Simd::Scalar);
+        #[cfg(target_arch = "x86_64")]
+        assert!(model.clone().with_simd(Simd::Avx2).is_none());
+        assert_eq!(check_scattered(p, &bonds).unwrap(), 1, "the scalar path alone");
+    }
 }

@@ -76,7 +76,15 @@ pub fn findings(
             }
             let Some(p) = params(a, b) else { continue };
             let contact = contact_distance(bodies, a, b, wall);
-            if !BondParams::switch(p.stress_break) && p.create_distance > p.max_distance {
+            // LIGGGHTS-INL's wall bond (`inl_compatible`) forms within half
+            // the creation distance of the wall and breaks on the distance
+            // to the wall point (`bond::inl`).
+            let reach = if wall && BondParams::switch(p.inl_compatible) {
+                0.5 * p.create_distance
+            } else {
+                p.create_distance
+            };
+            if !BondParams::switch(p.stress_break) && reach > p.max_distance {
                 note(
                     Finding::CreatedBroken {
                         touching_breaks: p.max_distance < contact,
@@ -544,6 +552,24 @@ mod tests {
             ..bond(2.2e-3, 2.08e-3, 1, true)
         };
         assert!(kinds(p, 0).is_empty());
+    }
+
+    #[test]
+    fn an_inl_wall_bond_forms_within_half_the_creation_distance() {
+        let bodies = spheres(1e-3);
+        let inl = BondParams {
+            inl_compatible: 1,
+            ..bond(2.1e-3, 1.1e-3, 1, false)
+        };
+        assert!(findings(1, &bodies, |_, _| Some(inl), 0, false, true).is_empty());
+        let far = BondParams {
+            create_distance: 2.4e-3,
+            ..inl
+        };
+        assert!(matches!(
+            findings(1, &bodies, |_, _| Some(far), 0, false, true)[0].0,
+            Finding::CreatedBroken { .. }
+        ));
     }
 
     #[test]

@@ -16,7 +16,7 @@ use super::finite::BatchResult;
 use super::laws::BondLaws;
 use super::scalar::{all_one_by_one, bond_step};
 use super::state::{BondOutput, BondState};
-use super::switches::{Fixed, Switched, Switches};
+use super::switches::{Fixed, Inl, Switched, Switches};
 use crate::kinematics::{KinematicsError, PairKinematics};
 use crate::pair_source::IndexedPairs;
 use crate::simd::Simd;
@@ -76,6 +76,18 @@ pub(crate) fn kernels(features: u32, simd: Simd, own: bool) -> Kernels {
         indexed,
         simd,
         own: f != switched,
+    }
+}
+
+/// The steps of LIGGGHTS-INL's law (`super::inl`): scalar on every path.
+pub(crate) fn inl_kernels() -> Kernels {
+    Kernels {
+        single: single::<Inl>,
+        batch: batch::<Inl>,
+        scattered: scattered::<Inl>,
+        indexed: indexed::<Inl>,
+        simd: Simd::Scalar,
+        own: false,
     }
 }
 

@@ -97,7 +97,11 @@ impl BondModel {
             e.normal = linear_energy(p.k_fn2 * sec.area, delta);
         }
         if delta > 0.0 && f & COMPRESSION != 0 {
-            e.normal = compression_energy(p.k_fn1 * sec.area, delta, p.compression_linear_below);
+            e.normal = compression_energy(
+                p.k_fn1 * self.compression_area(sec.area),
+                delta,
+                p.compression_linear_below,
+            );
         }
         if f & SHEAR != 0 {
             e.shear = spring_energy_from_force(v3(state.shear_force).norm(), p.k_ft * sec.area);

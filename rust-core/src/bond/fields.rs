@@ -31,7 +31,7 @@ const fn field(name: &'static str, unit: &'static str, description: &'static str
 }
 
 /// Number of fields of [`BOND_FIELDS`].
-pub const BOND_FIELD_COUNT: usize = 23;
+pub const BOND_FIELD_COUNT: usize = 38;
 
 /// The fields, in the order [`bond_fields`] writes them.
 pub const BOND_FIELDS: [BondField; BOND_FIELD_COUNT] = [
@@ -114,7 +114,29 @@ pub const BOND_FIELDS: [BondField; BOND_FIELD_COUNT] = [
         "rad",
         "extreme bending angle reached on the opposite side (history)",
     ),
+    field("torque_x", "N m", "the bond's torque on sphere i, x (latest force pass)"),
+    field("torque_y", "N m", "the bond's torque on sphere i, y"),
+    field("torque_z", "N m", "the bond's torque on sphere i, z"),
+    field("force_normal_x", "N", "the part of the force on sphere i along n, x"),
+    field("force_normal_y", "N", "the part of the force on sphere i along n, y"),
+    field("force_normal_z", "N", "the part of the force on sphere i along n, z"),
+    field("force_tangential_x", "N", "the part of the force on sphere i across n, x"),
+    field("force_tangential_y", "N", "the part of the force on sphere i across n, y"),
+    field("force_tangential_z", "N", "the part of the force on sphere i across n, z"),
+    field("torque_normal_x", "N m", "the part of the torque on sphere i along n, x"),
+    field("torque_normal_y", "N m", "the part of the torque on sphere i along n, y"),
+    field("torque_normal_z", "N m", "the part of the torque on sphere i along n, z"),
+    field("torque_tangential_x", "N m", "the part of the torque on sphere i across n, x"),
+    field("torque_tangential_y", "N m", "the part of the torque on sphere i across n, y"),
+    field("torque_tangential_z", "N m", "the part of the torque on sphere i across n, z"),
 ];
+
+/// `v` split into its part along the unit vector `n` and the rest.
+fn split(v: [f64; 3], n: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+    let along = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+    let normal = n.map(|c| along * c);
+    (normal, [v[0] - normal[0], v[1] - normal[1], v[2] - normal[2]])
+}
 
 fn norm(v: [f64; 3]) -> f64 {
     (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
@@ -139,6 +161,9 @@ pub fn bond_fields(
     let across = [f[0] - normal * n[0], f[1] - normal * n[1], f[2] - normal * n[2]];
     let (sigma_max, tau_max) = laws.stress_limits_at(state.r0 - r);
     let ratio = |x: f64, limit: f64| if limit > 0.0 { x / limit } else { 0.0 };
+    let t = out.torque_i;
+    let (f_n, f_t) = split(f, n);
+    let (t_n, t_t) = split(t, n);
     [
         state.status,
         state.r0,
@@ -163,5 +188,20 @@ pub fn bond_fields(
         state.twist_min,
         norm(state.bend_history),
         state.bend_opposite,
+        t[0],
+        t[1],
+        t[2],
+        f_n[0],
+        f_n[1],
+        f_n[2],
+        f_t[0],
+        f_t[1],
+        f_t[2],
+        t_n[0],
+        t_n[1],
+        t_n[2],
+        t_t[0],
+        t_t[1],
+        t_t[2],
     ]
 }

@@ -28,6 +28,8 @@ pub struct BondLaws {
     pub limits: StressLimits,
     /// Bits of [`super::features`] (`TENSION`, `SHEAR`, ...) compiled in.
     pub features: u32,
+    /// LIGGGHTS-INL's code (`inl_compatible`): the step is `bond::inl`'s.
+    pub inl: bool,
 }
 
 impl BondLaws {
@@ -37,20 +39,23 @@ impl BondLaws {
         params.validate()?;
         let on = BondParams::switch;
         let p = &params;
+        let inl = on(p.inl_compatible);
+        // INL's code resets the history on every sign change.
+        let reset = on(p.history_reset) || inl;
         Ok(Self {
             normal: NormalLaw::new(
                 Loop::new(p.k_fn1, p.ku_fn1, p.kc_fn1),
                 Loop::new(p.k_fn2, p.ku_fn2, p.kc_fn2),
                 p.compression_linear_below,
-                on(p.history_reset),
+                reset,
             ),
             twist: TorqueLaw {
                 hysteresis: Loop::new(p.k_tn, p.ku_tn, p.kc_tn),
-                history_reset: on(p.history_reset),
+                history_reset: reset,
             },
             bend: TorqueLaw {
                 hysteresis: Loop::new(p.k_tt, p.ku_tt, p.kc_tt),
-                history_reset: on(p.history_reset),
+                history_reset: reset,
             },
             stress_break: on(p.stress_break),
             limits: StressLimits {
@@ -63,6 +68,7 @@ impl BondLaws {
                 },
             },
             features: features(p),
+            inl,
             params,
         })
     }
@@ -78,6 +84,46 @@ impl BondLaws {
         let l = &self.limits;
         let factor = if delta < 0.0 { l.tension_factor } else { 1.0 };
         (l.max_sigma * factor, l.max_tau)
+    }
+
+    /// What the compression law's stiffnesses multiply: the section area
+    /// `area`, or 1 under `inl_compatible` (LIGGGHTS-INL's compression has
+    /// no `A`).
+    pub fn compression_area(&self, area: f64) -> f64 {
+        if self.inl {
+            1.0
+        } else {
+            area
+        }
+    }
+
+    /// One line for a run's opening output saying which law runs: the
+    /// write-up's (and that LIGGGHTS-INL's code differs from it, with the
+    /// switch that follows that code), or LIGGGHTS-INL's code. `switch` is
+    /// the name a deck gives `inl_compatible` (`inlCompatible`,
+    /// `inl_compatible`).
+    pub fn law_line(&self, switch: &str) -> String {
+        if self.inl {
+            format!(
+                "LIGGGHTS-INL's code ({switch} on): compression k_fn1 sqrt(d) without the section A, \
+                 extremes reset on every sign change, twisting, bending and damping per Cartesian \
+                 component, the contact's tangential and rolling loads kept under an overlapping bond"
+            )
+        } else {
+            format!(
+                "the law of docs/models/bond-nonlinear.md (compression k_fn1 A sqrt(d), frame-indifferent \
+                 twisting, bending and damping, the contact replaced under the bond); LIGGGHTS-INL's \
+                 code differs from it, {switch} on follows that code"
+            )
+        }
+    }
+
+    /// Whether the contact's tangential and rolling loads act on an
+    /// overlapping pair while its bond is intact, as in LIGGGHTS-INL, whose
+    /// bond takes the place of the contact's normal load alone
+    /// (`inl_compatible`); otherwise the bond replaces every contact load.
+    pub fn keeps_contact_tangential(&self) -> bool {
+        self.inl
     }
 
     /// The largest centre distance an intact bond of rest length `r0` can

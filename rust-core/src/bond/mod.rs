@@ -21,6 +21,7 @@ pub mod features;
 pub mod fields;
 pub mod finite;
 pub mod hysteresis;
+mod inl;
 pub mod laws;
 pub mod model;
 pub mod normal_law;

@@ -1,8 +1,9 @@
 //! A bond type as engines use it: its laws ([`BondLaws`]) and the compiled
 //! steps chosen for their switches on this CPU.
 
-use super::dispatch::{kernels, Kernels};
+use super::dispatch::{inl_kernels, kernels, Kernels};
 use super::finite::BatchResult;
+use super::inl::inl_step;
 use super::laws::BondLaws;
 use super::params::{BondParams, ParameterError};
 use super::state::{BondOutput, BondState};
@@ -36,8 +37,18 @@ impl BondModel {
     /// instruction set [`Simd::chosen`] picks.
     pub fn new(params: BondParams) -> Result<Self, ParameterError> {
         let laws = BondLaws::new(params)?;
-        let kernels = kernels(laws.features, Simd::chosen(), true);
+        let kernels = Self::kernels_for(&laws, Simd::chosen(), true);
         Ok(Self { laws, kernels })
+    }
+
+    /// The steps of `laws` on `simd`: LIGGGHTS-INL's law (`inl_compatible`)
+    /// is stepped one bond at a time on every path.
+    fn kernels_for(laws: &BondLaws, simd: Simd, own: bool) -> Kernels {
+        if laws.inl {
+            inl_kernels()
+        } else {
+            kernels(laws.features, simd, own)
+        }
     }
 
     /// The instruction set [`Self::step_batch`], [`Self::step_scattered`]
@@ -53,7 +64,7 @@ impl BondModel {
         if !simd.available() {
             return None;
         }
-        let kernels = kernels(self.laws.features, simd, self.kernels.own);
+        let kernels = Self::kernels_for(&self.laws, simd, self.kernels.own);
         if kernels.simd != simd {
             return None;
         }
@@ -72,7 +83,7 @@ impl BondModel {
     /// every combination without steps of its own runs: the same results,
     /// only the speed differs. For tests and benchmarks.
     pub fn switched(mut self) -> Self {
-        self.kernels = kernels(self.laws.features, self.kernels.simd, false);
+        self.kernels = Self::kernels_for(&self.laws, self.kernels.simd, false);
         self
     }
 
@@ -86,6 +97,28 @@ impl BondModel {
         out: &mut BondOutput,
     ) -> Result<(), KinematicsError> {
         (self.kernels.single)(&self.laws, kin, dt, state, out)
+    }
+
+    /// The loads a run's setup pass applies, where the law computes them
+    /// afresh: LIGGGHTS-INL's code (`inl_compatible`) evaluates a trial
+    /// step, which moves only the history extremes and breaks nothing.
+    /// `Ok(false)` for the default law, which applies the loads of the
+    /// latest force pass (`crate::sweep::setup_loads`): nothing is written.
+    /// `wall`: `kin` is a wall bond's, its partner from
+    /// [`super::wall::wall_kinematics`] (which does not move here).
+    pub fn setup_step(
+        &self,
+        kin: &PairKinematics,
+        dt: f64,
+        state: &mut BondState,
+        out: &mut BondOutput,
+        wall: bool,
+    ) -> Result<bool, KinematicsError> {
+        if !self.laws.inl {
+            return Ok(false);
+        }
+        inl_step(&self.laws, kin, dt, state, out, wall, false)?;
+        Ok(true)
     }
 
     /// Advances every bond of equal-length slices; stops at the first bond

@@ -94,6 +94,11 @@ pub struct BondParams {
     pub twist: i32,
     /// The bending torque.
     pub bend: i32,
+    /// LIGGGHTS-INL's code instead of the write-up's law (`bond::inl`):
+    /// compression without the section area, INL's history rule, damping
+    /// and twisting and bending per Cartesian component, and the contact's
+    /// tangential and rolling loads kept under an overlapping bond.
+    pub inl_compatible: i32,
 }
 
 impl Default for BondParams {
@@ -139,6 +144,7 @@ impl Default for BondParams {
             shear: 1,
             twist: 1,
             bend: 1,
+            inl_compatible: 0,
         }
     }
 }
@@ -221,6 +227,7 @@ crate::parameter_table!(
         shear, "shearStress", Switch, "switch", Switch, ALWAYS;
         twist, "normalTorqueStress", Switch, "switch", Switch, ALWAYS;
         bend, "shearTorqueStress", Switch, "switch", Switch, ALWAYS;
+        inl_compatible, "inlCompatible", Switch, "switch", Switch, ALWAYS;
     }
 );
 

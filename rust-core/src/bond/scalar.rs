@@ -3,6 +3,7 @@
 
 use super::breakage::BreakMode;
 use super::finite::{bond_finite, BatchResult};
+use super::inl::inl_step;
 use super::laws::BondLaws;
 use super::state::{BondOutput, BondState, BondStatus};
 use super::step::{advance, breaks_by_distance, broken_by_distance, relative, HistoryIo, MotionSource};
@@ -34,6 +35,9 @@ pub(crate) fn bond_step<S: Switches>(
     state: &mut BondState,
     out: &mut BondOutput,
 ) -> Result<(), KinematicsError> {
+    if S::INL {
+        return inl_step(laws, kin, dt, state, out, false, true);
+    }
     let status = state.status();
     if status != BondStatus::Intact {
         *out = BondOutput::default();

@@ -9,6 +9,9 @@ pub(crate) trait Switches: Copy {
     /// Whether the bits are known when the step is compiled, so that what
     /// a step leaves out for them costs no branch.
     const FIXED: bool;
+    /// Whether the step is LIGGGHTS-INL's law (`super::inl`) rather than
+    /// the write-up's.
+    const INL: bool = false;
 
     fn of(laws: &BondLaws) -> Self;
     fn bits(self) -> u32;
@@ -51,6 +54,26 @@ impl Switches for Switched {
     #[inline(always)]
     fn of(laws: &BondLaws) -> Self {
         Switched(laws.features)
+    }
+
+    #[inline(always)]
+    fn bits(self) -> u32 {
+        self.0
+    }
+}
+
+/// LIGGGHTS-INL's law (`inl_compatible`): the scalar paths step
+/// `super::inl` instead of the write-up's law; the bits are the model's.
+#[derive(Clone, Copy)]
+pub(crate) struct Inl(u32);
+
+impl Switches for Inl {
+    const FIXED: bool = false;
+    const INL: bool = true;
+
+    #[inline(always)]
+    fn of(laws: &BondLaws) -> Self {
+        Inl(laws.features)
     }
 
     #[inline(always)]

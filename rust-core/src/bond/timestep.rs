@@ -81,7 +81,7 @@ impl BondModel {
             } / d_ref.sqrt();
             limits.axial = limits.axial.min(oscillator_limit(
                 m_eff,
-                self.normal.compression.max_slope() * slope * sec.area,
+                self.normal.compression.max_slope() * slope * self.compression_area(sec.area),
                 0.0,
             ));
         }
@@ -183,10 +183,12 @@ impl BondModel {
     /// the break stress, `(max_sigma / k_fn1)^2`: where stress breakage in
     /// compression starts. Infinite when bonds do not break in compression
     /// (distance mode, `max_sigma` infinite, compression off or no
-    /// compression stiffness).
+    /// compression stiffness), and under `inl_compatible`, whose threshold
+    /// depends on the section (the rattle check does not cover it).
     pub fn compression_break_threshold(&self) -> f64 {
         let p = &self.params;
-        let breaks = BondParams::switch(p.stress_break)
+        let breaks = !self.inl
+            && BondParams::switch(p.stress_break)
             && self.features & COMPRESSION != 0
             && p.k_fn1 > 0.0
             && p.max_sigma.is_finite();
@@ -209,7 +211,7 @@ impl BondModel {
         }
         let sec = section(self.params.lambda, radius_i, radius_j);
         let m_eff = mass_i * mass_j / (mass_i + mass_j);
-        let stiffness = self.normal.compression.max_slope() * sec.area;
+        let stiffness = self.normal.compression.max_slope() * self.compression_area(sec.area);
         // 16 (k A dt^2 / (8 m_eff))^2 = floor, solved for dt
         let floor = threshold / RATTLE_MARGIN;
         (8.0 * m_eff / stiffness * (floor / 16.0).sqrt()).sqrt()
@@ -240,7 +242,8 @@ impl BondModel {
         }
         let sec = section(self.params.lambda, radius_i, radius_j);
         let m_eff = mass_i * mass_j / (mass_i + mass_j);
-        let root = self.normal.compression.max_slope() * sec.area * dt * dt / (8.0 * m_eff);
+        let root =
+            self.normal.compression.max_slope() * self.compression_area(sec.area) * dt * dt / (8.0 * m_eff);
         16.0 * root * root
     }
 }

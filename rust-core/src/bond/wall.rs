@@ -5,8 +5,11 @@
 //! extra state slots, after the pair slots. (The reference measures `r` to
 //! the contact point itself and doubles it only for creation; the mirror
 //! sphere gives the same `r` throughout and lever arms of `R_i` on both
-//! sides, so the shear and its torque see the same contact point.)
+//! sides, so the shear and its torque see the same contact point.) Under
+//! `inl_compatible` the partner slots hold the contact point itself and
+//! the bond follows INL's geometry (`bond::inl`).
 
+use super::inl::inl_step;
 use super::model::BondModel;
 use super::state::{BondOutput, BondState, BOND_SLOTS, BOND_STATE_LEN};
 use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
@@ -82,11 +85,23 @@ impl BondModel {
         step: i64,
         state: &mut WallBondState,
     ) -> Result<bool, KinematicsError> {
-        let partner = wall_partner(sphere.x, sphere.radius, contact_point);
-        let kin = wall_kinematics(sphere, partner, [0.0; 3]);
+        // LIGGGHTS-INL's wall bond (`inl_compatible`) forms on twice the
+        // distance to the contact point (its stand-in for the rules is the
+        // mirror image of the centre) and keeps that point itself as its
+        // partner and the distance to it as its rest length.
+        let (stand_in, partner) = if self.inl {
+            ((v3(contact_point) * 2.0 - v3(sphere.x)).into(), contact_point)
+        } else {
+            let p = wall_partner(sphere.x, sphere.radius, contact_point);
+            (p, p)
+        };
+        let kin = wall_kinematics(sphere, stand_in, [0.0; 3]);
         let created = self.try_create(&kin, step, &mut state.bond)?;
         if created {
             state.partner = partner;
+            if self.inl {
+                state.bond.r0 = (v3(sphere.x) - v3(contact_point)).norm();
+            }
         }
         Ok(created)
     }
@@ -102,7 +117,11 @@ impl BondModel {
         out: &mut BondOutput,
     ) -> Result<(), KinematicsError> {
         let kin = wall_kinematics(sphere, state.partner, wall_velocity);
-        self.step(&kin, dt, &mut state.bond, out)?;
+        if self.inl {
+            inl_step(self, &kin, dt, &mut state.bond, out, true, true)?;
+        } else {
+            self.step(&kin, dt, &mut state.bond, out)?;
+        }
         if !wall_velocity.iter().all(|c| c.is_finite()) {
             return Err(KinematicsError::NonFinite);
         }

@@ -8,7 +8,9 @@ use super::guard::{
 };
 use super::results;
 use crate::bond::creation::status_and_step_allow;
+use crate::bond::creation_check::{parameter_name, Naming};
 use crate::bond::output_slots::{load_output, store_output};
+use crate::bond::wall::wall_kinematics;
 use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
@@ -135,6 +137,64 @@ pub unsafe extern "C" fn granbond_bond_creates_at(model: *const BondModel, step:
     model.creates_at(step) as i32
 }
 
+/// The line a run's opening output gives for `model`: which law it steps
+/// (the write-up's, naming the switch for LIGGGHTS-INL's code, or that
+/// code), in `naming`'s words (0 LAMMPS, 1 LIGGGHTS), written to `out`
+/// (at most `capacity` bytes with the terminating NUL; a longer line is
+/// cut).
+///
+/// # Safety
+/// Pointers must be null or valid (`model` from `granbond_bond_model_new`,
+/// `out` writable for `capacity` bytes).
+#[entry(model: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_law_line(
+    model: *const BondModel,
+    naming: i32,
+    out: *mut std::ffi::c_char,
+    capacity: usize,
+) -> Status {
+    let naming = match naming {
+        0 => Naming::Lammps,
+        1 => Naming::Liggghts,
+        _ => {
+            return Err(Failure::new(
+                Status::InvalidArgument,
+                format!("naming must be 0 (LAMMPS) or 1 (LIGGGHTS); got {naming}"),
+            ))
+        }
+    };
+    if out.is_null() || capacity == 0 {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            "out must be a buffer of at least one byte",
+        ));
+    }
+    let switch = parameter_name("inl_compatible", naming);
+    let line = model.law_line(switch);
+    let n = line.len().min(capacity - 1);
+    // SAFETY: the caller gives `capacity` writable bytes at `out`.
+    unsafe {
+        std::ptr::copy_nonoverlapping(line.as_ptr(), out as *mut u8, n);
+        *out.add(n) = 0;
+    }
+    Ok(())
+}
+
+/// 1 if the contact's tangential and rolling loads act on an overlapping
+/// pair while its bond is intact (LIGGGHTS-INL's code, `inl_compatible`),
+/// so an engine drops only the contact's normal load under the bond; 0 if
+/// the bond replaces every contact load. 0 for a null or misaligned `model`.
+///
+/// # Safety
+/// `model` must be null or from `granbond_bond_model_new`.
+// a query, not a call that fails: no error record
+#[entry(or = 0, model: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_keeps_contact_tangential(model: *const BondModel) -> i32 {
+    model.keeps_contact_tangential() as i32
+}
+
 /// The centre distance within which `granbond_bond_try_create` may create
 /// a bond at `from_step` or any later step, written to `reach`:
 /// `create_distance` while a creation step lies ahead (or bonds are created
@@ -190,6 +250,40 @@ pub unsafe extern "C" fn granbond_bond_compute(
 ) -> Status {
     model.step(kinematics, dt, state, out)?;
     results::bond(state, out)
+}
+
+/// The loads a run's setup pass applies for one bond where its law computes
+/// them afresh (LIGGGHTS-INL's code, `inl_compatible`: a trial step that
+/// moves only the history extremes and breaks nothing): written to `out`,
+/// and `recomputed` set to 1. For a law that applies the loads of the
+/// latest force pass, `recomputed` is 0 and nothing is written (the engine
+/// applies the kept loads).
+///
+/// # Safety
+/// Pointers must be null or valid; `state` holds `GRANBOND_BOND_STATE_LEN` doubles.
+#[entry(
+    model: reference,
+    dt: time_step,
+    kinematics: reference,
+    state: bond_state,
+    recomputed: reference_mut,
+    out: reference_mut,
+)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_setup_compute(
+    model: *const BondModel,
+    kinematics: *const PairKinematics,
+    dt: f64,
+    state: *mut f64,
+    recomputed: *mut i32,
+    out: *mut BondOutput,
+) -> Status {
+    let done = model.setup_step(kinematics, dt, state, out, false)?;
+    *recomputed = done as i32;
+    if done {
+        results::bond(state, out)?;
+    }
+    Ok(())
 }
 
 /// The per-atom arrays of an engine (local and ghost atoms), as
@@ -346,6 +440,39 @@ pub unsafe extern "C" fn granbond_wall_bond_compute(
     model.step_wall(sphere, wall_velocity, dt, state, out)?;
     results::bond(&state.bond, out)?;
     results::vector("wall bond state", &state.partner)
+}
+
+/// `granbond_bond_setup_compute` for a wall bond: the wall's stand-in does
+/// not move.
+///
+/// # Safety
+/// Pointers must be null or valid; `state` holds `GRANBOND_WALL_BOND_STATE_LEN` doubles.
+#[entry(
+    model: reference,
+    dt: time_step,
+    sphere: reference,
+    wall_velocity: vector3,
+    state: wall_state,
+    recomputed: reference_mut,
+    out: reference_mut,
+)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_wall_bond_setup_compute(
+    model: *const BondModel,
+    sphere: *const SphereKinematics,
+    wall_velocity: *const f64,
+    dt: f64,
+    state: *mut f64,
+    recomputed: *mut i32,
+    out: *mut BondOutput,
+) -> Status {
+    let kin = wall_kinematics(sphere, state.partner, wall_velocity);
+    let done = model.setup_step(&kin, dt, &mut state.bond, out, true)?;
+    *recomputed = done as i32;
+    if done {
+        results::bond(&state.bond, out)?;
+    }
+    Ok(())
 }
 
 /// Packs a bond step's output into the `GRANBOND_BOND_OUTPUT_LEN` doubles

@@ -46,6 +46,66 @@ int test_bond_create_and_force(void)
         CHECK(granbond_bond_may_create(ma, state, CREATE_STEP + 7) == 1, "may_create: broken, create_always on");
         granbond_bond_model_free(ma);
     }
+    /* granbond_bond_keeps_contact_tangential and granbond_bond_law_line:
+     * which law a model steps (inl_compatible), in each engine's words; a
+     * bad naming or buffer is refused. */
+    {
+        GbBondParams inl = p;
+        GbBondModel *mi = NULL;
+        char line[512];
+        inl.inl_compatible = 1;
+        if (new_bond_model(&inl, &mi))
+            return 1;
+        CHECK(granbond_bond_keeps_contact_tangential(m) == 0 && granbond_bond_keeps_contact_tangential(mi) == 1 &&
+                  granbond_bond_keeps_contact_tangential(NULL) == 0,
+              "keeps_contact_tangential: only under inl_compatible");
+        CHECK(granbond_bond_law_line(m, 1, line, sizeof line) == GB_STATUS_OK && strstr(line, "inlCompatible on"),
+              "law_line: the default law names the LIGGGHTS switch");
+        CHECK(granbond_bond_law_line(mi, 0, line, sizeof line) == GB_STATUS_OK && strstr(line, "inl_compatible on") &&
+                  strstr(line, "without the section A"),
+              "law_line: INL's code in LAMMPS words");
+        CHECK(granbond_bond_law_line(mi, 2, line, sizeof line) == GB_STATUS_INVALID_ARGUMENT,
+              "law_line: naming 2 refused");
+        CHECK(granbond_bond_law_line(mi, 1, line, 0) == GB_STATUS_INVALID_ARGUMENT, "law_line: no room refused");
+        CHECK(granbond_bond_law_line(mi, 1, line, 8) == GB_STATUS_OK && strlen(line) == 7, "law_line: cut to fit");
+        /* granbond_bond_setup_compute and granbond_wall_bond_setup_compute:
+         * the default law keeps its latest loads (nothing computed); INL's
+         * code computes a trial step that leaves the angles and the shear
+         * force where they were. */
+        {
+            GbPairKinematics kp;
+            GbSphereKinematics sp;
+            double st[GRANBOND_BOND_STATE_LEN], before[GRANBOND_BOND_STATE_LEN];
+            double wst[GRANBOND_WALL_BOND_STATE_LEN], zero[3] = {0.0, 0.0, 0.0};
+            int32_t rec = -1;
+            memset(st, 0, sizeof st);
+            memset(&out, 0, sizeof out);
+            pair_at(&kp, R0_NOMINAL, R_I, R_J);
+            kp.v_i[1] = 1e-3;
+            st[i_status] = GB_BOND_STATUS_INTACT;
+            st[i_r0] = R0_NOMINAL * (1.0 + 1e-6);
+            EXPECT_OK(granbond_bond_setup_compute(m, &kp, 1e-8, st, &rec, &out), "setup_compute, default law");
+            CHECK(rec == 0 && out.force_i[0] == 0.0, "setup_compute: the default law computes nothing");
+            memcpy(before, st, sizeof st);
+            EXPECT_OK(granbond_bond_setup_compute(mi, &kp, 1e-8, st, &rec, &out), "setup_compute, INL's code");
+            CHECK(rec == 1 && out.force_i[0] > 0.0 && out.status == GB_BOND_STATUS_INTACT,
+                  "setup_compute: INL's code pushes the compressed pair apart");
+            CHECK(memcmp(st + 4, before + 4, 3 * sizeof(double)) == 0, "setup_compute: the shear force is not stored");
+            CHECK(granbond_bond_setup_compute(mi, &kp, 1e-8, st, NULL, &out) == GB_STATUS_NULL_POINTER,
+                  "setup_compute: a null recomputed is an error");
+            memset(wst, 0, sizeof wst);
+            memset(&sp, 0, sizeof sp);
+            sp.x[2] = 0.999 * R_I;
+            sp.radius = R_I;
+            EXPECT_OK(granbond_wall_bond_try_create(mi, &sp, zero, CREATE_STEP, wst, &created), "INL wall bond");
+            sp.x[2] = 0.999 * R_I * (1.0 - 1e-6);
+            EXPECT_OK(granbond_wall_bond_setup_compute(mi, &sp, zero, 1e-8, wst, &rec, &out),
+                      "wall_bond_setup_compute, INL's code");
+            CHECK(created == 1 && rec == 1 && out.force_i[2] > 0.0, "wall setup: INL's code pushes off the wall");
+            CHECK(wst[GRANBOND_BOND_STATE_LEN + 2] == 0.0, "wall setup: the contact point stays");
+        }
+        granbond_bond_model_free(mi);
+    }
     /* granbond_bond_creates_at: at create_step only (create_always off),
      * every step with create_always; 0 for a bad model. */
     CHECK(granbond_bond_creates_at(m, CREATE_STEP) == 1, "creates_at: at create_step");

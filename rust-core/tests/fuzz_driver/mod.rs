@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 96] = [
+pub const ENTRY_POINTS: [&str; 100] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -77,6 +77,10 @@ pub const ENTRY_POINTS: [&str; 96] = [
     "granbond_bond_compute_indexed",
     "granbond_wall_bond_try_create",
     "granbond_wall_bond_compute",
+    "granbond_bond_setup_compute",
+    "granbond_wall_bond_setup_compute",
+    "granbond_bond_keeps_contact_tangential",
+    "granbond_bond_law_line",
     "granbond_bond_output_store",
     "granbond_bond_output_load",
     "granbond_bond_centre",
@@ -1282,9 +1286,47 @@ impl<'t> Session<'t> {
             }
             self.check_state_finite(function, i, BOND_STATE_LEN, &before);
         }
+        // a run's setup pass on the same arguments, and what the model
+        // says of its law
+        let mut recomputed = Place::new(-1i32);
+        // SAFETY: as above; `recomputed` valid.
+        let status = unsafe {
+            fb::granbond_bond_setup_compute(
+                m,
+                k.ptr(hk),
+                dt,
+                self.state_ptr(i, hs),
+                recomputed.ptr(Pointer::Valid),
+                out.ptr(ho),
+            )
+        };
+        if self.answer("granbond_bond_setup_compute", status) && recomputed.get() == 1 {
+            self.check_bond_output("granbond_bond_setup_compute", &out.get());
+        }
+        self.law_of(m);
         // what an engine keeps and logs of the step
         self.bond_output_slots(input, out.get());
         self.bond_centre(input, &k.get());
+    }
+
+    /// `granbond_bond_keeps_contact_tangential` and `granbond_bond_law_line`
+    /// of `m` (which may be null or misaligned).
+    fn law_of(&mut self, m: *const BondModel) {
+        // SAFETY: null, misaligned or from granbond_bond_model_new.
+        let keeps = unsafe { fb::granbond_bond_keeps_contact_tangential(m) };
+        assert!(
+            keeps == 0 || keeps == 1,
+            "granbond_bond_keeps_contact_tangential answered {keeps}"
+        );
+        self.answer_value("granbond_bond_keeps_contact_tangential");
+        let mut line = [0 as c_char; 512];
+        // SAFETY: `line` holds 512 bytes.
+        let status = unsafe { fb::granbond_bond_law_line(m, 1, line.as_mut_ptr(), line.len()) };
+        if self.answer("granbond_bond_law_line", status) {
+            // SAFETY: the entry ends the line with a NUL within the buffer.
+            let text = unsafe { CStr::from_ptr(line.as_ptr()) };
+            assert!(text.to_bytes().len() < 512 && !text.to_bytes().is_empty());
+        }
     }
 
     /// Stores `o` in history slots and loads it back.
@@ -2315,6 +2357,23 @@ impl<'t> Session<'t> {
                 self.check_bond_output(function, &out.get());
             }
             self.check_state_finite(function, i, WALL_BOND_STATE_LEN, &before);
+        }
+        let mut recomputed = Place::new(-1i32);
+        let s = self.state_ptr(i, h3);
+        // SAFETY: as above; `recomputed` valid.
+        let status = unsafe {
+            fb::granbond_wall_bond_setup_compute(
+                m,
+                sp.ptr(h1),
+                velocity.ptr(h2) as *const f64,
+                dt,
+                s,
+                recomputed.ptr(Pointer::Valid),
+                out.ptr(h4),
+            )
+        };
+        if self.answer("granbond_wall_bond_setup_compute", status) && recomputed.get() == 1 {
+            self.check_bond_output("granbond_wall_bond_setup_compute", &out.get());
         }
     }
 
