@@ -263,6 +263,12 @@ pub struct CitedNames {
     pub k_fn2: &'static str,
     /// The deck's name of `eta_fn`.
     pub eta_fn: &'static str,
+    /// The deck's name of `k_ft`.
+    pub k_ft: &'static str,
+    /// The deck's name of `k_tn`.
+    pub k_tn: &'static str,
+    /// The deck's name of `k_tt`.
+    pub k_tt: &'static str,
 }
 
 impl TimestepVerdict {
@@ -322,6 +328,24 @@ impl TimestepVerdict {
                 )
             }
             None => text += ")",
+        }
+        // the deck's words that set the step: the stiffness of the mode
+        // that limits it, and the time step itself
+        if let Some(m) = self.limits.modes {
+            let modes = [
+                (m.axial, "axial", format!("{} and {}", names.k_fn2, names.k_fn1)),
+                (m.shear, "shear", names.k_ft.to_string()),
+                (m.twist, "twisting", names.k_tn.to_string()),
+                (m.bend, "bending", names.k_tt.to_string()),
+            ];
+            if let Some((_, mode, words)) = modes
+                .iter()
+                .filter(|(t, _, _)| t.is_finite())
+                .min_by(|a, b| a.0.total_cmp(&b.0))
+            {
+                text +=
+                    &format!("; the {mode} mode sets it ({words}): a smaller timestep or a softer {words}");
+            }
         }
         if let Some(r) = self.limits.rattle.filter(|r| self.dt > r.step) {
             text += &format!(
@@ -448,6 +472,9 @@ mod tests {
         ku_fn1: "ku_fn1",
         k_fn2: "k_fn2",
         eta_fn: "eta_fn",
+        k_ft: "k_ft",
+        k_tn: "k_tn",
+        k_tt: "k_tt",
     };
 
     #[test]
@@ -464,6 +491,42 @@ mod tests {
         assert_eq!(v.critical, spring(&1e6, 0.0, 0.0, 1e-5, 4e-5).critical);
         assert_eq!(v.level, TimestepLevel::Safe);
         assert!(v.message("s", "bond", &bodies, &NAMES, &UnitNames::SI).is_empty());
+    }
+
+    #[test]
+    fn a_bond_warning_names_the_stiffness_of_the_mode_that_limits_the_step() {
+        let bodies = [TypeBodies::none(), sphere(1e-3, 1e-5)];
+        let modes = |shear: f64| ModeLimits {
+            axial: 2e-6,
+            shear,
+            twist: 5e-6,
+            bend: 4e-6,
+        };
+        for (shear, mode, words) in [(1e-6, "shear", "(k_ft)"), (3e-6, "axial", "(k_fn2 and k_fn1)")] {
+            let verdict = TimestepVerdict {
+                level: TimestepLevel::AboveRecommended,
+                type_a: 1,
+                type_b: 1,
+                critical: 1e-6,
+                recommended: 2e-7,
+                dt: 5e-7,
+                limits: StepLimits {
+                    modes: Some(modes(shear)),
+                    ..StepLimits::plain(1e-6)
+                },
+            };
+            let text = verdict.message(
+                "pair granbond",
+                "bond",
+                &bodies,
+                &NAMES,
+                &UnitNames::of_style("si"),
+            );
+            assert!(
+                text.contains(&format!("the {mode} mode sets it {words}")),
+                "{text}"
+            );
+        }
     }
 
     #[test]

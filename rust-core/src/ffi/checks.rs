@@ -129,6 +129,9 @@ fn cited_names(naming: Naming) -> CitedNames {
         ku_fn1: parameter_name("ku_fn1", naming),
         k_fn2: parameter_name("k_fn2", naming),
         eta_fn: parameter_name("eta_fn", naming),
+        k_ft: parameter_name("k_ft", naming),
+        k_tn: parameter_name("k_tn", naming),
+        k_tt: parameter_name("k_tt", naming),
     }
 }
 
