@@ -28,25 +28,13 @@ fn resident() -> f64 {
         .map_or(f64::NAN, |kb| kb * 1024.0)
 }
 
+/// The tests' bond with real hysteresis on every law (granbond-test-support),
+/// bonding touching spheres at step 1.
 fn model() -> BondModel {
     BondModel::new(BondParams {
-        lambda: 0.5,
-        k_fn1: 1e10,
-        ku_fn1: 3e10,
-        kc_fn1: 1e9,
-        k_fn2: 1e13,
-        ku_fn2: 3e13,
-        kc_fn2: 1e12,
-        k_ft: 5e12,
-        k_tn: 5e12,
-        ku_tn: 1.5e13,
-        kc_tn: 5e11,
-        k_tt: 5e12,
-        ku_tt: 1.5e13,
-        kc_tt: 5e11,
         create_distance: 2.2 * R,
         create_step: 1,
-        ..BondParams::default()
+        ..granbond_test_support::params()
     })
     .expect("valid parameters")
 }
