@@ -79,15 +79,18 @@ pub fn findings(
             // LIGGGHTS-INL's wall bond (`inl_compatible`) forms within half
             // the creation distance of the wall and breaks on the distance
             // to the wall point (`bond::inl`).
-            let reach = if wall && BondParams::switch(p.inl_compatible) {
+            let inl_wall = wall && BondParams::switch(p.inl_compatible);
+            let reach = if inl_wall {
                 0.5 * p.create_distance
             } else {
                 p.create_distance
             };
+            // and touches it at its radius, half the stand-in sphere's contact
+            let touching = if inl_wall { 0.5 * contact } else { contact };
             if !BondParams::switch(p.stress_break) && reach > p.max_distance {
                 note(
                     Finding::CreatedBroken {
-                        touching_breaks: p.max_distance < contact,
+                        touching_breaks: p.max_distance < touching,
                     },
                     a,
                     b,
@@ -566,10 +569,14 @@ mod tests {
             create_distance: 2.4e-3,
             ..inl
         };
-        assert!(matches!(
+        // it touches the wall at its radius, inside max_distance: touching
+        // spheres do not break at once
+        assert_eq!(
             findings(1, &bodies, |_, _| Some(far), 0, false, true)[0].0,
-            Finding::CreatedBroken { .. }
-        ));
+            Finding::CreatedBroken {
+                touching_breaks: false
+            }
+        );
     }
 
     #[test]
