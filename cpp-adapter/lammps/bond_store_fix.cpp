@@ -33,6 +33,15 @@ struct InputCommand : Input {
 
 }
 
+GbAtomIds atomIdsOf(const Atom *atom)
+{
+    GbAtomIds ids;
+    ids.narrow = sizeof(tagint) == 4 ? reinterpret_cast<const int32_t *>(atom->tag) : nullptr;
+    ids.wide = sizeof(tagint) == 8 ? reinterpret_cast<const int64_t *>(atom->tag) : nullptr;
+    ids.count = static_cast<size_t>(atom->nlocal + atom->nghost);
+    return ids;
+}
+
 std::string currentCommand(LAMMPS *lmp)
 {
     const char *c = lmp->input ? lmp->input->*InputCommand::field() : nullptr;
@@ -212,10 +221,7 @@ int FixGranbondBonds::pack_forward_comm(int n, int *list, double *buf, int, int 
 
 void FixGranbondBonds::unpack_forward_comm(int n, int first, double *buf)
 {
-    GbAtomIds ids;
-    ids.narrow = sizeof(tagint) == 4 ? reinterpret_cast<const int32_t *>(atom->tag) : nullptr;
-    ids.wide = sizeof(tagint) == 8 ? reinterpret_cast<const int64_t *>(atom->tag) : nullptr;
-    ids.count = static_cast<size_t>(atom->nlocal + atom->nghost);
+    const GbAtomIds ids = atomIdsOf(atom);
     for (int k = 0; k < n; k++)
         if (granbond_bond_store_unpack_view(store_, static_cast<size_t>(first + k), buf + static_cast<size_t>(k) * kViewPage,
                                             kViewPage, &ids, static_cast<size_t>(atom->nlocal)) != GB_STATUS_OK)

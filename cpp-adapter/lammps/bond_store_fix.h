@@ -13,6 +13,7 @@
 #ifndef GRANBOND_LAMMPS_BOND_STORE_FIX_H
 #define GRANBOND_LAMMPS_BOND_STORE_FIX_H
 
+#include "atom.h"
 #include "fix.h"
 #include "granbond.h"
 
@@ -84,6 +85,9 @@ private:
     int viewWidth_;             // doubles the widest view row takes, this exchange
     int page_;                  // the page in flight
 };
+
+// The ids of a rank's atoms (local, then ghost) as the core reads them.
+GbAtomIds atomIdsOf(const LAMMPS_NS::Atom *atom);
 
 // The input command LAMMPS carries out now ("run", "write_data", ...).
 std::string currentCommand(LAMMPS_NS::LAMMPS *lmp);

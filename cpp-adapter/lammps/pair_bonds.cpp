@@ -28,14 +28,7 @@ using namespace LAMMPS_NS;
 namespace granbond {
 namespace lammps {
 
-GbAtomIds PairGranbond::atomIds() const
-{
-    GbAtomIds ids;
-    ids.narrow = sizeof(tagint) == 4 ? reinterpret_cast<const int32_t *>(atom->tag) : nullptr;
-    ids.wide = sizeof(tagint) == 8 ? reinterpret_cast<const int64_t *>(atom->tag) : nullptr;
-    ids.count = static_cast<size_t>(atom->nlocal + atom->nghost);
-    return ids;
-}
+GbAtomIds PairGranbond::atomIds() const { return atomIdsOf(atom); }
 
 GbAtomArrays PairGranbond::atomArrays() const
 {
@@ -91,13 +84,13 @@ void PairGranbond::linkBonds()
                                   " (counted in compute pair granbond's 8th value)");
     }
     bonds_->sendView();
-    markBonded(true);
+    markBonded();
 }
 
 // The flags of the listed pairs from the store and its view: bonded, or
 // not any more (a bond that broke or was lost: its contact starts afresh,
 // unless it went on under the bond).
-void PairGranbond::markBonded(bool)
+void PairGranbond::markBonded()
 {
     GbBondStore *store = bonds_->store();
     const GbAtomIds ids = atomIds();
@@ -227,7 +220,7 @@ void PairGranbond::takeBroken(bool advance)
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
     if (any) {
         bonds_->sendView();
-        markBonded(false);
+        markBonded();
     }
 }
 
@@ -255,7 +248,7 @@ bool PairGranbond::tryBond(size_t tp, int i, int j, int *touch, double *history)
                                            static_cast<size_t>(p), tag[o], tag[p], &k, update->ntimestep,
                                            &made) != GB_STATUS_OK)
             failPair(i, j, "the bond's creation");
-        if (made) changedLastPass_ = true;
+        if (made) formedThisPass_ = true;
     }
     if (!made) return false;
     *touch = kBondedMark;

@@ -522,9 +522,9 @@ void PairGranbond::compute(int eflag, int vflag)
         }
         if (!force->newton_pair) bonds_->returnGhostLoads();
         // bonds formed on any rank: the view shows them from now on
-        int mine = changedLastPass_, any = 0;
+        int mine = formedThisPass_, any = 0;
         MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-        changedLastPass_ = false;
+        formedThisPass_ = false;
         if (any) {
             bonds_->sendView();
             bonds_->sizeExchange();

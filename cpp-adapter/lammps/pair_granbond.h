@@ -119,7 +119,7 @@ private:
     // taken out of the contact loop, the view sent again where bonds broke
     // or formed on any rank, the counts.
     void linkBonds();
-    void markBonded(bool fresh);
+    void markBonded();
     void stepBonds(bool advance);
     void takeBroken(bool advance);
     bool tryBond(size_t tp, int i, int j, int *touch, double *history);
@@ -149,7 +149,7 @@ private:
     LAMMPS_NS::bigint firstStep_;           // where the first run started
     TimestepWarning contactWarning_, bondWarning_;
     SaidOnce said_;
-    bool changedLastPass_ = false;          // bonds formed here in this pass
+    bool formedThisPass_ = false;          // bonds formed here in this pass
     double deckGhostReach_ = 0.0;           // comm_modify cutoff as the deck set it
     double ghostReachSet_ = -1.0;           // the ghost reach init_one set last
     std::vector<BreakEvent> breaks_;

@@ -279,8 +279,8 @@ fn pass(store: &mut BondStore, model: &BondModel, atoms: &Atoms, dt: f64, advanc
 fn bonds_by_id(store: &BondStore, atoms: &Atoms) -> Vec<([i64; 2], BondState)> {
     let mut all: Vec<_> = (0..store.len())
         .map(|k| {
-            let (bond, _, owner) = store.bond(k, |i| atoms.ids[i as usize]).expect("linked");
-            ([owner, bond.partner], bond.state)
+            let (bond, ends) = store.bond(k).expect("linked");
+            ([atoms.ids[ends[0] as usize], bond.partner], bond.state)
         })
         .collect();
     all.sort_by_key(|(ids, _)| *ids);
@@ -606,7 +606,7 @@ fn a_bond_across_a_periodic_boundary_takes_its_partners_closest_image() {
     store.finish_pass();
     let report = link(&mut store, &atoms);
     assert_eq!(report.linked, 1);
-    let (_, ends, _) = store.bond(0, |i| atoms.ids[i as usize]).unwrap();
+    let (_, ends) = store.bond(0).unwrap();
     assert_eq!(
         ends,
         [0, 2],

@@ -169,14 +169,13 @@ impl BondStore {
         self.counts = StoreCounts { intact: 0, ..*counts };
     }
 
-    /// Bond `k`: its ids (owner's first) and local indices from the latest
-    /// link, and its state. `None` beyond the bonds held or before a link.
-    pub fn bond(&self, k: usize, owner_id: impl Fn(i32) -> i64) -> Option<(StoredBond, [i32; 2], i64)> {
+    /// Bond `k` and its atoms' local indices (owner first) from the latest
+    /// link. `None` beyond the bonds held or before a link.
+    pub fn bond(&self, k: usize) -> Option<(StoredBond, [i32; 2])> {
         if !self.linked || k >= self.bonds.len() {
             return None;
         }
-        let ends = self.ends[k];
-        Some((self.bonds[k], ends, owner_id(ends[0])))
+        Some((self.bonds[k], self.ends[k]))
     }
 
     /// Whether the store was linked since atoms last moved into or out of

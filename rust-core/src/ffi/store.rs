@@ -495,7 +495,7 @@ pub unsafe extern "C" fn granbond_bond_store_bond(
 ) -> Status {
     let ends = slice_mut(ends, 2, "ends")?;
     let state = slice_mut(state, BOND_STATE_LEN, "state")?;
-    let (bond, e, _) = store.bond(k, |_| 0).ok_or_else(|| {
+    let (bond, e) = store.bond(k).ok_or_else(|| {
         Failure::new(
             Status::InvalidArgument,
             format!(
