@@ -530,6 +530,15 @@ void PairGranbond::compute(int eflag, int vflag)
             bonds_->sizeExchange();
         }
         countBonds();
+        // the energy the bonds store: the pair's potential energy (pe)
+        if (eflag_global) {
+            const GbAtomArrays arrays = atomArrays();
+            double stored = 0.0;
+            if (granbond_bond_store_stored_energy(bonds_->store(), bond_.data(), bond_.size(), &arrays, &stored) !=
+                GB_STATUS_OK)
+                error->one(FLERR, "pair granbond: the bonds' stored energy: " + coreReason());
+            eng_vdwl += stored;
+        }
         if (checkStore_) checkStore();
     }
     passStep_ = update->ntimestep;

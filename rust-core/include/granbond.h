@@ -2505,6 +2505,22 @@ enum GbStatus granbond_bond_store_count_atoms(const struct GbBondStore *store,
                                               const struct GbAtomIds *ids);
 
 /**
+ * The energy the bonds of this rank store now (J), each with its kind's
+ * model (`models[kind]`, null where a kind has none) at its atoms'
+ * positions, written to `energy`: what the engine adds to its potential
+ * energy.
+ *
+ * # Safety
+ * Pointers must be null or valid: `models` for `nkinds` entries, the
+ * atoms' arrays as they say.
+ */
+enum GbStatus granbond_bond_store_stored_energy(const struct GbBondStore *store,
+                                                const struct GbBondModel *const *models,
+                                                size_t nkinds,
+                                                const struct GbAtomArrays *atoms,
+                                                double *energy);
+
+/**
  * The layout of a pair record, with the Voigt contact's state first
  * (`with_contact` 1, LAMMPS `pair granbond`) or without it (0, where the
  * engine keeps the contact's state), written to `layout`. The slots'

@@ -836,3 +836,23 @@ fn a_bond_stretched_beyond_the_ghosts_reach_is_lost_on_one_rank_as_on_several() 
     assert_eq!(report.partner_unreached, 1, "{report:?}");
     assert!(balanced(&store.counts()));
 }
+
+#[test]
+fn the_store_holds_the_energy_of_its_stretched_bonds() {
+    let model = bond_model(common::elastic_params());
+    let (mut store, mut atoms) = bonded_pair(&model);
+    let stretch = 1e-6;
+    atoms.x[3] = 2.0 * R + stretch;
+    atoms.v.fill(0.0);
+    atoms.omega.fill(0.0);
+    link(&mut store, &atoms);
+    pass(&mut store, &model, &atoms, 1e-9, true);
+    let energy = store.stored_energy(&[Some(&model)], atoms.arrays()).unwrap();
+    // linear in tension: F = k_fn2 A d, so E = k_fn2 A d^2 / 2
+    let area = std::f64::consts::PI * (model.params.lambda * R).powi(2);
+    let want = 0.5 * model.params.k_fn2 * area * stretch * stretch;
+    assert!(
+        (energy - want).abs() <= 1e-9 * want,
+        "{energy} J against {want} J"
+    );
+}

@@ -19,6 +19,11 @@ claim per mode:
              and names the restart route.
   rerun      `rerun` of a bonded trajectory says that the bonds cannot be
              rebuilt from a dump.
+  energy     an elastic, undamped bond between two spheres in free
+             flight, pulled, sheared, twisted and bent: kinetic energy
+             (translation and rotation) plus `pe` (the bonds' stored
+             energy) stays constant to 1e-5 of itself on 1 and 2 ranks,
+             while `pe` takes up a good part of it.
   momentum   a bonded block in free flight, spinning, its bonds breaking, a
              sphere inserted far away between two runs, on 1 and 3 ranks
              under `newton on` and `off`: the total linear momentum and
@@ -138,6 +143,21 @@ def check_momentum(a, workdir):
                   f"within {worst:.2g} of their size")
 
 
+def check_energy(a, workdir):
+    for n in [1, 2] if a.mpiexec else [1]:
+        d = os.path.join(workdir, f"np{n}")
+        text = run(a, n, "elastic_pair_energy.in", d)
+        total, pe, intact = thermo_column(text, "v_total"), thermo_column(text, "PotEng"), thermo_column(text, "c_pg[3]")
+        if not total or intact[-1] != 1:
+            raise Failure(f"{n} ranks: the bond did not hold ({intact[-1:]} intact)")
+        drift = (max(total) - min(total)) / max(total)
+        share = max(pe) / max(total)
+        if drift > 1e-5 or share < 0.3:
+            raise Failure(f"{n} ranks: kinetic + stored energy moved by {drift:.3g} of itself; pe reached "
+                          f"{share:.3g} of it")
+        print(f"ok: {n} ranks: kinetic + stored energy within {drift:.2g} of itself, pe up to {share:.2f} of it")
+
+
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--mode", required=True)
@@ -147,5 +167,5 @@ if __name__ == "__main__":
     parser.add_argument("--workdir", required=True)
     a = parser.parse_args()
     checks = {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
-              "rerun": check_rerun, "momentum": check_momentum}
+              "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy}
     main(lambda: checks[a.mode](a, os.path.abspath(a.workdir)))

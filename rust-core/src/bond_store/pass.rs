@@ -326,3 +326,41 @@ impl BondStore {
 fn ordered(ids: [i64; 2]) -> [i64; 2] {
     [ids[0].min(ids[1]), ids[0].max(ids[1])]
 }
+
+impl BondStore {
+    /// The energy the bonds of this rank store now (J), each bond with its
+    /// kind's model at its atoms' positions ([`BondModel::stored_energy`]);
+    /// `None` before a link, or when a bond's atom lies beyond `atoms`.
+    pub fn stored_energy(&self, models: &[Option<&BondModel>], atoms: AtomArrays<'_>) -> Option<f64> {
+        if !self.linked {
+            return None;
+        }
+        let n = atoms.count();
+        let mut sum = 0.0;
+        for (k, bond) in self.bonds.iter().enumerate() {
+            let [i, j] = self.ends[k].map(|a| a as usize);
+            if i >= n || j >= n {
+                return None;
+            }
+            let Some(model) = models.get(usize::from(self.kinds[k])).copied().flatten() else {
+                continue;
+            };
+            let d = [0, 1, 2].map(|c| atoms.x[3 * i + c] - atoms.x[3 * j + c]);
+            let r = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            if !(r > 0.0) {
+                continue;
+            }
+            let axis = d.map(|c| c / r);
+            sum += model
+                .stored_energy(
+                    &bond.state,
+                    axis,
+                    bond.state.r0 - r,
+                    atoms.radius[i],
+                    atoms.radius[j],
+                )
+                .total();
+        }
+        Some(sum)
+    }
+}

@@ -650,3 +650,32 @@ pub unsafe extern "C" fn granbond_bond_store_count_atoms(
     store.count_atoms(counts, ids);
     Ok(())
 }
+
+/// The energy the bonds of this rank store now (J), each with its kind's
+/// model (`models[kind]`, null where a kind has none) at its atoms'
+/// positions, written to `energy`: what the engine adds to its potential
+/// energy.
+///
+/// # Safety
+/// Pointers must be null or valid: `models` for `nkinds` entries, the
+/// atoms' arrays as they say.
+#[entry(store: reference, atoms: reference, energy: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_stored_energy(
+    store: *const BondStore,
+    models: *const *const BondModel,
+    nkinds: usize,
+    atoms: *const AtomArrayPointers,
+    energy: *mut f64,
+) -> Status {
+    let models = slice(models, nkinds, "models")?;
+    let models: Vec<Option<&BondModel>> = models.iter().map(|&m| m.as_ref()).collect();
+    let arrays = atom_arrays(atoms)?;
+    *energy = store.stored_energy(&models, arrays).ok_or_else(|| {
+        Failure::new(
+            Status::InvalidArgument,
+            "the store was not linked since atoms moved, or a bond's atom lies beyond the atoms' arrays",
+        )
+    })?;
+    Ok(())
+}

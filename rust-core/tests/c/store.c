@@ -134,6 +134,12 @@ int test_bond_store(void)
     CHECK(granbond_bond_store_len(store) == 1 && granbond_bond_store_bytes(store) > 0, "one bond held");
     EXPECT_OK(granbond_bond_store_bond(store, 0, bond_ends, &partner, state), "granbond_bond_store_bond");
     CHECK(partner == 11 && bond_ends[0] == 1 && state[0] == 1.0, "the bond: partner id 11, intact");
+    {
+        double energy = -1.0;
+        EXPECT_OK(granbond_bond_store_stored_energy(store, models, 1, &arrays, &energy),
+                  "granbond_bond_store_stored_energy");
+        CHECK(energy >= 0.0 && energy < 1e-6, "a bond near its rest length stores little energy");
+    }
 
     /* The view: the rows another rank's ghosts of these atoms would get. */
     {

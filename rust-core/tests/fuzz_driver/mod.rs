@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 100] = [
+pub const ENTRY_POINTS: [&str; 101] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -162,6 +162,7 @@ pub const ENTRY_POINTS: [&str; 100] = [
     "granbond_bond_store_bonded",
     "granbond_bond_store_would_create",
     "granbond_bond_store_count_atoms",
+    "granbond_bond_store_stored_energy",
 ];
 
 /// The set-by-name and need entries of one parameter table.
@@ -1776,6 +1777,17 @@ impl<'t> Session<'t> {
             }
             let held = fs::granbond_bond_store_len(st);
             self.answer_value("granbond_bond_store_len");
+            let mut energy = Place::new(f64::NAN);
+            let status = fs::granbond_bond_store_stored_energy(
+                st,
+                models.as_ptr(),
+                1 + input.below(2),
+                &arrays,
+                energy.ptr(input.late_pointer()),
+            );
+            if ok(self, "granbond_bond_store_stored_energy", status) {
+                assert!(!energy.get().is_nan(), "stored energy NaN");
+            }
             let _ = fs::granbond_bond_store_bytes(st);
             self.answer_value("granbond_bond_store_bytes");
             let mut bond_ends = [0i32; 3];
