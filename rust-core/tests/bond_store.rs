@@ -228,6 +228,22 @@ fn create_all(store: &mut BondStore, model: &BondModel, atoms: &Atoms) -> usize 
     created
 }
 
+/// Steps the next chunk of a pass that has begun: each bond's ends and
+/// output (none left: empty).
+fn next_chunk(store: &mut BondStore, model: &BondModel, atoms: &Atoms) -> Vec<([i32; 2], BondOutput)> {
+    let (mut ends, mut outs) = ([[0; 2]; CHUNK], [BondOutput::default(); CHUNK]);
+    let n = store
+        .step_next(
+            &[Some(model)],
+            atoms.arrays(),
+            Ids::Wide(&atoms.ids),
+            &mut ends,
+            &mut outs,
+        )
+        .expect("a usable pass");
+    ends[..n].iter().copied().zip(outs[..n].iter().copied()).collect()
+}
+
 /// One pass; the loads added to the atoms (forces, torques: 3 per atom)
 /// and each bond's output by its ids.
 struct Passed {
@@ -243,23 +259,12 @@ fn pass(store: &mut BondStore, model: &BondModel, atoms: &Atoms, dt: f64, advanc
         outs: vec![],
     };
     store.begin_pass(dt, advance, false);
-    let models = [Some(model)];
-    let mut ends = [[0i32; 2]; CHUNK];
-    let mut outs = [BondOutput::default(); CHUNK];
     loop {
-        let n = store
-            .step_next(
-                &models,
-                atoms.arrays(),
-                Ids::Wide(&atoms.ids),
-                &mut ends,
-                &mut outs,
-            )
-            .expect("a usable pass");
-        if n == 0 {
+        let chunk = next_chunk(store, model, atoms);
+        if chunk.is_empty() {
             break;
         }
-        for (e, o) in ends[..n].iter().zip(&outs[..n]) {
+        for (e, o) in chunk {
             let (i, j) = (e[0] as usize, e[1] as usize);
             for c in 0..3 {
                 p.force[3 * i + c] += o.force_i[c];
@@ -267,7 +272,7 @@ fn pass(store: &mut BondStore, model: &BondModel, atoms: &Atoms, dt: f64, advanc
                 p.torque[3 * i + c] += o.torque_i[c];
                 p.torque[3 * j + c] += o.torque_j[c];
             }
-            p.outs.push(([atoms.ids[i], atoms.ids[j]], *o));
+            p.outs.push(([atoms.ids[i], atoms.ids[j]], o));
         }
     }
     store.finish_pass();
@@ -642,20 +647,11 @@ fn a_broken_bond_leaves_the_store_and_cannot_form_again_in_its_pass() {
     atoms.x[3] = 2.1 * R;
     link(&mut store, &atoms);
     store.begin_pass(1e-7, true, false);
-    let models = [Some(&model)];
-    let (mut ends, mut outs) = ([[0; 2]; CHUNK], [BondOutput::default(); CHUNK]);
-    let n = store
-        .step_next(
-            &models,
-            atoms.arrays(),
-            Ids::Wide(&atoms.ids),
-            &mut ends,
-            &mut outs,
-        )
-        .unwrap();
-    assert_eq!(n, 1);
-    assert_eq!(outs[0].status, BondStatus::Broken as i32);
-    assert_eq!(outs[0].force_i, [0.0; 3], "a broken bond carries no load");
+    let chunk = next_chunk(&mut store, &model, &atoms);
+    assert_eq!(chunk.len(), 1);
+    let out = chunk[0].1;
+    assert_eq!(out.status, BondStatus::Broken as i32);
+    assert_eq!(out.force_i, [0.0; 3], "a broken bond carries no load");
     assert_eq!(store.broken().len(), 1);
     assert_eq!(store.broken()[0].ids, [1, 2]);
     assert_eq!(store.broken()[0].out.break_mode, BreakMode::Distance as i32);
@@ -806,19 +802,7 @@ fn a_rank_listing_a_pair_bonded_on_another_rank_sees_the_bond_and_its_break() {
 
 /// Steps every bond of a pass that has begun, without finishing it.
 fn pass_chunks(store: &mut BondStore, model: &BondModel, atoms: &Atoms) {
-    let models = [Some(model)];
-    let (mut ends, mut outs) = ([[0; 2]; CHUNK], [BondOutput::default(); CHUNK]);
-    while store
-        .step_next(
-            &models,
-            atoms.arrays(),
-            Ids::Wide(&atoms.ids),
-            &mut ends,
-            &mut outs,
-        )
-        .expect("a usable pass")
-        > 0
-    {}
+    while !next_chunk(store, model, atoms).is_empty() {}
 }
 
 #[test]

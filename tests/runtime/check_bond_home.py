@@ -35,7 +35,6 @@ usage: check_bond_home.py --mode MODE --kind lammps --engine BIN
                           [--mpiexec MPIEXEC] --workdir DIR
 """
 
-import argparse
 import os
 import sys
 
@@ -46,7 +45,7 @@ sys.path.insert(0, HERE)
 import deck_runner  # noqa: E402
 from check_bond_index import launcher  # noqa: E402
 from check_runtime import thermo_column, warnings_in_log  # noqa: E402
-from deck_runner import Failure, main, run_ok  # noqa: E402
+from deck_runner import Failure, run_modes, run_ok  # noqa: E402
 
 DECKS = os.path.join(HERE, "decks", "bond_home")
 BASE = {"base": os.path.join(DECKS, "base")}
@@ -159,13 +158,5 @@ def check_energy(a, workdir):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--mode", required=True)
-    parser.add_argument("--kind", required=True)
-    parser.add_argument("--engine", required=True)
-    parser.add_argument("--mpiexec")
-    parser.add_argument("--workdir", required=True)
-    a = parser.parse_args()
-    checks = {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
-              "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy}
-    main(lambda: checks[a.mode](a, os.path.abspath(a.workdir)))
+    run_modes(__doc__, {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
+                         "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy})

@@ -10,7 +10,6 @@
 usage: check_workflows.py --mode MODE --kind lammps --engine BIN --workdir DIR
 """
 
-import argparse
 import os
 import sys
 
@@ -18,7 +17,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
 import deck_runner  # noqa: E402
-from deck_runner import Failure, main, run_ok  # noqa: E402
+from deck_runner import Failure, run_modes, run_ok  # noqa: E402
 
 deck_runner.DECKS = os.path.join(HERE, "decks", "workflows")
 
@@ -51,11 +50,4 @@ def check_pour(a, workdir):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--mode", required=True)
-    parser.add_argument("--kind", required=True)
-    parser.add_argument("--engine", required=True)
-    parser.add_argument("--mpiexec")
-    parser.add_argument("--workdir", required=True)
-    a = parser.parse_args()
-    main(lambda: {"pour": check_pour}[a.mode](a, os.path.abspath(a.workdir)))
+    run_modes(__doc__, {"pour": check_pour})

@@ -93,3 +93,19 @@ def main(check):
         print(f"FAIL: {e}")
         sys.exit(1)
     print("PASS")
+
+
+def run_modes(doc, checks):
+    """The command line of a check script that granbond_script_test runs
+    (--mode, --kind, --engine, [--mpiexec], --workdir): runs
+    `checks[mode](args, workdir)` as `main` does."""
+    import argparse
+
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--mode", required=True, choices=sorted(checks))
+    parser.add_argument("--kind", required=True)
+    parser.add_argument("--engine", required=True)
+    parser.add_argument("--mpiexec")
+    parser.add_argument("--workdir", required=True)
+    a = parser.parse_args()
+    main(lambda: checks[a.mode](a, os.path.abspath(a.workdir)))
