@@ -58,6 +58,25 @@ unsafe fn ids<'a>(ids: &AtomIds) -> Result<Ids<'a>, Failure> {
     }
 }
 
+/// The models by kind as the store reads them, without a copy: a null
+/// entry is a kind without a model.
+///
+/// # Safety
+/// `models` must be null or valid for `nkinds` pointers, each null or a
+/// model from `granbond_bond_model_new`.
+unsafe fn model_table<'a>(
+    models: *const *const BondModel,
+    nkinds: usize,
+) -> Result<&'a [Option<&'a BondModel>], Failure> {
+    let models = slice(models, nkinds, "models")?;
+    // SAFETY: `Option<&T>` has the layout of a nullable `*const T`, and
+    // each non-null entry is a model (the caller's contract).
+    Ok(std::slice::from_raw_parts(
+        models.as_ptr() as *const Option<&BondModel>,
+        models.len(),
+    ))
+}
+
 /// A new, empty store, written to `store`. Free it with
 /// `granbond_bond_store_free`.
 ///
@@ -295,13 +314,12 @@ pub unsafe extern "C" fn granbond_bond_store_step_next(
     failed_index: *mut usize,
 ) -> Status {
     *count = 0;
-    let models = slice(models, nkinds, "models")?;
-    let models: Vec<Option<&BondModel>> = models.iter().map(|&m| m.as_ref()).collect();
+    let models = model_table(models, nkinds)?;
     let arrays = atom_arrays(atoms)?;
     let ids = self::ids(ids)?;
     let ends = &mut *(slice_mut(ends, 2 * CHUNK, "ends")?.as_mut_ptr() as *mut [[i32; 2]; CHUNK]);
     let outs = &mut *(slice_mut(outs, CHUNK, "outs")?.as_mut_ptr() as *mut [BondOutput; CHUNK]);
-    *count = store.step_next(&models, arrays, ids, ends, outs).map_err(|f| {
+    *count = store.step_next(models, arrays, ids, ends, outs).map_err(|f| {
         let [i, j] = f.ends;
         let failure = match f.reason {
             StepFailureReason::NotLinked => Failure::new(
@@ -668,10 +686,9 @@ pub unsafe extern "C" fn granbond_bond_store_stored_energy(
     atoms: *const AtomArrayPointers,
     energy: *mut f64,
 ) -> Status {
-    let models = slice(models, nkinds, "models")?;
-    let models: Vec<Option<&BondModel>> = models.iter().map(|&m| m.as_ref()).collect();
+    let models = model_table(models, nkinds)?;
     let arrays = atom_arrays(atoms)?;
-    *energy = store.stored_energy(&models, arrays).ok_or_else(|| {
+    *energy = store.stored_energy(models, arrays).ok_or_else(|| {
         Failure::new(
             Status::InvalidArgument,
             "the store was not linked since atoms moved, or a bond's atom lies beyond the atoms' arrays",
