@@ -149,20 +149,24 @@ inline std::string vanishedMessage(const char *style, long long vanished, long l
 // images of one atom in a neighbour list share one record. That happens in
 // a periodic direction shorter than twice the list's reach (the pair
 // reach plus the skin): a sphere meets its own image, or one partner
-// twice. Returns the error naming the first such direction, or "".
-inline std::string thinPeriodicBox(const char *style, const int periodic[3], const double length[3],
-                                   double listReach, double skin)
+// twice. A 2d run (`dimension` 2) has no images in z, whatever its extent.
+// `step` >= 0: the box changed during a run (fix deform) and is checked at
+// that step. Returns the error naming the first such direction, or "".
+inline std::string thinPeriodicBox(const char *style, int dimension, const int periodic[3], const double length[3],
+                                   double listReach, double skin, long long step = -1)
 {
-    for (int d = 0; d < 3; d++) {
+    for (int d = 0; d < dimension; d++) {
         if (!periodic[d] || length[d] >= 2.0 * listReach) continue;
-        char text[640];
+        char text[720];
+        const std::string when = step < 0 ? std::string() : " at step " + std::to_string(step) + ", as the box changed";
         std::snprintf(text, sizeof text,
-                      "%s: the periodic box is %g long in %c, less than twice the neighbour reach %g (the pair "
+                      "%s: the periodic box is %g long in %c%s, less than twice the neighbour reach %g (the pair "
                       "reach %g plus the skin %g): a sphere can meet its own periodic image, or one partner "
                       "twice, and the engine keeps a pair's contact and bond history under the partner's atom "
-                      "ID, so those pairs would share one record. Make the box at least %g long in %c (replicate "
-                      "it), or use a fixed boundary there",
-                      style, length[d], "xyz"[d], listReach, listReach - skin, skin, 2.0 * listReach, "xyz"[d]);
+                      "ID, so those pairs would share one record. %s %g long in %c%s",
+                      style, length[d], "xyz"[d], when.c_str(), listReach, listReach - skin, skin,
+                      step < 0 ? "Make the box at least" : "Keep the box (fix deform's final size) at least",
+                      2.0 * listReach, "xyz"[d], step < 0 ? " (replicate it), or use a fixed boundary there" : "");
         return text;
     }
     return std::string();

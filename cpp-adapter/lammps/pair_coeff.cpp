@@ -14,6 +14,7 @@
 
 #include "atom.h"
 #include "error.h"
+#include "update.h"
 #include "utils.h"
 
 #include <algorithm>
@@ -294,7 +295,7 @@ void PairGranbond::coeff(int narg, char **arg)
     TypePair tp;
     std::memset(&tp, 0, sizeof tp);
     granbond_voigt_params_default(&tp.voigt);
-    granbond_bond_params_default(&tp.bond);
+    granbond_bond_params_default_in_units(update->unit_style, &tp.bond);
     tp.hasBond = 0;
 
     const std::string model = a.word("model (" + std::string(kVoigt) + ")");

@@ -65,7 +65,8 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     fixHistory_(nullptr),
     bonds_(nullptr),
     checkedNatoms_(-1),
-    firstStep_(-1)
+    firstStep_(-1),
+    stepped_(false)
 {
     single_enable = 0;
     no_virial_fdotr_compute = 1;
@@ -151,6 +152,21 @@ void PairGranbond::init_style()
         error->all(FLERR, "pair granbond requires atom_style sphere (radius, rmass, omega, torque)");
     if (comm->ghost_velocity == 0)
         error->all(FLERR, "pair granbond requires ghost atoms to store velocity (comm_modify vel yes)");
+    // A line search evaluates trial positions it may reject, and every
+    // force pass advances the history of the contacts and bonds, whose
+    // forces are not the gradient of an energy. A damped-dynamics
+    // minimizer (fire, quickmin) takes every step it evaluates.
+    const std::string minStyle = update->minimize_style ? update->minimize_style : "";
+    if (update->whichflag == 2 && minStyle != "fire" && minStyle != "fire/old" && minStyle != "quickmin")
+        error->all(FLERR, "pair granbond cannot be used with min_style " + minStyle +
+                              ": its line search evaluates trial positions it may reject, and every force pass "
+                              "advances the history of the contacts and bonds (whose forces are not the gradient "
+                              "of an energy); use min_style fire or quickmin, or relax the system with a damped "
+                              "run (fix viscous, or the bond model's damping)");
+    if (update->whichflag == 2 && comm->me == 0)
+        utils::logmesg(lmp, "pair granbond: min_style " + minStyle +
+                                " steps the contacts' and bonds' history at every step it takes, as a damped run "
+                                "would\n");
 
     const int n = atom->ntypes;
     anyBond_ = false;
@@ -213,7 +229,9 @@ void PairGranbond::init_style()
             bodies_[t].radius_min = std::min(bodies_[t].radius_min, *r);
         }
     }
-    if (firstStep_ < 0) firstStep_ = update->ntimestep;
+    // where the first run that steps starts: `run 0`, write_data or any
+    // other init before it reaches no creation step
+    if (!stepped_) firstStep_ = update->ntimestep;
     // a restart file's bonds come back with their fix; a run without bonds
     // makes none
     if (anyBond_ || modify->find_fix(bondsFixId()) >= 0) bonds_ = bondsFix(lmp);
@@ -403,14 +421,17 @@ void PairGranbond::compute(int eflag, int vflag)
 
     if (atom->natoms != checkedNatoms_)
         runChecks(gatherTypeBodies(atom->ntypes, nlocal, type, radius, atom->rmass, world), false);
-    if (update->setupflag) {
-        const std::string thin = thinPeriodicBox("pair granbond", domain->periodicity, domain->prd,
-                                                 neighbor->cutneighmax, neighbor->skin);
+    // at a run's start, and at every step of a box that changes (fix deform)
+    if (update->setupflag || domain->box_change) {
+        const std::string thin =
+            thinPeriodicBox("pair granbond", domain->dimension, domain->periodicity, domain->prd,
+                            neighbor->cutneighmax, neighbor->skin, update->setupflag ? -1 : update->ntimestep);
         if (!thin.empty()) error->all(FLERR, thin);
     }
 
     // setup (run/minimize start) evaluates forces without advancing history
     const bool advance = !update->setupflag;
+    stepped_ = stepped_ || advance;
     const int64_t step = update->ntimestep;
     for (size_t tp = 0; tp < bond_.size(); tp++)
         createsNow_[tp] = advance && bond_[tp] && granbond_bond_creates_at(bond_[tp], step);

@@ -146,7 +146,8 @@ private:
     FixGranbondBonds *bonds_;               // the bonds' home (bonded runs)
     std::string message_;                   // outlives error->one's use
     LAMMPS_NS::bigint checkedNatoms_;       // atom count of the latest checks
-    LAMMPS_NS::bigint firstStep_;           // where the first run started
+    LAMMPS_NS::bigint firstStep_;           // where the first run that steps started
+    bool stepped_;                          // a force pass has stepped the system
     TimestepWarning contactWarning_, bondWarning_;
     SaidOnce said_;
     bool formedThisPass_ = false;          // bonds formed here in this pass

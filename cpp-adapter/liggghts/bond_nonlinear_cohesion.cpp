@@ -194,9 +194,11 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
         runChecks(false);
         lossCheck_ = !isWall_;
     }
-    if (update->setupflag) {
-        const std::string thin = thinPeriodicBox("cohesion bond/nonlinear", domain->periodicity, domain->prd,
-                                                 neighbor->cutneighmax, neighbor->skin);
+    // at a run's start, and at every step of a box that changes (fix deform)
+    if (update->setupflag || domain->box_change) {
+        const std::string thin =
+            thinPeriodicBox("cohesion bond/nonlinear", domain->dimension, domain->periodicity, domain->prd,
+                            neighbor->cutneighmax, neighbor->skin, update->setupflag ? -1 : update->ntimestep);
         if (!thin.empty()) endRun(error, FLERR, thin);
     }
     if (atoms_ && (update->setupflag || neighbor->ago == 0)) forgetRecordsOfNewborn();

@@ -104,7 +104,7 @@ void BondNonlinearParameters::set(GbBondParams &p, const GbParameterInfo &info, 
 
 void BondNonlinearParameters::connectToProperties(PropertyRegistry &registry)
 {
-    granbond_bond_params_default(&switches_);
+    granbond_bond_params_default_in_units(update->unit_style, &switches_);
     for (size_t k = 0; k < rows_; k++) {
         const GbParameterInfo info = row(k);
         if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH) set(switches_, info, switchValues_[k] ? 1.0 : 0.0, "");

@@ -1286,6 +1286,17 @@ enum GbStatus granbond_check_layout(const struct GbLayout *expected);
 enum GbStatus granbond_bond_params_default(struct GbBondParams *params);
 
 /**
+ * Fills `params` with the defaults in the deck units of `units`, the
+ * engine's `units` style ("si", "micro", ...): the defaults that carry
+ * units converted from SI, or left without a value (NaN) where the style
+ * has no physical scale (`BondParams::default_in_units`).
+ *
+ * # Safety
+ * `units` must be null or a C string; `params` null or valid for writes.
+ */
+enum GbStatus granbond_bond_params_default_in_units(const char *units, struct GbBondParams *params);
+
+/**
  * Validates `params` and builds a model. On `InvalidParameter` the message
  * names the parameter (LAMMPS keyword and LIGGGHTS name) and its range, and
  * `granbond_last_error_parameter` gives its id.

@@ -450,3 +450,48 @@ fn finite_values_beyond_the_magnitudes_the_models_form_are_refused_by_name() {
     let e = huge.validate().expect_err("refused");
     assert_eq!(PARAMETERS[e.parameter].name, "k_tn");
 }
+
+#[test]
+fn smoothing_velocities_default_to_the_same_physical_quantities_in_every_unit_style() {
+    // (unit style, metres and seconds in its units of length and time)
+    for (style, metre, second) in [
+        ("si", 1.0, 1.0),
+        ("cgs", 1e-2, 1.0),
+        ("micro", 1e-6, 1e-6),
+        ("nano", 1e-9, 1e-9),
+    ] {
+        let p = BondParams::default_in_units(style);
+        let (v, w) = (
+            p.smooth_velocity * metre / second,
+            p.smooth_angular_velocity / second,
+        );
+        assert!(
+            (v - 1e-5).abs() <= 1e-20 && (w - 1e-3).abs() <= 1e-18,
+            "{style}: {v} m/s, {w} rad/s"
+        );
+        let smooth = BondParams {
+            damping_smooth: 1,
+            ..p
+        };
+        assert!(BondModel::new(smooth).is_ok(), "{style}");
+    }
+    // lj has no physical scale: no default, so smooth damping needs them given
+    let lj = BondParams::default_in_units("lj");
+    assert!(
+        BondModel::new(lj).is_ok(),
+        "without smooth damping they are not read"
+    );
+    let (id, message) = refused(BondParams {
+        damping_smooth: 1,
+        ..lj
+    });
+    assert_eq!(PARAMETERS[id].name, "smooth_velocity", "{message}");
+    assert!(message.contains("must be given"), "{message}");
+    let given = BondParams {
+        damping_smooth: 1,
+        smooth_velocity: 1e-5,
+        smooth_angular_velocity: 1e-3,
+        ..lj
+    };
+    assert!(BondModel::new(given).is_ok());
+}

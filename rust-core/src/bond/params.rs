@@ -273,6 +273,35 @@ impl BondParams {
         v != 0
     }
 
+    /// The defaults in the deck units of the engine's `units` style: the
+    /// smoothing velocities are physical quantities (1e-5 m/s, 1e-3 rad/s),
+    /// converted for `si`, `cgs`, `micro` and `nano`; a style without a
+    /// physical scale (`lj`) or one not known here gets no value for them
+    /// (NaN), so smooth damping there needs them given.
+    pub fn default_in_units(style: &str) -> Self {
+        // metres and seconds in one deck unit of length and time
+        let scale = match style {
+            "si" => Some((1.0, 1.0)),
+            "cgs" => Some((1e-2, 1.0)),
+            "micro" => Some((1e-6, 1e-6)),
+            "nano" => Some((1e-9, 1e-9)),
+            _ => None,
+        };
+        let d = Self::default();
+        let (v, w) = match scale {
+            Some((metre, second)) => (
+                d.smooth_velocity * second / metre,
+                d.smooth_angular_velocity * second,
+            ),
+            None => (f64::NAN, f64::NAN),
+        };
+        Self {
+            smooth_velocity: v,
+            smooth_angular_velocity: w,
+            ..d
+        }
+    }
+
     /// Smooth damping is a kind of damping: either switch turns it on.
     pub fn damping_on(&self) -> bool {
         Self::switch(self.damping) || Self::switch(self.damping_smooth)
@@ -283,7 +312,37 @@ impl BondParams {
     /// be at least as stiff as loading (`ku >= k`), otherwise the unloading
     /// line would cross the virgin curve.
     pub fn validate(&self) -> Result<(), ParameterError> {
-        check_ranges(MODEL, PARAMETERS, self)?;
+        // The smoothing velocities have no default in a unit style without
+        // a physical scale (`default_in_units`): needed only when read.
+        let mut checked = *self;
+        for (name, value, si) in [
+            (
+                "smooth_velocity",
+                &mut checked.smooth_velocity,
+                Self::default().smooth_velocity,
+            ),
+            (
+                "smooth_angular_velocity",
+                &mut checked.smooth_angular_velocity,
+                Self::default().smooth_angular_velocity,
+            ),
+        ] {
+            if !value.is_nan() {
+                continue;
+            }
+            if Self::switch(self.damping_smooth) {
+                return Err(refuse(
+                    MODEL,
+                    PARAMETERS,
+                    name,
+                    "given with smooth damping in this unit style (its default is a physical quantity, \
+                     and the style has no physical scale to convert it to, as in units lj)",
+                    *value,
+                ));
+            }
+            *value = si;
+        }
+        check_ranges(MODEL, PARAMETERS, &checked)?;
         for (k, ku, ku_name) in [
             (self.k_fn1, self.ku_fn1, "ku_fn1"),
             (self.k_fn2, self.ku_fn2, "ku_fn2"),

@@ -18,6 +18,7 @@ use crate::bond::{
 pub use crate::kinematics::SphereKinematics;
 use crate::kinematics::{bond_centre, PairKinematics};
 use crate::pair_source::{AtomArrays, IndexedPairs};
+use std::ffi::{c_char, CStr};
 
 /// Fills `params` with the defaults (switches as in LIGGGHTS-INL, no
 /// stiffness, no breakage).
@@ -28,6 +29,26 @@ use crate::pair_source::{AtomArrays, IndexedPairs};
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_params_default(params: *mut BondParams) -> Status {
     *params = BondParams::default();
+    Ok(())
+}
+
+/// Fills `params` with the defaults in the deck units of `units`, the
+/// engine's `units` style ("si", "micro", ...): the defaults that carry
+/// units converted from SI, or left without a value (NaN) where the style
+/// has no physical scale (`BondParams::default_in_units`).
+///
+/// # Safety
+/// `units` must be null or a C string; `params` null or valid for writes.
+#[entry(params: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_params_default_in_units(
+    units: *const c_char,
+    params: *mut BondParams,
+) -> Status {
+    if units.is_null() {
+        return Err(Failure::new(Status::NullPointer, "argument `units` is null"));
+    }
+    *params = BondParams::default_in_units(&CStr::from_ptr(units).to_string_lossy());
     Ok(())
 }
 
