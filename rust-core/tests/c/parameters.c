@@ -275,6 +275,25 @@ int test_bond_params(void)
     granbond_bond_model_free(m);
     m = NULL;
 
+    /* Defaults in a unit style: the smoothing velocities are 1e-5 m/s and
+       1e-3 rad/s in its units; lj has none, so smooth damping needs them. */
+    EXPECT_OK(granbond_bond_params_default_in_units("micro", &p), "granbond_bond_params_default_in_units(micro)");
+    CHECK(fabs(p.smooth_velocity - 1e-5) < 1e-20 && fabs(p.smooth_angular_velocity - 1e-9) < 1e-24,
+          "micro: 1e-5 um/us and 1e-9 rad/us");
+    EXPECT_OK(granbond_bond_params_default_in_units("cgs", &p), "granbond_bond_params_default_in_units(cgs)");
+    CHECK(fabs(p.smooth_velocity - 1e-3) < 1e-18 && p.smooth_angular_velocity == 1e-3, "cgs: 1e-3 cm/s, 1e-3 rad/s");
+    EXPECT_OK(granbond_bond_params_default_in_units("lj", &p), "granbond_bond_params_default_in_units(lj)");
+    CHECK(isnan(p.smooth_velocity) && isnan(p.smooth_angular_velocity), "lj: no smoothing velocities");
+    EXPECT_OK(granbond_bond_model_new(&p, &m), "granbond_bond_model_new(lj defaults, smooth damping off)");
+    granbond_bond_model_free(m);
+    m = NULL;
+    p.damping_smooth = 1;
+    if (expect_bond_refused(&p, "smooth_velocity", NULL, "lj defaults with smooth damping"))
+        return 1;
+    EXPECT(granbond_bond_params_default_in_units(NULL, &p), GB_STATUS_NULL_POINTER,
+           "granbond_bond_params_default_in_units(NULL units)");
+    EXPECT_OK(granbond_bond_params_default(&p), "granbond_bond_params_default");
+
     /* The parameter table: one row per field, in field order. */
     CHECK(granbond_bond_parameter_count() == N_BOND_FIELDS,
           say("granbond_bond_parameter_count() = %u = fields of GbBondParams", (unsigned)N_BOND_FIELDS));
@@ -352,11 +371,16 @@ int test_bond_params(void)
     if (expect_bond_refused(&p, "create_distance", NULL, "create_distance = inf"))
         return 1;
 
-    /* Every field: a value out of range is refused with its own id. */
+    /* Every field: a value out of range is refused with its own id. A
+       smoothing velocity may be NaN (no default in the unit style) where
+       smooth damping does not read it. */
     for (i = 0; i < N_BOND_FIELDS; i++) {
         const struct field *f = &BOND_FIELDS[i];
+        const int smoothing = strncmp(f->keyword, "smooth_", 7) == 0;
         p = base;
         if (f->type == F_DOUBLE) {
+            if (smoothing)
+                p.damping_smooth = 1;
             *double_field(&p, f->offset) = NAN;
             if (expect_bond_refused(&p, f->keyword, NULL, say("%s = NaN", f->keyword)))
                 return 1;

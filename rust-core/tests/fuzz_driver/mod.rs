@@ -61,10 +61,11 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 101] = [
+pub const ENTRY_POINTS: [&str; 102] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
+    "granbond_bond_params_default_in_units",
     "granbond_bond_model_new",
     "granbond_bond_model_free",
     "granbond_bond_parameter_count",
@@ -999,6 +1000,22 @@ impl<'t> Session<'t> {
         let status = unsafe { fb::granbond_bond_params_default(p.ptr(how)) };
         if self.answer("granbond_bond_params_default", status) {
             assert_eq!(p.get(), BondParams::default());
+        }
+        // the same in a unit style (or none)
+        let style = ["si", "cgs", "micro", "nano", "lj", ""][input.below(6)];
+        let units = std::ffi::CString::new(style).expect("no NUL");
+        let units_ptr = if style.is_empty() { null() } else { units.as_ptr() };
+        let how = input.pointer();
+        // SAFETY: a C string or null; the params pointer null, misaligned or valid.
+        let status = unsafe { fb::granbond_bond_params_default_in_units(units_ptr, p.ptr(how)) };
+        if self.answer("granbond_bond_params_default_in_units", status) {
+            let (got, want) = (p.get(), BondParams::default_in_units(style));
+            assert_eq!(got.smooth_velocity.to_bits(), want.smooth_velocity.to_bits());
+            assert_eq!(
+                got.smooth_angular_velocity.to_bits(),
+                want.smooth_angular_velocity.to_bits()
+            );
+            assert_eq!(got.lambda, want.lambda);
         }
     }
 
