@@ -5,7 +5,7 @@
 
 use granbond_test_support as common;
 
-use common::RADIUS;
+use common::{Numbers, RADIUS};
 use granbond::contact::{
     sphere_plane, ContactFrame, ContactOutput, ContactState, Plane, VoigtModel, VoigtParams,
     CONTACT_STATE_LEN,
@@ -22,22 +22,6 @@ use granbond::vector::v3;
 use std::ffi::CStr;
 
 const DT: f64 = 1e-7;
-
-/// A deterministic stream of numbers in [-1, 1).
-struct Numbers(u64);
-
-impl Numbers {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-    fn vec(&mut self, scale: f64) -> [f64; 3] {
-        [self.next() * scale, self.next() * scale, self.next() * scale]
-    }
-}
 
 /// The separation entry on the pair `k`, as LAMMPS hands it over.
 ///

@@ -25,6 +25,7 @@
 
 use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
 use super::hysteresis::Loop;
+use super::linear::linear_stored_energy;
 use super::model::BondModel;
 use super::section::section;
 use super::state::{BondState, BondStatus};
@@ -88,6 +89,9 @@ impl BondModel {
     pub fn elastic_energy(&self, state: &BondState, delta: f64, radius_i: f64, radius_j: f64) -> BondEnergy {
         if state.status() != BondStatus::Intact {
             return BondEnergy::default();
+        }
+        if self.linear {
+            return linear_stored_energy(self, state, delta, radius_i, radius_j);
         }
         let p = &self.params;
         let f = self.features;
@@ -171,6 +175,9 @@ impl BondModel {
     ) -> BondEnergy {
         if state.status() != BondStatus::Intact {
             return BondEnergy::default();
+        }
+        if self.linear {
+            return linear_stored_energy(self, state, delta, radius_i, radius_j);
         }
         let f = self.features;
         let sec = section(self.params.lambda, radius_i, radius_j);
