@@ -41,6 +41,10 @@ public:
         return models_[itype * (ntypes_ + 1) + jtype];
     }
 
+    // The model as its decks name it: `cohesion bond/nonlinear`, or
+    // `cohesion bond` for the linear bond (for the run's messages).
+    const char *caller() const { return caller_; }
+
     // The models as the core's checks take them: entry a * (ntypes() + 1) + b.
     const GbBondModel *const *table() const { return models_.data(); }
     int ntypes() const { return ntypes_; }
