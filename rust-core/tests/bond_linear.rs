@@ -282,7 +282,7 @@ fn linear_damping_does_no_positive_work_in_any_mode() {
                 v[2] - along * axis[2],
             ])
         };
-        let r = r0 * (1.0 + 0.01 * rng.next());
+        let r = r0 * (1.0 + 0.01 * rng.uniform());
         let mode = trial % 4;
         let p = match mode {
             0 => linear(),
@@ -293,7 +293,7 @@ fn linear_damping_does_no_positive_work_in_any_mode() {
             },
             _ => BondParams { shear: 0, ..linear() },
         };
-        let speed = 0.1 * rng.next();
+        let speed = 0.1 * rng.uniform();
         let mut k = pair_along(axis, r);
         // one mode's motion alone: along the axis, across it, spin about it,
         // spin across it
@@ -345,7 +345,7 @@ fn linear_damping_does_no_positive_work_in_any_mode() {
 /// and spins of every direction.
 fn random_pair(rng: &mut Numbers) -> PairKinematics {
     let axis = unit(rng.vec(1.0));
-    let mut k = pair_along(axis, 2.0 * RADIUS * (1.0 + 0.005 * rng.next()));
+    let mut k = pair_along(axis, 2.0 * RADIUS * (1.0 + 0.005 * rng.uniform()));
     k.x_j = rng.vec(RADIUS);
     k.x_i = [k.x_i[0] + k.x_j[0], k.x_i[1] + k.x_j[1], k.x_i[2] + k.x_j[2]];
     k.v_i = rng.vec(0.05);
@@ -381,7 +381,7 @@ fn linear_loads_turn_with_the_frame_without_damping() {
     let mut rng = Numbers(5);
     for trial in 0..50 {
         let k = random_pair(&mut rng);
-        let q = rotation(rng.vec(1.0), 3.0 * rng.next());
+        let q = rotation(rng.vec(1.0), 3.0 * rng.uniform());
         let (mut s, mut sq) = (bond_at(2.0 * RADIUS), bond_at(2.0 * RADIUS));
         let kq = rotate_kinematics(&q, &k);
         let (mut out, mut outq) = (BondOutput::default(), BondOutput::default());

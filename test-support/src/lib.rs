@@ -132,7 +132,7 @@ pub fn net_moment(k: &PairKinematics, out: &BondOutput) -> Vec3 {
 pub struct Numbers(pub u64);
 
 impl Numbers {
-    pub fn next(&mut self) -> f64 {
+    pub fn uniform(&mut self) -> f64 {
         self.0 = self
             .0
             .wrapping_mul(6364136223846793005)
@@ -141,6 +141,10 @@ impl Numbers {
     }
 
     pub fn vec(&mut self, scale: f64) -> [f64; 3] {
-        [self.next() * scale, self.next() * scale, self.next() * scale]
+        [
+            self.uniform() * scale,
+            self.uniform() * scale,
+            self.uniform() * scale,
+        ]
     }
 }
