@@ -31,14 +31,12 @@
 //! Scalar only, on every path, as `super::inl`.
 
 use super::breakage::BreakMode;
-use super::energy::{linear_energy, spring_energy_from_force, BondEnergy};
 use super::inl::{
     add, broken, damped_force, damped_torque, frame, norm, normal_force, project, scale, sgn, stress_mode,
-    sub, write_loads, DEAD_ZONE, V,
+    sub, write_loads, V,
 };
 use super::laws::BondLaws;
 use super::params::BondParams;
-use super::section::section;
 use super::state::{BondOutput, BondState};
 use crate::kinematics::{KinematicsError, PairKinematics};
 use std::f64::consts::PI;
@@ -152,35 +150,4 @@ pub(crate) fn linear_step(
         state.bend_angle = bend_angle;
     }
     Ok(())
-}
-
-/// The energy a linear bond with state `state` at compression `delta`
-/// stores between spheres of radii `radius_i`, `radius_j` (J): `k_n A d^2
-/// / 2` on the side switched on, `|F_t|^2 / (2 k_t A)`, `k_t J |theta_n|^2
-/// / 2` and `k_n I |theta_t|^2 / 2`. Every law is linear, so this is also
-/// its loading-curve energy.
-pub(crate) fn linear_stored_energy(
-    laws: &BondLaws,
-    state: &BondState,
-    delta: f64,
-    radius_i: f64,
-    radius_j: f64,
-) -> BondEnergy {
-    let p = &laws.params;
-    let on = BondParams::switch;
-    let sec = section(p.lambda, radius_i, radius_j);
-    let mut e = BondEnergy::default();
-    if (on(p.tension) && delta < -DEAD_ZONE) || (on(p.compression) && delta > DEAD_ZONE) {
-        e.normal = linear_energy(p.k_n * sec.area, delta);
-    }
-    if on(p.shear) {
-        e.shear = spring_energy_from_force(norm(state.shear_force), p.k_t * sec.area);
-    }
-    if on(p.twist) {
-        e.twist = linear_energy(p.k_t * sec.polar, norm(state.twist_angle));
-    }
-    if on(p.bend) {
-        e.bend = linear_energy(p.k_n * sec.inertia, norm(state.bend_angle));
-    }
-    e
 }
