@@ -3,7 +3,10 @@
 // and the core's models built from them.
 //
 //   pair_coeff I J voigt <values> [voigt keyword ...] [bond/nonlinear keyword ...]
+//   pair_coeff I J voigt <values> [voigt keyword ...] [bond/linear keyword ...]
 //
+// `bond/linear` is LIGGGHTS-INL's linear bond: the bond table's row
+// `linear` on, the same keywords (the core refuses those of the other law).
 // A keyword is a row of the model's table (its value written as the row's
 // kind says) or one of the model's phrases: opening words, values for the
 // rows the phrase names, and rows the phrase sets itself (granbond.h,
@@ -37,6 +40,7 @@ namespace {
 // the bond's clause.
 const char *const kVoigt = "voigt";
 const char *const kBond = "bond/nonlinear";
+const char *const kLinear = "bond/linear";
 const char *const kContactUnderBond = "contact_under_bond";
 
 std::vector<std::string> split(const char *s)
@@ -303,13 +307,16 @@ void PairGranbond::coeff(int narg, char **arg)
     Clause<GbVoigtParams> voigt(a, kVoigt, &granbond_voigt_parameter_info, &granbond_voigt_phrase_info,
                                 &granbond_voigt_params_set, tp.voigt);
     voigt.head();
-    while (!a.done() && a.peek() != kBond)
+    while (!a.done() && a.peek() != kBond && a.peek() != kLinear)
         if (!voigt.next())
-            a.fail("unknown keyword '" + a.peek() + "' (known: " + voigt.known() + ", then " + kBond + ")");
+            a.fail("unknown keyword '" + a.peek() + "' (known: " + voigt.known() + ", then " + kBond + " or " +
+                   kLinear + ")");
     if (!a.done()) {
-        a.word(kBond);
+        const char *const law = a.word(kBond) == kLinear ? kLinear : kBond;
         tp.hasBond = 1;
-        Clause<GbBondParams> bond(a, kBond, &granbond_bond_parameter_info, &granbond_bond_phrase_info,
+        if (law == kLinear && granbond_bond_params_set(&tp.bond, "linear", 1.0) != GB_STATUS_OK)
+            error->all(FLERR, std::string("pair_coeff ") + kLinear + ": " + coreReason());
+        Clause<GbBondParams> bond(a, law, &granbond_bond_parameter_info, &granbond_bond_phrase_info,
                                   &granbond_bond_params_set, tp.bond);
         bool underBondGiven = false;
         while (!a.done()) {
@@ -324,6 +331,13 @@ void PairGranbond::coeff(int narg, char **arg)
                 a.fail("unknown keyword '" + a.peek() + "' (known: " + bond.known() + " " + kContactUnderBond + ")");
             }
         }
+        // unless the deck says, the contact goes on under a bond whose law
+        // keeps its loads (the linear bond); a model the core refuses is
+        // reported by buildModel
+        GbBondModel *m = nullptr;
+        if (!underBondGiven && granbond_bond_model_new(&tp.bond, &m) == GB_STATUS_OK)
+            tp.contactUnderBond = granbond_bond_keeps_contact_loads(m);
+        granbond_bond_model_free(m);
     }
 
     int count = 0;
@@ -354,7 +368,7 @@ void PairGranbond::buildModel(int i, int j)
     if (granbond_voigt_model_new(&tp.voigt, &voigt_[k]) != GB_STATUS_OK)
         error->all(FLERR, command + kVoigt + ": " + coreReason());
     if (tp.hasBond && granbond_bond_model_new(&tp.bond, &bond_[k]) != GB_STATUS_OK)
-        error->all(FLERR, command + kBond + ": " + coreReason());
+        error->all(FLERR, command + (tp.bond.linear ? kLinear : kBond) + ": " + coreReason());
 }
 
 }

@@ -19,10 +19,9 @@ namespace liggghts {
 
 namespace {
 
-const char *const kCaller = "cohesion bond/nonlinear";
-
 // The engine's registry takes a plain function per property name, so there
-// is one creator per row id of the core's table, reading the row's name.
+// is one creator per row id of the core's table and model, reading the
+// name the model's decks give the row.
 const size_t kMaxRows = 64;
 
 GbParameterInfo row(size_t id)
@@ -32,43 +31,59 @@ GbParameterInfo row(size_t id)
     return info;
 }
 
-template<size_t N>
+// The name decks of the model (`linear`: `cohesion bond`) give row `id`,
+// or null when the model does not have the row.
+const char *lawName(int linear, size_t id)
+{
+    const char *name = 0;
+    if (granbond_bond_parameter_liggghts_name(linear, id, &name) != GB_STATUS_OK) std::abort();   // id < count
+    return name;
+}
+
+template<size_t N, int Linear>
 MatrixProperty *createPerTypePair(PropertyRegistry &registry, const char *caller, bool)
 {
-    return MODEL_PARAMS::createPerTypePairProperty(registry, row(N).liggghts_name, caller);
+    return MODEL_PARAMS::createPerTypePairProperty(registry, lawName(Linear, N), caller);
 }
 
-template<size_t N>
+template<size_t N, int Linear>
 ScalarProperty *createScalar(PropertyRegistry &registry, const char *caller, bool)
 {
-    return MODEL_PARAMS::createScalarProperty(registry, row(N).liggghts_name, caller);
+    return MODEL_PARAMS::createScalarProperty(registry, lawName(Linear, N), caller);
 }
 
-template<size_t... N>
+template<int Linear, size_t... N>
 std::array<MatrixPropertyCreator, sizeof...(N)> perTypePairCreators(std::index_sequence<N...>)
 {
-    return {{&createPerTypePair<N>...}};
+    return {{&createPerTypePair<N, Linear>...}};
 }
 
-template<size_t... N>
+template<int Linear, size_t... N>
 std::array<ScalarPropertyCreator, sizeof...(N)> scalarCreators(std::index_sequence<N...>)
 {
-    return {{&createScalar<N>...}};
+    return {{&createScalar<N, Linear>...}};
 }
 
-const std::array<MatrixPropertyCreator, kMaxRows> kPerTypePairCreators =
-    perTypePairCreators(std::make_index_sequence<kMaxRows>());
-const std::array<ScalarPropertyCreator, kMaxRows> kScalarCreators =
-    scalarCreators(std::make_index_sequence<kMaxRows>());
+// [linear][row]
+const std::array<MatrixPropertyCreator, kMaxRows> kPerTypePairCreators[2] = {
+    perTypePairCreators<0>(std::make_index_sequence<kMaxRows>()),
+    perTypePairCreators<1>(std::make_index_sequence<kMaxRows>())};
+const std::array<ScalarPropertyCreator, kMaxRows> kScalarCreators[2] = {
+    scalarCreators<0>(std::make_index_sequence<kMaxRows>()),
+    scalarCreators<1>(std::make_index_sequence<kMaxRows>())};
 
 }
+
+bool BondNonlinearParameters::nextLinear_ = false;
 
 BondNonlinearParameters::BondNonlinearParameters(LAMMPS_NS::LAMMPS *lmp) :
-    Pointers(lmp), rows_(granbond_bond_parameter_count()), ntypes_(0)
+    Pointers(lmp), linear_(nextLinear_), caller_(nextLinear_ ? "cohesion bond" : "cohesion bond/nonlinear"),
+    rows_(granbond_bond_parameter_count()), ntypes_(0)
 {
+    nextLinear_ = false;
     if (rows_ > kMaxRows)
-        error->all(FLERR, "cohesion bond/nonlinear: the core's parameter table has more rows than this adapter "
-                          "has property creators (raise kMaxRows)");
+        error->all(FLERR, (std::string(caller_) + ": the core's parameter table has more rows than this adapter "
+                                                  "has property creators (raise kMaxRows)").c_str());
     granbond_bond_params_default(&switches_);
     switchValues_.assign(rows_, false);
     perTypePair_.assign(rows_, static_cast<double **>(0));
@@ -85,29 +100,43 @@ void BondNonlinearParameters::freeModels()
     ntypes_ = 0;
 }
 
+// The row of the core's table that switches the linear bond on.
+size_t BondNonlinearParameters::linearRow() const
+{
+    for (size_t k = 0; k < rows_; k++)
+        if (std::string(row(k).keyword) == "linear") return k;
+    error->all(FLERR, "cohesion bond: the core's parameter table has no row 'linear'");
+    return 0;
+}
+
+const char *BondNonlinearParameters::name(size_t id) const { return lawName(linear_ ? 1 : 0, id); }
+
 void BondNonlinearParameters::registerSettings(Settings &settings)
 {
     for (size_t k = 0; k < rows_; k++) {
         const GbParameterInfo info = row(k);
-        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
-            settings.registerOnOff(info.liggghts_name, switchValues_[k], info.default_value != 0.0);
+        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH && name(k))
+            settings.registerOnOff(name(k), switchValues_[k], info.default_value != 0.0);
     }
 }
 
 // Stores a deck value in `p`; the core refuses an unknown name or a value
 // outside the row's range, naming the parameter.
-void BondNonlinearParameters::set(GbBondParams &p, const GbParameterInfo &info, double value, const std::string &where)
+void BondNonlinearParameters::set(GbBondParams &p, size_t id, double value, const std::string &where)
 {
-    if (granbond_bond_params_set(&p, info.keyword, value) != GB_STATUS_OK)
-        endRun(error, FLERR, std::string(kCaller) + " " + info.liggghts_name + where + ": " + coreReason());
+    if (granbond_bond_params_set(&p, row(id).keyword, value) != GB_STATUS_OK)
+        endRun(error, FLERR, std::string(caller_) + " " + (name(id) ? name(id) : row(id).keyword) + where + ": " +
+                                 coreReason());
 }
 
 void BondNonlinearParameters::connectToProperties(PropertyRegistry &registry)
 {
     granbond_bond_params_default_in_units(update->unit_style, &switches_);
+    if (linear_) set(switches_, linearRow(), 1.0, "");
     for (size_t k = 0; k < rows_; k++) {
         const GbParameterInfo info = row(k);
-        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH) set(switches_, info, switchValues_[k] ? 1.0 : 0.0, "");
+        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH && name(k))
+            set(switches_, k, switchValues_[k] ? 1.0 : 0.0, "");
     }
 
     // only what the model reads with these switches is asked of the deck;
@@ -119,20 +148,20 @@ void BondNonlinearParameters::connectToProperties(PropertyRegistry &registry)
         const GbParameterInfo info = row(k);
         int32_t needed = 0;
         if (granbond_bond_parameter_needed(&switches_, k, &needed) != GB_STATUS_OK)
-            endRun(error, FLERR, std::string(kCaller) + ": " + coreReason());
+            endRun(error, FLERR, std::string(caller_) + ": " + coreReason());
         if (!needed) continue;
         // a setting LIGGGHTS-INL does not have: read only where the deck
         // defines it, so INL's decks keep the default and INL's law
         const bool optional = info.liggghts_source == GB_LIGGGHTS_SOURCE_OPTIONAL_PER_TYPE_PAIR;
-        if (optional && !modify->find_fix_property(info.liggghts_name, "property/global", "peratomtypepair", 0, 0,
-                                                   kCaller, false))
+        if (optional && !modify->find_fix_property(name(k), "property/global", "peratomtypepair", 0, 0,
+                                                   caller_, false))
             continue;
         if (info.liggghts_source == GB_LIGGGHTS_SOURCE_PER_TYPE_PAIR || optional) {
-            registry.registerProperty(info.liggghts_name, kPerTypePairCreators[k]);
-            registry.connect(info.liggghts_name, perTypePair_[k], kCaller);
+            registry.registerProperty(name(k), kPerTypePairCreators[linear_][k]);
+            registry.connect(name(k), perTypePair_[k], caller_);
         } else if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SCALAR) {
-            registry.registerProperty(info.liggghts_name, kScalarCreators[k]);
-            registry.connect(info.liggghts_name, scalars_[k], kCaller);
+            registry.registerProperty(name(k), kScalarCreators[linear_][k]);
+            registry.connect(name(k), scalars_[k], caller_);
             connectedScalar_[k] = true;
         }
     }
@@ -153,14 +182,14 @@ void BondNonlinearParameters::buildModels(PropertyRegistry &registry)
             const std::string where = " (atom types " + std::to_string(a) + " and " + std::to_string(b) + ")";
             GbBondParams p = switches_;
             for (size_t k = 0; k < rows_; k++) {
-                if (perTypePair_[k]) set(p, row(k), perTypePair_[k][a][b], where);
+                if (perTypePair_[k]) set(p, k, perTypePair_[k][a][b], where);
                 // a step number passes as given: the core refuses a
                 // fractional one (INL truncated it, so 0.999 meant step 0)
-                if (connectedScalar_[k]) set(p, row(k), scalars_[k], where);
+                if (connectedScalar_[k]) set(p, k, scalars_[k], where);
             }
             GbBondModel *m = 0;
             if (granbond_bond_model_new(&p, &m) != GB_STATUS_OK)
-                endRun(error, FLERR, std::string(kCaller) + where + ": " + coreReason());
+                endRun(error, FLERR, std::string(caller_) + where + ": " + coreReason());
             models_[a * (ntypes + 1) + b] = m;
         }
 }
@@ -171,15 +200,16 @@ void BondNonlinearParameters::registerContactDistanceFactor(PropertyRegistry &re
 {
     const double minRadius = registry.min_radius();
     if (!(minRadius > 0.0))
-        error->all(FLERR, "cohesion bond/nonlinear: the smallest particle radius is not known or not positive; "
-                          "define the particles (or their templates) before the first run");
+        error->all(FLERR, (std::string(caller_) + ": the smallest particle radius is not known or not positive; "
+                                                  "define the particles (or their templates) before the first run")
+                              .c_str());
     // the core refuses a reach the lists cannot hold, naming what sets it
     double factor = 1.0;
     for (int a = 1; a <= ntypes_; a++)
         for (int b = 1; b <= ntypes_; b++) {
             double f = 0.0;
             if (granbond_bond_neighbour_reach(model(a, b), minRadius, a, b, 1, update->unit_style, &f) != GB_STATUS_OK)
-                endRun(error, FLERR, std::string(kCaller) + ": " + coreReason());
+                endRun(error, FLERR, std::string(caller_) + ": " + coreReason());
             if (f > factor) factor = f;
         }
     neighbor->register_contact_dist_factor(factor);

@@ -1,7 +1,9 @@
 // Deck -> core translation for `cohesion bond/nonlinear`: the on/off switches
 // of `pair_style gran ... cohesion bond/nonlinear`, the `fix property/global`
 // values of docs/reference/cohesion_bond_nonlinear.md, and one
-// validated GbBondModel per atom-type pair built from them.
+// validated GbBondModel per atom-type pair built from them. The same for
+// LIGGGHTS-INL's linear bond, `cohesion bond`, under its names (the core's
+// granbond_bond_parameter_liggghts_name).
 #ifndef GRANBOND_LIGGGHTS_BOND_NONLINEAR_PARAMETERS_H
 #define GRANBOND_LIGGGHTS_BOND_NONLINEAR_PARAMETERS_H
 
@@ -20,6 +22,11 @@ public:
     explicit BondNonlinearParameters(LAMMPS_NS::LAMMPS *lmp);
     ~BondNonlinearParameters();
 
+    // The next parameters built serve `cohesion bond` (the linear bond):
+    // its model class shares the cohesion class that builds them, which
+    // does not otherwise tell them the model (cohesion_model_bond_linear.h).
+    static void nextServeLinearBond() { nextLinear_ = true; }
+
     void registerSettings(::Settings &settings);
 
     // Connects the properties the switches ask for, builds the models (any
@@ -34,6 +41,10 @@ public:
         return models_[itype * (ntypes_ + 1) + jtype];
     }
 
+    // The model as its decks name it: `cohesion bond/nonlinear`, or
+    // `cohesion bond` for the linear bond (for the run's messages).
+    const char *caller() const { return caller_; }
+
     // The models as the core's checks take them: entry a * (ntypes() + 1) + b.
     const GbBondModel *const *table() const { return models_.data(); }
     int ntypes() const { return ntypes_; }
@@ -47,7 +58,14 @@ private:
     void buildModels(::PropertyRegistry &registry);
     void registerContactDistanceFactor(::PropertyRegistry &registry);
 
-    void set(GbBondParams &p, const GbParameterInfo &info, double value, const std::string &where);
+    void set(GbBondParams &p, size_t id, double value, const std::string &where);
+    size_t linearRow() const;
+    // The name this model's decks give row `id`, or null if it has none.
+    const char *name(size_t id) const;
+
+    static bool nextLinear_;
+    const bool linear_;          // `cohesion bond` rather than `cohesion bond/nonlinear`
+    const char *const caller_;   // the model, as the deck names it
 
     // indexed by row of the core's parameter table
     size_t rows_;

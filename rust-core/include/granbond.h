@@ -82,7 +82,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 16
+#define GRANBOND_ABI_VERSION 17
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -617,6 +617,53 @@ typedef struct GbBondParams {
    * tangential and rolling loads kept under an overlapping bond.
    */
   int32_t inl_compatible;
+  /**
+   * LIGGGHTS-INL's linear bond (`cohesion bond`,
+   * docs/models/bond-linear.md) instead of `bond/nonlinear`: the rows
+   * it reads are [`LINEAR_NAMES`].
+   */
+  int32_t linear;
+  /**
+   * Linear bond: normal stiffness `k_n` (N/m^3; force `k_n A d`,
+   * bending torque increment `k_n I`).
+   */
+  double k_n;
+  /**
+   * Linear bond: tangential stiffness `k_t` (N/m^3; shear force
+   * increment `k_t A`, twisting torque increment `k_t J`).
+   */
+  double k_t;
+  /**
+   * Linear bond: the time over which the normal spring relaxes its rest
+   * length to the present distance (s; `inf` = never).
+   */
+  double dissipation_fn;
+  /**
+   * Linear bond: the relaxation time of the shear force (s).
+   */
+  double dissipation_ft;
+  /**
+   * Linear bond: the relaxation time of the twisting torque (s).
+   */
+  double dissipation_tn;
+  /**
+   * Linear bond: the relaxation time of the bending torque (s).
+   */
+  double dissipation_tt;
+  /**
+   * Linear bond: the springs relax over the dissipation times.
+   */
+  int32_t dissipation;
+  /**
+   * Linear bond, stress mode with `drucker_prager`: the friction angle
+   * (degrees) by which compression raises the shear strength.
+   */
+  double friction_angle;
+  /**
+   * Linear bond, stress mode: the shear strength is `max_tau + sgn(d)
+   * sigma_n tan(friction_angle)` (Drucker-Prager).
+   */
+  int32_t drucker_prager;
 } GbBondParams;
 
 /**
@@ -1391,6 +1438,17 @@ enum GbStatus granbond_bond_law_line(const struct GbBondModel *model,
 int32_t granbond_bond_keeps_contact_tangential(const struct GbBondModel *model);
 
 /**
+ * 1 if every load of the contact acts on an overlapping pair while its
+ * bond is intact, the bond's added to them (LIGGGHTS-INL's linear bond),
+ * so an engine drops none of the contact's loads under the bond; 0
+ * otherwise, and for a null or misaligned `model`.
+ *
+ * # Safety
+ * `model` must be null or from `granbond_bond_model_new`.
+ */
+int32_t granbond_bond_keeps_contact_loads(const struct GbBondModel *model);
+
+/**
  * The centre distance within which `granbond_bond_try_create` may create
  * a bond at `from_step` or any later step, written to `reach`:
  * `create_distance` while a creation step lies ahead (or bonds are created
@@ -2078,6 +2136,17 @@ enum GbStatus granbond_bond_parameter_info(size_t id, struct GbParameterInfo *in
  * `info` must be null or valid for writes.
  */
 enum GbStatus granbond_voigt_parameter_info(size_t id, struct GbParameterInfo *info);
+
+/**
+ * The name a LIGGGHTS deck gives row `id` of the bond table under the
+ * law `linear` (0: `cohesion bond/nonlinear`, 1: LIGGGHTS-INL's linear
+ * bond, `cohesion bond`), written to `name` (static storage); null when
+ * that law does not have the row, so its decks cannot set it.
+ *
+ * # Safety
+ * `name` must be null or valid for writes.
+ */
+enum GbStatus granbond_bond_parameter_liggghts_name(int32_t linear, size_t id, const char **name);
 
 /**
  * Sets the bond parameter a deck names (LAMMPS keyword or LIGGGHTS name)

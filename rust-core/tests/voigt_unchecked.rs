@@ -5,7 +5,7 @@
 
 use granbond_test_support as common;
 
-use common::RADIUS;
+use common::{Numbers, RADIUS};
 use granbond::contact::{
     sphere_plane, ContactFrame, ContactOutput, ContactState, Plane, VoigtModel, VoigtParams,
     CONTACT_STATE_LEN,
@@ -22,22 +22,6 @@ use granbond::vector::v3;
 use std::ffi::CStr;
 
 const DT: f64 = 1e-7;
-
-/// A deterministic stream of numbers in [-1, 1).
-struct Numbers(u64);
-
-impl Numbers {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-    fn vec(&mut self, scale: f64) -> [f64; 3] {
-        [self.next() * scale, self.next() * scale, self.next() * scale]
-    }
-}
 
 /// The separation entry on the pair `k`, as LAMMPS hands it over.
 ///
@@ -141,7 +125,7 @@ fn pair_contacts_give_the_bits_of_granbond_voigt_compute() {
             let (mut sa, mut sb) = ([0.0; CONTACT_STATE_LEN], [0.0; CONTACT_STATE_LEN]);
             let d = r.vec(1.0);
             let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-            let gap = 2.0 * RADIUS * (1.0 - 2e-4 * (r.next() + 0.5));
+            let gap = 2.0 * RADIUS * (1.0 - 2e-4 * (r.uniform() + 0.5));
             let mut k = PairKinematics {
                 x_i: d.map(|c| c / len * gap),
                 x_j: [0.0; 3],
@@ -149,7 +133,7 @@ fn pair_contacts_give_the_bits_of_granbond_voigt_compute() {
                 v_j: r.vec(0.05),
                 w_i: r.vec(50.0),
                 w_j: r.vec(50.0),
-                radius_i: RADIUS * (1.0 + 0.3 * r.next()),
+                radius_i: RADIUS * (1.0 + 0.3 * r.uniform()),
                 radius_j: RADIUS,
             };
             for step in 0..200 {
@@ -195,7 +179,7 @@ fn wall_contacts_through_the_normal_entry_give_the_bits_of_a_sphere_on_a_plane()
             let n = r.vec(1.0);
             let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
             let normal = n.map(|c| c / len);
-            let depth = RADIUS * (1.0 - 1e-4 * (r.next() + 0.5));
+            let depth = RADIUS * (1.0 - 1e-4 * (r.uniform() + 0.5));
             let sphere = SphereKinematics {
                 x: normal.map(|c| c * depth),
                 v: r.vec(0.05),

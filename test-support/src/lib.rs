@@ -126,3 +126,25 @@ pub fn net_moment(k: &PairKinematics, out: &BondOutput) -> Vec3 {
     let f = v3(out.force_i);
     v3(k.x_i).cross(&f) + v3(k.x_j).cross(&-f) + v3(out.torque_i) + v3(out.torque_j)
 }
+
+/// A deterministic stream of numbers in [-1, 1), for tests that sweep
+/// many configurations reproducibly.
+pub struct Numbers(pub u64);
+
+impl Numbers {
+    pub fn uniform(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+
+    pub fn vec(&mut self, scale: f64) -> [f64; 3] {
+        [
+            self.uniform() * scale,
+            self.uniform() * scale,
+            self.uniform() * scale,
+        ]
+    }
+}

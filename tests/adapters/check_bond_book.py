@@ -280,7 +280,7 @@ def check_combination(a, workdir):
                        dict(EVENTS, nrun=10, pairstyle_extra="rolling_friction epsd3"))
     if rc == 0:
         raise Failure("an unregistered combination ran")
-    want = ["is not registered", "rolling_friction epsd3", "cohesion bond/nonlinear rolling_friction off|cdt|epsd|epsd2"]
+    want = ["is not registered", "rolling_friction epsd3", "cohesion bond/nonlinear|bond rolling_friction off|cdt|epsd|epsd2"]
     for text in want:
         if text not in out:
             raise Failure(f"the error does not say '{text}':\n{out[-2000:]}")

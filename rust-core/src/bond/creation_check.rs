@@ -4,7 +4,7 @@
 //! finding is a warning that names the parameters as the deck spells them.
 
 use super::laws::BondLaws;
-use super::params::{BondParams, ParameterError, PARAMETERS};
+use super::params::{liggghts_name, BondParams, ParameterError, PARAMETERS};
 use crate::timestep_check::{TypeBodies, UnitNames};
 
 /// Which spelling of the parameter names the messages use.
@@ -15,6 +15,33 @@ pub enum Naming {
     Lammps = 0,
     /// `fix property/global` names and switches (LIGGGHTS).
     Liggghts = 1,
+    /// `pair_coeff ... bond/linear` keywords: the linear bond's stiffnesses
+    /// `k_n`, `k_t` where `bond/nonlinear`'s would be named.
+    LammpsLinear = 2,
+    /// The names LIGGGHTS-INL's `cohesion bond` decks give the linear
+    /// bond's parameters ([`crate::bond::params::LINEAR_NAMES`]).
+    LiggghtsLinear = 3,
+}
+
+impl Naming {
+    /// The engine's naming for a bond of the linear law (`linear`) or of
+    /// `bond/nonlinear`.
+    pub fn for_law(self, linear: bool) -> Self {
+        match (self.base(), linear) {
+            (Naming::Lammps, true) => Naming::LammpsLinear,
+            (Naming::Liggghts, true) => Naming::LiggghtsLinear,
+            (base, _) => base,
+        }
+    }
+
+    /// The engine's naming, whatever the law.
+    pub fn base(self) -> Self {
+        match self {
+            Naming::LammpsLinear => Naming::Lammps,
+            Naming::LiggghtsLinear => Naming::Liggghts,
+            n => n,
+        }
+    }
 }
 
 /// One contradiction found, with the type pair it was first seen on.
@@ -79,7 +106,7 @@ pub fn findings(
             // LIGGGHTS-INL's wall bond (`inl_compatible`) forms within half
             // the creation distance of the wall and breaks on the distance
             // to the wall point (`bond::inl`).
-            let inl_wall = wall && BondParams::switch(p.inl_compatible);
+            let inl_wall = wall && (BondParams::switch(p.inl_compatible) || BondParams::switch(p.linear));
             let reach = if inl_wall {
                 0.5 * p.create_distance
             } else {
@@ -129,13 +156,17 @@ fn contact_distance(bodies: &[TypeBodies], a: usize, b: usize, wall: bool) -> f6
 /// stiffness) fields. Compression is not among them: without its stiffness
 /// the bond is refused ([`refusal`]); tension in stress mode neither
 /// ([`reach_refusal`]).
+/// The linear bond's stiffnesses stand for them (`k_n`, `k_t`,
+/// [`parameter_name`] names them so).
 fn zero_stiffness(p: &BondParams) -> Vec<(&'static str, &'static str)> {
     let stress = BondParams::switch(p.stress_break);
+    let linear = BondParams::switch(p.linear);
+    let pick = |nonlinear: f64, linear_k: f64| if linear { linear_k } else { nonlinear };
     [
-        ("tension", "k_fn2", p.tension, p.k_fn2, !stress),
-        ("shear", "k_ft", p.shear, p.k_ft, true),
-        ("twist", "k_tn", p.twist, p.k_tn, true),
-        ("bend", "k_tt", p.bend, p.k_tt, true),
+        ("tension", "k_fn2", p.tension, pick(p.k_fn2, p.k_n), !stress),
+        ("shear", "k_ft", p.shear, pick(p.k_ft, p.k_t), true),
+        ("twist", "k_tn", p.twist, pick(p.k_tn, p.k_t), true),
+        ("bend", "k_tt", p.bend, pick(p.k_tt, p.k_n), true),
     ]
     .into_iter()
     .filter(|&(_, _, on, k, checked)| checked && BondParams::switch(on) && k == 0.0)
@@ -154,14 +185,25 @@ fn smallest_radius(bodies: &[TypeBodies], a: usize, b: usize, wall: bool) -> f64
 }
 
 /// A parameter's name as the engine's decks spell it.
+/// Under the linear law (`Naming::*Linear`) the stiffness that plays the
+/// part of a `bond/nonlinear` one is named instead (`k_n` for the normal and
+/// bending stiffnesses, `k_t` for the shear and twisting ones).
 pub fn parameter_name(field: &str, naming: Naming) -> &'static str {
-    let row = PARAMETERS
+    let linear = naming != naming.base();
+    let field = match field {
+        "k_fn1" | "ku_fn1" | "k_fn2" | "k_tt" if linear => "k_n",
+        "k_ft" | "k_tn" if linear => "k_t",
+        f => f,
+    };
+    let (id, row) = PARAMETERS
         .iter()
-        .find(|r| r.name == field)
+        .enumerate()
+        .find(|(_, r)| r.name == field)
         .expect("a field of the parameter table");
     match naming {
-        Naming::Lammps => row.name,
+        Naming::Lammps | Naming::LammpsLinear => row.name,
         Naming::Liggghts => row.liggghts_name,
+        Naming::LiggghtsLinear => liggghts_name(true, id).unwrap_or(row.liggghts_name),
     }
 }
 
@@ -180,6 +222,7 @@ pub fn message(
     style: &str,
 ) -> String {
     let l = units.length;
+    let naming = naming.for_law(BondParams::switch(p.linear));
     let create = parameter_name("create_distance", naming);
     let reach = parameter_name("max_distance", naming);
     let always = parameter_name("create_always", naming);
@@ -256,8 +299,10 @@ pub fn reach_refusal(
 ) -> Option<ParameterError> {
     let p = &laws.params;
     let l = units.length;
+    let naming = naming.for_law(laws.linear);
     let name = |field| parameter_name(field, naming);
     let stress = BondParams::switch(p.stress_break);
+    let tension_stiffness = if laws.linear { p.k_n } else { p.k_fn2 };
     let diameters = |x: f64| 1.1 * x / (2.0 * min_radius);
     let factor = laws.contact_distance_factor(min_radius);
     if diameters(p.create_distance) > MAX_REACH_DIAMETERS {
@@ -277,9 +322,9 @@ pub fn reach_refusal(
         let cause = if factor.is_finite() {
             format!("{r} {v:e} {l} lets a bond stretch to {factor:.1} diameters of the smallest spheres (radius {min_radius:e} {l}; with a 10% margin), beyond the {MAX_REACH_DIAMETERS} diameters the neighbour lists hold; set a smaller {r}", v = p.max_distance)
         } else {
-            let phrases = match naming {
+            let phrases = match naming.base() {
                 Naming::Lammps => " ('break distance R', or break by stress: 'break stress S T')",
-                Naming::Liggghts => "",
+                _ => "",
             };
             format!("{r} is inf: a bond never breaks by stretching, so no neighbour list can keep it; set a finite {r}{phrases}")
         };
@@ -287,9 +332,9 @@ pub fn reach_refusal(
     } else if !BondParams::switch(p.tension) {
         let t = name("tension");
         ("tension", format!("{t} is off in stress mode: a bond never breaks by stretching, so no neighbour list can keep it; switch {t} on or break by distance"))
-    } else if !(p.k_fn2 > 0.0) {
+    } else if !(tension_stiffness > 0.0) {
         let k = name("k_fn2");
-        ("k_fn2", format!("{k} is {v}: in stress mode a bond without tension stiffness never reaches its tensile strength, so no neighbour list can keep it; set {k} > 0", v = p.k_fn2))
+        ("k_fn2", format!("{k} is {v}: in stress mode a bond without tension stiffness never reaches its tensile strength, so no neighbour list can keep it; set {k} > 0", v = tension_stiffness))
     } else {
         let ratio = if BondParams::switch(p.use_ratio) {
             format!(
@@ -311,7 +356,7 @@ pub fn reach_refusal(
             s = name("max_sigma"),
             sv = p.max_sigma,
             k = name("k_fn2"),
-            kv = p.k_fn2,
+            kv = tension_stiffness,
             or_ratio = if BondParams::switch(p.use_ratio) {
                 format!(" or {}", name("tension_compression_ratio"))
             } else {
@@ -350,13 +395,15 @@ pub fn refusal(
 ) -> Option<ParameterError> {
     let p = &laws.params;
     let l = units.length;
+    let naming = naming.for_law(laws.linear);
     let name = |field| parameter_name(field, naming);
     let pair = if wall {
         format!("atom type {a} on the wall")
     } else {
         format!("atom types {a} and {b}")
     };
-    if BondParams::switch(p.compression) && p.k_fn1 == 0.0 {
+    // (the linear bond keeps the contact under it)
+    if BondParams::switch(p.compression) && p.k_fn1 == 0.0 && !laws.linear {
         return refused("k_fn1", format!(
             "{pair}: {k} is 0 (also its value when left out) while {c} is on: an intact bond replaces the contact, so bonded spheres pushed together would pass through each other; set {k} > 0",
             k = name("k_fn1"),

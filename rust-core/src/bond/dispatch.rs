@@ -16,7 +16,7 @@ use super::finite::BatchResult;
 use super::laws::BondLaws;
 use super::scalar::{all_one_by_one, bond_step};
 use super::state::{BondOutput, BondState};
-use super::switches::{Fixed, Inl, Switched, Switches};
+use super::switches::{Fixed, Inl, Linear, Switched, Switches};
 use crate::kinematics::{KinematicsError, PairKinematics};
 use crate::pair_source::IndexedPairs;
 use crate::simd::Simd;
@@ -81,11 +81,22 @@ pub(crate) fn kernels(features: u32, simd: Simd, own: bool) -> Kernels {
 
 /// The steps of LIGGGHTS-INL's law (`super::inl`): scalar on every path.
 pub(crate) fn inl_kernels() -> Kernels {
+    one_by_one_kernels::<Inl>()
+}
+
+/// The steps of LIGGGHTS-INL's linear bond (`super::linear`): scalar on
+/// every path.
+pub(crate) fn linear_kernels() -> Kernels {
+    one_by_one_kernels::<Linear>()
+}
+
+/// The scalar steps of `S` on every path.
+fn one_by_one_kernels<S: Switches>() -> Kernels {
     Kernels {
-        single: single::<Inl>,
-        batch: batch::<Inl>,
-        scattered: scattered::<Inl>,
-        indexed: indexed::<Inl>,
+        single: single::<S>,
+        batch: batch::<S>,
+        scattered: scattered::<S>,
+        indexed: indexed::<S>,
         simd: Simd::Scalar,
         own: false,
     }

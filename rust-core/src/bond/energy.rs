@@ -25,7 +25,10 @@
 
 use super::features::{BEND, COMPRESSION, SHEAR, TENSION, TWIST};
 use super::hysteresis::Loop;
+use super::inl::DEAD_ZONE;
+use super::laws::BondLaws;
 use super::model::BondModel;
+use super::params::BondParams;
 use super::section::section;
 use super::state::{BondState, BondStatus};
 use crate::vector::v3;
@@ -88,6 +91,9 @@ impl BondModel {
     pub fn elastic_energy(&self, state: &BondState, delta: f64, radius_i: f64, radius_j: f64) -> BondEnergy {
         if state.status() != BondStatus::Intact {
             return BondEnergy::default();
+        }
+        if self.linear {
+            return linear_stored_energy(self, state, delta, radius_i, radius_j);
         }
         let p = &self.params;
         let f = self.features;
@@ -172,6 +178,9 @@ impl BondModel {
         if state.status() != BondStatus::Intact {
             return BondEnergy::default();
         }
+        if self.linear {
+            return linear_stored_energy(self, state, delta, radius_i, radius_j);
+        }
         let f = self.features;
         let sec = section(self.params.lambda, radius_i, radius_j);
         let normal = &self.normal;
@@ -236,4 +245,35 @@ pub fn twist_work(law: &Loop, phi: f64, phi_max: f64, phi_min: f64) -> f64 {
     } else {
         law.work(-phi, -phi_min)
     }
+}
+
+/// The energy a linear bond with state `state` at compression `delta`
+/// stores between spheres of radii `radius_i`, `radius_j` (J): `k_n A d^2
+/// / 2` on the side switched on, `|F_t|^2 / (2 k_t A)`, `k_t J |theta_n|^2
+/// / 2` and `k_n I |theta_t|^2 / 2`. Every law is linear, so this is also
+/// its loading-curve energy.
+fn linear_stored_energy(
+    laws: &BondLaws,
+    state: &BondState,
+    delta: f64,
+    radius_i: f64,
+    radius_j: f64,
+) -> BondEnergy {
+    let p = &laws.params;
+    let on = BondParams::switch;
+    let sec = section(p.lambda, radius_i, radius_j);
+    let mut e = BondEnergy::default();
+    if (on(p.tension) && delta < -DEAD_ZONE) || (on(p.compression) && delta > DEAD_ZONE) {
+        e.normal = linear_energy(p.k_n * sec.area, delta);
+    }
+    if on(p.shear) {
+        e.shear = spring_energy_from_force(v3(state.shear_force).norm(), p.k_t * sec.area);
+    }
+    if on(p.twist) {
+        e.twist = linear_energy(p.k_t * sec.polar, v3(state.twist_angle).norm());
+    }
+    if on(p.bend) {
+        e.bend = linear_energy(p.k_n * sec.inertia, v3(state.bend_angle).norm());
+    }
+    e
 }

@@ -42,33 +42,33 @@ use super::state::{BondOutput, BondState, BondStatus};
 use crate::kinematics::{KinematicsError, PairKinematics};
 use std::f64::consts::PI;
 
-type V = [f64; 3];
+pub(super) type V = [f64; 3];
 
 /// No normal force within this compression or stretch of zero (m).
-const DEAD_ZONE: f64 = 1e-15;
+pub(super) const DEAD_ZONE: f64 = 1e-15;
 
 #[inline(always)]
-fn sub(a: V, b: V) -> V {
+pub(super) fn sub(a: V, b: V) -> V {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 #[inline(always)]
-fn add(a: V, b: V) -> V {
+pub(super) fn add(a: V, b: V) -> V {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 #[inline(always)]
-fn scale(a: V, s: f64) -> V {
+pub(super) fn scale(a: V, s: f64) -> V {
     [a[0] * s, a[1] * s, a[2] * s]
 }
 #[inline(always)]
-fn dot(a: V, b: V) -> f64 {
+pub(super) fn dot(a: V, b: V) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 #[inline(always)]
-fn norm(a: V) -> f64 {
+pub(super) fn norm(a: V) -> f64 {
     (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
 }
 #[inline(always)]
-fn cross(a: V, b: V) -> V {
+pub(super) fn cross(a: V, b: V) -> V {
     [
         a[1] * b[2] - a[2] * b[1],
         a[2] * b[0] - a[0] * b[2],
@@ -78,20 +78,20 @@ fn cross(a: V, b: V) -> V {
 /// The part of `v` along `on`, with `on` normalised again first (INL's
 /// projection does, and the last bits follow from it).
 #[inline(always)]
-fn project(v: V, on: V) -> V {
+pub(super) fn project(v: V, on: V) -> V {
     let len = norm(on);
     let inv = if len == 0.0 { 0.0 } else { 1.0 / len };
     let unit = scale(on, inv);
     scale(unit, dot(v, unit))
 }
 #[inline(always)]
-fn sgn(v: f64) -> f64 {
+pub(super) fn sgn(v: f64) -> f64 {
     ((0.0 < v) as i32 - (v < 0.0) as i32) as f64
 }
 
 /// The per-component multiplier of the force damping.
 #[inline(always)]
-fn multiplier(rate: f64, force: f64, dt: f64, min_rate: f64, smooth: bool) -> f64 {
+pub(super) fn multiplier(rate: f64, force: f64, dt: f64, min_rate: f64, smooth: bool) -> f64 {
     if smooth {
         let floor = min_rate.max(0.01 * force * dt);
         (rate / floor).clamp(-1.0, 1.0)
@@ -102,7 +102,7 @@ fn multiplier(rate: f64, force: f64, dt: f64, min_rate: f64, smooth: bool) -> f6
 
 /// `F_k - eta |F_k| m_k` for each component.
 #[inline(always)]
-fn damp_components(force: V, eta: f64, multipliers: V) -> V {
+pub(super) fn damp_components(force: V, eta: f64, multipliers: V) -> V {
     [
         force[0] - eta * force[0].abs() * multipliers[0],
         force[1] - eta * force[1].abs() * multipliers[1],
@@ -181,19 +181,19 @@ fn normal_magnitude(laws: &BondLaws, d: f64, max: f64, min: f64, area: f64) -> f
 
 /// A bond's geometry as INL sees it: between two spheres, or between a
 /// sphere and the contact point on a wall.
-struct Geometry {
+pub(super) struct Geometry {
     /// From `j` (or the wall point) to `i`.
-    delta: V,
-    r: f64,
+    pub(super) delta: V,
+    pub(super) r: f64,
     /// The bond radius's base: `min(R_i, R_j)`, or `R_i` at a wall.
-    radius: f64,
-    lever_i: f64,
-    lever_j: f64,
+    pub(super) radius: f64,
+    pub(super) lever_i: f64,
+    pub(super) lever_j: f64,
     /// The spin that turns the bond's contact point with the spheres.
-    contact_spin: V,
+    pub(super) contact_spin: V,
 }
 
-fn pair_geometry(kin: &PairKinematics) -> Geometry {
+pub(super) fn pair_geometry(kin: &PairKinematics) -> Geometry {
     let delta = sub(kin.x_i, kin.x_j);
     let r = dot(delta, delta).sqrt();
     let (ri, rj) = (kin.radius_i, kin.radius_j);
@@ -210,7 +210,7 @@ fn pair_geometry(kin: &PairKinematics) -> Geometry {
 
 /// A wall bond: `x_j` is the contact point of the bond's creation, carried
 /// with the wall (`super::wall`).
-fn wall_geometry(kin: &PairKinematics) -> Geometry {
+pub(super) fn wall_geometry(kin: &PairKinematics) -> Geometry {
     let delta = sub(kin.x_i, kin.x_j);
     let r = norm(delta);
     Geometry {
@@ -223,7 +223,13 @@ fn wall_geometry(kin: &PairKinematics) -> Geometry {
     }
 }
 
-fn nothing(state: &mut BondState, out: &mut BondOutput, status: BondStatus, mode: BreakMode, delta: f64) {
+pub(super) fn nothing(
+    state: &mut BondState,
+    out: &mut BondOutput,
+    status: BondStatus,
+    mode: BreakMode,
+    delta: f64,
+) {
     *out = BondOutput {
         delta,
         ..BondOutput::default()
@@ -231,6 +237,184 @@ fn nothing(state: &mut BondState, out: &mut BondOutput, status: BondStatus, mode
     state.status = status as i32 as f64;
     out.status = status as i32;
     out.break_mode = mode as i32;
+}
+
+/// What INL's two bond laws (this one and its linear bond, `super::linear`)
+/// compute alike before their loads: the geometry, the section, and the
+/// relative motion split along and across the axis.
+pub(super) struct Frame {
+    pub(super) g: Geometry,
+    /// `r0 - r`.
+    pub(super) d: f64,
+    /// The unit vector from `j` to `i`.
+    pub(super) en: V,
+    pub(super) rb: f64,
+    pub(super) area: f64,
+    pub(super) polar: f64,
+    pub(super) inertia: f64,
+    /// INL's minimum velocity of smooth damping.
+    pub(super) min_rate: f64,
+    pub(super) vn: V,
+    /// The slip of the contact point.
+    pub(super) slip: V,
+    pub(super) wn: V,
+    pub(super) wt: V,
+}
+
+/// The [`Frame`] of an intact bond, or `None` when the bond is not intact
+/// or breaks by distance in this step (`commit`): then it exerts nothing,
+/// and `state` and `out` say so.
+pub(super) fn frame(
+    laws: &BondLaws,
+    kin: &PairKinematics,
+    dt: f64,
+    state: &mut BondState,
+    out: &mut BondOutput,
+    wall: bool,
+    commit: bool,
+) -> Result<Option<Frame>, KinematicsError> {
+    let status = state.status();
+    if status != BondStatus::Intact {
+        nothing(state, out, status, BreakMode::None, 0.0);
+        return Ok(None);
+    }
+    kin.check()?;
+    let p = &laws.params;
+    let g = if wall {
+        wall_geometry(kin)
+    } else {
+        pair_geometry(kin)
+    };
+    if !(g.r > f64::MIN_POSITIVE) {
+        return Err(KinematicsError::CoincidentCentres);
+    }
+    let d = state.r0 - g.r;
+    if commit && !laws.stress_break && g.r > p.max_distance {
+        nothing(state, out, BondStatus::Broken, BreakMode::Distance, d);
+        return Ok(None);
+    }
+    let en = scale(g.delta, 1.0 / g.r);
+    let rb = p.lambda * g.radius;
+    let area = PI * rb * rb;
+    let polar = 0.5 * area * rb * rb;
+    let vr = sub(kin.v_i, kin.v_j);
+    let vn = project(vr, en);
+    let slip = add(sub(vr, vn), cross(g.delta, g.contact_spin));
+    let wr = sub(kin.w_i, kin.w_j);
+    let wn = project(wr, en);
+    Ok(Some(Frame {
+        d,
+        en,
+        rb,
+        area,
+        polar,
+        inertia: 0.5 * polar,
+        min_rate: 1e-5 * g.radius / dt,
+        vn,
+        slip,
+        wn,
+        wt: sub(wr, wn),
+        g,
+    }))
+}
+
+/// A force damped as INL damps its bond forces, per Cartesian component
+/// against the sign of its rate (smoothed with `smooth`); as it is without
+/// `damping`.
+#[inline(always)]
+pub(super) fn damped_force(
+    force: V,
+    rate: V,
+    eta: f64,
+    f: &Frame,
+    dt: f64,
+    damping: bool,
+    smooth: bool,
+) -> V {
+    if damping {
+        let m = [0, 1, 2].map(|c| multiplier(rate[c], force[c], dt, f.min_rate, smooth));
+        damp_components(force, eta, m)
+    } else {
+        force
+    }
+}
+
+/// The normal force on `i` (undamped, damped) and its magnitude (positive
+/// repels): `magnitude()` along the axis while a side of the law that is
+/// on holds (`|d|` above [`DEAD_ZONE`]), nothing otherwise.
+#[inline(always)]
+pub(super) fn normal_force(
+    laws: &BondLaws,
+    f: &Frame,
+    dt: f64,
+    magnitude: impl FnOnce() -> f64,
+) -> (V, V, f64) {
+    let p = &laws.params;
+    let on = BondParams::switch;
+    if (on(p.tension) && f.d < -DEAD_ZONE) || (on(p.compression) && f.d > DEAD_ZONE) {
+        let m = magnitude();
+        let normal = scale(f.en, m);
+        let damped = damped_force(
+            normal,
+            f.vn,
+            p.eta_fn,
+            f,
+            dt,
+            p.damping_on(),
+            on(p.damping_smooth),
+        );
+        (normal, damped, m)
+    } else {
+        ([0.0; 3], [0.0; 3], 0.0)
+    }
+}
+
+/// A torque damped as INL damps its bond torques, per Cartesian component
+/// against the sign of its rate; as it is without `damping`.
+#[inline(always)]
+pub(super) fn damped_torque(torque: V, rate: V, eta: f64, damping: bool) -> V {
+    if damping {
+        damp_components(torque, eta, rate.map(sgn))
+    } else {
+        torque
+    }
+}
+
+/// How a bond at compression `d` breaks with section stresses `sigma`,
+/// `tau` against the strengths `max_sigma`, `max_tau`: strictly above,
+/// the normal stress first.
+#[inline(always)]
+pub(super) fn stress_mode(sigma: f64, max_sigma: f64, tau: f64, max_tau: f64, d: f64) -> BreakMode {
+    if max_sigma < sigma {
+        if d < 0.0 {
+            BreakMode::Tension
+        } else {
+            BreakMode::Compression
+        }
+    } else if max_tau < tau {
+        BreakMode::Shear
+    } else {
+        BreakMode::None
+    }
+}
+
+/// A bond broken by stress in this step: it exerts nothing; the output
+/// keeps its normal force and stresses.
+pub(super) fn broken(state: &mut BondState, out: &mut BondOutput, mode: BreakMode, f: &Frame, normal: f64) {
+    let (sigma, tau) = (out.sigma, out.tau);
+    nothing(state, out, BondStatus::Broken, mode, f.d);
+    (out.normal_force, out.sigma, out.tau) = (normal, sigma, tau);
+}
+
+/// The loads of an intact bond on both spheres from its damped normal and
+/// shear forces and twisting and bending torques.
+pub(super) fn write_loads(out: &mut BondOutput, f: &Frame, normal: V, shear: V, twist: V, bend: V) {
+    let arm = cross(shear, f.en);
+    out.force_i = add(normal, shear);
+    out.torque_i = [0, 1, 2].map(|c| f.g.lever_i * arm[c] + twist[c] + bend[c]);
+    out.torque_j = [0, 1, 2].map(|c| f.g.lever_j * arm[c] - twist[c] - bend[c]);
+    out.status = BondStatus::Intact as i32;
+    out.break_mode = BreakMode::None as i32;
 }
 
 /// Advances one bond by `dt` with INL's law and writes the loads on both
@@ -249,43 +433,14 @@ pub(crate) fn inl_step(
     wall: bool,
     commit: bool,
 ) -> Result<(), KinematicsError> {
-    let status = state.status();
-    if status != BondStatus::Intact {
-        nothing(state, out, status, BreakMode::None, 0.0);
+    let Some(f) = frame(laws, kin, dt, state, out, wall, commit)? else {
         return Ok(());
-    }
-    kin.check()?;
+    };
+    let (d, en, area) = (f.d, f.en, f.area);
     let p = &laws.params;
     let on = BondParams::switch;
-    let g = if wall {
-        wall_geometry(kin)
-    } else {
-        pair_geometry(kin)
-    };
-    if !(g.r > f64::MIN_POSITIVE) {
-        return Err(KinematicsError::CoincidentCentres);
-    }
-    let d = state.r0 - g.r;
-    if commit && !laws.stress_break && g.r > p.max_distance {
-        nothing(state, out, BondStatus::Broken, BreakMode::Distance, d);
-        return Ok(());
-    }
-    let en = scale(g.delta, 1.0 / g.r);
-    let rb = p.lambda * g.radius;
-    let area = PI * rb * rb;
-    let polar = 0.5 * area * rb * rb;
-    let inertia = 0.5 * polar;
     let damping = p.damping_on();
     let smooth = on(p.damping_smooth);
-    let min_rate = 1e-5 * g.radius / dt;
-
-    let vr = sub(kin.v_i, kin.v_j);
-    let vn = project(vr, en);
-    let vt = sub(vr, vn);
-    let slip = add(vt, cross(g.delta, g.contact_spin));
-    let wr = sub(kin.w_i, kin.w_j);
-    let wn = project(wr, en);
-    let wt = sub(wr, wn);
 
     // Extremes of d: the law reads them before the other side's is zeroed.
     let max = if d > state.delta_max { d } else { state.delta_max };
@@ -293,98 +448,63 @@ pub(crate) fn inl_step(
     state.delta_max = if d < 0.0 { 0.0 } else { max };
     state.delta_min = if d > 0.0 { 0.0 } else { min };
 
-    let (mut normal, mut normal_damped, mut magnitude) = ([0.0; 3], [0.0; 3], 0.0);
-    if (on(p.tension) && d < -DEAD_ZONE) || (on(p.compression) && d > DEAD_ZONE) {
-        magnitude = normal_magnitude(laws, d, max, min, area);
-        normal = scale(en, magnitude);
-        normal_damped = if damping {
-            let m = [0, 1, 2].map(|c| multiplier(vn[c], normal[c], dt, min_rate, smooth));
-            damp_components(normal, p.eta_fn, m)
-        } else {
-            normal
-        };
-    }
+    let (normal, normal_damped, magnitude) =
+        normal_force(laws, &f, dt, || normal_magnitude(laws, d, max, min, area));
 
     let mut shear = state.shear_force;
     let mut shear_damped = [0.0; 3];
     if on(p.shear) {
-        let increment = scale(slip, -p.k_ft * area * dt);
+        let increment = scale(f.slip, -p.k_ft * area * dt);
         shear = add(sub(shear, project(shear, en)), increment);
-        shear_damped = if damping {
-            let m = [0, 1, 2].map(|c| multiplier(slip[c], shear[c], dt, min_rate, smooth));
-            damp_components(shear, p.eta_ft, m)
-        } else {
-            shear
-        };
+        shear_damped = damped_force(shear, f.slip, p.eta_ft, &f, dt, damping, smooth);
     }
 
     let twist_extremes = [state.twist_max, state.twist_min, state.bend_opposite];
     let mut twist_angle = state.twist_angle;
     let (mut twist, mut twist_damped) = ([0.0; 3], [0.0; 3]);
     if on(p.twist) {
-        twist_angle = add(twist_angle, scale(wn, dt));
+        twist_angle = add(twist_angle, scale(f.wn, dt));
         let next;
-        (twist, next) = torque_law(twist_angle, twist_extremes, p.k_tn, p.ku_tn, p.kc_tn, polar);
+        (twist, next) = torque_law(twist_angle, twist_extremes, p.k_tn, p.ku_tn, p.kc_tn, f.polar);
         [state.twist_max, state.twist_min, state.bend_opposite] = next;
-        twist_damped = if damping {
-            damp_components(twist, p.eta_tn, wn.map(sgn))
-        } else {
-            twist
-        };
+        twist_damped = damped_torque(twist, f.wn, p.eta_tn, damping);
     }
     let mut bend_angle = state.bend_angle;
     let (mut bend, mut bend_damped) = ([0.0; 3], [0.0; 3]);
     if on(p.bend) {
-        bend_angle = add(bend_angle, scale(wt, dt));
+        bend_angle = add(bend_angle, scale(f.wt, dt));
         let next;
-        (bend, next) = torque_law(bend_angle, state.bend_history, p.k_tt, p.ku_tt, p.kc_tt, inertia);
+        (bend, next) = torque_law(
+            bend_angle,
+            state.bend_history,
+            p.k_tt,
+            p.ku_tt,
+            p.kc_tt,
+            f.inertia,
+        );
         state.bend_history = next;
-        bend_damped = if damping {
-            damp_components(bend, p.eta_tt, wt.map(sgn))
-        } else {
-            bend
-        };
+        bend_damped = damped_torque(bend, f.wt, p.eta_tt, damping);
     }
 
-    let sigma = norm(normal) / area + norm(bend) * rb / inertia;
-    let tau = norm(shear) / area + norm(twist) * rb / polar;
     out.delta = d;
     out.normal_force = magnitude;
-    out.sigma = sigma;
-    out.tau = tau;
+    out.sigma = norm(normal) / area + norm(bend) * f.rb / f.inertia;
+    out.tau = norm(shear) / area + norm(twist) * f.rb / f.polar;
     if commit && laws.stress_break {
         let tension = on(p.use_ratio) && d < -DEAD_ZONE;
         let max_sigma = p.max_sigma * if tension { p.tension_compression_ratio } else { 1.0 };
-        let mode = if max_sigma < sigma {
-            if d < 0.0 {
-                BreakMode::Tension
-            } else {
-                BreakMode::Compression
-            }
-        } else if p.max_tau < tau {
-            BreakMode::Shear
-        } else {
-            BreakMode::None
-        };
+        let mode = stress_mode(out.sigma, max_sigma, out.tau, p.max_tau, d);
         if mode != BreakMode::None {
-            let (s, t) = (out.sigma, out.tau);
-            nothing(state, out, BondStatus::Broken, mode, d);
-            (out.normal_force, out.sigma, out.tau) = (magnitude, s, t);
+            broken(state, out, mode, &f, magnitude);
             return Ok(());
         }
     }
 
-    let arm = cross(shear_damped, en);
-    let force = add(normal_damped, shear_damped);
-    out.force_i = force;
-    out.torque_i = [0, 1, 2].map(|c| g.lever_i * arm[c] + twist_damped[c] + bend_damped[c]);
-    out.torque_j = [0, 1, 2].map(|c| g.lever_j * arm[c] - twist_damped[c] - bend_damped[c]);
+    write_loads(out, &f, normal_damped, shear_damped, twist_damped, bend_damped);
     if commit {
         state.shear_force = shear;
         state.twist_angle = twist_angle;
         state.bend_angle = bend_angle;
     }
-    out.status = BondStatus::Intact as i32;
-    out.break_mode = BreakMode::None as i32;
     Ok(())
 }

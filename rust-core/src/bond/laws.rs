@@ -30,6 +30,8 @@ pub struct BondLaws {
     pub features: u32,
     /// LIGGGHTS-INL's code (`inl_compatible`): the step is `bond::inl`'s.
     pub inl: bool,
+    /// LIGGGHTS-INL's linear bond (`linear`): the step is `bond::linear`'s.
+    pub linear: bool,
 }
 
 impl BondLaws {
@@ -69,6 +71,7 @@ impl BondLaws {
             },
             features: features(p),
             inl,
+            linear: on(p.linear),
             params,
         })
     }
@@ -103,7 +106,11 @@ impl BondLaws {
     /// the name a deck gives `inl_compatible` (`inlCompatible`,
     /// `inl_compatible`).
     pub fn law_line(&self, switch: &str) -> String {
-        if self.inl {
+        if self.linear {
+            "LIGGGHTS-INL's linear bond (cohesion bond, docs/models/bond-linear.md): linear springs, \
+             damping per Cartesian component, the contact's loads kept under an overlapping bond"
+                .to_string()
+        } else if self.inl {
             format!(
                 "LIGGGHTS-INL's code ({switch} on): compression k_fn1 sqrt(d) without the section A, \
                  extremes reset on every sign change, twisting, bending and damping per Cartesian \
@@ -126,6 +133,19 @@ impl BondLaws {
         self.inl
     }
 
+    /// Whether every load of the contact (normal, tangential, rolling) acts
+    /// on an overlapping pair while its bond is intact, the bond's loads
+    /// added to them, as under LIGGGHTS-INL's linear bond (`linear`).
+    pub fn keeps_contact_loads(&self) -> bool {
+        self.linear
+    }
+
+    /// Whether a wall bond follows LIGGGHTS-INL's geometry (`bond::wall`):
+    /// under its code (`inl_compatible`) and its linear bond.
+    pub fn inl_wall(&self) -> bool {
+        self.inl || self.linear
+    }
+
     /// The largest centre distance an intact bond of rest length `r0` can
     /// reach: engines must keep pairs this far apart in their neighbour
     /// lists. Distance mode: `max_distance`. Stress mode: the stretch at which
@@ -133,7 +153,11 @@ impl BondLaws {
     /// (`gamma sigma_max / k_fn2`); infinite when that never happens.
     pub fn max_bond_distance(&self, r0: f64) -> f64 {
         if self.stress_break {
-            let k = self.params.k_fn2;
+            let k = if self.linear {
+                self.params.k_n
+            } else {
+                self.params.k_fn2
+            };
             if k > 0.0 && (self.features & TENSION) != 0 {
                 r0 + self.limits.max_sigma * self.limits.tension_factor / k
             } else {

@@ -1,10 +1,11 @@
 //! A bond type as engines use it: its laws ([`BondLaws`]) and the compiled
 //! steps chosen for their switches on this CPU.
 
-use super::dispatch::{inl_kernels, kernels, Kernels};
+use super::dispatch::{inl_kernels, kernels, linear_kernels, Kernels};
 use super::finite::BatchResult;
 use super::inl::inl_step;
 use super::laws::BondLaws;
+use super::linear::linear_step;
 use super::params::{BondParams, ParameterError};
 use super::state::{BondOutput, BondState};
 use crate::kinematics::{KinematicsError, PairKinematics};
@@ -44,7 +45,9 @@ impl BondModel {
     /// The steps of `laws` on `simd`: LIGGGHTS-INL's law (`inl_compatible`)
     /// is stepped one bond at a time on every path.
     fn kernels_for(laws: &BondLaws, simd: Simd, own: bool) -> Kernels {
-        if laws.inl {
+        if laws.linear {
+            linear_kernels()
+        } else if laws.inl {
             inl_kernels()
         } else {
             kernels(laws.features, simd, own)
@@ -101,7 +104,8 @@ impl BondModel {
 
     /// The loads a run's setup pass applies, where the law computes them
     /// afresh: LIGGGHTS-INL's code (`inl_compatible`) evaluates a trial
-    /// step, which moves only the history extremes and breaks nothing.
+    /// step, which moves only the history extremes and breaks nothing, and
+    /// its linear bond (`linear`) one that moves nothing.
     /// `Ok(false)` for the default law, which applies the loads of the
     /// latest force pass (`crate::sweep::setup_loads`): nothing is written.
     /// `wall`: `kin` is a wall bond's, its partner from
@@ -114,6 +118,10 @@ impl BondModel {
         out: &mut BondOutput,
         wall: bool,
     ) -> Result<bool, KinematicsError> {
+        if self.laws.linear {
+            linear_step(&self.laws, kin, dt, state, out, wall, false)?;
+            return Ok(true);
+        }
         if !self.laws.inl {
             return Ok(false);
         }

@@ -99,6 +99,33 @@ pub struct BondParams {
     /// and twisting and bending per Cartesian component, and the contact's
     /// tangential and rolling loads kept under an overlapping bond.
     pub inl_compatible: i32,
+    /// LIGGGHTS-INL's linear bond (`cohesion bond`,
+    /// docs/models/bond-linear.md) instead of `bond/nonlinear`: the rows
+    /// it reads are [`LINEAR_NAMES`].
+    pub linear: i32,
+    /// Linear bond: normal stiffness `k_n` (N/m^3; force `k_n A d`,
+    /// bending torque increment `k_n I`).
+    pub k_n: f64,
+    /// Linear bond: tangential stiffness `k_t` (N/m^3; shear force
+    /// increment `k_t A`, twisting torque increment `k_t J`).
+    pub k_t: f64,
+    /// Linear bond: the time over which the normal spring relaxes its rest
+    /// length to the present distance (s; `inf` = never).
+    pub dissipation_fn: f64,
+    /// Linear bond: the relaxation time of the shear force (s).
+    pub dissipation_ft: f64,
+    /// Linear bond: the relaxation time of the twisting torque (s).
+    pub dissipation_tn: f64,
+    /// Linear bond: the relaxation time of the bending torque (s).
+    pub dissipation_tt: f64,
+    /// Linear bond: the springs relax over the dissipation times.
+    pub dissipation: i32,
+    /// Linear bond, stress mode with `drucker_prager`: the friction angle
+    /// (degrees) by which compression raises the shear strength.
+    pub friction_angle: f64,
+    /// Linear bond, stress mode: the shear strength is `max_tau + sgn(d)
+    /// sigma_n tan(friction_angle)` (Drucker-Prager).
+    pub drucker_prager: i32,
 }
 
 impl Default for BondParams {
@@ -145,14 +172,25 @@ impl Default for BondParams {
             twist: 1,
             bend: 1,
             inl_compatible: 0,
+            linear: 0,
+            k_n: 0.0,
+            k_t: 0.0,
+            dissipation_fn: f64::INFINITY,
+            dissipation_ft: f64::INFINITY,
+            dissipation_tn: f64::INFINITY,
+            dissipation_tt: f64::INFINITY,
+            dissipation: 0,
+            friction_angle: 0.0,
+            drucker_prager: 0,
         }
     }
 }
 
 pub use crate::parameters::ParameterError;
-use crate::parameters::{check_ranges, refuse, Need, Phrase};
+use crate::parameters::{check_ranges, refuse, LiggghtsSource, Need, Phrase};
 
 const MODEL: &str = "bond/nonlinear";
+const LINEAR_MODEL: &str = "bond/linear";
 
 const ALWAYS: Need<BondParams> = Need {
     when: "always",
@@ -177,6 +215,22 @@ const STRESS_MODE: Need<BondParams> = Need {
 const STRESS_RATIO: Need<BondParams> = Need {
     when: "stress mode with the tension ratio on",
     applies: |p| BondParams::switch(p.stress_break) && BondParams::switch(p.use_ratio),
+};
+const LINEAR: Need<BondParams> = Need {
+    when: "linear bond",
+    applies: |p| BondParams::switch(p.linear),
+};
+const LINEAR_DISSIPATION: Need<BondParams> = Need {
+    when: "linear bond with dissipation on",
+    applies: |p| BondParams::switch(p.linear) && BondParams::switch(p.dissipation),
+};
+const LINEAR_DRUCKER_PRAGER: Need<BondParams> = Need {
+    when: "linear bond, stress mode with Drucker-Prager on",
+    applies: |p| {
+        BondParams::switch(p.linear)
+            && BondParams::switch(p.stress_break)
+            && BondParams::switch(p.drucker_prager)
+    },
 };
 const AT_STEP: Need<BondParams> = Need {
     when: "bonds created at one step (create always off)",
@@ -228,8 +282,73 @@ crate::parameter_table!(
         twist, "normalTorqueStress", Switch, "switch", Switch, ALWAYS;
         bend, "shearTorqueStress", Switch, "switch", Switch, ALWAYS;
         inl_compatible, "inlCompatible", Switch, "switch", Switch, ALWAYS;
+        linear, "cohesion bond", Fixed, "switch", Switch, ALWAYS;
+        k_n, "normalBondStiffnessPerUnitArea", PerTypePair, "N/m^3", NonNegative, LINEAR;
+        k_t, "tangentialBondStiffnessPerUnitArea", PerTypePair, "N/m^3", NonNegative, LINEAR;
+        dissipation_fn, "dissipationNormalForceBond", PerTypePair, "s", PositiveOrInfinite, LINEAR_DISSIPATION;
+        dissipation_ft, "dissipationTangentialForceBond", PerTypePair, "s", PositiveOrInfinite, LINEAR_DISSIPATION;
+        dissipation_tn, "dissipationNormalTorqueBond", PerTypePair, "s", PositiveOrInfinite, LINEAR_DISSIPATION;
+        dissipation_tt, "dissipationTangentialTorqueBond", PerTypePair, "s", PositiveOrInfinite, LINEAR_DISSIPATION;
+        dissipation, "dissipationBond", Switch, "switch", Switch, ALWAYS;
+        friction_angle, "frictionAngle", PerTypePair, "deg", NonNegative, LINEAR_DRUCKER_PRAGER;
+        drucker_prager, "druckerPrager", Switch, "switch", Switch, ALWAYS;
     }
 );
+
+/// The rows LIGGGHTS-INL's linear bond (`cohesion bond`) reads, each with
+/// the name INL's decks give it where it differs from `bond/nonlinear`'s
+/// (empty: the row's own name). Every other row belongs to `bond/nonlinear`
+/// alone; the rows after `inl_compatible` to the linear bond alone.
+pub const LINEAR_NAMES: &[(&str, &str)] = &[
+    ("lambda", "radiusMultiplierBond"),
+    ("k_n", ""),
+    ("k_t", ""),
+    ("eta_fn", "dampingNormalForceBond"),
+    ("eta_ft", "dampingTangentialForceBond"),
+    ("eta_tn", "dampingNormalTorqueBond"),
+    ("eta_tt", "dampingTangentialTorqueBond"),
+    ("dissipation_fn", ""),
+    ("dissipation_ft", ""),
+    ("dissipation_tn", ""),
+    ("dissipation_tt", ""),
+    ("max_distance", "maxDistanceBond"),
+    ("max_sigma", "maxSigmaBond"),
+    ("max_tau", "maxTauBond"),
+    ("tension_compression_ratio", "ratioTensionCompression"),
+    ("friction_angle", ""),
+    ("create_distance", "createDistanceBond"),
+    ("create_step", "tsCreateBond"),
+    ("stress_break", ""),
+    ("use_ratio", "ratioTensionCompression"),
+    ("create_always", ""),
+    ("damping", ""),
+    ("damping_smooth", ""),
+    ("dissipation", ""),
+    ("drucker_prager", ""),
+    ("tension", ""),
+    ("compression", ""),
+    ("shear", ""),
+    ("twist", ""),
+    ("bend", ""),
+];
+
+/// The first row of the linear bond's own (`linear`): the rows from it on
+/// are not `bond/nonlinear`'s.
+const FIRST_LINEAR_ROW: &str = "linear";
+
+/// The name a LIGGGHTS deck of the linear bond (`linear`) or of
+/// `bond/nonlinear` gives row `id` of [`PARAMETERS`], or `None` when that
+/// model does not have the row.
+pub fn liggghts_name(linear: bool, id: usize) -> Option<&'static str> {
+    let row = PARAMETERS.get(id)?;
+    if linear {
+        let (_, name) = LINEAR_NAMES.iter().find(|(k, _)| *k == row.name)?;
+        Some(if name.is_empty() { row.liggghts_name } else { name })
+    } else {
+        let first = PARAMETERS.iter().position(|r| r.name == FIRST_LINEAR_ROW)?;
+        (id < first).then_some(row.liggghts_name)
+    }
+}
 
 /// The `bond/nonlinear` phrases of `pair_coeff` (docs/reference/pair_granbond.md):
 /// a break mode is the stress switch, a tension ratio switches the ratio on,
@@ -273,6 +392,13 @@ impl BondParams {
         v != 0
     }
 
+    /// Whether the model of these parameters reads row `id` of
+    /// [`PARAMETERS`]: its law has the row ([`liggghts_name`]) and the
+    /// switches ask for it.
+    pub fn reads(&self, id: usize) -> bool {
+        liggghts_name(Self::switch(self.linear), id).is_some() && PARAMETERS[id].needed(self)
+    }
+
     /// The defaults in the deck units of the engine's `units` style: the
     /// smoothing velocities are physical quantities (1e-5 m/s, 1e-3 rad/s),
     /// converted for `si`, `cgs`, `micro` and `nano`; a style without a
@@ -312,6 +438,26 @@ impl BondParams {
     /// be at least as stiff as loading (`ku >= k`), otherwise the unloading
     /// line would cross the virgin curve.
     pub fn validate(&self) -> Result<(), ParameterError> {
+        self.validate_rows().map_err(|e| self.in_own_words(e))
+    }
+
+    /// A refusal as the linear bond's decks name the model and the
+    /// parameter ([`LINEAR_NAMES`]); `bond/nonlinear`'s unchanged.
+    fn in_own_words(&self, mut e: ParameterError) -> ParameterError {
+        if !Self::switch(self.linear) {
+            return e;
+        }
+        let row = &PARAMETERS[e.parameter];
+        if let Some(name) = liggghts_name(true, e.parameter) {
+            e.message = e
+                .message
+                .replacen(&format!("({})", row.liggghts_name), &format!("({name})"), 1);
+        }
+        e.message = e.message.replacen(MODEL, LINEAR_MODEL, 1);
+        e
+    }
+
+    fn validate_rows(&self) -> Result<(), ParameterError> {
         // The smoothing velocities have no default in a unit style without
         // a physical scale (`default_in_units`): needed only when read.
         let mut checked = *self;
@@ -343,6 +489,34 @@ impl BondParams {
             *value = si;
         }
         check_ranges(MODEL, PARAMETERS, &checked)?;
+        // a parameter of the other law would be silently ignored
+        let linear = Self::switch(self.linear);
+        let defaults = Self::default();
+        for (id, row) in PARAMETERS.iter().enumerate() {
+            let value = (row.get)(self);
+            // (a row no LIGGGHTS deck sets has a default that may depend
+            // on the unit style, `default_in_units`)
+            if row.source != LiggghtsSource::Fixed
+                && liggghts_name(linear, id).is_none()
+                && value != (row.get)(&defaults)
+            {
+                let (this, other) = if linear {
+                    (LINEAR_MODEL, MODEL)
+                } else {
+                    (MODEL, LINEAR_MODEL)
+                };
+                return Err(refuse(
+                    MODEL,
+                    PARAMETERS,
+                    row.name,
+                    &format!(
+                        "left at its default {} ({other}'s parameter, which {this} does not read)",
+                        (row.get)(&defaults)
+                    ),
+                    value,
+                ));
+            }
+        }
         for (k, ku, ku_name) in [
             (self.k_fn1, self.ku_fn1, "ku_fn1"),
             (self.k_fn2, self.ku_fn2, "ku_fn2"),

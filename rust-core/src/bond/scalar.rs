@@ -5,6 +5,7 @@ use super::breakage::BreakMode;
 use super::finite::{bond_finite, BatchResult};
 use super::inl::inl_step;
 use super::laws::BondLaws;
+use super::linear::linear_step;
 use super::state::{BondOutput, BondState, BondStatus};
 use super::step::{advance, breaks_by_distance, broken_by_distance, relative, HistoryIo, MotionSource};
 use super::switches::Switches;
@@ -35,6 +36,9 @@ pub(crate) fn bond_step<S: Switches>(
     state: &mut BondState,
     out: &mut BondOutput,
 ) -> Result<(), KinematicsError> {
+    if S::LINEAR {
+        return linear_step(laws, kin, dt, state, out, false, true);
+    }
     if S::INL {
         return inl_step(laws, kin, dt, state, out, false, true);
     }

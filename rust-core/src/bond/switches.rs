@@ -12,6 +12,8 @@ pub(crate) trait Switches: Copy {
     /// Whether the step is LIGGGHTS-INL's law (`super::inl`) rather than
     /// the write-up's.
     const INL: bool = false;
+    /// Whether the step is LIGGGHTS-INL's linear bond (`super::linear`).
+    const LINEAR: bool = false;
 
     fn of(laws: &BondLaws) -> Self;
     fn bits(self) -> u32;
@@ -62,18 +64,21 @@ impl Switches for Switched {
     }
 }
 
-/// LIGGGHTS-INL's law (`inl_compatible`): the scalar paths step
-/// `super::inl` instead of the write-up's law; the bits are the model's.
+/// One of LIGGGHTS-INL's laws, which the scalar paths step one bond at a
+/// time: its code for `bond/nonlinear` (`inl_compatible`, [`Inl`],
+/// `super::inl`) or its linear bond (`linear`, [`Linear`],
+/// `super::linear`); the bits are the model's.
 #[derive(Clone, Copy)]
-pub(crate) struct Inl(u32);
+pub(crate) struct InlLaw<const L: bool>(u32);
 
-impl Switches for Inl {
+impl<const L: bool> Switches for InlLaw<L> {
     const FIXED: bool = false;
-    const INL: bool = true;
+    const INL: bool = !L;
+    const LINEAR: bool = L;
 
     #[inline(always)]
     fn of(laws: &BondLaws) -> Self {
-        Inl(laws.features)
+        InlLaw(laws.features)
     }
 
     #[inline(always)]
@@ -81,3 +86,8 @@ impl Switches for Inl {
         self.0
     }
 }
+
+/// LIGGGHTS-INL's code for `bond/nonlinear` (`inl_compatible`).
+pub(crate) type Inl = InlLaw<false>;
+/// LIGGGHTS-INL's linear bond (`linear`).
+pub(crate) type Linear = InlLaw<true>;

@@ -63,6 +63,26 @@ impl BondModel {
             twist: f64::INFINITY,
             bend: f64::INFINITY,
         };
+        if self.linear {
+            // k_n A, k_t A (with the levers of the spheres' rotation), k_t J, k_n I
+            let mobility = 1.0 / mass_i
+                + 1.0 / mass_j
+                + radius_i * radius_i / inertia_i
+                + radius_j * radius_j / inertia_j;
+            let mode = |on: bool, mass: f64, stiffness: f64| {
+                if on {
+                    oscillator_limit(mass, stiffness, 0.0)
+                } else {
+                    f64::INFINITY
+                }
+            };
+            return ModeLimits {
+                axial: mode(f & (TENSION | COMPRESSION) != 0, m_eff, p.k_n * sec.area),
+                shear: mode(f & SHEAR != 0, 1.0 / mobility, p.k_t * sec.area),
+                twist: mode(f & TWIST != 0, i_eff, p.k_t * sec.polar),
+                bend: mode(f & BEND != 0, i_eff, p.k_n * sec.inertia),
+            };
+        }
         if f & TENSION != 0 {
             limits.axial = oscillator_limit(m_eff, self.normal.tension.max_slope() * sec.area, 0.0);
         }
@@ -183,11 +203,13 @@ impl BondModel {
     /// the break stress, `(max_sigma / k_fn1)^2`: where stress breakage in
     /// compression starts. Infinite when bonds do not break in compression
     /// (distance mode, `max_sigma` infinite, compression off or no
-    /// compression stiffness), and under `inl_compatible`, whose threshold
-    /// depends on the section (the rattle check does not cover it).
+    /// compression stiffness), under `inl_compatible`, whose threshold
+    /// depends on the section (the rattle check does not cover it), and for
+    /// the linear bond, which has no square root.
     pub fn compression_break_threshold(&self) -> f64 {
         let p = &self.params;
         let breaks = !self.inl
+            && !self.linear
             && BondParams::switch(p.stress_break)
             && self.features & COMPRESSION != 0
             && p.k_fn1 > 0.0
@@ -237,7 +259,7 @@ impl BondModel {
         mass_i: f64,
         mass_j: f64,
     ) -> f64 {
-        if self.features & COMPRESSION == 0 || self.params.compression_linear_below > 0.0 {
+        if self.features & COMPRESSION == 0 || self.params.compression_linear_below > 0.0 || self.linear {
             return 0.0;
         }
         let sec = section(self.params.lambda, radius_i, radius_j);

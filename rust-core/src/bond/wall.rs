@@ -7,9 +7,11 @@
 //! sphere gives the same `r` throughout and lever arms of `R_i` on both
 //! sides, so the shear and its torque see the same contact point.) Under
 //! `inl_compatible` the partner slots hold the contact point itself and
-//! the bond follows INL's geometry (`bond::inl`).
+//! the bond follows INL's geometry (`bond::inl`), as under its linear bond
+//! (`bond::linear`).
 
 use super::inl::inl_step;
+use super::linear::linear_step;
 use super::model::BondModel;
 use super::state::{BondOutput, BondState, BOND_SLOTS, BOND_STATE_LEN};
 use crate::kinematics::{KinematicsError, PairKinematics, SphereKinematics};
@@ -89,7 +91,7 @@ impl BondModel {
         // distance to the contact point (its stand-in for the rules is the
         // mirror image of the centre) and keeps that point itself as its
         // partner and the distance to it as its rest length.
-        let (stand_in, partner) = if self.inl {
+        let (stand_in, partner) = if self.inl_wall() {
             ((v3(contact_point) * 2.0 - v3(sphere.x)).into(), contact_point)
         } else {
             let p = wall_partner(sphere.x, sphere.radius, contact_point);
@@ -99,7 +101,7 @@ impl BondModel {
         let created = self.try_create(&kin, step, &mut state.bond)?;
         if created {
             state.partner = partner;
-            if self.inl {
+            if self.inl_wall() {
                 state.bond.r0 = (v3(sphere.x) - v3(contact_point)).norm();
             }
         }
@@ -117,7 +119,9 @@ impl BondModel {
         out: &mut BondOutput,
     ) -> Result<(), KinematicsError> {
         let kin = wall_kinematics(sphere, state.partner, wall_velocity);
-        if self.inl {
+        if self.linear {
+            linear_step(self, &kin, dt, &mut state.bond, out, true, true)?;
+        } else if self.inl {
             inl_step(self, &kin, dt, &mut state.bond, out, true, true)?;
         } else {
             self.step(&kin, dt, &mut state.bond, out)?;

@@ -216,6 +216,20 @@ pub unsafe extern "C" fn granbond_bond_keeps_contact_tangential(model: *const Bo
     model.keeps_contact_tangential() as i32
 }
 
+/// 1 if every load of the contact acts on an overlapping pair while its
+/// bond is intact, the bond's added to them (LIGGGHTS-INL's linear bond),
+/// so an engine drops none of the contact's loads under the bond; 0
+/// otherwise, and for a null or misaligned `model`.
+///
+/// # Safety
+/// `model` must be null or from `granbond_bond_model_new`.
+// a query, not a call that fails: no error record
+#[entry(or = 0, model: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_keeps_contact_loads(model: *const BondModel) -> i32 {
+    model.keeps_contact_loads() as i32
+}
+
 /// The centre distance within which `granbond_bond_try_create` may create
 /// a bond at `from_step` or any later step, written to `reach`:
 /// `create_distance` while a creation step lies ahead (or bonds are created

@@ -122,6 +122,7 @@ fn naming_of(naming: i32) -> Result<Naming, Failure> {
 }
 
 fn cited_names(naming: Naming) -> CitedNames {
+    let naming = naming.base();
     CitedNames {
         max_sigma: parameter_name("max_sigma", naming),
         k_fn1: parameter_name("k_fn1", naming),
@@ -196,7 +197,7 @@ unsafe fn timestep_check<M>(
     ntypes: i32,
     bodies: *const TypeBodies,
     dt: f64,
-    names: CitedNames,
+    names: impl Fn(&M) -> CitedNames,
     units: *const c_char,
     style: *const c_char,
     report: &mut CheckReport,
@@ -231,7 +232,14 @@ unsafe fn timestep_check<M>(
         report.type_b = v.type_b as i32;
         report.critical = v.critical;
         report.recommended = v.recommended;
-        report.write(v.level as i32, &v.message(&style, what, bodies, &names, &units));
+        // the limiting pair's model names its parameters
+        let model = table[v.type_a * (n + 1) + v.type_b].or_else(|| table.iter().flatten().next().copied());
+        if let Some(m) = model {
+            report.write(
+                v.level as i32,
+                &v.message(&style, what, bodies, &names(m), &units),
+            );
+        }
         debug_assert_eq!(report.level != 0, v.level != TimestepLevel::Safe);
     }
     Ok(())
@@ -262,14 +270,14 @@ pub unsafe extern "C" fn granbond_bond_timestep_check(
     style: *const c_char,
     out: *mut CheckReport,
 ) -> Status {
-    let names = cited_names(naming_of(naming)?);
+    let naming = naming_of(naming)?;
     timestep_check(
         "bond",
         models,
         ntypes,
         bodies,
         dt,
-        names,
+        |m: &BondModel| cited_names(naming.for_law(m.linear)),
         units,
         style,
         out,
@@ -299,7 +307,7 @@ pub unsafe extern "C" fn granbond_voigt_timestep_check(
         ntypes,
         bodies,
         dt,
-        cited_names(Naming::Lammps),
+        |_: &VoigtModel| cited_names(Naming::Lammps),
         units,
         style,
         out,

@@ -5,7 +5,7 @@
 use super::entry;
 use super::error::{Failure, Status};
 use super::guard::{reference, reference_mut};
-use crate::bond::{BondParams, PARAMETERS};
+use crate::bond::{liggghts_name, BondParams, PARAMETERS};
 use crate::contact::{VoigtParams, VOIGT_PARAMETERS};
 use crate::parameters::{set_by_name, ParameterInfo, SetError};
 pub use crate::parameters::{LiggghtsSource, ParameterKind};
@@ -118,6 +118,22 @@ fn needed_by<T>(table: &[ParameterInfo<T>], params: &T, id: usize, out: &mut i32
     Ok(())
 }
 
+/// The LIGGGHTS names of the bond table's rows for each law, as C strings
+/// (`None` where the law does not have the row).
+fn law_names(linear: bool) -> &'static [Option<CString>] {
+    static NAMES: OnceLock<[Vec<Option<CString>>; 2]> = OnceLock::new();
+    let names = NAMES.get_or_init(|| {
+        [false, true].map(|law| {
+            (0..PARAMETERS.len())
+                .map(|id| {
+                    liggghts_name(law, id).map(|n| CString::new(n).expect("no NUL in a parameter name"))
+                })
+                .collect()
+        })
+    });
+    &names[linear as usize]
+}
+
 /// Row `id` of the bond parameter table (`id < granbond_bond_parameter_count()`).
 ///
 /// # Safety
@@ -136,6 +152,33 @@ pub unsafe extern "C" fn granbond_bond_parameter_info(id: usize, info: *mut Para
 #[no_mangle]
 pub unsafe extern "C" fn granbond_voigt_parameter_info(id: usize, info: *mut ParameterRow) -> Status {
     write_row(voigt_rows(), id, info)
+}
+
+/// The name a LIGGGHTS deck gives row `id` of the bond table under the
+/// law `linear` (0: `cohesion bond/nonlinear`, 1: LIGGGHTS-INL's linear
+/// bond, `cohesion bond`), written to `name` (static storage); null when
+/// that law does not have the row, so its decks cannot set it.
+///
+/// # Safety
+/// `name` must be null or valid for writes.
+#[entry(name: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_parameter_liggghts_name(
+    linear: i32,
+    id: usize,
+    name: *mut *const c_char,
+) -> Status {
+    row_at(PARAMETERS, id)?;
+    if linear != 0 && linear != 1 {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!("linear must be 0 (bond/nonlinear) or 1 (the linear bond); got {linear}"),
+        ));
+    }
+    *name = law_names(linear == 1)[id]
+        .as_ref()
+        .map_or(std::ptr::null(), |n| n.as_ptr());
+    Ok(())
 }
 
 /// Sets the bond parameter a deck names (LAMMPS keyword or LIGGGHTS name)
@@ -218,7 +261,9 @@ pub unsafe extern "C" fn granbond_bond_parameter_needed(
     id: usize,
     needed: *mut i32,
 ) -> Status {
-    needed_by(PARAMETERS, params, id, needed)
+    row_at(PARAMETERS, id)?;
+    *needed = params.reads(id) as i32;
+    Ok(())
 }
 
 /// `granbond_bond_parameter_needed` for the Voigt contact.

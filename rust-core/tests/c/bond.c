@@ -59,6 +59,17 @@ int test_bond_create_and_force(void)
         CHECK(granbond_bond_keeps_contact_tangential(m) == 0 && granbond_bond_keeps_contact_tangential(mi) == 1 &&
                   granbond_bond_keeps_contact_tangential(NULL) == 0,
               "keeps_contact_tangential: only under inl_compatible");
+        CHECK(granbond_bond_keeps_contact_loads(m) == 0 && granbond_bond_keeps_contact_loads(mi) == 0 &&
+                  granbond_bond_keeps_contact_loads(NULL) == 0,
+              "keeps_contact_loads: not under bond/nonlinear");
+        {
+            const char *name = NULL;
+            CHECK(granbond_bond_parameter_liggghts_name(1, 0, &name) == GB_STATUS_OK && name &&
+                      strcmp(name, "radiusMultiplierBond") == 0,
+                  "parameter_liggghts_name: lambda of the linear bond");
+            CHECK(granbond_bond_parameter_liggghts_name(2, 0, &name) == GB_STATUS_INVALID_ARGUMENT,
+                  "parameter_liggghts_name: law 2 refused");
+        }
         CHECK(granbond_bond_law_line(m, 1, line, sizeof line) == GB_STATUS_OK && strstr(line, "inlCompatible on"),
               "law_line: the default law names the LIGGGHTS switch");
         CHECK(granbond_bond_law_line(mi, 0, line, sizeof line) == GB_STATUS_OK && strstr(line, "inl_compatible on") &&

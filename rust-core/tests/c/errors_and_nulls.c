@@ -133,6 +133,13 @@ static GbStatus null_bond_parameter_needed(struct world *c, int k)
     return granbond_bond_parameter_needed(ARG(k, 0, &c->bond_params), 0, ARG(k, 1, &c->flag));
 }
 
+static GbStatus null_bond_parameter_liggghts_name(struct world *c, int k)
+{
+    const char *name = 0;
+    (void)c;
+    return granbond_bond_parameter_liggghts_name(1, 0, ARG(k, 0, &name));
+}
+
 static GbStatus null_bond_try_create(struct world *c, int k)
 {
     return granbond_bond_try_create(ARG(k, 0, c->bond), ARG(k, 1, &c->pair[0]), CREATE_STEP,
@@ -348,6 +355,7 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_bond_parameter_info", null_bond_parameter_info, {"info"}},
     {"granbond_bond_params_set", null_bond_params_set, {"params", "name"}},
     {"granbond_bond_parameter_needed", null_bond_parameter_needed, {"params", "needed"}},
+    {"granbond_bond_parameter_liggghts_name", null_bond_parameter_liggghts_name, {"name"}},
     {"granbond_bond_try_create", null_bond_try_create, {"model", "kinematics", "state", "created"}},
     {"granbond_bond_create_now", null_bond_create_now, {"model", "kinematics", "state", "created"}},
     {"granbond_bond_compute", null_bond_compute, {"model", "kinematics", "state", "out"}},

@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 102] = [
+pub const ENTRY_POINTS: [&str; 104] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -81,6 +81,8 @@ pub const ENTRY_POINTS: [&str; 102] = [
     "granbond_bond_setup_compute",
     "granbond_wall_bond_setup_compute",
     "granbond_bond_keeps_contact_tangential",
+    "granbond_bond_keeps_contact_loads",
+    "granbond_bond_parameter_liggghts_name",
     "granbond_bond_law_line",
     "granbond_bond_output_store",
     "granbond_bond_output_load",
@@ -1155,6 +1157,21 @@ impl<'t> Session<'t> {
         if self.answer(function, status) {
             assert!(!phrase.get().words.is_null() && !phrase.get().reads.is_null());
         }
+        if bond {
+            // both laws' names of the row, through the same pointer
+            for linear in [0, 1, id as i32 % 3] {
+                let mut name = Place::new(c"unset".as_ptr());
+                // SAFETY: null, misaligned or valid pointer.
+                let status = unsafe { fp::granbond_bond_parameter_liggghts_name(linear, id, name.ptr(h)) };
+                if self.answer("granbond_bond_parameter_liggghts_name", status) {
+                    assert!(id < PARAMETERS.len() && linear < 2);
+                    assert_eq!(
+                        name.get().is_null(),
+                        granbond::bond::liggghts_name(linear == 1, id).is_none()
+                    );
+                }
+            }
+        }
         if !bond {
             let mut part = Place::new(granbond::contact::ContactPart::Rolling);
             // SAFETY: null, misaligned or valid pointer.
@@ -1337,6 +1354,13 @@ impl<'t> Session<'t> {
             "granbond_bond_keeps_contact_tangential answered {keeps}"
         );
         self.answer_value("granbond_bond_keeps_contact_tangential");
+        // SAFETY: as above.
+        let keeps = unsafe { fb::granbond_bond_keeps_contact_loads(m) };
+        assert!(
+            keeps == 0 || keeps == 1,
+            "granbond_bond_keeps_contact_loads answered {keeps}"
+        );
+        self.answer_value("granbond_bond_keeps_contact_loads");
         let mut line = [0 as c_char; 512];
         // SAFETY: `line` holds 512 bytes.
         let status = unsafe { fb::granbond_bond_law_line(m, 1, line.as_mut_ptr(), line.len()) };
