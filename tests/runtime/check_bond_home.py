@@ -31,8 +31,8 @@ per mode (LAMMPS unless said):
              what they were to round-off (1e-12 of their size), and
              created = broken + intact + lost at every output.
   insert     LIGGGHTS: two spheres bonded across a periodic boundary (1
-             rank) or a rank boundary (2 ranks, the sphere inserted on
-             either rank), a sphere inserted far away at step 100: at
+             and 3 ranks) or a rank boundary (2 ranks, the sphere inserted
+             on either rank), a sphere inserted far away at step 100: at
              every output the bond acts on both spheres (f1 = -f2 to
              round-off), the pair's momentum stays what it was to
              round-off,
@@ -169,9 +169,9 @@ def check_energy(a, workdir):
 def check_insert(a, workdir):
     cases = [(1, "insert_periodic_1rank.in")]
     if a.mpiexec:
-        cases += [(2, "insert_2ranks_warned.in"), (2, "insert_2ranks_silent.in")]
+        cases += [(2, "insert_2ranks_warned.in"), (2, "insert_2ranks_silent.in"), (3, "insert_periodic_1rank.in")]
     for n, deck in cases:
-        d = os.path.join(workdir, deck[:-3])
+        d = os.path.join(workdir, f"{deck[:-3]}-np{n}")
         text = run(a, n, deck, d, env={"GRANBOND_CHECK_STORE": "1"})
         if "recounting the bonds after every pass" not in text:
             raise Failure(f"{deck}: the store check did not run")
