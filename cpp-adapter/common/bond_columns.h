@@ -1,7 +1,10 @@
 // The columns of the per-bond local output of both engines (LAMMPS
 // `compute granbond/local`, LIGGGHTS `compute pair/gran/local/bond`), chosen
 // by keyword: `id` (both atom ids), `pos` (both centres), every field the
-// core names (granbond_bond_field_info), and `all` for all of those fields.
+// core names (granbond_bond_field_info), `all` for all of those fields, and
+// the raw slots of the bond's record: `state` (the bond state, in the core's
+// order) and `output` (the loads of the latest force pass as the core files
+// them, GB_STATE_KIND_BOND_OUTPUT).
 // The core computes the fields (granbond_bond_fields); this only picks
 // columns, so a field the core gains is a keyword in both engines.
 #ifndef GRANBOND_BOND_COLUMNS_H
@@ -31,6 +34,11 @@ public:
                 columns_.push_back(Column{kIdJ, 0});
             } else if (word == "pos") {
                 for (int c = 0; c < 6; c++) columns_.push_back(Column{kPos, c});
+            } else if (word == "state") {
+                for (int c = 0; c < GRANBOND_BOND_STATE_LEN; c++) columns_.push_back(Column{kRecord, c});
+            } else if (word == "output") {
+                for (int c = 0; c < GRANBOND_BOND_OUTPUT_LEN; c++)
+                    columns_.push_back(Column{kRecord, GRANBOND_BOND_STATE_LEN + c});
             } else if (word == "all") {
                 for (size_t f = 0; f < fields_.size(); f++) columns_.push_back(Column{kField, static_cast<int>(f)});
             } else {
@@ -74,6 +82,7 @@ public:
             case kIdI: out[c] = tag_i; break;
             case kIdJ: out[c] = tag_j; break;
             case kPos: out[c] = col.index < 3 ? x_i[col.index] : x_j[col.index - 3]; break;
+            case kRecord: out[c] = record[col.index]; break;
             default: out[c] = fields_[col.index]; break;
             }
         }
@@ -94,7 +103,7 @@ public:
 
     static std::string known()
     {
-        std::string s = "id pos all";
+        std::string s = "id pos state output all";
         const size_t n = granbond_bond_field_count();
         for (size_t f = 0; f < n; f++) {
             const char *fname = nullptr, *unit = nullptr, *description = nullptr;
@@ -104,7 +113,7 @@ public:
     }
 
 private:
-    enum Kind { kIdI, kIdJ, kPos, kField };
+    enum Kind { kIdI, kIdJ, kPos, kRecord, kField };
     struct Column {
         Kind kind;
         int index;

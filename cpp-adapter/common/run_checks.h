@@ -107,44 +107,6 @@ inline std::string renumberedMessage(const char *style, long long renumbered)
            "a pair that never bonded. Delete atoms with `delete_atoms ... compress no`";
 }
 
-// A pair on two ranks (newton off) is computed on both: it counts once, on
-// the rank that owns the lower atom ID (`j` local, or the lower tag).
-template <class Tag>
-inline bool pairCountsHere(int i, int j, int nlocal, const Tag *tag)
-{
-    return j < nlocal || tag[i] < tag[j];
-}
-
-// Bonds vanish only with their atoms, so between two counts, intact then +
-// created - broken since = intact now; what is missing vanished without
-// breaking (atoms deleted or lost). Counts are over all ranks, each pair
-// once.
-class BondBalance {
-public:
-    // `created` and `broken` since the first run, `intact` now. Returns the
-    // bonds that vanished since the previous count.
-    long long vanished(double created, double broken, double intact)
-    {
-        const double gone = intact_ + (created - created_) - (broken - broken_) - intact;
-        created_ = created;
-        broken_ = broken;
-        intact_ = intact;
-        return gone > 0.0 ? static_cast<long long>(gone) : 0;
-    }
-
-private:
-    double created_ = 0.0, broken_ = 0.0, intact_ = 0.0;
-};
-
-// The warning that names them; `more` says where they are counted.
-inline std::string vanishedMessage(const char *style, long long vanished, long long step, const char *more)
-{
-    return std::string(style) + ": " + std::to_string(vanished) +
-           " bonds vanished with their atoms (lost or deleted) by step " + std::to_string(step) +
-           ", without breaking (or their atoms were moved apart beyond the neighbour list's reach between "
-           "runs); " + more;
-}
-
 // The engines keep a pair's history under the partner's atom ID, so two
 // images of one atom in a neighbour list share one record. That happens in
 // a periodic direction shorter than twice the list's reach (the pair

@@ -20,9 +20,6 @@ namespace lammps {
 
 namespace {
 
-// The engines' callback kinds: 0 grow, 1 restart, 2 border.
-const int kGrow = 0, kRestart = 1, kBorder = 2;
-
 Fix *createBondsFix(LAMMPS *lmp, int narg, char **arg) { return new FixGranbondBonds(lmp, narg, arg); }
 
 // Input keeps its current command protected in some LAMMPS versions; a
@@ -33,64 +30,15 @@ struct InputCommand : Input {
 
 }
 
-GbAtomIds atomIdsOf(const Atom *atom)
-{
-    GbAtomIds ids;
-    ids.narrow = sizeof(tagint) == 4 ? reinterpret_cast<const int32_t *>(atom->tag) : nullptr;
-    ids.wide = sizeof(tagint) == 8 ? reinterpret_cast<const int64_t *>(atom->tag) : nullptr;
-    ids.count = static_cast<size_t>(atom->nlocal + atom->nghost);
-    return ids;
-}
-
 std::string currentCommand(LAMMPS *lmp)
 {
     const char *c = lmp->input ? lmp->input->*InputCommand::field() : nullptr;
     return c ? std::string(c) : std::string();
 }
 
-FixGranbondBonds::FixGranbondBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), store_(nullptr), viewWidth_(1), page_(0)
-{
-    if (granbond_bond_store_new(&store_) != GB_STATUS_OK) fail("making the bond store");
-    restart_global = 1;
-    restart_peratom = 1;
-    create_attribute = 1;
-    comm_border = 1;
-    comm_forward = kViewPage;
-    comm_reverse = 6;
-    maxexchange_dynamic = 1;
-    maxexchange = static_cast<int>(granbond_bond_store_most_packed_len(store_));
-    grow_arrays(atom->nmax);
-    atom->add_callback(kGrow);
-    atom->add_callback(kRestart);
-    atom->add_callback(kBorder);
-}
-
-FixGranbondBonds::~FixGranbondBonds()
-{
-    atom->delete_callback(id, kGrow);
-    atom->delete_callback(id, kRestart);
-    atom->delete_callback(id, kBorder);
-    granbond_bond_store_free(store_);
-}
-
-void FixGranbondBonds::fail(const char *what)
-{
-    error->one(FLERR, std::string("fix granbond/bonds: ") + what + ": " + coreReason());
-}
-
-// The most doubles one atom's bonds take, over all ranks: the exchange and
-// restart buffers' room per atom. Collective.
-void FixGranbondBonds::sizeExchange()
-{
-    int mine = static_cast<int>(granbond_bond_store_most_packed_len(store_)), all = 0;
-    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
-    maxexchange = all;
-}
-
 void FixGranbondBonds::init()
 {
-    long long mine = static_cast<long long>(granbond_bond_store_len(store_)), all = 0;
+    long long mine = static_cast<long long>(granbond_bond_store_len(store())), all = 0;
     MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
     if (all > 0 && comm->me == 0 && currentCommand(lmp) == "write_data")
         error->warning(FLERR, "write_data: the " + std::to_string(all) + " bonds of pair_style granbond are not in "
@@ -102,219 +50,6 @@ void FixGranbondBonds::init()
                               "with their atoms but do not act under pair_style " +
                               std::string(force->pair_style ? force->pair_style : "none") +
                               "; they act again when pair_style granbond returns");
-}
-
-void FixGranbondBonds::grow_arrays(int nmax)
-{
-    if (granbond_bond_store_grow(store_, static_cast<size_t>(nmax)) != GB_STATUS_OK) fail("growing");
-}
-
-void FixGranbondBonds::copy_arrays(int i, int j, int)
-{
-    granbond_bond_store_copy(store_, static_cast<size_t>(i), static_cast<size_t>(j));
-}
-
-void FixGranbondBonds::set_arrays(int i) { granbond_bond_store_clear(store_, static_cast<size_t>(i)); }
-
-int FixGranbondBonds::pack_exchange(int i, double *buf)
-{
-    size_t written = 0;
-    if (granbond_bond_store_pack(store_, static_cast<size_t>(i), 1, buf, static_cast<size_t>(maxexchange),
-                                 &written) != GB_STATUS_OK)
-        fail("packing an atom's bonds for another rank");
-    return static_cast<int>(written);
-}
-
-int FixGranbondBonds::unpack_exchange(int nlocal, double *buf)
-{
-    // the count in buf[1] says the length; the core checks it
-    const double count = buf[1];
-    const size_t n = 2 + static_cast<size_t>(count > 0.0 ? count : 0.0) * (1 + GRANBOND_BOND_STATE_LEN);
-    size_t read = 0;
-    if (granbond_bond_store_unpack(store_, static_cast<size_t>(nlocal), buf, n, &read) != GB_STATUS_OK)
-        fail("unpacking the bonds of an atom from another rank");
-    return static_cast<int>(read);
-}
-
-int FixGranbondBonds::pack_restart(int i, double *buf)
-{
-    size_t written = 0;
-    const size_t room = granbond_bond_store_packed_len(store_, static_cast<size_t>(i));
-    if (granbond_bond_store_pack(store_, static_cast<size_t>(i), 0, buf + 1, room, &written) != GB_STATUS_OK)
-        fail("packing an atom's bonds for a restart file");
-    buf[0] = static_cast<double>(written + 1);
-    return static_cast<int>(written + 1);
-}
-
-void FixGranbondBonds::unpack_restart(int nlocal, int nth)
-{
-    double **extra = atom->extra;
-    int m = 0;
-    for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-    const size_t n = static_cast<size_t>(extra[nlocal][m]) - 1;
-    size_t read = 0;
-    if (granbond_bond_store_unpack(store_, static_cast<size_t>(nlocal), &extra[nlocal][m + 1], n, &read) !=
-        GB_STATUS_OK)
-        fail("reading an atom's bonds from the restart file");
-}
-
-int FixGranbondBonds::size_restart(int i)
-{
-    return static_cast<int>(granbond_bond_store_packed_len(store_, static_cast<size_t>(i)) + 1);
-}
-
-int FixGranbondBonds::maxsize_restart() { return maxexchange + 1; }
-
-int FixGranbondBonds::pack_border(int n, int *list, double *buf)
-{
-    for (int k = 0; k < n; k++)
-        buf[k] = static_cast<double>(granbond_bond_store_seen(store_, static_cast<size_t>(list[k])));
-    return n;
-}
-
-int FixGranbondBonds::unpack_border(int n, int first, double *buf)
-{
-    for (int k = 0; k < n; k++)
-        granbond_bond_store_set_seen(store_, static_cast<size_t>(first + k), static_cast<int64_t>(buf[k]));
-    return n;
-}
-
-// The rows go in pages of kViewPage doubles (the count in the page, then
-// partner ids), as many as the widest row needs: the engine sizes its
-// forward buffers by comm_forward when a run starts, and bonds may form
-// during it.
-void FixGranbondBonds::sendView()
-{
-    int mine = static_cast<int>(granbond_bond_store_view_width(store_)), all = 0;
-    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
-    viewWidth_ = all;
-    row_.assign(static_cast<size_t>(all), 0.0);
-    if (granbond_bond_store_clear_view(store_) != GB_STATUS_OK) fail("the view");
-    const int perPage = kViewPage - 1;
-    const int pages = std::max(1, (all - 1 + perPage - 1) / perPage);
-    for (page_ = 0; page_ < pages; page_++) {
-#ifdef GRANBOND_LAMMPS_COMM_FIX_OVERLOAD
-        comm->forward_comm(this, kViewPage);
-#else
-        comm->forward_comm_fix(this, kViewPage);
-#endif
-    }
-    if (granbond_bond_store_finish_view(store_) != GB_STATUS_OK) fail("the view");
-}
-
-int FixGranbondBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)
-{
-    const size_t w = static_cast<size_t>(viewWidth_);
-    const int perPage = kViewPage - 1;
-    for (int k = 0; k < n; k++) {
-        if (granbond_bond_store_pack_view(store_, static_cast<size_t>(list[k]), row_.data(), w) != GB_STATUS_OK)
-            fail("packing the view");
-        const int count = static_cast<int>(row_[0]);
-        const int first = page_ * perPage, inPage = std::max(0, std::min(perPage, count - first));
-        double *out = buf + static_cast<size_t>(k) * kViewPage;
-        std::fill(out, out + kViewPage, 0.0);
-        out[0] = inPage;
-        std::copy(row_.begin() + 1 + first, row_.begin() + 1 + first + inPage, out + 1);
-    }
-    return n * kViewPage;
-}
-
-void FixGranbondBonds::unpack_forward_comm(int n, int first, double *buf)
-{
-    const GbAtomIds ids = atomIdsOf(atom);
-    for (int k = 0; k < n; k++)
-        if (granbond_bond_store_unpack_view(store_, static_cast<size_t>(first + k), buf + static_cast<size_t>(k) * kViewPage,
-                                            kViewPage, &ids, static_cast<size_t>(atom->nlocal)) != GB_STATUS_OK)
-            fail("unpacking the view");
-}
-
-double *FixGranbondBonds::ghostLoads()
-{
-    const size_t n = 6 * static_cast<size_t>(atom->nghost);
-    if (ghostLoads_.size() < n) ghostLoads_.resize(n);
-    std::fill(ghostLoads_.begin(), ghostLoads_.begin() + n, 0.0);
-    return ghostLoads_.data();
-}
-
-void FixGranbondBonds::returnGhostLoads()
-{
-#ifdef GRANBOND_LAMMPS_COMM_FIX_OVERLOAD
-    comm->reverse_comm(this, 6);
-#else
-    comm->reverse_comm_fix(this, 6);
-#endif
-}
-
-int FixGranbondBonds::pack_reverse_comm(int n, int first, double *buf)
-{
-    const int nlocal = atom->nlocal;
-    for (int k = 0; k < n; k++) {
-        const double *g = ghostLoads_.data() + 6 * static_cast<size_t>(first + k - nlocal);
-        std::copy(g, g + 6, buf + 6 * k);
-    }
-    return 6 * n;
-}
-
-void FixGranbondBonds::unpack_reverse_comm(int n, int *list, double *buf)
-{
-    double **f = atom->f, **torque = atom->torque;
-    const int nlocal = atom->nlocal;
-    for (int k = 0; k < n; k++) {
-        const int i = list[k];
-        const double *b = buf + 6 * k;
-        if (i < nlocal) {
-            for (int c = 0; c < 3; c++) {
-                f[i][c] += b[c];
-                torque[i][c] += b[3 + c];
-            }
-        } else {
-            // a ghost that is an image of another ghost's atom on this rank
-            double *g = ghostLoads_.data() + 6 * static_cast<size_t>(i - nlocal);
-            for (int c = 0; c < 6; c++) g[c] += b[c];
-        }
-    }
-}
-
-GbStoreCounts FixGranbondBonds::counts() const
-{
-    GbStoreCounts c;
-    std::memset(&c, 0, sizeof c);
-    granbond_bond_store_counts(store_, &c);
-    return c;
-}
-
-// The counts summed over the ranks, after their own size: LAMMPS hands
-// restart() what follows the payload's length.
-void FixGranbondBonds::write_restart(FILE *fp)
-{
-    GbStoreCounts mine = counts(), all;
-    MPI_Allreduce(&mine, &all, sizeof(GbStoreCounts) / sizeof(int64_t), MPI_INT64_T, MPI_SUM, world);
-    if (comm->me == 0) {
-        const int64_t layout = static_cast<int64_t>(sizeof(GbStoreCounts));
-        const int size = static_cast<int>(sizeof(int64_t) + sizeof(GbStoreCounts));
-        fwrite(&size, sizeof(int), 1, fp);
-        fwrite(&layout, sizeof(int64_t), 1, fp);
-        fwrite(&all, sizeof(GbStoreCounts), 1, fp);
-    }
-}
-
-void FixGranbondBonds::restart(char *buf)
-{
-    int64_t layout = 0;
-    std::memcpy(&layout, buf, sizeof layout);
-    if (layout != static_cast<int64_t>(sizeof(GbStoreCounts)))
-        error->all(FLERR, "fix granbond/bonds: the restart file's bond counts have another layout; write the "
-                          "restart file again with this granbond");
-    if (comm->me != 0) return;
-    GbStoreCounts c;
-    std::memcpy(&c, buf + sizeof layout, sizeof c);
-    granbond_bond_store_restore_counts(store_, &c);
-}
-
-double FixGranbondBonds::memory_usage()
-{
-    return static_cast<double>(granbond_bond_store_bytes(store_)) +
-           static_cast<double>(ghostLoads_.capacity() * sizeof(double));
 }
 
 FixGranbondBonds *bondsFix(LAMMPS *lmp)

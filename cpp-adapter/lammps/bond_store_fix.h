@@ -1,93 +1,25 @@
-// fix granbond/bonds: the home of pair granbond's bonds in LAMMPS. It holds
-// the core's bond store of this rank (docs/development.md, "Where a bond
-// lives: the bond store") and hands it the engine's per-atom events, so a
-// bond moves with the atom that owns it: arrays grown, atoms copied (sort,
-// deletion, migration), created, packed for another rank or a restart file
-// and unpacked there. It also carries the store's three communications:
-// each atom's seen id to its ghost images (border), each atom's view row to
-// them (forward), and the loads of bonds on ghost atoms back to their
-// owners where the engine does not (reverse, newton off).
-//
-// The pair style makes it (or takes the one read_restart brought back) and
-// is its only user. Translation only: every rule is the core's.
+// LAMMPS's fix granbond/bonds: the shared store fix (common/fix_granbond_bonds.h)
+// with what LAMMPS adds at a run's start: a write_data that leaves the
+// bonds out, and a run under another pair style, are told to the deck.
+// pair granbond makes it (or takes the one read_restart brought back) and
+// is its only user.
 #ifndef GRANBOND_LAMMPS_BOND_STORE_FIX_H
 #define GRANBOND_LAMMPS_BOND_STORE_FIX_H
 
-#include "atom.h"
-#include "fix.h"
-#include "granbond.h"
+#include "fix_granbond_bonds.h"
 
 #include <string>
-#include <vector>
 
 namespace granbond {
 namespace lammps {
 
-// The fix's ID and style name, as pair granbond creates it.
-inline const char *bondsFixId() { return "GRANBOND_BONDS"; }
-inline const char *bondsFixStyle() { return "granbond/bonds"; }
-
-class FixGranbondBonds : public LAMMPS_NS::Fix {
+class FixGranbondBonds : public BondStoreFix {
 public:
-    FixGranbondBonds(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
-    ~FixGranbondBonds() override;
+    FixGranbondBonds(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) : BondStoreFix(lmp, narg, arg) {}
 
-    int setmask() override { return LAMMPS_NS::FixConst::PRE_EXCHANGE; }
     // A run under another pair style: the bonds wait, and the deck is told.
     void init() override;
-    void pre_exchange() override { sizeExchange(); }
-    void setup_pre_exchange() override { sizeExchange(); }
-
-    void grow_arrays(int nmax) override;
-    void copy_arrays(int i, int j, int) override;
-    void set_arrays(int i) override;
-    int pack_exchange(int i, double *buf) override;
-    int unpack_exchange(int nlocal, double *buf) override;
-    int pack_restart(int i, double *buf) override;
-    void unpack_restart(int nlocal, int nth) override;
-    int size_restart(int i) override;
-    int maxsize_restart() override;
-    int pack_border(int n, int *list, double *buf) override;
-    int unpack_border(int n, int first, double *buf) override;
-    int pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int *pbc) override;
-    void unpack_forward_comm(int n, int first, double *buf) override;
-    int pack_reverse_comm(int n, int first, double *buf) override;
-    void unpack_reverse_comm(int n, int *list, double *buf) override;
-    void write_restart(FILE *fp) override;
-    void restart(char *buf) override;
-    double memory_usage() override;
-
-    GbBondStore *store() const { return store_; }
-
-    // The view: every atom's row to its ghost images, then asked by the
-    // pair (granbond_bond_store_bonded). Collective.
-    void sendView();
-    // The loads the pass put on ghost atoms (ghostLoads(), 6 doubles a
-    // ghost: force then torque) added to their owners, and cleared.
-    // Collective; for newton off, where the engine leaves ghost forces.
-    void returnGhostLoads();
-    double *ghostLoads();
-    // Counts of this rank; a restart file brings back the sums on rank 0.
-    GbStoreCounts counts() const;
-    // The room one atom's bonds take in exchange and restart buffers, over
-    // all ranks, after bonds formed. Collective.
-    void sizeExchange();
-
-private:
-    void fail(const char *what);
-
-    // doubles of one page of a view row in a forward communication
-    static const int kViewPage = 8;
-
-    GbBondStore *store_;
-    std::vector<double> ghostLoads_;
-    std::vector<double> row_;   // one atom's whole view row, while paged
-    int viewWidth_;             // doubles the widest view row takes, this exchange
-    int page_;                  // the page in flight
 };
-
-// The ids of a rank's atoms (local, then ghost) as the core reads them.
-GbAtomIds atomIdsOf(const LAMMPS_NS::Atom *atom);
 
 // The input command LAMMPS carries out now ("run", "write_data", ...).
 std::string currentCommand(LAMMPS_NS::LAMMPS *lmp);

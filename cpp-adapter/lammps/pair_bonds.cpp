@@ -7,6 +7,8 @@
 #include "pair_granbond.h"
 #include "bond_store_fix.h"
 #include "core_message.h"
+#include "store_check.h"
+#include "store_pass.h"
 #include "vector_adds.h"
 
 #include "atom.h"
@@ -30,17 +32,7 @@ namespace lammps {
 
 GbAtomIds PairGranbond::atomIds() const { return atomIdsOf(atom); }
 
-GbAtomArrays PairGranbond::atomArrays() const
-{
-    const bool any = atom->nmax > 0;
-    GbAtomArrays a;
-    a.x = any ? atom->x[0] : nullptr;
-    a.v = any ? atom->v[0] : nullptr;
-    a.omega = any ? atom->omega[0] : nullptr;
-    a.radius = atom->radius;
-    a.count = static_cast<size_t>(atom->nlocal + atom->nghost);
-    return a;
-}
+GbAtomArrays PairGranbond::atomArrays() const { return atomArraysOf(atom); }
 
 GbBondStore *PairGranbond::bondStore() const { return bonds_ ? bonds_->store() : nullptr; }
 
@@ -69,15 +61,13 @@ void PairGranbond::linkBonds()
     MPI_Allreduce(mine, all, 4, MPI_LONG_LONG, MPI_SUM, world);
     const long long lost = all[0] + all[1] + all[2] + all[3];
     if (lost > 0 && comm->me == 0) {
-        std::string causes;
         const char *const why[4] = {
             "their atom left the system (deleted, or lost through a boundary)",
             "their partner was not among the atoms within the communication cutoff (deleted, lost, or moved "
             "farther than the bond's reach between runs)",
             "an atom's id was taken over by a new atom",
             "their atoms' types have no bond model any more (set type, or pair_coeff without bond/nonlinear)"};
-        for (int c = 0; c < 4; c++)
-            if (all[c] > 0) causes += (causes.empty() ? "" : "; ") + std::to_string(all[c]) + " because " + why[c];
+        const std::string causes = lostCauses(all, why);
         error->warning(FLERR, "pair granbond (bond/nonlinear): " + std::to_string(lost) + " bonds lost at step " +
                                   std::to_string(static_cast<long long>(update->ntimestep)) +
                                   " without breaking: " + causes +
@@ -128,37 +118,22 @@ void PairGranbond::markBonded()
 // bond once.
 void PairGranbond::stepBonds(bool advance)
 {
-    GbBondStore *store = bonds_->store();
-    const GbAtomArrays arrays = atomArrays();
-    const GbAtomIds ids = atomIds();
-    int32_t ends[2 * GRANBOND_BOND_STORE_CHUNK];
-    GbBondOutput outs[GRANBOND_BOND_STORE_CHUNK];
     double *const f0 = atom->f[0], *const t0 = atom->torque[0];
     const double *const x0 = atom->x[0];
     const int nlocal = atom->nlocal;
-    for (;;) {
-        size_t n = 0, bad = 0;
-        if (granbond_bond_store_step_next(store, bond_.data(), bond_.size(), &arrays, &ids, ends, outs, &n, &bad) !=
-            GB_STATUS_OK) {
-            int32_t e[2] = {-1, -1};
-            int64_t partner = 0;
-            double state[GRANBOND_BOND_STATE_LEN];
-            const std::string why = coreReason();
-            if (granbond_bond_store_bond(store, bad, e, &partner, state) == GB_STATUS_OK && e[0] >= 0)
-                failPair(e[0], e[1], "the bond");
-            error->one(FLERR, "pair granbond: the bonds: " + why);
-        }
-        if (n == 0) break;
-        for (size_t k = 0; k < n; k++) {
-            const int i = ends[2 * k], j = ends[2 * k + 1];
-            const GbBondOutput &o = outs[k];
+    const int newton = force->newton_pair;
+    double *const ghosts = ghostLoads_;
+    stepStoreChunks(
+        bonds_->store(), bond_.data(), bond_.size(), atom, atomIds(),
+        bondOutputUsers > 0 && advance ? &outputs_ : nullptr,
+        [&](int i, int j, const GbBondOutput &o) {
             add3(f0 + 3 * static_cast<size_t>(i), o.force_i);
             add3(t0 + 3 * static_cast<size_t>(i), o.torque_i);
-            if (j < nlocal || force->newton_pair) {
+            if (j < nlocal || newton) {
                 subtract3(f0 + 3 * static_cast<size_t>(j), o.force_i);
                 add3(t0 + 3 * static_cast<size_t>(j), o.torque_j);
             } else {
-                double *g = ghostLoads_ + 6 * static_cast<size_t>(j - nlocal);
+                double *g = ghosts + 6 * static_cast<size_t>(j - nlocal);
                 subtract3(g, o.force_i);
                 add3(g + 3, o.torque_j);
             }
@@ -168,9 +143,11 @@ void PairGranbond::stepBonds(bool advance)
                 ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, o.force_i[0], o.force_i[1], o.force_i[2], xi[0] - xj[0],
                              xi[1] - xj[1], xi[2] - xj[2]);
             }
-        }
-        if (bondOutputUsers > 0 && advance) outputs_.insert(outputs_.end(), outs, outs + n);
-    }
+        },
+        [&](int i, int j, const std::string &why) {
+            if (i >= 0) failPair(i, j, "the bond");
+            error->one(FLERR, "pair granbond: the bonds: " + why);
+        });
 }
 
 // The bonds that broke in the pass so far: their pairs leave the bonded
@@ -230,26 +207,10 @@ void PairGranbond::takeBroken(bool advance)
 // bond now.
 bool PairGranbond::tryBond(size_t tp, int i, int j, int *touch, double *history)
 {
-    GbBondStore *store = bonds_->store();
-    const tagint *tag = atom->tag;
-    const int nlocal = atom->nlocal;
-    const int owner = granbond_bond_store_creates_here(i < nlocal, j < nlocal, tag[i], tag[j], !force->newton_pair);
-    GbPairKinematics k;
-    int32_t made = 0;
-    if (owner < 0) {
-        pairKinematics(i, j, k);
-        if (granbond_bond_store_would_create(store, bond_[tp], static_cast<size_t>(i), static_cast<size_t>(j), &k,
-                                             update->ntimestep, &made) != GB_STATUS_OK)
-            failPair(i, j, "the bond's creation");
-    } else {
-        const int o = owner == 0 ? i : j, p = owner == 0 ? j : i;
-        pairKinematics(o, p, k);
-        if (granbond_bond_store_try_create(store, bond_[tp], static_cast<uint16_t>(tp), static_cast<size_t>(o),
-                                           static_cast<size_t>(p), tag[o], tag[p], &k, update->ntimestep,
-                                           &made) != GB_STATUS_OK)
-            failPair(i, j, "the bond's creation");
-        if (made) formedThisPass_ = true;
-    }
+    bool made = false;
+    if (proposePair(bonds_->store(), bond_[tp], static_cast<uint16_t>(tp), atom, i, j, !force->newton_pair,
+                    update->ntimestep, false, made, formedThisPass_) != GB_STATUS_OK)
+        failPair(i, j, "the bond's creation");
     if (!made) return false;
     *touch = kBondedMark;
     if (!pairs_[tp].contactUnderBond) std::fill(history, history + sizeHistory_, 0.0);
@@ -262,13 +223,13 @@ void PairGranbond::countBonds()
 {
     const GbStoreCounts c = bonds_->counts();
     pvector[0] = static_cast<double>(c.created);
-    pvector[1] = static_cast<double>(c.broken_distance + c.broken_tension + c.broken_compression + c.broken_shear);
+    pvector[1] = static_cast<double>(brokenCount(c));
     pvector[2] = static_cast<double>(c.intact);
     pvector[3] = static_cast<double>(c.broken_distance);
     pvector[4] = static_cast<double>(c.broken_tension);
     pvector[5] = static_cast<double>(c.broken_compression);
     pvector[6] = static_cast<double>(c.broken_shear);
-    pvector[7] = static_cast<double>(c.lost_owner_gone + c.lost_partner_unreached + c.lost_id_reused + c.lost_no_model);
+    pvector[7] = static_cast<double>(lostCount(c));
 }
 
 // GRANBOND_CHECK_STORE: after a pass, the bonds recounted against the
@@ -292,44 +253,8 @@ void PairGranbond::checkStore()
                         std::to_string(static_cast<long long>(atom->tag[j])) + (flagged ? " is flagged bonded, but no bond" : " is bonded, but not flagged");
         }
     }
-    const size_t n = granbond_bond_store_len(store);
-    std::vector<double> mine;
-    for (size_t k = 0; k < n && wrong.empty(); k++) {
-        int32_t e[2];
-        int64_t partner = 0;
-        double state[GRANBOND_BOND_STATE_LEN];
-        if (granbond_bond_store_bond(store, k, e, &partner, state) != GB_STATUS_OK)
-            wrong = "bond " + std::to_string(k) + ": " + coreReason();
-        else if (e[0] < 0 || e[0] >= atom->nlocal || e[1] < 0 || static_cast<int64_t>(atom->tag[e[1]]) != partner)
-            wrong = "bond " + std::to_string(k) + " does not join its owner and its partner " + std::to_string(partner);
-        else {
-            const double a = static_cast<double>(atom->tag[e[0]]), b = static_cast<double>(partner);
-            mine.push_back(std::min(a, b));
-            mine.push_back(std::max(a, b));
-        }
-    }
-    // every bond once: the pairs of all ranks, gathered
-    int count = static_cast<int>(mine.size());
-    std::vector<int> counts(comm->nprocs), offsets(comm->nprocs + 1, 0);
-    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-    for (int r = 0; r < comm->nprocs; r++) offsets[r + 1] = offsets[r] + counts[r];
-    std::vector<double> all(static_cast<size_t>(offsets[comm->nprocs]));
-    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
-    std::vector<std::pair<double, double>> pairs;
-    for (size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
-    std::sort(pairs.begin(), pairs.end());
-    for (size_t k = 1; k < pairs.size() && wrong.empty(); k++)
-        if (pairs[k] == pairs[k - 1])
-            wrong = "the bond of atoms " + std::to_string(static_cast<long long>(pairs[k].first)) + " and " +
-                    std::to_string(static_cast<long long>(pairs[k].second)) + " is stored twice";
-    const GbStoreCounts c = bonds_->counts();
-    const long long local[4] = {c.created, c.broken_distance + c.broken_tension + c.broken_compression + c.broken_shear,
-                                c.intact, c.lost_owner_gone + c.lost_partner_unreached + c.lost_id_reused + c.lost_no_model};
-    long long sums[4];
-    MPI_Allreduce(local, sums, 4, MPI_LONG_LONG, MPI_SUM, world);
-    if (wrong.empty() && sums[0] != sums[1] + sums[2] + sums[3])
-        wrong = std::to_string(sums[0]) + " bonds created, " + std::to_string(sums[1]) + " broken, " +
-                std::to_string(sums[2]) + " intact, " + std::to_string(sums[3]) + " lost";
+    const std::string rest = checkStoredBonds(store, atom->tag, atom->nlocal, world);
+    if (wrong.empty()) wrong = rest;
     int bad = !wrong.empty(), anyBad = 0;
     MPI_Allreduce(&bad, &anyBad, 1, MPI_INT, MPI_MAX, world);
     if (bad) error->one(FLERR, "pair granbond: store check at step " + std::to_string(update->ntimestep) + ": " + wrong);

@@ -47,13 +47,6 @@ namespace {
 const char *const kFixDummy = "NEIGH_HISTORY_GRANBOND_DUMMY";
 const char *const kFix = "NEIGH_HISTORY_GRANBOND";
 
-void copy3(double *to, const double *from)
-{
-    to[0] = from[0];
-    to[1] = from[1];
-    to[2] = from[2];
-}
-
 }
 
 
@@ -397,18 +390,6 @@ void PairGranbond::voigtEvaluate(size_t tp, int i, int j, const double *del, dou
         failPair(i, j, "the voigt contact");
 }
 
-void PairGranbond::pairKinematics(int i, int j, GbPairKinematics &k) const
-{
-    copy3(k.x_i, atom->x[i]);
-    copy3(k.x_j, atom->x[j]);
-    copy3(k.v_i, atom->v[i]);
-    copy3(k.v_j, atom->v[j]);
-    copy3(k.w_i, atom->omega[i]);
-    copy3(k.w_j, atom->omega[j]);
-    k.radius_i = atom->radius[i];
-    k.radius_j = atom->radius[j];
-}
-
 void PairGranbond::compute(int eflag, int vflag)
 {
     ev_init(eflag, vflag);
@@ -533,23 +514,9 @@ void PairGranbond::compute(int eflag, int vflag)
     if (anyBond_) {
         // the bonds formed in this pass, advanced in it
         stepBonds(advance);
-        if (granbond_bond_store_finish_pass(bonds_->store()) != GB_STATUS_OK)
-            error->one(FLERR, "pair granbond: " + coreReason());
-        if (bondOutputUsers > 0 && advance) {
-            // in store order: the bonds that broke have left it
-            outputs_.erase(std::remove_if(outputs_.begin(), outputs_.end(),
-                                          [](const GbBondOutput &o) { return o.status != GB_BOND_STATUS_INTACT; }),
-                           outputs_.end());
-        }
-        if (!force->newton_pair) bonds_->returnGhostLoads();
-        // bonds formed on any rank: the view shows them from now on
-        int mine = formedThisPass_, any = 0;
-        MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+        bonds_->finishPass(formedThisPass_, !force->newton_pair,
+                           bondOutputUsers > 0 && advance ? &outputs_ : nullptr);
         formedThisPass_ = false;
-        if (any) {
-            bonds_->sendView();
-            bonds_->sizeExchange();
-        }
         countBonds();
         // the energy the bonds store: the pair's potential energy (pe)
         if (eflag_global) {

@@ -109,7 +109,6 @@ private:
                    GbContactOutput &cout);
     void voigtEvaluate(size_t tp, int i, int j, const double *del, double rsq, const double *state,
                        GbContactOutput &cout);
-    void pairKinematics(int i, int j, GbPairKinematics &k) const;
     void contactOf(size_t tp, int i, int j, int *touch, double *history, bool advance, bool touching,
                    const double *del, double rsq);
 

@@ -1,6 +1,5 @@
 #include "atoms_fix.h"
 #include "bond_book.h"
-#include "bond_nonlinear_cohesion.h"
 #include "liggghts_engine.h"
 
 #include "fix_contact_history.h"
@@ -18,7 +17,7 @@ namespace {
 // partner arrays (keyed by atom ID) at the setup of the next run, from the
 // list of the previous one. Atoms created or deleted in between have moved
 // the ghosts' places, so the history of a pair with a ghost would be filed
-// under the ID of the atom now in the ghost's place: a bond lost, or handed
+// under the ID of the atom now in the ghost's place: a contact's history lost, or handed
 // to another pair. This fix files the history at the end of each run,
 // while the list still matches the atoms, as LAMMPS's fix neigh/history
 // does (the setup then has nothing newer to file).
@@ -26,7 +25,7 @@ class AtomsFix : public FixGranbondAtoms {
 public:
     AtomsFix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) : FixGranbondAtoms(lmp, narg, arg) {}
 
-    int setmask() { return LAMMPS_NS::FixConst::PRE_EXCHANGE | LAMMPS_NS::FixConst::POST_RUN; }
+    int setmask() { return LAMMPS_NS::FixConst::POST_RUN; }
 
     // LIGGGHTS's setup gives every atom a just-created fix's start value
     // after the setup pass, which has already marked the atoms seen; the
@@ -34,18 +33,6 @@ public:
     void init() { just_created = 0; }
 
     void post_run() { fileRecords(); }
-
-    // Before the engine re-neighbours, the bonds' rows go back into their
-    // records (bond_index.h), which fix contact/history's pre_exchange then
-    // moves into the partner arrays. Where that fix comes first in the
-    // engine's order of fixes, it moves them again.
-    void pre_exchange()
-    {
-        BondNonlinearCohesion *bonds = BondBook::of(lmp).pairBonds;
-        if (!bonds || !bonds->writeBack()) return;
-        LAMMPS_NS::FixContactHistory *history = contactHistory();
-        if (history && modify->find_fix(history->id) < modify->find_fix(id)) history->pre_exchange();
-    }
 
     // Restart files written during a run (`restart N`) take the history
     // from the partner arrays, which LIGGGHTS fills only at neighbour-list
@@ -73,12 +60,9 @@ protected:
     }
 
 private:
-    // The bonds' loads into their records (bond_index.h), then the records
-    // into the partner arrays.
+    // The contacts' records into the partner arrays.
     void fileRecords()
     {
-        BondNonlinearCohesion *bonds = BondBook::of(lmp).pairBonds;
-        if (bonds) bonds->writeBack();
         LAMMPS_NS::FixContactHistory *history = contactHistory();
         if (history) history->pre_exchange();
     }

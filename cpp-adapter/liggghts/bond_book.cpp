@@ -1,5 +1,6 @@
 #include "bond_book.h"
 #include "atoms_fix.h"
+#include "bonds_fix.h"
 #include "bond_local.h"
 #include "core_bridge.h"
 #include "fix_granbond_atoms.h"
@@ -86,7 +87,9 @@ void BondBook::localTotals(double out[kTotals], bigint step, bool restored) cons
 
 void BondBook::restoreTotals(const double totals[kTotals], bool root)
 {
-    for (int k = 0; k < kTotals; k++) restored_[k] = root && k != 2 && k != 5 ? totals[k] : 0.0;
+    // intact bonds are counted afresh; the pair bonds' events come back
+    // with their store (fix granbond/bonds)
+    for (int k = 0; k < kTotals; k++) restored_[k] = root && k != 0 && k != 1 && k != 2 && k != 5 && k != 6 ? totals[k] : 0.0;
 }
 
 namespace {
@@ -247,6 +250,7 @@ void registerBondStyles(LAMMPS_NS::LAMMPS *lmp)
     if (computes) (*computes)["pair/gran/local/bond"] = &createPairGranLocalBond;
     if (fixes) (*fixes)["bond/breaklog"] = &createBreakLog;
     if (fixes) (*fixes)[atomsFixStyle()] = &createAtomsFix;
+    if (fixes) (*fixes)[bondsFixStyle()] = &createBondsFix;
     // granbond's property lines are checked before the engine reads them
     if (fixes) checkPropertyLines(*fixes);
     // each LAMMPS constructor re-registers the engine's "gran" selector

@@ -11,6 +11,7 @@
 #include "pair_gran.h"
 
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -27,69 +28,65 @@ public:
         Compute(lmp, iarg, narg, arg), inl_(narg == iarg), data_(0), pointers_(0)
     {
         // Without keywords, LIGGGHTS-INL's layout: both centres, both ids
-        // and the periodic flag, the loads (inlLayout), the pair's history.
+        // and the periodic flag, the loads (inlLayout), then the bond's
+        // state where INL has the pair's history (which held its bond).
         const std::string wrong = inl_ ? columns_.parseInlLoads() : columns_.parse(narg - iarg, arg + iarg);
         if (!wrong.empty()) endRun(error, FLERR, "compute pair/gran/local/bond: " + wrong);
         iarg = narg;
         local_flag = 1;
         size_local_rows = 0;
         size_local_cols = columns_.size() == 1 ? 0 : static_cast<int>(columns_.size());
-        // dump local reads the width when the dump is defined: the pair
-        // style, with its history, must be defined before this compute
         if (inl_) inlWidth();
     }
     ~ComputePairGranLocalBond()
     {
+        listen(0);
         std::free(data_);
         std::free(pointers_);
     }
 
-    void init()
-    {
-        bonds();
-        if (inl_) inlWidth();
-    }
+    void init() { listen(bonds()); }
 
     void compute_local()
     {
         invoked_local = update->ntimestep;
         BondNonlinearCohesion *model = bonds();
-        model->writeBack();   // the bonds and loads into their records (bond_index.h)
-        const LAMMPS_NS::PairGran *pair = model->pairStyle();
-        const LAMMPS_NS::NeighList *list = pair ? pair->list : 0;
-        const LAMMPS_NS::NeighList *history = pair ? pair->listgranhistory : 0;
+        GbBondStore *store = model->bondStore();
+        if (store && !model->storeCurrent())
+            endRun(error, FLERR, "compute pair/gran/local/bond: cohesion bond/nonlinear has no force pass at step " +
+                                     std::to_string(static_cast<long long>(update->ntimestep)) +
+                                     " for the present atoms (use it in a run's output, not between runs)");
         rows_.clear();
-        if (list && history && history->firstdouble) {
-            const int dnum = const_cast<LAMMPS_NS::PairGran *>(pair)->dnum();
-            const int offset = model->recordOffset();
-            const size_t status = model->statusSlot();
-            const int *mask = atom->mask;
-            const size_t head = inl_ ? kInlHead : 0, tail = inl_ ? static_cast<size_t>(dnum) : 0;
-            std::vector<double> row(head + columns_.size() + tail);
-            for (int ii = 0; ii < list->inum; ii++) {
-                const int i = list->ilist[ii];
-                const int *jlist = list->firstneigh[i];
-                const double *records = history->firstdouble[i];
-                for (int jj = 0; jj < list->numneigh[i]; jj++) {
-                    const double *record = records + static_cast<size_t>(dnum) * jj + offset;
-                    if (record[status] != GB_BOND_STATUS_INTACT) continue;
-                    const int j = jlist[jj] & NEIGHMASK;
-                    if (!pairCountsHere(i, j, atom->nlocal, atom->tag)) continue;
-                    if (!(mask[i] & groupbit) || !(mask[j] & groupbit)) continue;
-                    const GbBondModel *m = model->model(atom->type[i], atom->type[j]);
-                    if (inl_) inlHead(i, j, row.data());
-                    if (tail) std::copy(record - offset, record - offset + dnum, row.data() + head + columns_.size());
-                    if (!m || columns_.row(m, 0, record, static_cast<double>(atom->tag[i]),
-                                           static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j],
-                                           row.data() + head) != GB_STATUS_OK)
-                        endRunOnThisRank(lmp, FLERR,
-                                         "compute pair/gran/local/bond: atoms " +
-                                             std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
-                                             std::to_string(static_cast<long long>(atom->tag[j])) + ": " +
-                                             (m ? coreReason() : std::string("no bond model for their types")));
-                    rows_.insert(rows_.end(), row.begin(), row.end());
-                }
-            }
+        const size_t n = store ? granbond_bond_store_len(store) : 0;
+        const int *mask = atom->mask;
+        const size_t head = inl_ ? kInlHead : 0, tail = inl_ ? static_cast<size_t>(GRANBOND_BOND_STATE_LEN) : 0;
+        std::vector<double> row(head + columns_.size() + tail);
+        // the record the core's fields read: the state, then the loads of
+        // the latest force pass
+        double record[GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN];
+        const std::vector<GbBondOutput> &outs = model->bondOutputs();
+        for (size_t k = 0; k < n; k++) {
+            int32_t ends[2];
+            int64_t partner = 0;
+            if (granbond_bond_store_bond(store, k, ends, &partner, record) != GB_STATUS_OK)
+                endRunOnThisRank(lmp, FLERR, "compute pair/gran/local/bond: " + coreReason());
+            const int i = ends[0], j = ends[1];
+            if (!(mask[i] & groupbit) || !(mask[j] & groupbit)) continue;
+            GbBondOutput none;
+            std::memset(&none, 0, sizeof none);
+            const GbBondOutput &o = k < outs.size() ? outs[k] : none;
+            const GbBondModel *m = model->model(atom->type[i], atom->type[j]);
+            if (inl_) inlHead(i, j, row.data());
+            if (tail) std::copy(record, record + tail, row.data() + head + columns_.size());
+            if (!m || granbond_bond_output_store(&o, record + GRANBOND_BOND_STATE_LEN) != GB_STATUS_OK ||
+                columns_.row(m, 0, record, static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
+                             atom->x[i], atom->x[j], row.data() + head) != GB_STATUS_OK)
+                endRunOnThisRank(lmp, FLERR,
+                                 "compute pair/gran/local/bond: atoms " +
+                                     std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
+                                     std::to_string(static_cast<long long>(atom->tag[j])) + ": " +
+                                     (m ? coreReason() : std::string("no bond model for their types")));
+            rows_.insert(rows_.end(), row.begin(), row.end());
         }
         const size_t ncols = static_cast<size_t>(size_local_cols > 0 ? size_local_cols : 1);
         size_local_rows = static_cast<int>(rows_.size() / ncols);
@@ -111,14 +108,7 @@ private:
     // LIGGGHTS-INL's first 9 columns: both centres (in the box), both ids,
     // 1 if either atom is a periodic image.
     static const size_t kInlHead = 9;
-    void inlWidth()
-    {
-        const BondNonlinearCohesion *b = BondBook::of(lmp).pairBonds;
-        if (!b || !b->pairStyle())
-            endRun(error, FLERR, "compute pair/gran/local/bond without keywords needs pair_style gran with "
-                                 "cohesion bond/nonlinear defined before it");
-        size_local_cols = static_cast<int>(kInlHead + columns_.size()) + b->pairStyle()->dnum();
-    }
+    void inlWidth() { size_local_cols = static_cast<int>(kInlHead + columns_.size() + GRANBOND_BOND_STATE_LEN); }
     void inlHead(int i, int j, double *row)
     {
         double xi[3] = {atom->x[i][0], atom->x[i][1], atom->x[i][2]};
@@ -142,6 +132,17 @@ private:
         return b;
     }
 
+    // Follows `model` from now on (null: none); the model keeps its bonds'
+    // outputs only while a compute follows it.
+    void listen(BondNonlinearCohesion *model)
+    {
+        BondNonlinearCohesion *current = BondBook::of(lmp).pairBonds;
+        if (model_ && model_ == current) model_->bondOutputUsers--;
+        model_ = model;
+        if (model_) model_->bondOutputUsers++;
+    }
+
+    BondNonlinearCohesion *model_ = 0;
     const bool inl_;   // no keywords: LIGGGHTS-INL's layout
     BondColumns columns_;
     std::vector<double> rows_;

@@ -1,7 +1,15 @@
-// The engine-facing half of `cohesion bond/nonlinear`: history slots, and per
-// pair (or particle-wall contact) one call into the core, whose forces and
-// torques replace the contact model's while the bond is intact
-// (docs/models/bond-nonlinear.md, "Creation"). No physics here: see rust-core.
+// The engine-facing half of `cohesion bond/nonlinear`: per pair (or
+// particle-wall contact), whose forces and torques the bond replaces while
+// it is intact (docs/models/bond-nonlinear.md, "Creation"). No physics here:
+// see rust-core.
+//
+// Pair bonds live in the core's bond store (fix granbond/bonds,
+// bonds_fix.h; docs/development.md, "Where a bond lives"): each force pass
+// links it after a list build, steps every bond at beginPass and adds the
+// loads to the atoms; the pair loop's callbacks only replace a bonded
+// pair's contact loads (a bit of the pair's contact flag caches the store)
+// and propose pairs for bonds at a creation step; endPass steps the bonds
+// formed in the loop. Wall bonds live in the wall's contact history.
 //
 // Compiled once (bond_nonlinear_cohesion.cpp); the CohesionModel<> template
 // specialisation in cohesion_model_bond_nonlinear.h only inherits from it.
@@ -12,10 +20,9 @@
 
 #include "bond_nonlinear_parameters.h"
 #include "bond_book.h"
-#include "bond_index.h"
 #include "run_checks.h"
 
-#include <unordered_set>
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -24,11 +31,17 @@ class PairGran;
 
 namespace granbond {
 class FixGranbondAtoms;
+class BondStoreFix;
 namespace liggghts {
 
 using LIGGGHTS::ContactModels::ForceData;
 using LIGGGHTS::ContactModels::SurfacesCloseData;
 using LIGGGHTS::ContactModels::SurfacesIntersectData;
+
+// The bit of a pair's contact flag that caches "bonded" (the engine's
+// models use bits 0-4 and 31); voigt_contact reads it under this name.
+static const int kBondedFlag = 1 << 5;
+inline const char *bondedFlagName() { return "bondnonlinear_bonded_flag"; }
 
 class BondNonlinearCohesion : public LIGGGHTS::ContactModels::CohesionModelBase {
 public:
@@ -40,138 +53,118 @@ public:
     void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *) {}
     void connectToProperties(::PropertyRegistry &registry);
     // Pairs only (walls have no pass hooks): the time-step check when the
-    // number of atoms changed (insertion), a point every rank reaches; and,
-    // in a force pass, the sweep of the index of pair bonds (bond_index.h)
-    // before the engine's pair loop; endPass sweeps the bonds that formed
-    // in the loop.
+    // number of atoms changed (insertion), a point every rank reaches; in
+    // a force or setup pass, the store's bonds linked, stepped and their
+    // loads added to the atoms; endPass steps the bonds formed in the loop.
     void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &);
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &);
 
     // Overlapping spheres: the bond acts in endSurfacesIntersect, after the
-    // normal, tangential and rolling models have added their forces. An
-    // intact bond the pass swept, its loads already at the atoms, only
-    // replaces those forces by nothing and keeps its record. A model that
+    // normal, tangential and rolling models have added their forces, and
+    // replaces them by nothing (its loads are at the atoms). A model that
     // keeps the contact's tangential and rolling loads under the bond (the
     // core's granbond_bond_keeps_contact_tangential) acts here instead,
     // between the normal model and the tangential one, and so replaces the
     // normal load alone.
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
-        if (keepsTangential(sidata)) bondOverlapping(sidata, i_forces, j_forces);
+        if (keepsTangential(sidata)) overlapping(sidata, i_forces, j_forces);
     }
     void endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
-        if (!keepsTangential(sidata)) bondOverlapping(sidata, i_forces, j_forces);
+        if (!keepsTangential(sidata)) overlapping(sidata, i_forces, j_forces);
     }
     void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
     {
-        if (!sweptAtAtoms(scdata)) close(scdata, i_forces, j_forces);
+        if (isWall_) {
+            close(scdata, i_forces, j_forces);
+            return;
+        }
+        if (!bondedFlag(scdata) && mayForm_) pairBonds(scdata);
     }
 
-    // What per-bond output reads (bond_local.cpp): the pair style, where
-    // the bond record (granbond_record_layout without the contact) lies in
-    // a pair's history, the status slot in it, and each type pair's model.
-    LAMMPS_NS::PairGran *pairStyle() const { return pair_; }
-    int recordOffset() const { return offset_; }
-    size_t statusSlot() const { return status_; }
+    // What per-bond output reads (bond_local.cpp): the store and each type
+    // pair's model; each bond's output of the latest force pass, in store
+    // order, kept while `bondOutputUsers` is non-zero; whether the store
+    // holds the present atoms' bonds (its latest pass is of this step).
     const GbBondModel *model(int itype, int jtype) const { return parameters_.model(itype, jtype); }
-    // The bonds' states stepped in rows, and the loads of the latest force
-    // pass, written back to the pairs' records (bond_index.h), for what
-    // reads or moves them after the pass: the engine's re-neighbouring, a
-    // run's end, a restart file, per-bond and per-contact output. True if
-    // it wrote rows back.
-    bool writeBack();
+    GbBondStore *bondStore() const;
+    bool storeCurrent() const;
+    const std::vector<GbBondOutput> &bondOutputs() const { return outputs_; }
+    int bondOutputUsers = 0;
 
 private:
-    // Where a bond that formed in the pair loop lies in the index.
-    struct Formed {
-        size_t index, at;   // index_[index], bond `at`
-    };
-
-    // Creates the bond of this pair and advances it at once (or advances a
-    // wall bond). Returns true and fills `out` if the bond is intact after
-    // the step: then its loads replace the contact models'.
-    bool advance(SurfacesCloseData &d, GbBondOutput &out);
-    void pairKinematics(const SurfacesCloseData &d, GbPairKinematics &k) const;
-    void createPair(const SurfacesCloseData &d, const GbBondModel *model, const GbPairKinematics &k,
-                    double *state, bool &created);
-    // A pair of an intact bond whose loads this pass's sweep added to the
-    // atoms: its flag set to keep the record.
-    bool sweptAtAtoms(SurfacesCloseData &d)
+    static bool bondedFlag(const SurfacesCloseData &d) { return d.contact_flags && (*d.contact_flags & kBondedFlag); }
+    void overlapping(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
-        if (!direct_) return false;
-        if (d.i != lastAtom_) atomReached(d.i);
-        if (!d.contact_history || d.contact_history[statusAt_] != GB_BOND_STATUS_INTACT) return false;
-        if (d.contact_flags) *d.contact_flags |= LIGGGHTS::ContactModels::CONTACT_COHESION_MODEL;
-        return true;
-    }
-    void bondOverlapping(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
-    {
-        if (!sweptAtAtoms(sidata)) {
+        if (isWall_) {
             intersecting(sidata, i_forces, j_forces);
             return;
         }
-        i_forces.reset();
-        j_forces.reset();
+        if (sidata.rsq == 0.0) coincident(sidata);
+        if ((bondedFlag(sidata) || (mayForm_ && pairBonds(sidata))) && !keepsContactLoads(sidata.itype, sidata.jtype)) {
+            i_forces.reset();
+            j_forces.reset();
+        }
+    }
+    // Whether the bond of the type pair leaves the contact's loads on
+    // overlapping spheres and adds its own (the core's
+    // granbond_bond_keeps_contact_loads: LIGGGHTS-INL's linear bond).
+    bool keepsContactLoads(int itype, int jtype) const
+    {
+        const GbBondModel *m = parameters_.model(itype, jtype);
+        return m && granbond_bond_keeps_contact_loads(m) != 0;
     }
     bool keepsTangential(const SurfacesIntersectData &d) const
     {
         return keepsTangential_ && keepsTangentialFor(d.itype, d.jtype);
     }
     bool keepsTangentialFor(int itype, int jtype) const;
-    void intersecting(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
-    void close(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
-    bool swept(SurfacesCloseData &d);
-    bool unbondable(SurfacesCloseData &d);
-    void atomReached(int i);
-    Formed form(SurfacesCloseData &d, const GbBondModel *model);
-    bool sweepNow(const Formed &f, GbBondOutput &out);
-    void applyKept(SurfacesCloseData &d, ForceData &i_forces, ForceData &j_forces);
-    void indexBonds();
-    BondIndex &indexFor(const GbBondModel *model);
-    void keepLoadsIfRead(BondIndex &b) const;
-    void sweepIndex();
-    void sweepAhead(int upto);
-    void sweepRange(BondIndex &b, size_t first, size_t last, GbSweepTally &t);
-    void settleBroken(BondIndex &b, size_t from);
-    void checkIndex();
-    struct AtomSums {
-        double *f, *torque;   // atom->f[0], atom->torque[0]
-        int nlocal, newton;
-        bool virial;          // the pair style's evflag
-    };
-    void addToAtoms(const AtomSums &sums, int i, int j, const GbBondOutput &out);
-    // The loads of a setup pass where the model computes them afresh
-    // (granbond_bond_setup_compute); false: apply the kept ones.
+
+    // ---- pair bonds, in the store (bond_nonlinear_pairs.cpp)
+    // A pair the loop proposes at a creation step (or a `bonded yes`
+    // clump's): bonded here, or by the rank that owns it; returns whether
+    // it is a bond from now on (its flag set).
+    bool pairBonds(SurfacesCloseData &d);
+    // Ends the run: the pair has no axis, nor have the contact models.
+    void coincident(const SurfacesCloseData &d);
+    void linkBonds();
+    void markBonded();
+    void stepBonds(bool advance);
+    void takeBroken(bool advance);
+    void finishPairPass();
+    void countPairs();
+    void checkStore();
+    void failPair(int i, int j, const char *what);
+
+    // ---- wall bonds, in the wall's contact history
+    bool advance(SurfacesCloseData &d, GbBondOutput &out);
     bool setupAfresh(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out);
     bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out,
                      bool &created);
     void apply(const GbBondOutput &out, ForceData &i_forces, ForceData &j_forces);
+    void intersecting(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    void close(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
     void failed(int i, int j, const char *call);
-    // Bookkeeping of one step of a bond (update passes): counters, break log.
-    // `wallDelta`: for wall bonds, the vector from the wall point to the centre.
-    void account(const GbBondModel *model, int i, int j, const double *wallDelta, const double *state,
-                 bool created, const GbBondOutput &out);
-    bool countsHere(int i, int j) const;
+    // Bookkeeping of one step of a wall bond (update passes): counters,
+    // break log. `wallDelta`: the vector from the wall point to the centre.
+    void account(const GbBondModel *model, int i, const double *wallDelta, const double *state, bool created,
+                 const GbBondOutput &out);
+
     // The core's checks of the time step (warned at a run's start, and when
     // the atom count changes if the limit moved) and, at a run's start, of
     // the creation rules (each finding once).
     void runChecks(bool runStart);
     void sayLaw(const char *style);
-    // Counts the bonds that vanished with their atoms (pair bonds; see the
-    // definition); collective, at the end of a pass.
-    void countVanished();
     void checkRenumbering();
     void forgetRecordsOfNewborn();
 
     BondNonlinearParameters parameters_;
     bool keepsTangential_;      // some type pair's model keeps the contact's tangential loads
     const bool isWall_;
-    const size_t stateLen_;
-    int offset_;        // core state slots
-    int outputOffset_;  // last output (GB_STATE_KIND_BOND_OUTPUT slots)
-    size_t status_;     // the status slot in the state (the core's table)
-    size_t statusAt_;   // ... in the pair's history: offset_ + status_
+    int offset_;        // walls: core state slots
+    int outputOffset_;  // walls: last output (GB_STATE_KIND_BOND_OUTPUT slots)
+    size_t status_;     // walls: the status slot in the state (the core's table)
     BondTally tally_;
     BondBook *book_;    // this instance's book (looked up once: std::map)
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)
@@ -183,28 +176,22 @@ private:
     TimestepWarning timestepWarning_;
     SaidOnce said_;
     bool saidLaw_;              // the law's line is printed (sayLaw)
-    bool lossCheck_;            // count vanished bonds at the end of this pass
-    bool warnedLost_;
-    BondBalance balance_;
 
     LAMMPS_NS::PairGran *pair_;   // null for walls
-    bool sweeping_;               // a force pass of pairs: the index is swept (sweepIndex)
-    bool direct_;                 // ... and the bonds' loads go straight to the atoms
-    bool createsNow_;             // a bond may form in this pass (force passes only)
-    int cursor_;                  // position of the latest atom in the neighbour list (atomReached)
-    int lastAtom_;
-    std::vector<BondIndex> index_;   // per bond model: the intact pair bonds (bond_index.h)
-    std::vector<size_t> sweptTo_;    // per index: the bonds before it are swept in this pass
-    std::vector<size_t> sweepEnd_;   // per index: its size at the pass's start (later ones formed in it)
-    int aheadTo_;                    // the atoms of the list up to this position have their bonds swept
-    // Atoms whose bonds are swept ahead of the loop at a time: their
-    // records stay in cache until the loop reads them.
-    static const int kSweepAheadAtoms = 128;
-    bigint indexedAt_;               // neighbor->ncalls when index_ was built; -1: to be built
-    bool rows_;                      // index_ steps the bonds' states in rows (indexFor)
-    std::unordered_set<const double *> brokeNow_;   // records of the bonds this pass's sweep broke
-    bool pruneIndex_;                // a bond formed and broke at once in the loop: drop it at the pass's end
-    bool checkIndex_;                // GRANBOND_CHECK_INDEX: recount the index after each pass
+    BondStoreFix *bonds_;         // pairs: the bonds' home
+    std::vector<int32_t> kinds_;  // per (itype, jtype): the bond kind (its model's place in the table), -1 none
+    std::vector<char> createsNow_;   // per kind, this pass
+    bool passing_;                // a force or setup pass of pairs is under way
+    bool advance_;                // ... a force pass
+    bool mayForm_;                // ... in which a bond may form
+    bool formedThisPass_;         // bonds formed here in this pass
+    bigint linkedAt_;             // neighbor->ncalls at the latest link
+    double *ghostLoads_;          // this pass's loads on ghost atoms (newton off)
+    std::vector<GbBondOutput> outputs_;   // per bond, the latest force pass (bondOutputUsers)
+    bigint passStep_;             // step and atom count (local + ghost) of the latest pass
+    bigint passAtoms_;
+    bool checkStore_;             // GRANBOND_CHECK_STORE: recount the bonds after each pass
+    bool warnedLost_;             // bonds lost without breaking were told (once)
 };
 
 }

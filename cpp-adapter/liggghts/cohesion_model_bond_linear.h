@@ -1,13 +1,10 @@
 // `cohesion bond`, LIGGGHTS-INL's linear bond (docs/models/bond-linear.md),
 // as a LIGGGHTS cohesion model: the `cohesion bond/nonlinear` class with
 // INL's names for its parameters and the core's linear law (the bond
-// table's row `linear`). It differs from that class in two things only:
-//
-// - its parameters serve the linear bond (BondNonlinearParameters, told
-//   before the shared class builds them);
-// - an overlapping pair's contact loads stay under the bond, the bond's
-//   added to them, where the core says so for the type pair
-//   (granbond_bond_keeps_contact_loads): the shared class replaces them.
+// table's row `linear`), its parameters told to serve the linear bond
+// before the shared class builds them. What the law does with the
+// contact's loads under the bond is the core's
+// (granbond_bond_keeps_contact_loads), applied by the shared class.
 #ifndef GRANBOND_LIGGGHTS_COHESION_MODEL_BOND_LINEAR_H
 #define GRANBOND_LIGGGHTS_COHESION_MODEL_BOND_LINEAR_H
 
@@ -39,29 +36,8 @@ class CohesionModel<COHESION_BOND_LINEAR> : private granbond::liggghts::ServesLi
 public:
     CohesionModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *cmb) :
         granbond::liggghts::ServesLinearBond(),
-        granbond::liggghts::BondNonlinearCohesion(lmp, hsetup, cmb),
-        statusAt_(cmb->get_history_offset("bondnonlinear_status"))
+        granbond::liggghts::BondNonlinearCohesion(lmp, hsetup, cmb)
     {}
-
-    // The shared class drops the contact's loads of a pair whose bond is
-    // intact after its step (and applies the bond's, or has applied them
-    // at the atoms): they are added back where the core keeps them.
-    void endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
-    {
-        const ForceData contact_i = i_forces, contact_j = j_forces;
-        BondNonlinearCohesion::endSurfacesIntersect(sidata, i_forces, j_forces);
-        if (!sidata.contact_history || sidata.contact_history[statusAt_] != GB_BOND_STATUS_INTACT) return;
-        if (!granbond_bond_keeps_contact_loads(model(sidata.itype, sidata.jtype))) return;
-        for (int c = 0; c < 3; c++) {
-            i_forces.delta_F[c] += contact_i.delta_F[c];
-            i_forces.delta_torque[c] += contact_i.delta_torque[c];
-            j_forces.delta_F[c] += contact_j.delta_F[c];
-            j_forces.delta_torque[c] += contact_j.delta_torque[c];
-        }
-    }
-
-private:
-    const int statusAt_;   // the bond's status slot in the pair's history
 };
 
 }

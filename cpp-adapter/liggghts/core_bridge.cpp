@@ -15,6 +15,21 @@ std::string &lastMessage()
 }
 }
 
+LAMMPS_NS::Fix *fixOrNew(LAMMPS_NS::LAMMPS *lmp, const char *id, const char *style)
+{
+    LAMMPS_NS::Modify *modify = lmp->modify;
+    int ifix = modify->find_fix(id);
+    if (ifix < 0) {
+        char idArg[64], group[] = "all", styleArg[64];
+        std::snprintf(idArg, sizeof idArg, "%s", id);
+        std::snprintf(styleArg, sizeof styleArg, "%s", style);
+        char *args[] = {idArg, group, styleArg};
+        modify->add_fix(3, args);
+        ifix = modify->find_fix(id);
+    }
+    return ifix < 0 ? 0 : modify->fix[ifix];
+}
+
 void endRun(LAMMPS_NS::Error *error, const char *file, int line, const std::string &message)
 {
     lastMessage() = message;

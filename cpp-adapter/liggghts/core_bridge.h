@@ -16,6 +16,10 @@ namespace liggghts {
 void endRun(LAMMPS_NS::Error *error, const char *file, int line, const std::string &message);
 void endRunOnThisRank(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &message);
 
+// The fix of `id` (style `style`, group all), made if the deck has none;
+// null if it could not be made.
+LAMMPS_NS::Fix *fixOrNew(LAMMPS_NS::LAMMPS *lmp, const char *id, const char *style);
+
 // Ends the run (error->all) if the loaded core was built from another header.
 void checkCoreLayout(LAMMPS_NS::Error *error);
 

@@ -190,7 +190,8 @@ VoigtContactShare::VoigtContactShare() :
     stride_(0),
     settingRegistered_(false),
     contactUnderBond_(false),
-    bondStatus_(-1)
+    bondStatus_(-1),
+    bondedFlag_(-1)
 {}
 
 void VoigtContactShare::registerSettings(::Settings &settings)
@@ -203,6 +204,7 @@ void VoigtContactShare::registerSettings(::Settings &settings)
 void VoigtContactShare::findBond(LIGGGHTS::ContactModels::ContactModelBase *cmb)
 {
     bondStatus_ = cmb->get_history_offset("bondnonlinear_status");
+    bondedFlag_ = cmb->get_history_offset("bondnonlinear_bonded_flag");
 }
 
 VoigtContactShare *VoigtContactShare::attach(const void *owner, bool *first)
@@ -440,7 +442,7 @@ inline void VoigtNormal::stepFused(SurfacesIntersectData &sidata, double *state,
 // few registers.
 void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
-    if (!fusedRolling_ || !(sidata.computeflag && sidata.shearupdate) || share_->heldByBond(sidata.contact_history)) {
+    if (!fusedRolling_ || !(sidata.computeflag && sidata.shearupdate) || share_->heldByBond(sidata)) {
         wholeContactAside(sidata, i_forces, j_forces);
         return;
     }
@@ -466,7 +468,7 @@ void VoigtNormal::wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_
     // the history moves on only in a real force step (not at setup or for a
     // per-contact output pass)
     const bool force = sidata.computeflag && sidata.shearupdate;
-    if (force && share_->heldByBond(sidata.contact_history)) {
+    if (force && share_->heldByBond(sidata)) {
         // the loads of a fresh contact, in case the bond breaks in this
         // step's pair callback; the history stays at zero
         const int own = fusedRolling_ ? GRANBOND_CONTACT_STATE_LEN : 3;
@@ -524,7 +526,7 @@ double *VoigtHistoryModel<EngineBase>::begin(const SurfacesIntersectData &sidata
     if (computesFrame_ || always) engineFrame(this->lmp, sidata, share_->frame);
     double *const stored = &sidata.contact_history[offset_];
     if (sidata.computeflag && sidata.shearupdate) {
-        if (!share_->heldByBond(sidata.contact_history)) return stored;
+        if (!share_->heldByBond(sidata)) return stored;
         for (int k = 0; k < 3; k++)
             stored[k] = scratch[k] = 0.0;
         return scratch;

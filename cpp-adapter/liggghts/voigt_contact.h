@@ -122,17 +122,20 @@ public:
     // `contactUnderBond on|off`, registered by whichever voigt sub-model
     // the engine asks for its settings first (each name once per style).
     void registerSettings(::Settings &settings);
-    // Finds the status slot of a `cohesion bond/nonlinear` of the same
-    // style, if there is one (all sub-models are constructed by then).
+    // Finds where a `cohesion bond/nonlinear` of the same style says a bond
+    // is, if there is one (all sub-models are constructed by then): a bit of
+    // a pair's contact flag, or a wall bond's status slot.
     void findBond(LIGGGHTS::ContactModels::ContactModelBase *cmb);
     // With contactUnderBond off, an intact bond holds the contact's history
     // at zero: the contact starts afresh when the bond breaks.
-    bool heldByBond(const double *history) const
+    bool heldByBond(const LIGGGHTS::ContactModels::SurfacesCloseData &d) const
     {
-        return bondMayHold() && history && history[bondStatus_] == GB_BOND_STATUS_INTACT;
+        if (!bondMayHold()) return false;
+        if (bondedFlag_ > 0) return d.contact_flags && (*d.contact_flags & bondedFlag_);
+        return d.contact_history && d.contact_history[bondStatus_] == GB_BOND_STATUS_INTACT;
     }
     // Known once the settings are read and every sub-model is constructed.
-    bool bondMayHold() const { return bondStatus_ >= 0 && !contactUnderBond_; }
+    bool bondMayHold() const { return (bondStatus_ >= 0 || bondedFlag_ > 0) && !contactUnderBond_; }
 
     GbContactFrame frame;
     bool normal;               // model voigt present
@@ -148,7 +151,8 @@ private:
     int stride_;
     bool settingRegistered_;
     bool contactUnderBond_;
-    int bondStatus_;   // history offset of the bond's status, -1 without bond/nonlinear
+    int bondStatus_;   // history offset of a wall bond's status, -1 without one
+    int bondedFlag_;   // the contact flag's bit of a pair bond, -1 without one
     std::vector<GbVoigtParams> params_;
     VoigtModelTable table_;
 };

@@ -2,8 +2,8 @@
 the ctest tests/adapters/check_flicked_chain.py).
 
 chain.txt: step, then x z vx omega_y of spheres 2..5 (fix print).
-bonds dump (dump local of compute pair/gran/local id history): id1 id2
-periodic-flag, then the bond state slots in the core's order (status r0
+bonds dump (dump local of compute pair/gran/local/bond id status state):
+id1 id2 status, then the bond state slots in the core's order (status r0
 delta_max delta_min shear_force_xyz twist_angle_xyz bend_angle_xyz twist_max
 twist_min bend_history_xyz bend_opposite).
 """

@@ -2416,6 +2416,24 @@ enum GbStatus granbond_bond_store_try_create(struct GbBondStore *store,
                                              int32_t *created);
 
 /**
+ * As `granbond_bond_store_try_create`, whatever the step: creates the
+ * bond if the pair is closer than `model`'s creation distance (LIGGGHTS
+ * `bonded yes` clumps in their first force pass).
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_create_now(struct GbBondStore *store,
+                                             const struct GbBondModel *model,
+                                             uint16_t kind,
+                                             size_t owner,
+                                             size_t partner,
+                                             int64_t owner_id,
+                                             int64_t partner_id,
+                                             const struct GbPairKinematics *kinematics,
+                                             int32_t *created);
+
+/**
  * Ends the pass: the bonds broken in it leave the store.
  *
  * # Safety

@@ -619,8 +619,8 @@ fn a_bond_across_a_periodic_boundary_takes_its_partners_closest_image() {
     );
 }
 
-/// Atoms 1 and 2 touching, both local, bonded by `model`, linked.
-fn bonded_pair(model: &BondModel) -> (BondStore, Atoms) {
+/// Atoms 1 and 2 touching, both local, linked to an empty store.
+fn touching_pair() -> (BondStore, Atoms) {
     let mut atoms = Atoms::default();
     sphere(&mut atoms, 1, 0.0);
     sphere(&mut atoms, 2, 2.0 * R);
@@ -628,6 +628,12 @@ fn bonded_pair(model: &BondModel) -> (BondStore, Atoms) {
     let mut store = BondStore::new();
     store.grow(2);
     link(&mut store, &atoms);
+    (store, atoms)
+}
+
+/// Atoms 1 and 2 touching, both local, bonded by `model`, linked.
+fn bonded_pair(model: &BondModel) -> (BondStore, Atoms) {
+    let (mut store, atoms) = touching_pair();
     store.begin_pass(1e-7, true, false);
     assert!(store
         .try_create(model, 0, 0, 1, [1, 2], &atoms.kinematics(0, 1), 1)
@@ -839,4 +845,80 @@ fn the_store_holds_the_energy_of_its_stretched_bonds() {
         (energy - want).abs() <= 1e-9 * want,
         "{energy} J against {want} J"
     );
+}
+
+#[test]
+fn a_clump_pair_bonds_now_at_any_step_but_not_in_the_pass_its_bond_broke() {
+    let model = bond_model(BondParams {
+        create_step: 1_000_000,
+        max_distance: 2.05 * R,
+        ..common::params()
+    });
+    let (mut store, mut atoms) = touching_pair();
+    store.begin_pass(1e-7, true, false);
+    let k = atoms.kinematics(0, 1);
+    assert!(
+        !store.try_create(&model, 0, 0, 1, [1, 2], &k, 5).unwrap(),
+        "the rules wait for the creation step"
+    );
+    assert!(store.create_now(&model, 0, 0, 1, [1, 2], &k).unwrap());
+    assert_eq!(
+        next_chunk(&mut store, &model, &atoms).len(),
+        1,
+        "stepped in the pass it formed in"
+    );
+    store.finish_pass();
+    assert_eq!((store.len(), store.counts().created), (1, 1));
+    // pulled apart: it breaks, and does not form again in that pass
+    atoms.x[3] = 2.1 * R;
+    link(&mut store, &atoms);
+    store.begin_pass(1e-7, true, false);
+    assert_eq!(
+        next_chunk(&mut store, &model, &atoms)[0].1.status,
+        BondStatus::Broken as i32
+    );
+    atoms.x[3] = 2.0 * R;
+    assert!(!store
+        .create_now(&model, 0, 0, 1, [1, 2], &atoms.kinematics(0, 1))
+        .unwrap());
+    store.finish_pass();
+    assert!(balanced(&store.counts()));
+}
+
+#[test]
+fn a_setup_pass_of_inl_code_is_its_own_trial_step() {
+    let model = bond_model(BondParams {
+        inl_compatible: 1,
+        ..common::params()
+    });
+    let (mut store, mut atoms) = lattice_store(3, &model);
+    atoms.drift(2e-6);
+    link(&mut store, &atoms);
+    pass(&mut store, &model, &atoms, 1e-6, true);
+    atoms.drift(1e-6);
+    // what LIGGGHTS-INL's setup does: each bond through BondModel::setup_step
+    let mut want = vec![];
+    for k in 0..store.len() {
+        let (bond, ends) = store.bond(k).unwrap();
+        let mut state = bond.state;
+        let mut out = BondOutput::default();
+        let kin = atoms.kinematics(ends[0] as usize, ends[1] as usize);
+        assert!(model.setup_step(&kin, 1e-6, &mut state, &mut out, false).unwrap());
+        want.push(([atoms.ids[ends[0] as usize], bond.partner], state, out));
+    }
+    want.sort_by_key(|(ids, _, _)| *ids);
+    let setup = pass(&mut store, &model, &atoms, 1e-6, false);
+    let states = bonds_by_id(&store, &atoms);
+    assert_eq!(setup.outs.len(), want.len());
+    for ((ids, state, out), ((_, got), (_, kept))) in want.iter().zip(setup.outs.iter().zip(&states)) {
+        assert_eq!(
+            (out.force_i, out.torque_i, out.torque_j),
+            (got.force_i, got.torque_i, got.torque_j),
+            "bond {ids:?}"
+        );
+        assert_eq!(
+            state, kept,
+            "bond {ids:?}: the trial step's history extremes are kept"
+        );
+    }
 }

@@ -1,8 +1,8 @@
-"""Engine-level checks that a LAMMPS bond lives with its atoms, in the
-bond store (docs/development.md, "Where a bond lives"), whatever the deck
-does around it. The decks in decks/bond_home/ are the testers' (written
-for the defects they found when bonds lived in the contact history). One
-claim per mode:
+"""Engine-level checks that a bond lives with its atoms, in the bond store
+(docs/development.md, "Where a bond lives"), whatever the deck does around
+it. The decks in decks/bond_home/ are the testers' (written for the
+defects they found when bonds lived in the contact history). One claim
+per mode (LAMMPS unless said):
 
   newton     the bonded block in free motion under LAMMPS's default
              `newton on` on 3 ranks, and under `newton off`: at every
@@ -25,13 +25,25 @@ claim per mode:
              energy) stays constant to 1e-5 of itself on 1 and 2 ranks,
              while `pe` takes up a good part of it.
   momentum   a bonded block in free flight, spinning, its bonds breaking, a
-             sphere inserted far away between two runs, on 1 and 3 ranks
-             under `newton on` and `off`: the total linear momentum and
+             sphere inserted far away between two runs (LIGGGHTS: by fix
+             insert/rate/region during the run, frictionless Hertz
+             contacts, the store recounted after every pass), on 1 and 3
+             ranks under `newton on` and `off` (LIGGGHTS: `newton off`):
+             the total linear momentum and
              the angular momentum about the origin (orbital and spin) stay
              what they were to round-off (1e-12 of their size), and
              created = broken + intact + lost at every output.
+  insert     LIGGGHTS: two spheres bonded across a periodic boundary (1
+             and 3 ranks) or a rank boundary (2 ranks, the sphere inserted
+             on either rank), a sphere inserted far away at step 100: at
+             every output the bond acts on both spheres (f1 = -f2 to
+             round-off), the pair's momentum stays what it was to
+             round-off,
+             created = broken + intact + lost and the bond is intact at
+             the end, nothing is warned; the store recounted after every
+             pass (GRANBOND_CHECK_STORE).
 
-usage: check_bond_home.py --mode MODE --kind lammps --engine BIN
+usage: check_bond_home.py --mode MODE --kind lammps|liggghts --engine BIN
                           [--mpiexec MPIEXEC] --workdir DIR
 """
 
@@ -51,9 +63,9 @@ DECKS = os.path.join(HERE, "decks", "bond_home")
 BASE = {"base": os.path.join(DECKS, "base")}
 
 
-def run(a, n, deck, workdir, variables=None):
+def run(a, n, deck, workdir, variables=None, env=None):
     deck_runner.DECKS = DECKS
-    return run_ok(launcher(a, n), deck, workdir, dict(BASE, **(variables or {})))
+    return run_ok(launcher(a, n), deck, workdir, dict(BASE, **(variables or {})), env)
 
 
 def check_newton(a, workdir):
@@ -120,11 +132,17 @@ def check_rerun(a, workdir):
 
 def check_momentum(a, workdir):
     counts = [1, 3] if a.mpiexec else [1]
+    liggghts = a.kind == "liggghts"
+    # LIGGGHTS: its granular decks run newton off, its counter is compute bond/counter
+    settings = ("off",) if liggghts else ("default", "off")
+    deck = "free_body_momentum_liggghts.in" if liggghts else "free_body_momentum.in"
+    counters = ("c_bc[1]", "c_bc[2]", "c_bc[3]", "c_bc[7]") if liggghts else ("c_pg[1]", "c_pg[2]", "c_pg[3]", "c_pg[8]")
     for n in counts:
-        for newton in ("default", "off"):
+        for newton in settings:
             d = os.path.join(workdir, f"np{n}-{newton}")
-            text = run(a, n, "free_body_momentum.in", d, {"newton": newton})
-            cols = [thermo_column(text, c) for c in ("c_pg[1]", "c_pg[2]", "c_pg[3]", "c_pg[8]")]
+            env = {"GRANBOND_CHECK_STORE": "1"} if liggghts else None
+            text = run(a, n, deck, d, {} if liggghts else {"newton": newton}, env)
+            cols = [thermo_column(text, c) for c in counters]
             unbalanced = [r for r in zip(*cols) if r[0] != r[1] + r[2] + r[3]]
             broken = cols[1][-1] if cols[1] else 0
             if not cols[0] or unbalanced or broken == 0:
@@ -157,6 +175,46 @@ def check_energy(a, workdir):
         print(f"ok: {n} ranks: kinetic + stored energy within {drift:.2g} of itself, pe up to {share:.2f} of it")
 
 
+def check_insert(a, workdir):
+    cases = [(1, "insert_periodic_1rank.in")]
+    if a.mpiexec:
+        cases += [(2, "insert_2ranks_warned.in"), (2, "insert_2ranks_silent.in"), (3, "insert_periodic_1rank.in")]
+    for n, deck in cases:
+        d = os.path.join(workdir, f"{deck[:-3]}-np{n}")
+        text = run(a, n, deck, d, env={"GRANBOND_CHECK_STORE": "1"})
+        if "recounting the bonds after every pass" not in text:
+            raise Failure(f"{deck}: the store check did not run")
+        atoms = thermo_column(text, "Atoms")
+        created, broken, intact, lost = (thermo_column(text, f"c_bc[{k}]") for k in (1, 2, 3, 7))
+        # LIGGGHTS heads variable columns without the `v_`
+        pz, f1, f2 = (thermo_column(text, c) for c in ("pz", "f1", "f2"))
+        if not atoms or atoms[-1] != 3:
+            raise Failure(f"{deck}, {n} ranks: no sphere was inserted ({atoms[-1:]} atoms at the end)")
+        unbalanced = [r for r in zip(created, broken, intact, lost) if r[0] != r[1] + r[2] + r[3]]
+        if unbalanced or intact[-1] != 1 or created[-1] != 1:
+            raise Failure(f"{deck}, {n} ranks: created, broken, intact, lost {unbalanced[:3] or (created[-1], broken[-1], intact[-1], lost[-1])}")
+        # from the bond's first step on (before it, the touching spheres'
+        # contact acts, on one sphere per listing under newton off)
+        bonded = [(x, y) for x, y, b in zip(f1, f2, intact) if b == 1]
+        scale = max(abs(x) for x, _ in bonded) if bonded else 0.0
+        one_sided = [(x, y) for x, y in bonded if abs(x + y) > 1e-12 * scale]
+        if scale == 0.0 or one_sided:
+            raise Failure(f"{deck}, {n} ranks: the bond acts on one sphere only: f1, f2 = {one_sided[:3]}")
+        # each sphere carries 1.05e-5 kg at 0.05 m/s; the pair's momentum,
+        # from the bond's first step on, is what the touching spheres'
+        # contact left it
+        held = [p for p, b in zip(pz, intact) if b == 1]
+        drift = (max(held) - min(held)) / (1.05e-5 * 0.05)
+        if drift > 1e-12:
+            raise Failure(f"{deck}, {n} ranks: the free pair's momentum moved by {drift:.3g} of a sphere's")
+        warned = warnings_in_log(d)
+        if warned:
+            raise Failure(f"{deck}, {n} ranks: a correct deck warned: {warned}")
+        print(f"ok: {deck}, {n} ranks: the bond two-sided at every output (f1 = {f1[-1]:.4g} N), momentum within "
+              f"{drift:.2g} of a sphere's, created {created[-1]:g} = intact {intact[-1]:g}")
+
+
 if __name__ == "__main__":
     run_modes(__doc__, {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
-                         "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy})
+                         "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy,
+                         "insert": check_insert})

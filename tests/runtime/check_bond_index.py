@@ -1,15 +1,13 @@
-"""Engine-level checks of the index of bonds the adapters sweep each pass
-(docs/performance.md, "The bond sweep"), for LAMMPS (lmp-granbond) and
+"""Engine-level checks of the bonds each pass steps from the bond store
+(docs/development.md, "Where a bond lives"), for LAMMPS (lmp-granbond) and
 LIGGGHTS (liggghts-granbond). One claim per mode:
 
-  index       with GRANBOND_CHECK_STORE set (LAMMPS), every pass recounts
-              the bond store against the atoms (each bond stored once over
-              the ranks, between its owner and the partner it names; every
+  index       with GRANBOND_CHECK_STORE set, every pass recounts the bond
+              store against the atoms (each bond stored once over the
+              ranks, between its owner and the partner it names; every
               listed pair flagged bonded exactly when it is; created =
-              broken + intact + lost over the ranks); with
-              GRANBOND_CHECK_INDEX set (LIGGGHTS), every force pass
-              recounts the index from the pair records (each intact bond in
-              it once, nothing else). A mismatch ends the run. The deck
+              broken + intact + lost over the ranks). A mismatch ends the
+              run. The deck
               index_<kind>.in (bonds across the periodic boundary, bonds
               that break, bonds that form mid-run, delete_atoms ... compress
               no, a restart file) runs on 1, 2 and 4 ranks; with neighbour
@@ -37,9 +35,8 @@ LIGGGHTS (liggghts-granbond). One claim per mode:
               with the same state of every atom, to the last digit.
   callbacks   LIGGGHTS: where the engine's pair loop reads each pair's
               forces (here: the per-atom sum of normal forces, a fix
-              property/atom named sum_normal_force_), the pairs' callbacks
-              apply the bonds' loads, read back from the records the sweep
-              wrote in the same pass. The flagship deck's first 300 steps
+              property/atom named sum_normal_force_), the bonds act as
+              without it. The flagship deck's first 300 steps
               (bonds loaded by the impact) with and without that fix end
               with the same state of every atom, to round-off (the loads
               join the atoms' sums in another order).
@@ -67,10 +64,10 @@ import deck_runner  # noqa: E402
 from deck_runner import Failure, main, read_table, run_deck  # noqa: E402
 
 deck_runner.DECKS = os.path.join(HERE, "decks")
-# LAMMPS recounts its bond store, LIGGGHTS its index of pair records
-CHECK = {"lammps": {"GRANBOND_CHECK_STORE": "1"}, "liggghts": {"GRANBOND_CHECK_INDEX": "1"}}
+# both engines recount their bond store
+CHECK = {"lammps": {"GRANBOND_CHECK_STORE": "1"}, "liggghts": {"GRANBOND_CHECK_STORE": "1"}}
 ANNOUNCED = {"lammps": "recounting the bonds after every pass",
-             "liggghts": "checking the index of bonds after every pass"}
+             "liggghts": "recounting the bonds after every pass"}
 
 
 def launcher(a, n):

@@ -16,7 +16,7 @@ use super::id_map::Ids;
 use super::{BondStore, StoredBond, NONE};
 use crate::bond::{BondModel, BondOutput, BondState, BondStatus, BreakMode};
 use crate::kinematics::{KinematicsError, PairKinematics};
-use crate::pair_source::{AtomArrays, IndexedPairs};
+use crate::pair_source::{AtomArrays, IndexedPairs, PairSource};
 
 /// Bonds one [`BondStore::step_next`] steps at most.
 pub const CHUNK: usize = 64;
@@ -28,6 +28,8 @@ pub(super) struct Cursor {
     advance: bool,
     remember_breaks: bool,
     dt: f64,
+    // the run's time step, also in a setup pass (a law's own setup step)
+    run_dt: f64,
     next: usize,
 }
 
@@ -102,6 +104,7 @@ impl BondStore {
             advance,
             remember_breaks,
             dt: if advance { dt } else { 0.0 },
+            run_dt: dt,
             next: 0,
         };
         if !remember_breaks {
@@ -166,6 +169,14 @@ impl BondStore {
             let states =
                 unsafe { std::slice::from_raw_parts_mut(states.as_mut_ptr() as *mut &mut BondState, n) };
             model.step_indexed(&kinematics, self.cursor.dt, states, outs)
+        } else if let Some(stepped) = setup_afresh(
+            model,
+            &kinematics,
+            self.cursor.run_dt,
+            &mut self.bonds[first..last],
+            outs,
+        ) {
+            stepped
         } else {
             let mut copies = [BondState::default(); CHUNK];
             for (c, bond) in copies.iter_mut().zip(&self.bonds[first..last]) {
@@ -254,6 +265,35 @@ impl BondStore {
         kin: &PairKinematics,
         step: i64,
     ) -> Result<bool, KinematicsError> {
+        self.create_with(kind, owner, partner, ids, |state| {
+            model.try_create(kin, step, state)
+        })
+    }
+
+    /// As [`Self::try_create`], whatever the step: the pair bonds if it is
+    /// closer than the model's creation distance (LIGGGHTS `bonded yes`:
+    /// the spheres of one inserted clump, in their first force pass). A
+    /// pair whose bond broke in this pass is not bonded again in it.
+    pub fn create_now(
+        &mut self,
+        model: &BondModel,
+        kind: u16,
+        owner: usize,
+        partner: usize,
+        ids: [i64; 2],
+        kin: &PairKinematics,
+    ) -> Result<bool, KinematicsError> {
+        self.create_with(kind, owner, partner, ids, |state| model.create_now(kin, state))
+    }
+
+    fn create_with(
+        &mut self,
+        kind: u16,
+        owner: usize,
+        partner: usize,
+        ids: [i64; 2],
+        create: impl FnOnce(&mut BondState) -> Result<bool, KinematicsError>,
+    ) -> Result<bool, KinematicsError> {
         if !self.linked || owner >= self.head.len() {
             return Ok(false);
         }
@@ -269,7 +309,7 @@ impl BondStore {
         if self.broken_pairs.binary_search(&pair).is_ok() {
             state.status = BondStatus::Broken as i32 as f64;
         }
-        if !model.try_create(kin, step, &mut state)? {
+        if !create(&mut state)? {
             return Ok(false);
         }
         self.push(
@@ -321,6 +361,28 @@ impl BondStore {
         self.rebuild_lists();
         self.trim();
     }
+}
+
+/// A setup pass of a law that computes its loads afresh there
+/// (LIGGGHTS-INL's code: a trial step over the run's time step that moves
+/// only the history extremes and breaks nothing, [`BondModel::setup_step`]):
+/// the chunk's bonds through it, in place, as `step_indexed` would report
+/// them; `None` for any other law.
+fn setup_afresh(
+    model: &BondModel,
+    kinematics: &IndexedPairs<'_>,
+    dt: f64,
+    bonds: &mut [StoredBond],
+    outs: &mut [BondOutput],
+) -> Option<Result<Option<usize>, (usize, KinematicsError)>> {
+    for (k, (bond, out)) in bonds.iter_mut().zip(outs.iter_mut()).enumerate() {
+        match model.setup_step(&kinematics.pair(k), dt, &mut bond.state, out, false) {
+            Ok(true) => {}
+            Ok(false) => return None,
+            Err(e) => return Some(Err((k, e))),
+        }
+    }
+    Some(Ok(None))
 }
 
 fn ordered(ids: [i64; 2]) -> [i64; 2] {

@@ -414,6 +414,31 @@ pub unsafe extern "C" fn granbond_bond_store_try_create(
     Ok(())
 }
 
+/// As `granbond_bond_store_try_create`, whatever the step: creates the
+/// bond if the pair is closer than `model`'s creation distance (LIGGGHTS
+/// `bonded yes` clumps in their first force pass).
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[allow(clippy::too_many_arguments)]
+#[entry(store: reference_mut, model: reference, kinematics: reference, created: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_create_now(
+    store: *mut BondStore,
+    model: *const BondModel,
+    kind: u16,
+    owner: usize,
+    partner: usize,
+    owner_id: i64,
+    partner_id: i64,
+    kinematics: *const PairKinematics,
+    created: *mut i32,
+) -> Status {
+    *created = 0;
+    *created = store.create_now(model, kind, owner, partner, [owner_id, partner_id], kinematics)? as i32;
+    Ok(())
+}
+
 /// Ends the pass: the bonds broken in it leave the store.
 ///
 /// # Safety

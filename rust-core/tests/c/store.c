@@ -201,6 +201,14 @@ int test_bond_store(void)
           "the broken bond's ids and mode");
     EXPECT(granbond_bond_store_broken(other, 1, &broken), GB_STATUS_INVALID_ARGUMENT,
            "granbond_bond_store_broken, beyond the broken");
+    /* a clump's pair bonds whatever the step, but not in the pass its bond broke in */
+    k = kinematics(&a, 1, 0);
+    created = -1;
+    EXPECT_OK(granbond_bond_store_create_now(other, m, 0, 1, 0, 4, 11, &k, &created),
+              "granbond_bond_store_create_now");
+    CHECK(created == 0, "no bond forms again in the pass it broke in");
+    EXPECT_NULL_ARG(granbond_bond_store_create_now(other, m, 0, 1, 0, 4, 11, NULL, &created),
+                    "granbond_bond_store_create_now", "kinematics");
     EXPECT_OK(granbond_bond_store_finish_pass(other), "granbond_bond_store_finish_pass");
     EXPECT_OK(granbond_bond_store_counts(other, &counts), "granbond_bond_store_counts");
     CHECK(counts.broken_distance == 1 && counts.intact == 0, "counted broken by distance");

@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 104] = [
+pub const ENTRY_POINTS: [&str; 105] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -150,6 +150,7 @@ pub const ENTRY_POINTS: [&str; 104] = [
     "granbond_bond_store_broken_count",
     "granbond_bond_store_broken",
     "granbond_bond_store_try_create",
+    "granbond_bond_store_create_now",
     "granbond_bond_store_finish_pass",
     "granbond_bond_store_creates_here",
     "granbond_bond_store_counts",
@@ -1750,6 +1751,33 @@ impl<'t> Session<'t> {
                 if ok(self, "granbond_bond_store_try_create", status) {
                     assert!(matches!(created.get(), 0 | 1), "created {}", created.get());
                 }
+            }
+            // an owner beyond the atoms: answered, nothing created (it reads
+            // no input, so the corpus keeps its meaning)
+            let mut created = Place::new(-1i32);
+            let k = PairKinematics {
+                x_i: [0.0; 3],
+                x_j: [1e-3, 0.0, 0.0],
+                v_i: [0.0; 3],
+                v_j: [0.0; 3],
+                w_i: [0.0; 3],
+                w_j: [0.0; 3],
+                radius_i: 5e-4,
+                radius_j: 5e-4,
+            };
+            let status = fs::granbond_bond_store_create_now(
+                st,
+                model,
+                0,
+                n + 1,
+                0,
+                ids[0],
+                ids[0] + 1,
+                &k,
+                created.ptr(Pointer::Valid),
+            );
+            if ok(self, "granbond_bond_store_create_now", status) {
+                assert_eq!(created.get(), 0, "no bond for an owner beyond the atoms");
             }
             let models = [model, null()];
             let mut ends = vec![0i32; 2 * GRANBOND_BOND_STORE_CHUNK + 1];

@@ -1,0 +1,83 @@
+// The engine-free half of GRANBOND_CHECK_STORE, the recount both adapters
+// make after every pass (docs/development.md, "Where a bond lives"): each
+// bond of a rank joins a local owner and a partner with the id it names;
+// each bond is stored once over all ranks; created = broken + intact +
+// lost over all ranks. The adapters add what their lists say (every listed
+// pair flagged bonded exactly when the store or its view holds its bond).
+#ifndef GRANBOND_STORE_CHECK_H
+#define GRANBOND_STORE_CHECK_H
+
+#include "core_message.h"
+#include "granbond.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace granbond {
+
+inline long long brokenCount(const GbStoreCounts &c)
+{
+    return c.broken_distance + c.broken_tension + c.broken_compression + c.broken_shear;
+}
+
+inline long long lostCount(const GbStoreCounts &c)
+{
+    return c.lost_owner_gone + c.lost_partner_unreached + c.lost_id_reused + c.lost_no_model;
+}
+
+// What is wrong with the bonds of `store` on this rank (empty: nothing).
+// `tag` are the ids of the rank's atoms (local, then ghost). Collective.
+template <class Tag>
+std::string checkStoredBonds(const GbBondStore *store, const Tag *tag, int nlocal, MPI_Comm world)
+{
+    std::string wrong;
+    const size_t n = granbond_bond_store_len(store);
+    std::vector<double> mine;
+    for (size_t k = 0; k < n && wrong.empty(); k++) {
+        int32_t e[2];
+        int64_t partner = 0;
+        double state[GRANBOND_BOND_STATE_LEN];
+        if (granbond_bond_store_bond(store, k, e, &partner, state) != GB_STATUS_OK)
+            wrong = "bond " + std::to_string(k) + ": " + coreReason();
+        else if (e[0] < 0 || e[0] >= nlocal || e[1] < 0 || static_cast<int64_t>(tag[e[1]]) != partner)
+            wrong = "bond " + std::to_string(k) + " does not join its owner and its partner " + std::to_string(partner);
+        else {
+            const double a = static_cast<double>(tag[e[0]]), b = static_cast<double>(partner);
+            mine.push_back(std::min(a, b));
+            mine.push_back(std::max(a, b));
+        }
+    }
+    // every bond once: the pairs of all ranks, gathered
+    int nprocs = 1;
+    MPI_Comm_size(world, &nprocs);
+    int count = static_cast<int>(mine.size());
+    std::vector<int> counts(nprocs), offsets(nprocs + 1, 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+    for (int r = 0; r < nprocs; r++) offsets[r + 1] = offsets[r] + counts[r];
+    std::vector<double> all(static_cast<size_t>(offsets[nprocs]));
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
+    std::vector<std::pair<double, double>> pairs;
+    for (size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
+    std::sort(pairs.begin(), pairs.end());
+    for (size_t k = 1; k < pairs.size() && wrong.empty(); k++)
+        if (pairs[k] == pairs[k - 1])
+            wrong = "the bond of atoms " + std::to_string(static_cast<long long>(pairs[k].first)) + " and " +
+                    std::to_string(static_cast<long long>(pairs[k].second)) + " is stored twice";
+    GbStoreCounts c = {};
+    granbond_bond_store_counts(store, &c);
+    const long long local[4] = {c.created, brokenCount(c), c.intact, lostCount(c)};
+    long long sums[4];
+    MPI_Allreduce(local, sums, 4, MPI_LONG_LONG, MPI_SUM, world);
+    if (wrong.empty() && sums[0] != sums[1] + sums[2] + sums[3])
+        wrong = std::to_string(sums[0]) + " bonds created, " + std::to_string(sums[1]) + " broken, " +
+                std::to_string(sums[2]) + " intact, " + std::to_string(sums[3]) + " lost";
+    return wrong;
+}
+
+}
+
+#endif

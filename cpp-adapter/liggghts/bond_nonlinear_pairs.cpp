@@ -1,0 +1,275 @@
+// cohesion bond/nonlinear's pair bonds: the core's bond store (bonds_fix.h)
+// linked after every list build, its chunks stepped and their loads added
+// to the atoms, the bonds that break taken out of the pair loop, those that
+// form put in, the view sent round where either happened on any rank, the
+// counts, and the store's check. Every rule is the core's; this file finds
+// the pairs in the engine's lists and adds the loads.
+#include "bond_nonlinear_cohesion.h"
+#include "bonds_fix.h"
+#include "core_bridge.h"
+#include "core_message.h"
+#include "store_check.h"
+#include "store_pass.h"
+#include "vector_adds.h"
+
+#include "fix_property_atom.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair_gran.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace LIGGGHTS::ContactModels;
+
+namespace granbond {
+namespace liggghts {
+
+GbBondStore *BondNonlinearCohesion::bondStore() const { return bonds_ ? bonds_->store() : nullptr; }
+
+bool BondNonlinearCohesion::storeCurrent() const
+{
+    return passStep_ == update->ntimestep && passAtoms_ == static_cast<bigint>(atom->nlocal) + atom->nghost;
+}
+
+void BondNonlinearCohesion::failPair(int i, int j, const char *what)
+{
+    endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: " + std::string(what) + " of atoms " +
+                                     std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
+                                     std::to_string(static_cast<long long>(atom->tag[j])) + " at step " +
+                                     std::to_string(static_cast<long long>(update->ntimestep)) + ": " + coreReason());
+}
+
+// After a list build (and at a run's start): every bond finds its atoms
+// again (the losses counted and told with their cause), the view reaches
+// the ghosts, and the pairs' flags are marked from the store.
+void BondNonlinearCohesion::linkBonds()
+{
+    linkedAt_ = neighbor->ncalls;
+    GbStoreAtoms sa;
+    sa.ids = atomIdsOf(atom);
+    sa.nlocal = static_cast<size_t>(atom->nlocal);
+    sa.x = atom->nmax > 0 ? atom->x[0] : nullptr;
+    sa.types = atom->type;
+    // the ghost atoms' reach (LIGGGHTS's Comm::setup)
+    sa.reach = std::max(neighbor->cutneighmax, comm->cutghostuser);
+    GbLinkReport report;
+    if (granbond_bond_store_link(bonds_->store(), &sa, kinds_.data(), static_cast<size_t>(parameters_.ntypes()), &report) !=
+        GB_STATUS_OK)
+        endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: finding the bonds' atoms: " + coreReason());
+    const long long mine[4] = {report.owner_gone, report.partner_unreached, report.id_reused, report.no_model};
+    long long all[4];
+    MPI_Allreduce(mine, all, 4, MPI_LONG_LONG, MPI_SUM, world);
+    const long long lost = all[0] + all[1] + all[2] + all[3];
+    if (lost > 0 && comm->me == 0 && !warnedLost_) {
+        warnedLost_ = true;
+        const char *const why[4] = {
+            "their atom left the system (deleted, or lost through a boundary)",
+            "their partner was not among the atoms within the communication cutoff (deleted, lost, or the "
+            "atoms moved apart beyond the bond's reach between runs)",
+            "an atom's id was taken over by a new atom",
+            "their atoms' types have no bond model any more"};
+        const std::string causes = lostCauses(all, why);
+        error->warning(FLERR, ("cohesion bond/nonlinear: " + std::to_string(lost) + " bonds vanished at step " +
+                               std::to_string(static_cast<long long>(update->ntimestep)) + " without breaking: " +
+                               causes + "; they are counted as lost in compute bond/counter (column 7), later "
+                               "ones without a warning")
+                                  .c_str());
+    }
+    bonds_->sendView();
+    markBonded();
+}
+
+// The flags of the listed pairs from the store and its view: the bit set
+// where a bond is, cleared where none is (a bond that broke or was lost).
+void BondNonlinearCohesion::markBonded()
+{
+    const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
+    if (!list || !history || !history->firstneigh) return;
+    GbBondStore *store = bonds_->store();
+    const GbAtomIds ids = atomIdsOf(atom);
+    const int ntypes1 = parameters_.ntypes() + 1;
+    const int *type = atom->type;
+    for (int ii = 0; ii < list->inum; ii++) {
+        const int i = list->ilist[ii];
+        const int *jlist = list->firstneigh[i];
+        int *flags = history->firstneigh[i];
+        for (int jj = 0; jj < list->numneigh[i]; jj++) {
+            const int j = jlist[jj] & NEIGHMASK;
+            const bool bonded = kinds_[static_cast<size_t>(type[i]) * ntypes1 + type[j]] >= 0 &&
+                                granbond_bond_store_bonded(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids);
+            if (bonded)
+                flags[jj] |= kBondedFlag;
+            else
+                flags[jj] &= ~kBondedFlag;
+        }
+    }
+}
+
+// Steps the bonds of the pass not stepped yet and adds their loads to the
+// atoms as the engine's pair loop would (relaxation factor; a ghost's for
+// the engine's reverse communication under newton on, else for the fix's),
+// the virial of each bond once.
+void BondNonlinearCohesion::stepBonds(bool advance)
+{
+    double *const f0 = atom->f[0], *const t0 = atom->torque[0];
+    const double *const x0 = atom->x[0];
+    const int nlocal = atom->nlocal;
+    const int newton = force->newton_pair;
+    const bool virial = pair_->evflag != 0;
+    double *const ghosts = ghostLoads_;
+    LAMMPS_NS::PairGran *const pair = pair_;
+    stepStoreChunks(
+        bonds_->store(), parameters_.table(), kinds_.size(), atom, atomIdsOf(atom),
+        bondOutputUsers > 0 && advance ? &outputs_ : nullptr,
+        [&](int i, int j, const GbBondOutput &o) {
+            const double relaxI = pair->relax(i), relaxJ = pair->relax(j);
+            addScaled3(f0 + 3 * static_cast<size_t>(i), relaxI, o.force_i);
+            addScaled3(t0 + 3 * static_cast<size_t>(i), relaxI, o.torque_i);
+            if (j < nlocal || newton) {
+                subtractScaled3(f0 + 3 * static_cast<size_t>(j), relaxJ, o.force_i);
+                addScaled3(t0 + 3 * static_cast<size_t>(j), relaxJ, o.torque_j);
+            } else {
+                double *g = ghosts + 6 * static_cast<size_t>(j - nlocal);
+                subtractScaled3(g, relaxJ, o.force_i);
+                addScaled3(g + 3, relaxJ, o.torque_j);
+            }
+            if (virial) {
+                const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+                // each bond is stepped on one rank: its whole virial here
+                pair->ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, o.force_i[0], o.force_i[1], o.force_i[2],
+                                   xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
+            }
+        },
+        [&](int i, int j, const std::string &why) {
+            if (i >= 0) failPair(i, j, "the bond");
+            endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: the bonds: " + why);
+        });
+}
+
+// The bonds that broke in the pass so far: their pairs leave the bonded
+// flag (the contact models act on them again), the break log gets them;
+// then, where any rank broke a bond, the view goes round again and the
+// flags follow it.
+void BondNonlinearCohesion::takeBroken(bool advance)
+{
+    GbBondStore *store = bonds_->store();
+    const size_t nb = granbond_bond_store_broken_count(store);
+    for (size_t m = 0; m < nb && advance && book_->logging(); m++) {
+        GbBrokenBond b;
+        if (granbond_bond_store_broken(store, m, &b) != GB_STATUS_OK)
+            endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: " + coreReason());
+        const int i = b.ends[0], j = b.ends[1];
+        const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = lo == i ? j : i;
+        BreakEvent e;
+        if (makeBreakEvent(parameters_.model(atom->type[i], atom->type[j]), b.out, atom->x[lo], atom->x[hi],
+                           atom->radius[lo], atom->radius[hi], static_cast<double>(atom->tag[lo]),
+                           static_cast<double>(atom->tag[hi]), static_cast<double>(update->ntimestep),
+                           e) != GB_STATUS_OK)
+            failPair(i, j, "the break log's event");
+        book_->record(e);
+    }
+    int mine = nb > 0, any = 0;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any) {
+        bonds_->sendView();
+        markBonded();
+    }
+}
+
+// A pair within reach at a creation step, or of one `bonded yes` clump:
+// bonded if the core says so, by this rank (its owner is local here) or by
+// the rank that owns it (newton off: both list the pair).
+bool BondNonlinearCohesion::pairBonds(SurfacesCloseData &d)
+{
+    const int i = d.i, j = d.j;
+    const int32_t kind = kinds_[static_cast<size_t>(d.itype) * (parameters_.ntypes() + 1) + d.jtype];
+    if (kind < 0) return false;
+    // spheres of one `bonded yes` clump, in the first force pass after
+    // their insertion (the id is the insertion step plus a fraction)
+    const double *clump = clumpIds_ ? clumpIds_->vector_atom : 0;
+    const bool clumped = clump && clump[i] >= 0.0 && clump[i] == clump[j] &&
+                         static_cast<double>(update->ntimestep) < clump[i];
+    if (!createsNow_[static_cast<size_t>(kind)] && !clumped) return false;
+    if (d.rsq == 0.0) coincident(d);
+    bool made = false;
+    if (proposePair(bonds_->store(), parameters_.table()[kind], static_cast<uint16_t>(kind), atom, i, j,
+                    !force->newton_pair, update->ntimestep, clumped, made, formedThisPass_) != GB_STATUS_OK)
+        failPair(i, j, "the bond's creation");
+    if (!made) return false;
+    if (d.contact_flags) *d.contact_flags |= kBondedFlag;
+    return true;
+}
+
+// The contact models have no normal to work with (the engine's would give
+// nan), nor has a bond: stop, as the core does in LAMMPS.
+void BondNonlinearCohesion::coincident(const SurfacesCloseData &d)
+{
+    endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: atoms " + std::to_string(static_cast<long>(atom->tag[d.i])) +
+                                     " and " + std::to_string(static_cast<long>(atom->tag[d.j])) + " at step " +
+                                     std::to_string(static_cast<long long>(update->ntimestep)) +
+                                     ": coincident centres: the pair has no axis; place the atoms apart");
+}
+
+// The pass's end: the bonds formed in it stepped too, those broken out of
+// the store, the ghosts' loads home (newton off), the view sent again where
+// any rank formed a bond, the counts.
+void BondNonlinearCohesion::finishPairPass()
+{
+    stepBonds(advance_);
+    bonds_->finishPass(formedThisPass_, !force->newton_pair, bondOutputUsers > 0 && advance_ ? &outputs_ : nullptr);
+    formedThisPass_ = false;
+    countPairs();
+    if (checkStore_) checkStore();
+    passStep_ = update->ntimestep;
+    passAtoms_ = static_cast<bigint>(atom->nlocal) + atom->nghost;
+}
+
+// compute bond/counter's pair values: this rank's counts of the store.
+void BondNonlinearCohesion::countPairs()
+{
+    const GbStoreCounts c = bonds_->counts();
+    book_->beginPassIfNew(tally_, update);
+    tally_.created = c.created;
+    tally_.broken = brokenCount(c);
+    tally_.lost = lostCount(c);
+    tally_.intact = c.intact;
+}
+
+// GRANBOND_CHECK_STORE: after a pass, the bonds recounted against the
+// engine's atoms: every pair of the lists flagged bonded exactly when the
+// store or its view holds its bond; each bond stored once over all ranks,
+// between an owner that is local and a partner with the id it names; and
+// created = broken + intact + lost over all ranks. A mismatch ends the run.
+void BondNonlinearCohesion::checkStore()
+{
+    GbBondStore *store = bonds_->store();
+    const GbAtomIds ids = atomIdsOf(atom);
+    const LAMMPS_NS::NeighList *list = pair_->list, *history = pair_->listgranhistory;
+    std::string wrong;
+    for (int ii = 0; list && history && ii < list->inum && wrong.empty(); ii++) {
+        const int i = list->ilist[ii];
+        for (int jj = 0; jj < list->numneigh[i] && wrong.empty(); jj++) {
+            const int j = list->firstneigh[i][jj] & NEIGHMASK;
+            const bool flagged = (history->firstneigh[i][jj] & kBondedFlag) != 0;
+            const bool bonded = granbond_bond_store_bonded(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids);
+            if (flagged != bonded)
+                wrong = "the pair of atoms " + std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
+                        std::to_string(static_cast<long long>(atom->tag[j])) +
+                        (flagged ? " is flagged bonded, but no bond" : " is bonded, but not flagged");
+        }
+    }
+    const std::string rest = checkStoredBonds(store, atom->tag, atom->nlocal, world);
+    if (wrong.empty()) wrong = rest;
+    int bad = !wrong.empty(), anyBad = 0;
+    MPI_Allreduce(&bad, &anyBad, 1, MPI_INT, MPI_MAX, world);
+    if (bad)
+        endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: store check at step " +
+                                         std::to_string(static_cast<long long>(update->ntimestep)) + ": " + wrong);
+    if (anyBad) endRun(error, FLERR, "cohesion bond/nonlinear: store check failed on another rank");
+}
+
+}
+}
