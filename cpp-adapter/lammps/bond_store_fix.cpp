@@ -10,6 +10,8 @@
 #include "modify.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -42,6 +44,30 @@ GbAtomIds atomIdsOf(const Atom *atom)
     return ids;
 }
 
+GbAtomArrays atomArraysOf(const Atom *atom)
+{
+    const bool any = atom->nmax > 0;
+    GbAtomArrays a;
+    a.x = any ? atom->x[0] : nullptr;
+    a.v = any ? atom->v[0] : nullptr;
+    a.omega = any ? atom->omega[0] : nullptr;
+    a.radius = atom->radius;
+    a.count = static_cast<size_t>(atom->nlocal + atom->nghost);
+    return a;
+}
+
+void endRun(LAMMPS *lmp, const std::string &message)
+{
+    FILE *streams[2] = {lmp->screen, lmp->logfile};
+    for (FILE *s : streams)
+        if (s) {
+            fprintf(s, "ERROR on proc %d: %s\n", lmp->comm->me, message.c_str());
+            fflush(s);
+        }
+    lmp->error->one(FLERR, message);
+    std::abort();   // not reached
+}
+
 std::string currentCommand(LAMMPS *lmp)
 {
     const char *c = lmp->input ? lmp->input->*InputCommand::field() : nullptr;
@@ -49,8 +75,12 @@ std::string currentCommand(LAMMPS *lmp)
 }
 
 FixGranbondBonds::FixGranbondBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), store_(nullptr), viewWidth_(1), page_(0)
+    Fix(lmp, narg, arg), store_(nullptr), topology_(narg > 3 && std::strcmp(arg[3], "topology") == 0),
+    viewWidth_(1), page_(0)
 {
+    if (narg > 4 || (narg == 4 && !topology_))
+        error->all(FLERR, "fix granbond/bonds is made by pair_style granbond and bond_style granbond (its only "
+                          "word: topology)");
     if (granbond_bond_store_new(&store_) != GB_STATUS_OK) fail("making the bond store");
     restart_global = 1;
     restart_peratom = 1;
@@ -92,6 +122,17 @@ void FixGranbondBonds::init()
 {
     long long mine = static_cast<long long>(granbond_bond_store_len(store_)), all = 0;
     MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+    if (topology_) {
+        if (all > 0 && comm->me == 0 && currentCommand(lmp) == "write_data")
+            error->warning(FLERR, "write_data: the " + std::to_string(all) + " bonds of bond_style granbond are in the "
+                                  "data file's Bonds section, their state is not: read_data starts each at rest at "
+                                  "its length then; write_restart and read_restart keep the state");
+        if (all > 0 && comm->me == 0 && !force->bond_match("granbond"))
+            error->warning(FLERR, "fix granbond/bonds: the state of " + std::to_string(all) + " bonds of bond_style "
+                                  "granbond is kept with their atoms but does not act under bond_style " +
+                                  std::string(force->bond_style ? force->bond_style : "none"));
+        return;
+    }
     if (all > 0 && comm->me == 0 && currentCommand(lmp) == "write_data")
         error->warning(FLERR, "write_data: the " + std::to_string(all) + " bonds of pair_style granbond are not in "
                               "the data file (read_data gives the atoms without them); write_restart and "
@@ -317,17 +358,19 @@ double FixGranbondBonds::memory_usage()
            static_cast<double>(ghostLoads_.capacity() * sizeof(double));
 }
 
-FixGranbondBonds *bondsFix(LAMMPS *lmp)
+FixGranbondBonds *bondsFix(LAMMPS *lmp, bool topology)
 {
     Modify *modify = lmp->modify;
-    int ifix = modify->find_fix(bondsFixId());
+    int ifix = modify->find_fix(bondsFixId(topology));
     if (ifix < 0) {
         (*modify->fix_map)[bondsFixStyle()] = &createBondsFix;
-        modify->add_fix(std::string(bondsFixId()) + " all " + bondsFixStyle());
-        ifix = modify->find_fix(bondsFixId());
+        modify->add_fix(std::string(bondsFixId(topology)) + " all " + bondsFixStyle() + (topology ? " topology" : ""));
+        ifix = modify->find_fix(bondsFixId(topology));
     }
     FixGranbondBonds *fix = ifix < 0 ? nullptr : dynamic_cast<FixGranbondBonds *>(modify->fix[ifix]);
-    if (!fix) lmp->error->all(FLERR, "pair granbond: fix granbond/bonds was deleted or replaced");
+    if (!fix)
+        lmp->error->all(FLERR, std::string(topology ? "bond_style" : "pair") + " granbond: fix granbond/bonds was "
+                                                                               "deleted or replaced");
     return fix;
 }
 

@@ -9,7 +9,9 @@
 // owners where the engine does not (reverse, newton off).
 //
 // The pair style makes it (or takes the one read_restart brought back) and
-// is its only user. Translation only: every rule is the core's.
+// is its only user; bond_style granbond has one of its own (`fix ID all
+// granbond/bonds topology`), whose bonds the topology names. Translation
+// only: every rule is the core's.
 #ifndef GRANBOND_LAMMPS_BOND_STORE_FIX_H
 #define GRANBOND_LAMMPS_BOND_STORE_FIX_H
 
@@ -23,8 +25,12 @@
 namespace granbond {
 namespace lammps {
 
-// The fix's ID and style name, as pair granbond creates it.
-inline const char *bondsFixId() { return "GRANBOND_BONDS"; }
+// The fix's ID and style name, as pair granbond (or, `topology`, bond_style
+// granbond) creates it.
+inline const char *bondsFixId(bool topology = false)
+{
+    return topology ? "GRANBOND_TOPOLOGY_BONDS" : "GRANBOND_BONDS";
+}
 inline const char *bondsFixStyle() { return "granbond/bonds"; }
 
 class FixGranbondBonds : public LAMMPS_NS::Fix {
@@ -80,6 +86,7 @@ private:
     static const int kViewPage = 8;
 
     GbBondStore *store_;
+    bool topology_;             // the bonds of bond_style granbond
     std::vector<double> ghostLoads_;
     std::vector<double> row_;   // one atom's whole view row, while paged
     int viewWidth_;             // doubles the widest view row takes, this exchange
@@ -89,12 +96,20 @@ private:
 // The ids of a rank's atoms (local, then ghost) as the core reads them.
 GbAtomIds atomIdsOf(const LAMMPS_NS::Atom *atom);
 
+// The per-atom arrays of a rank's atoms (local, then ghost) as the core reads them.
+GbAtomArrays atomArraysOf(const LAMMPS_NS::Atom *atom);
+
+// Ends the run on this rank with `message`, written to the screen and the
+// log first (error->one aborts without flushing them).
+[[noreturn]] void endRun(LAMMPS_NS::LAMMPS *lmp, const std::string &message);
+
 // The input command LAMMPS carries out now ("run", "write_data", ...).
 std::string currentCommand(LAMMPS_NS::LAMMPS *lmp);
 
 // Registers the style with LAMMPS (once) and returns the fix pair granbond
-// uses: the existing one (from read_restart, or an earlier run), or a new one.
-FixGranbondBonds *bondsFix(LAMMPS_NS::LAMMPS *lmp);
+// (or, `topology`, bond_style granbond) uses: the existing one (from
+// read_restart, or an earlier run), or a new one.
+FixGranbondBonds *bondsFix(LAMMPS_NS::LAMMPS *lmp, bool topology = false);
 
 }
 }

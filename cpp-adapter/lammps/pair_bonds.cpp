@@ -7,6 +7,7 @@
 #include "pair_granbond.h"
 #include "bond_store_fix.h"
 #include "core_message.h"
+#include "store_pass.h"
 #include "vector_adds.h"
 
 #include "atom.h"
@@ -30,19 +31,15 @@ namespace lammps {
 
 GbAtomIds PairGranbond::atomIds() const { return atomIdsOf(atom); }
 
-GbAtomArrays PairGranbond::atomArrays() const
-{
-    const bool any = atom->nmax > 0;
-    GbAtomArrays a;
-    a.x = any ? atom->x[0] : nullptr;
-    a.v = any ? atom->v[0] : nullptr;
-    a.omega = any ? atom->omega[0] : nullptr;
-    a.radius = atom->radius;
-    a.count = static_cast<size_t>(atom->nlocal + atom->nghost);
-    return a;
-}
+GbAtomArrays PairGranbond::atomArrays() const { return atomArraysOf(atom); }
 
 GbBondStore *PairGranbond::bondStore() const { return bonds_ ? bonds_->store() : nullptr; }
+
+size_t PairGranbond::bondKind(int i, int j, size_t) const
+{
+    const int ti = atom->type[i], tj = atom->type[j];
+    return static_cast<size_t>(std::min(ti, tj)) * (atom->ntypes + 1) + std::max(ti, tj);
+}
 
 bool PairGranbond::storeCurrent() const
 {
@@ -128,49 +125,21 @@ void PairGranbond::markBonded()
 // bond once.
 void PairGranbond::stepBonds(bool advance)
 {
-    GbBondStore *store = bonds_->store();
-    const GbAtomArrays arrays = atomArrays();
-    const GbAtomIds ids = atomIds();
-    int32_t ends[2 * GRANBOND_BOND_STORE_CHUNK];
-    GbBondOutput outs[GRANBOND_BOND_STORE_CHUNK];
-    double *const f0 = atom->f[0], *const t0 = atom->torque[0];
-    const double *const x0 = atom->x[0];
+    const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
     const int nlocal = atom->nlocal;
-    for (;;) {
-        size_t n = 0, bad = 0;
-        if (granbond_bond_store_step_next(store, bond_.data(), bond_.size(), &arrays, &ids, ends, outs, &n, &bad) !=
-            GB_STATUS_OK) {
-            int32_t e[2] = {-1, -1};
-            int64_t partner = 0;
-            double state[GRANBOND_BOND_STATE_LEN];
-            const std::string why = coreReason();
-            if (granbond_bond_store_bond(store, bad, e, &partner, state) == GB_STATUS_OK && e[0] >= 0)
-                failPair(e[0], e[1], "the bond");
+    stepChunks(
+        atom, bonds_->store(), bond_, force->newton_pair != 0, ghostLoads_,
+        bondOutputUsers > 0 && advance ? &outputs_ : nullptr,
+        [&](int i, int j, const double *f) {
+            if (!evflag) return;
+            const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+            // each bond is stepped on one rank: its whole virial here
+            ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, f[0], f[1], f[2], xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
+        },
+        [&](int i, int j, const std::string &why) {
+            if (i >= 0) failPair(i, j, "the bond");
             error->one(FLERR, "pair granbond: the bonds: " + why);
-        }
-        if (n == 0) break;
-        for (size_t k = 0; k < n; k++) {
-            const int i = ends[2 * k], j = ends[2 * k + 1];
-            const GbBondOutput &o = outs[k];
-            add3(f0 + 3 * static_cast<size_t>(i), o.force_i);
-            add3(t0 + 3 * static_cast<size_t>(i), o.torque_i);
-            if (j < nlocal || force->newton_pair) {
-                subtract3(f0 + 3 * static_cast<size_t>(j), o.force_i);
-                add3(t0 + 3 * static_cast<size_t>(j), o.torque_j);
-            } else {
-                double *g = ghostLoads_ + 6 * static_cast<size_t>(j - nlocal);
-                subtract3(g, o.force_i);
-                add3(g + 3, o.torque_j);
-            }
-            if (evflag) {
-                const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
-                // each bond is stepped on one rank: its whole virial here
-                ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, o.force_i[0], o.force_i[1], o.force_i[2], xi[0] - xj[0],
-                             xi[1] - xj[1], xi[2] - xj[2]);
-            }
-        }
-        if (bondOutputUsers > 0 && advance) outputs_.insert(outputs_.end(), outs, outs + n);
-    }
+        });
 }
 
 // The bonds that broke in the pass so far: their pairs leave the bonded

@@ -45,6 +45,6 @@ pub use breakage::BreakMode;
 pub use energy::BondEnergy;
 pub use laws::BondLaws;
 pub use model::BondModel;
-pub use params::{BondParams, ParameterError, PARAMETERS, PHRASES};
+pub use params::{BondParams, ParameterError, CREATION_ROWS, PARAMETERS, PHRASES};
 pub use state::{BondOutput, BondState, BondStatus, BOND_SLOTS, BOND_STATE_LEN};
 pub use wall::{WallBondState, WALL_BOND_SLOTS, WALL_BOND_STATE_LEN};

@@ -231,6 +231,12 @@ crate::parameter_table!(
     }
 );
 
+/// The rows that say when and between which pairs bonds form. Where an
+/// engine's topology names the bonds (LAMMPS `bond_style granbond`), a deck
+/// gives none of them: a listed bond exists from the start, at rest at its
+/// length.
+pub const CREATION_ROWS: &[&str] = &["create_distance", "create_step", "create_always"];
+
 /// The `bond/nonlinear` phrases of `pair_coeff` (docs/reference/pair_granbond.md):
 /// a break mode is the stress switch, a tension ratio switches the ratio on,
 /// a creation step means creation at that step only.
