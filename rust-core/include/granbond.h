@@ -559,6 +559,23 @@ typedef struct GbBondParams {
    */
   double compression_linear_below;
   /**
+   * BPM mode: the tensile normal force `F_rc` (N) of the summed rule
+   * ([`super::breakage::summed_criterion`]); `inf` = its term is 0.
+   */
+  double max_normal_force;
+  /**
+   * BPM mode: the shear force `F_sc` (N).
+   */
+  double max_shear_force;
+  /**
+   * BPM mode: the bending torque `T_bc` (N m).
+   */
+  double max_bend_torque;
+  /**
+   * BPM mode: the twisting torque `T_tc` (N m).
+   */
+  double max_twist_torque;
+  /**
    * Time step at which bonds are created (when `create_always` is off).
    */
   int64_t create_step;
@@ -566,6 +583,11 @@ typedef struct GbBondParams {
    * 0 = distance mode, 1 = stress mode.
    */
   int32_t stress_break;
+  /**
+   * BPM mode (LAMMPS `bond_style bpm/rotational`'s summed rule) instead
+   * of the distance or stress mode.
+   */
+  int32_t bpm_break;
   /**
    * Applies `tension_compression_ratio` to `max_sigma` while the bond is
    * stretched.
