@@ -12,6 +12,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
@@ -155,9 +156,11 @@ double BondGranbond::equilibrium_distance(int)
             if (atom->bond_type[i][m] <= 0) continue;
             const int j = atom->map(atom->bond_atom[i][m]);
             if (j < 0) continue;
-            double d2 = 0.0;
-            for (int c = 0; c < 3; c++) d2 += (x[i][c] - x[j][c]) * (x[i][c] - x[j][c]);
-            longest = std::max(longest, std::sqrt(d2));
+            // the partner's image closest to i, as the bond list takes it
+            double xj[3];
+            domain->closest_image(x[i], x[j], xj);
+            const double d[3] = {x[i][0] - xj[0], x[i][1] - xj[1], x[i][2] - xj[2]};
+            longest = std::max(longest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
         }
     double all = 0.0;
     MPI_Allreduce(&longest, &all, 1, MPI_DOUBLE, MPI_MAX, world);

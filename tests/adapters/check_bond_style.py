@@ -25,6 +25,11 @@
   roundtrip   write_data after bonds broke, read_data on 1 and 2 ranks
               (in.readback): the Bonds section holds the intact bonds with
               their types, and the run goes on with them.
+  restart     write_restart after 1000 steps of the plate, read_restart and
+              1000 more steps (in.restart), on 1 and 2 ranks: the bonds come
+              back with their state (none is created again) and the run
+              ends with the bonds and, to 1e-6, the kinetic energy of one
+              run of 2000 steps.
   types       per-type strengths and free flight (in.row_types): the weak
               bonds of a stretched, drifting, spinning row break and the
               strong ones hold, in the wheel (bpm/sphere, newton_bond off
@@ -42,6 +47,10 @@
               each sphere's reference frame, so the cascades part later),
               and at the end the BPM mode is closer to BPM's count than the
               stress mode (tension and shear strengths alone).
+  periodic    a bond across a periodic boundary (in.periodic): it joins the
+              closest images and holds them a diameter apart, and LAMMPS's
+              check of the communication cutoff against the longest bond
+              measures it through the boundary (no warning).
   refused     settings that cannot work are refused naming what to write:
               LAMMPS's default special_bonds (1-3 pairs out of the
               neighbour list), 1-2 pairs out of it (a broken bond's pair
@@ -216,6 +225,23 @@ def check_roundtrip(a, workdir):
         print(f"ok: read back on {ranks} ranks: {int(read[0])} bonds, {int(read[2])} of type 2; then {after}")
 
 
+def check_restart(a, workdir):
+    restart = os.path.join(workdir, "plate.restart")
+    whole = printed(run(wheel(a), "in.plate", os.path.join(workdir, "whole"), {"plugin": a.plugin, "steps": 2000}),
+                    "END")
+    run(wheel(a), "in.plate", os.path.join(workdir, "first"),
+        {"plugin": a.plugin, "steps": 1000, "write": "restart", "data": restart})
+    for ranks in (1, 2):
+        text = run(wheel(a, ranks), "in.restart", os.path.join(workdir, f"second{ranks}"),
+                   {"plugin": a.plugin, "file": restart, "steps": 1000})
+        end, counts = printed(text, "END"), printed(text, "COUNTS")
+        if counts[0] != 768 or counts[2] != end[2] or end[:3] != whole[:3] or abs(end[6] - whole[6]) > 1e-6 * whole[6]:
+            raise Failure(f"{ranks} ranks: after the restart plate/ball/bonds {end[:3]}, ke {end[6]}, counts {counts}; "
+                          f"one run {whole[:3]}, ke {whole[6]}")
+        print(f"ok: restart on {ranks} ranks: bonds {int(end[2])} as one run, ke {end[6]} against {whole[6]}, "
+              f"created {int(counts[0])}")
+
+
 def check_types(a, workdir):
     runs = [("wheel, newton_bond off", wheel(a), {"wheel": "yes", "plugin": a.plugin, "newton_bond": "off"}),
             ("wheel, newton_bond on", wheel(a), {"wheel": "yes", "plugin": a.plugin, "newton_bond": "on"}),
@@ -266,6 +292,15 @@ def check_bpm(a, workdir):
                     f"{int(stress[s][0])} {stress[s][1]:.4g}" for s in sorted(bpm) if s % 500 == 0))
 
 
+def check_periodic(a, workdir):
+    text = run(wheel(a), "in.periodic", workdir, {"plugin": a.plugin})
+    bonds, gap = printed(text, "PERIODIC")
+    cutoff = [line for line in text.splitlines() if line.startswith("WARNING") and "cutoff" in line]
+    if bonds != 1 or not 1.0 < gap < 1.01 or cutoff:
+        raise Failure(f"bond across the boundary: {bonds} bonds, {gap} diameters apart, warnings {cutoff}")
+    print(f"ok: across the boundary: {int(bonds)} bond, {gap} diameters apart, no cutoff warning")
+
+
 def check_refused(a, workdir):
     cases = [("special_bonds lj 0 1 1 coul 1 1 1", "special_bonds lj 0 0 0 coul 0 0 0", "special_bonds"),
              ("special_bonds lj 0 1 1 coul 1 1 1", "special_bonds lj 0 1 1 coul 0 1 1", "never touch"),
@@ -288,7 +323,8 @@ def check_refused(a, workdir):
 
 
 CHECKS = {"plate": check_plate, "section": check_section, "molecules": check_molecules,
-          "roundtrip": check_roundtrip, "types": check_types, "bpm": check_bpm, "refused": check_refused}
+          "roundtrip": check_roundtrip, "restart": check_restart, "types": check_types, "bpm": check_bpm, "periodic": check_periodic,
+          "refused": check_refused}
 
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
