@@ -10,6 +10,8 @@
 #include "modify.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -30,6 +32,26 @@ struct InputCommand : Input {
 
 }
 
+void endRun(LAMMPS *lmp, const std::string &message)
+{
+    FILE *streams[2] = {lmp->screen, lmp->logfile};
+    for (FILE *s : streams)
+        if (s) {
+            fprintf(s, "ERROR on proc %d: %s\n", lmp->comm->me, message.c_str());
+            fflush(s);
+        }
+    lmp->error->one(FLERR, message);
+    std::abort();   // not reached
+}
+
+FixGranbondBonds::FixGranbondBonds(LAMMPS *lmp, int narg, char **arg) :
+    BondStoreFix(lmp, narg, arg), topology_(narg > 3 && std::strcmp(arg[3], "topology") == 0)
+{
+    if (narg > 4 || (narg == 4 && !topology_))
+        error->all(FLERR, "fix granbond/bonds is made by pair_style granbond and bond_style granbond (its only "
+                          "word: topology)");
+}
+
 std::string currentCommand(LAMMPS *lmp)
 {
     const char *c = lmp->input ? lmp->input->*InputCommand::field() : nullptr;
@@ -40,6 +62,17 @@ void FixGranbondBonds::init()
 {
     long long mine = static_cast<long long>(granbond_bond_store_len(store())), all = 0;
     MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+    if (topology_) {
+        if (all > 0 && comm->me == 0 && currentCommand(lmp) == "write_data")
+            error->warning(FLERR, "write_data: the " + std::to_string(all) + " bonds of bond_style granbond are in the "
+                                  "data file's Bonds section, their state is not: read_data starts each at rest at "
+                                  "its length then; write_restart and read_restart keep the state");
+        if (all > 0 && comm->me == 0 && !force->bond_match("granbond"))
+            error->warning(FLERR, "fix granbond/bonds: the state of " + std::to_string(all) + " bonds of bond_style "
+                                  "granbond is kept with their atoms but does not act under bond_style " +
+                                  std::string(force->bond_style ? force->bond_style : "none"));
+        return;
+    }
     if (all > 0 && comm->me == 0 && currentCommand(lmp) == "write_data")
         error->warning(FLERR, "write_data: the " + std::to_string(all) + " bonds of pair_style granbond are not in "
                               "the data file (read_data gives the atoms without them); write_restart and "
@@ -52,17 +85,19 @@ void FixGranbondBonds::init()
                               "; they act again when pair_style granbond returns");
 }
 
-FixGranbondBonds *bondsFix(LAMMPS *lmp)
+FixGranbondBonds *bondsFix(LAMMPS *lmp, bool topology)
 {
     Modify *modify = lmp->modify;
-    int ifix = modify->find_fix(bondsFixId());
+    int ifix = modify->find_fix(bondsFixId(topology));
     if (ifix < 0) {
         (*modify->fix_map)[bondsFixStyle()] = &createBondsFix;
-        modify->add_fix(std::string(bondsFixId()) + " all " + bondsFixStyle());
-        ifix = modify->find_fix(bondsFixId());
+        modify->add_fix(std::string(bondsFixId(topology)) + " all " + bondsFixStyle() + (topology ? " topology" : ""));
+        ifix = modify->find_fix(bondsFixId(topology));
     }
     FixGranbondBonds *fix = ifix < 0 ? nullptr : dynamic_cast<FixGranbondBonds *>(modify->fix[ifix]);
-    if (!fix) lmp->error->all(FLERR, "pair granbond: fix granbond/bonds was deleted or replaced");
+    if (!fix)
+        lmp->error->all(FLERR, std::string(topology ? "bond_style" : "pair") + " granbond: fix granbond/bonds was "
+                                                                               "deleted or replaced");
     return fix;
 }
 

@@ -1,4 +1,6 @@
 #include "bond_watch.h"
+#include "bond_granbond.h"
+#include "bond_store_fix.h"
 #include "pair_granbond.h"
 #include "bond_columns.h"
 #include "core_message.h"
@@ -28,13 +30,24 @@ namespace lammps {
 
 namespace {
 
-// The pair granbond of this run, or an error naming `who`.
-PairGranbond *pairOf(LAMMPS *lmp, const char *who)
+// The home of the bonds this run watches, or an error naming `who`:
+// bond_style granbond where it is the bond style, else pair granbond.
+BondSource *sourceOf(LAMMPS *lmp, const char *who)
 {
+    if (auto *bond = dynamic_cast<BondGranbond *>(lmp->force->bond)) return bond;
     PairGranbond *pair = dynamic_cast<PairGranbond *>(lmp->force->pair_match("granbond", 1));
     if (!pair)
-        lmp->error->all(FLERR, std::string(who) + " needs pair_style granbond (defined before the run)");
+        lmp->error->all(FLERR, std::string(who) + " needs bond_style granbond or pair_style granbond (defined before "
+                                                  "the run)");
     return pair;
+}
+
+// The source this instance follows now (null: none), for a destructor.
+BondSource *currentSource(LAMMPS *lmp)
+{
+    if (!lmp->force) return nullptr;
+    if (auto *bond = dynamic_cast<BondGranbond *>(lmp->force->bond)) return bond;
+    return dynamic_cast<PairGranbond *>(lmp->force->pair_match("granbond", 1));
 }
 
 // Every intact bond of the latest pass: f(index, k) for bond k of each
@@ -43,17 +56,15 @@ PairGranbond *pairOf(LAMMPS *lmp, const char *who)
 // latest pass: its owner i (local), its partner j (local or ghost), its
 // kind (the type pair's model) and place k in the store, its state.
 template<class F>
-void forEachBond(LAMMPS *lmp, PairGranbond *pair, const char *who, F f)
+void forEachBond(LAMMPS *lmp, BondSource *pair, const char *who, F f)
 {
     if (!pair->storeCurrent())
-        lmp->error->all(FLERR, std::string(who) + ": pair granbond has no force pass at step " +
+        lmp->error->all(FLERR, std::string(who) + ": granbond's bonds have no force pass at step " +
                                    std::to_string(static_cast<long long>(lmp->update->ntimestep)) +
                                    " for the present atoms (use it in a run's output, not between runs)");
     GbBondStore *store = pair->bondStore();
     if (!store) return;
     const size_t n = granbond_bond_store_len(store);
-    const int ntypes1 = lmp->atom->ntypes + 1;
-    const int *type = lmp->atom->type;
     double state[GRANBOND_BOND_STATE_LEN];
     for (size_t k = 0; k < n; k++) {
         int32_t ends[2];
@@ -61,8 +72,7 @@ void forEachBond(LAMMPS *lmp, PairGranbond *pair, const char *who, F f)
         if (granbond_bond_store_bond(store, k, ends, &partner, state) != GB_STATUS_OK)
             lmp->error->one(FLERR, std::string(who) + ": " + coreReason());
         const int i = ends[0], j = ends[1];
-        const size_t kind = static_cast<size_t>(std::min(type[i], type[j])) * ntypes1 + std::max(type[i], type[j]);
-        f(i, j, kind, k, state);
+        f(i, j, pair->bondKind(i, j, k), k, state);
     }
 }
 
@@ -77,7 +87,7 @@ public:
     }
     ~ComputeGranbondAtom() override { memory->destroy(count_); }
 
-    void init() override { pairOf(lmp, "compute granbond/atom"); }
+    void init() override { sourceOf(lmp, "compute granbond/atom"); }
 
     void compute_peratom() override
     {
@@ -89,12 +99,12 @@ public:
             vector_atom = count_;
         }
         const int nlocal = atom->nlocal;
-        PairGranbond *pair = pairOf(lmp, "compute granbond/atom");
+        BondSource *pair = sourceOf(lmp, "compute granbond/atom");
         forEachBond(lmp, pair, "compute granbond/atom", [](int, int, size_t, size_t, const double *) {});
         // the bonds of this rank's atoms, wherever they are stored
         std::vector<uint32_t> counts(static_cast<size_t>(nlocal), 0);
         GbBondStore *store = pair->bondStore();
-        const GbAtomIds ids = pair->atomIds();
+        const GbAtomIds ids = atomIdsOf(atom);
         if (store && granbond_bond_store_count_atoms(store, counts.data(), counts.size(), &ids) != GB_STATUS_OK)
             error->one(FLERR, std::string("compute granbond/atom: ") + coreReason());
         for (int i = 0; i < nlocal; i++) count_[i] = counts[i];
@@ -108,6 +118,40 @@ public:
 private:
     int nmax_;
     double *count_;
+};
+
+// ------------------------------------------------------------ counts
+// compute ID all bond/granbond: bond_style granbond's twin of compute pair
+// granbond's eight counts, summed over ranks (created, broken, intact,
+// broken by distance, tension, compression, shear, lost without breaking).
+class ComputeBondGranbond : public Compute {
+public:
+    ComputeBondGranbond(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
+    {
+        if (narg != 3)
+            error->all(FLERR, "compute bond/granbond takes no arguments: compute ID all bond/granbond");
+        vector_flag = 1;
+        size_vector = 8;
+        extvector = 1;
+        vector = values_;
+    }
+
+    void init() override { bond(); }
+
+    void compute_vector() override
+    {
+        invoked_vector = update->ntimestep;
+        bond()->counts(values_);
+    }
+
+private:
+    BondGranbond *bond()
+    {
+        auto *b = dynamic_cast<BondGranbond *>(force->bond);
+        if (!b) error->all(FLERR, "compute bond/granbond needs bond_style granbond");
+        return b;
+    }
+    double values_[8] = {0, 0, 0, 0, 0, 0, 0, 0};
 };
 
 // ------------------------------------------------------------ per bond
@@ -131,12 +175,12 @@ public:
         std::free(pointers_);
     }
 
-    void init() override { listen(pairOf(lmp, "compute granbond/local")); }
+    void init() override { listen(sourceOf(lmp, "compute granbond/local")); }
 
     void compute_local() override
     {
         invoked_local = update->ntimestep;
-        PairGranbond *pair = pairOf(lmp, "compute granbond/local");
+        BondSource *pair = sourceOf(lmp, "compute granbond/local");
         const int *mask = atom->mask;
         const size_t ncols = columns_.size();
         std::vector<double> &rows = buffer_;
@@ -180,15 +224,15 @@ public:
 private:
     // Follows `pair` from now on (null: none); the pair keeps its bonds'
     // outputs only while a compute follows it.
-    void listen(PairGranbond *pair)
+    void listen(BondSource *pair)
     {
-        PairGranbond *current = force ? dynamic_cast<PairGranbond *>(force->pair_match("granbond", 1)) : nullptr;
+        BondSource *current = currentSource(lmp);
         if (pair_ && pair_ == current) pair_->bondOutputUsers--;
         pair_ = pair;
         if (pair_) pair_->bondOutputUsers++;
     }
 
-    PairGranbond *pair_ = nullptr;
+    BondSource *pair_ = nullptr;
 
     BondColumns columns_;
     std::vector<double> buffer_;
@@ -230,7 +274,7 @@ public:
 
     int setmask() override { return FixConst::END_OF_STEP | FixConst::POST_RUN; }
 
-    void init() override { listen(pairOf(lmp, "fix bond/breaklog")); }
+    void init() override { listen(sourceOf(lmp, "fix bond/breaklog")); }
 
     // every step: the events leave the pair (nevery only paces the writing)
     void end_of_step() override
@@ -247,10 +291,10 @@ public:
 private:
     // Follows `pair` from now on (null: none); the pair keeps break events
     // only while a log follows it.
-    void listen(PairGranbond *pair)
+    void listen(BondSource *pair)
     {
-        // at the instance's end the pair style is gone before the fixes
-        PairGranbond *current = force ? dynamic_cast<PairGranbond *>(force->pair_match("granbond", 1)) : nullptr;
+        // at the instance's end the styles are gone before the fixes
+        BondSource *current = currentSource(lmp);
         if (pair_ && pair_ == current) pair_->breakLogUsers--;
         pair_ = pair;
         if (pair_) pair_->breakLogUsers++;
@@ -264,13 +308,17 @@ private:
     }
 
     FILE *file_;
-    PairGranbond *pair_;
+    BondSource *pair_;
     std::vector<BreakEvent> events_;
 };
 
 }
 
 Compute *newComputeGranbondAtom(LAMMPS *lmp, int narg, char **arg) { return new ComputeGranbondAtom(lmp, narg, arg); }
+Compute *newComputeBondGranbond(LAMMPS *lmp, int narg, char **arg)
+{
+    return new ComputeBondGranbond(lmp, narg, arg);
+}
 Compute *newComputeGranbondLocal(LAMMPS *lmp, int narg, char **arg)
 {
     return new ComputeGranbondLocal(lmp, narg, arg);

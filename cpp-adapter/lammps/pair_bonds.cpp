@@ -8,6 +8,7 @@
 #include "bond_store_fix.h"
 #include "core_message.h"
 #include "store_check.h"
+#include "atom_loads.h"
 #include "store_pass.h"
 #include "vector_adds.h"
 
@@ -35,6 +36,12 @@ GbAtomIds PairGranbond::atomIds() const { return atomIdsOf(atom); }
 GbAtomArrays PairGranbond::atomArrays() const { return atomArraysOf(atom); }
 
 GbBondStore *PairGranbond::bondStore() const { return bonds_ ? bonds_->store() : nullptr; }
+
+size_t PairGranbond::bondKind(int i, int j, size_t) const
+{
+    const int ti = atom->type[i], tj = atom->type[j];
+    return static_cast<size_t>(std::min(ti, tj)) * (atom->ntypes + 1) + std::max(ti, tj);
+}
 
 bool PairGranbond::storeCurrent() const
 {
@@ -118,31 +125,16 @@ void PairGranbond::markBonded()
 // bond once.
 void PairGranbond::stepBonds(bool advance)
 {
-    double *const f0 = atom->f[0], *const t0 = atom->torque[0];
-    const double *const x0 = atom->x[0];
+    const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
     const int nlocal = atom->nlocal;
-    const int newton = force->newton_pair;
-    double *const ghosts = ghostLoads_;
-    stepStoreChunks(
-        bonds_->store(), bond_.data(), bond_.size(), atom, atomIds(),
+    stepChunks(
+        atom, bonds_->store(), bond_, force->newton_pair != 0, ghostLoads_,
         bondOutputUsers > 0 && advance ? &outputs_ : nullptr,
-        [&](int i, int j, const GbBondOutput &o) {
-            add3(f0 + 3 * static_cast<size_t>(i), o.force_i);
-            add3(t0 + 3 * static_cast<size_t>(i), o.torque_i);
-            if (j < nlocal || newton) {
-                subtract3(f0 + 3 * static_cast<size_t>(j), o.force_i);
-                add3(t0 + 3 * static_cast<size_t>(j), o.torque_j);
-            } else {
-                double *g = ghosts + 6 * static_cast<size_t>(j - nlocal);
-                subtract3(g, o.force_i);
-                add3(g + 3, o.torque_j);
-            }
-            if (evflag) {
-                const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
-                // each bond is stepped on one rank: its whole virial here
-                ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, o.force_i[0], o.force_i[1], o.force_i[2], xi[0] - xj[0],
-                             xi[1] - xj[1], xi[2] - xj[2]);
-            }
+        [&](int i, int j, const double *f) {
+            if (!evflag) return;
+            const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+            // each bond is stepped on one rank: its whole virial here
+            ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, f[0], f[1], f[2], xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
         },
         [&](int i, int j, const std::string &why) {
             if (i >= 0) failPair(i, j, "the bond");

@@ -324,15 +324,7 @@ void PairGranbond::failPair(int i, int j, const char *what)
                std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
                std::to_string(static_cast<long long>(atom->tag[j])) + " at step " +
                std::to_string(static_cast<long long>(update->ntimestep)) + ": " + coreReason();
-    // error->one aborts without flushing: write the message first
-    FILE *streams[2] = {screen, logfile};
-    for (FILE *s : streams)
-        if (s) {
-            fprintf(s, "ERROR on proc %d: %s\n", comm->me, message_.c_str());
-            fflush(s);
-        }
-    error->one(FLERR, message_);
-    std::abort();   // not reached
+    endRun(lmp, message_);
 }
 
 // Forces of a contact (or a bond) on i and j. `f` and `torque` are
@@ -453,6 +445,7 @@ void PairGranbond::compute(int eflag, int vflag)
     // whether a bonded pair's contact is stepped in this pass at all
     bool underBond = false;
     for (size_t tp = 0; tp < pairs_.size(); tp++) underBond = underBond || (advance && pairs[tp].contactUnderBond);
+    const double *const specialLj = force->special_lj;
     const int *const live = anyBond_ && !underBond && livePairs_.size() == static_cast<size_t>(inum) ? livePairs_.data() : nullptr;
     for (int ii = 0; ii < inum; ii++) {
         // an atom whose listed pairs are all bonds: nothing to do
@@ -466,6 +459,15 @@ void PairGranbond::compute(int eflag, int vflag)
         double *allhistory = firsthistory[i];
         for (int jj = 0, jnum = numneigh[i]; jj < jnum; jj++) {
             if (touch[jj] == kBondedMark && !underBond) continue;   // most bonds: no lookup
+            // a pair the topology bonds with contacts off (bond_style
+            // granbond under special_bonds lj 0 for 1-2, as BPM's): none
+            if ((jlist[jj] >> SBBITS) != 0 && specialLj[sbmask(jlist[jj])] == 0.0) {
+                if (touch[jj]) {
+                    touch[jj] = 0;
+                    std::fill(&allhistory[size * jj], &allhistory[size * (jj + 1)], 0.0);
+                }
+                continue;
+            }
             const int j = jlist[jj] & NEIGHMASK;
             const int jtype = type[j];
             const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype

@@ -13,6 +13,7 @@
 
 #include "pair.h"
 #include "granbond.h"
+#include "bond_source.h"
 #include "break_log.h"
 #include "run_checks.h"
 
@@ -27,7 +28,7 @@ namespace granbond {
 namespace lammps {
 class FixGranbondBonds;
 
-class PairGranbond : public LAMMPS_NS::Pair {
+class PairGranbond : public LAMMPS_NS::Pair, public BondSource {
 public:
     explicit PairGranbond(LAMMPS_NS::LAMMPS *lmp);
     ~PairGranbond() override;
@@ -66,13 +67,12 @@ public:
     // while `bondOutputUsers` is non-zero (compute granbond/local); the
     // bonds that broke in force passes, kept while `breakLogUsers` is
     // non-zero (fix bond/breaklog).
-    GbBondStore *bondStore() const;
-    const GbBondModel *bondModel(size_t kind) const { return kind < bond_.size() ? bond_[kind] : nullptr; }
-    bool storeCurrent() const;
-    const std::vector<GbBondOutput> &bondOutputs() const { return outputs_; }
-    std::vector<BreakEvent> &breakEvents() { return breaks_; }
-    int breakLogUsers = 0;
-    int bondOutputUsers = 0;
+    GbBondStore *bondStore() const override;
+    const GbBondModel *bondModel(size_t kind) const override { return kind < bond_.size() ? bond_[kind] : nullptr; }
+    size_t bondKind(int i, int j, size_t k) const override;
+    bool storeCurrent() const override;
+    const std::vector<GbBondOutput> &bondOutputs() const override { return outputs_; }
+    std::vector<BreakEvent> &breakEvents() override { return breaks_; }
     // The contact history's flag of a pair: 0 apart (its history all
     // zero), 1 touching, kBondedMark bonded. The last is a cache of the
     // bond store, marked again from it after every list build and wherever

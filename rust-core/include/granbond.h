@@ -82,7 +82,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 17
+#define GRANBOND_ABI_VERSION 18
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -559,6 +559,23 @@ typedef struct GbBondParams {
    */
   double compression_linear_below;
   /**
+   * BPM mode: the tensile normal force `F_rc` (N) of the summed rule
+   * ([`super::breakage::summed_criterion`]); `inf` = its term is 0.
+   */
+  double max_normal_force;
+  /**
+   * BPM mode: the shear force `F_sc` (N).
+   */
+  double max_shear_force;
+  /**
+   * BPM mode: the bending torque `T_bc` (N m).
+   */
+  double max_bend_torque;
+  /**
+   * BPM mode: the twisting torque `T_tc` (N m).
+   */
+  double max_twist_torque;
+  /**
    * Time step at which bonds are created (when `create_always` is off).
    */
   int64_t create_step;
@@ -566,6 +583,11 @@ typedef struct GbBondParams {
    * 0 = distance mode, 1 = stress mode.
    */
   int32_t stress_break;
+  /**
+   * BPM mode (LAMMPS `bond_style bpm/rotational`'s summed rule) instead
+   * of the distance or stress mode.
+   */
+  int32_t bpm_break;
   /**
    * Applies `tension_compression_ratio` to `max_sigma` while the bond is
    * stretched.
@@ -1148,6 +1170,25 @@ typedef struct GbLinkReport {
    */
   int64_t no_model;
 } GbLinkReport;
+
+/**
+ * One bond of the engine's topology that this rank steps: its atoms' local
+ * indices (the owner local, the partner local or ghost) and its kind.
+ */
+typedef struct GbListedBond {
+  /**
+   * The owner: a local atom, the one whose bonds travel with it.
+   */
+  int32_t owner;
+  /**
+   * The partner: the image the topology names.
+   */
+  int32_t partner;
+  /**
+   * The bond's kind (the engine's bond type).
+   */
+  int32_t kind;
+} GbListedBond;
 
 /**
  * A bond that broke in the pass.
@@ -2216,6 +2257,13 @@ enum GbStatus granbond_voigt_parameter_needed(const struct GbVoigtParams *params
                                               int32_t *needed);
 
 /**
+ * Whether row `id` of the bond table says when bonds form (1) or not (0):
+ * a deck whose bonds come from an engine's topology gives none of those
+ * rows. -1 for an `id` beyond the table.
+ */
+int32_t granbond_bond_parameter_sets_creation(size_t id);
+
+/**
  * A new, empty store, written to `store`. Free it with
  * `granbond_bond_store_free`.
  *
@@ -2338,6 +2386,27 @@ enum GbStatus granbond_bond_store_link(struct GbBondStore *store,
                                        const int32_t *kinds,
                                        size_t ntypes,
                                        struct GbLinkReport *report);
+
+/**
+ * Links a store whose bonds the engine's topology names (`bond_style
+ * granbond`): the store holds exactly the `nlisted` bonds of `listed`
+ * after it (owner local, partner the topology's image, kind the bond
+ * type), keeping the state of those it held, creating the others at rest
+ * at their present length, and counting in `report` those it held that
+ * the list does not name (lost). `ids` and `x` (3 doubles an atom) hold
+ * the local atoms first, `nlocal` of them, then the ghosts.
+ *
+ * # Safety
+ * Pointers must be null or valid: `listed` for `nlisted` bonds, `x` for
+ * `3 * ids->count` doubles.
+ */
+enum GbStatus granbond_bond_store_link_listed(struct GbBondStore *store,
+                                              const struct GbAtomIds *ids,
+                                              size_t nlocal,
+                                              const double *x,
+                                              const struct GbListedBond *listed,
+                                              size_t nlisted,
+                                              struct GbLinkReport *report);
 
 /**
  * Starts a pass: a force pass over `dt` (`advance` non-zero) or a setup

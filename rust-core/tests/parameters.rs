@@ -383,15 +383,25 @@ fn a_phrase_reads_the_values_its_settings_make_the_model_read() {
 }
 
 #[test]
-fn a_break_mode_sets_the_stress_switch() {
+fn a_break_mode_sets_the_stress_and_bpm_switches() {
     let mode = |words: &str| {
         granbond::bond::PHRASES
             .iter()
             .find(|p| p.words == words)
             .map(|p| p.sets.to_vec())
     };
-    assert_eq!(mode("break distance"), Some(vec![("stress_break", 0.0)]));
-    assert_eq!(mode("break stress"), Some(vec![("stress_break", 1.0)]));
+    assert_eq!(
+        mode("break distance"),
+        Some(vec![("stress_break", 0.0), ("bpm_break", 0.0)])
+    );
+    assert_eq!(
+        mode("break stress"),
+        Some(vec![("stress_break", 1.0), ("bpm_break", 0.0)])
+    );
+    assert_eq!(
+        mode("break bpm"),
+        Some(vec![("stress_break", 0.0), ("bpm_break", 1.0)])
+    );
     assert_eq!(mode("create_step"), Some(vec![("create_always", 0.0)]));
 }
 

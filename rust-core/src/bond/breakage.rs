@@ -73,6 +73,53 @@ pub fn stress_criterion<R: Real>(sigma: R, tau: R, delta: R, limits: &StressLimi
     )
 }
 
+/// The critical loads of the BPM mode (LAMMPS `bond_style bpm/rotational`'s
+/// `F_rc`, `F_sc`, `T_bc`, `T_tc`); infinite ones add nothing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SummedLimits {
+    /// Tensile normal force (N).
+    pub normal: f64,
+    /// Shear force (N).
+    pub shear: f64,
+    /// Bending torque (N m).
+    pub bend: f64,
+    /// Twisting torque (N m).
+    pub twist: f64,
+}
+
+/// BPM's summed rule, as the [`BreakMode`] number of each lane: the bond
+/// breaks when `F_t/F_rc + |F_s|/F_sc + |T_b|/T_bc + |T_t|/T_tc >= 1`, from
+/// the undamped loads, where `F_t` is the normal force counted positive in
+/// tension (`normal_force` is positive in compression, which so holds a
+/// bond together). A break of the normal and bending terms mostly is a
+/// tension (or, compressed, compression) break; of the shear and twisting
+/// terms a shear break, as [`stress_criterion`] sorts the section's stresses.
+#[inline(always)]
+pub fn summed_criterion<R: Real>(
+    normal_force: R,
+    shear_force: R,
+    twist_torque: R,
+    bend_torque: R,
+    delta: R,
+    limits: &SummedLimits,
+) -> R {
+    let mode = |m: BreakMode| R::splat(m as i32 as f64);
+    let zero = R::splat(0.0);
+    let bending =
+        (zero - normal_force) * R::splat(1.0 / limits.normal) + bend_torque * R::splat(1.0 / limits.bend);
+    let twisting = shear_force * R::splat(1.0 / limits.shear) + twist_torque * R::splat(1.0 / limits.twist);
+    let stretched = delta.lt(zero);
+    R::select(
+        (bending + twisting).ge(R::splat(1.0)),
+        R::select(
+            bending.ge(twisting),
+            R::select(stretched, mode(BreakMode::Tension), mode(BreakMode::Compression)),
+            mode(BreakMode::Shear),
+        ),
+        mode(BreakMode::None),
+    )
+}
+
 /// Whether the centre distance `r` broke the bond (distance mode).
 #[inline(always)]
 pub fn distance_criterion<R: Real>(r: R, max_distance: f64) -> R::Mask {

@@ -1,7 +1,7 @@
 //! A validated bond type: the laws built from [`BondParams`], which the step
 //! reads.
 
-use super::breakage::StressLimits;
+use super::breakage::{StressLimits, SummedLimits};
 use super::features::{features, TENSION};
 use super::hysteresis::Loop;
 use super::normal_law::NormalLaw;
@@ -26,6 +26,10 @@ pub struct BondLaws {
     pub stress_break: bool,
     /// The strengths of the stress mode (eq. 15).
     pub limits: StressLimits,
+    /// BPM mode: the bond breaks by BPM's summed rule on its loads.
+    pub bpm_break: bool,
+    /// The critical loads of the BPM mode.
+    pub summed: SummedLimits,
     /// Bits of [`super::features`] (`TENSION`, `SHEAR`, ...) compiled in.
     pub features: u32,
     /// LIGGGHTS-INL's code (`inl_compatible`): the step is `bond::inl`'s.
@@ -68,6 +72,13 @@ impl BondLaws {
                 } else {
                     1.0
                 },
+            },
+            bpm_break: on(p.bpm_break),
+            summed: SummedLimits {
+                normal: p.max_normal_force,
+                shear: p.max_shear_force,
+                bend: p.max_bend_torque,
+                twist: p.max_twist_torque,
             },
             features: features(p),
             inl,

@@ -46,6 +46,8 @@ pub use breakage::BreakMode;
 pub use energy::BondEnergy;
 pub use laws::BondLaws;
 pub use model::BondModel;
-pub use params::{liggghts_name, BondParams, ParameterError, LINEAR_NAMES, PARAMETERS, PHRASES};
+pub use params::{
+    liggghts_name, BondParams, ParameterError, CREATION_ROWS, LINEAR_NAMES, PARAMETERS, PHRASES,
+};
 pub use state::{BondOutput, BondState, BondStatus, BOND_SLOTS, BOND_STATE_LEN};
 pub use wall::{WallBondState, WALL_BOND_SLOTS, WALL_BOND_STATE_LEN};

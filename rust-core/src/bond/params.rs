@@ -66,10 +66,22 @@ pub struct BondParams {
     /// `delta_eps` (m): the square-root compression law is continued linearly
     /// below this compression, bounding its stiffness. 0 = off (the law of docs/models/bond-nonlinear.md).
     pub compression_linear_below: f64,
+    /// BPM mode: the tensile normal force `F_rc` (N) of the summed rule
+    /// ([`super::breakage::summed_criterion`]); `inf` = its term is 0.
+    pub max_normal_force: f64,
+    /// BPM mode: the shear force `F_sc` (N).
+    pub max_shear_force: f64,
+    /// BPM mode: the bending torque `T_bc` (N m).
+    pub max_bend_torque: f64,
+    /// BPM mode: the twisting torque `T_tc` (N m).
+    pub max_twist_torque: f64,
     /// Time step at which bonds are created (when `create_always` is off).
     pub create_step: i64,
     /// 0 = distance mode, 1 = stress mode.
     pub stress_break: i32,
+    /// BPM mode (LAMMPS `bond_style bpm/rotational`'s summed rule) instead
+    /// of the distance or stress mode.
+    pub bpm_break: i32,
     /// Applies `tension_compression_ratio` to `max_sigma` while the bond is
     /// stretched.
     pub use_ratio: i32,
@@ -159,8 +171,13 @@ impl Default for BondParams {
             smooth_velocity: 1e-5,
             smooth_angular_velocity: 1e-3,
             compression_linear_below: 0.0,
+            max_normal_force: f64::INFINITY,
+            max_shear_force: f64::INFINITY,
+            max_bend_torque: f64::INFINITY,
+            max_twist_torque: f64::INFINITY,
             create_step: 0,
             stress_break: 0,
+            bpm_break: 0,
             use_ratio: 0,
             create_always: 0,
             history_reset: 0,
@@ -211,6 +228,10 @@ const DISTANCE_MODE: Need<BondParams> = Need {
 const STRESS_MODE: Need<BondParams> = Need {
     when: "stress mode (stress break on)",
     applies: |p| BondParams::switch(p.stress_break),
+};
+const BPM_MODE: Need<BondParams> = Need {
+    when: "BPM mode (bpm break on)",
+    applies: |p| BondParams::switch(p.bpm_break),
 };
 const STRESS_RATIO: Need<BondParams> = Need {
     when: "stress mode with the tension ratio on",
@@ -269,8 +290,13 @@ crate::parameter_table!(
         smooth_velocity, "dampingBondSmooth velocity", Fixed, "m/s", Positive, SMOOTH_DAMPING;
         smooth_angular_velocity, "dampingBondSmooth angular velocity", Fixed, "rad/s", Positive, SMOOTH_DAMPING;
         compression_linear_below, "compressionLinearBelowBondnonlinear", OptionalPerTypePair, "m", NonNegative, ALWAYS;
+        max_normal_force, "maxNormalForceBondnonlinear", PerTypePair, "N", PositiveOrInfinite, BPM_MODE;
+        max_shear_force, "maxShearForceBondnonlinear", PerTypePair, "N", PositiveOrInfinite, BPM_MODE;
+        max_bend_torque, "maxBendTorqueBondnonlinear", PerTypePair, "N m", PositiveOrInfinite, BPM_MODE;
+        max_twist_torque, "maxTwistTorqueBondnonlinear", PerTypePair, "N m", PositiveOrInfinite, BPM_MODE;
         create_step, "tsCreateBondnonlinear", Scalar, "step", Step, AT_STEP;
         stress_break, "stressBreak", Switch, "switch", Switch, ALWAYS;
+        bpm_break, "bpmBreak", Switch, "switch", Switch, ALWAYS;
         use_ratio, "ratioTensionCompressionBond", Switch, "switch", Switch, ALWAYS;
         create_always, "createBondAlways", Switch, "switch", Switch, ALWAYS;
         history_reset, "historyReset", Switch, "switch", Switch, ALWAYS;
@@ -350,21 +376,39 @@ pub fn liggghts_name(linear: bool, id: usize) -> Option<&'static str> {
     }
 }
 
+/// The rows that say when and between which pairs bonds form. Where an
+/// engine's topology names the bonds (LAMMPS `bond_style granbond`), a deck
+/// gives none of them: a listed bond exists from the start, at rest at its
+/// length.
+pub const CREATION_ROWS: &[&str] = &["create_distance", "create_step", "create_always"];
+
 /// The `bond/nonlinear` phrases of `pair_coeff` (docs/reference/pair_granbond.md):
-/// a break mode is the stress switch, a tension ratio switches the ratio on,
+/// a break mode is the stress or BPM switch, a tension ratio switches the ratio on,
 /// a creation step means creation at that step only.
 pub const PHRASES: &[Phrase] = &[
     Phrase {
         words: "break distance",
         follows: "",
         reads: &["max_distance"],
-        sets: &[("stress_break", 0.0)],
+        sets: &[("stress_break", 0.0), ("bpm_break", 0.0)],
     },
     Phrase {
         words: "break stress",
         follows: "",
         reads: &["max_sigma", "max_tau"],
-        sets: &[("stress_break", 1.0)],
+        sets: &[("stress_break", 1.0), ("bpm_break", 0.0)],
+    },
+    Phrase {
+        words: "break bpm",
+        follows: "",
+        // BPM's own order in bond_coeff: F_rc F_sc T_tc T_bc
+        reads: &[
+            "max_normal_force",
+            "max_shear_force",
+            "max_twist_torque",
+            "max_bend_torque",
+        ],
+        sets: &[("stress_break", 0.0), ("bpm_break", 1.0)],
     },
     Phrase {
         words: "ratio",
@@ -516,6 +560,22 @@ impl BondParams {
                     value,
                 ));
             }
+        }
+        if Self::switch(self.bpm_break)
+            && (Self::switch(self.stress_break) || Self::switch(self.inl_compatible))
+        {
+            let other = if Self::switch(self.stress_break) {
+                "stress_break (break stress)"
+            } else {
+                "inl_compatible"
+            };
+            return Err(refuse(
+                MODEL,
+                PARAMETERS,
+                "bpm_break",
+                &format!("0 with {other} on: a bond breaks by one rule"),
+                f64::from(self.bpm_break),
+            ));
         }
         for (k, ku, ku_name) in [
             (self.k_fn1, self.ku_fn1, "ku_fn1"),

@@ -10,7 +10,7 @@
 //! its history, writes it back and is damped ([`advance`], through
 //! [`HistoryIo`]).
 
-use super::breakage::{distance_criterion, section_stresses, stress_criterion, BreakMode};
+use super::breakage::{distance_criterion, section_stresses, stress_criterion, summed_criterion, BreakMode};
 use super::damping::{damp_along, damp_scalar, reciprocal_unit, sign, unit_scale};
 use super::features::{BEND, COMPRESSION, DAMPING, SHEAR, SMOOTH, TENSION, TWIST};
 use super::laws::BondLaws;
@@ -306,6 +306,15 @@ pub(crate) fn advance<S: Switches, R: Real, V: Vector<R>, H: HistoryIo<R, V>>(
         // (0 unless the bond breaks.)
         mode: if laws.stress_break {
             stress_criterion(sigma, tau, delta, &laws.limits)
+        } else if laws.bpm_break {
+            summed_criterion(
+                undamped,
+                shear_magnitude,
+                twist_magnitude,
+                bend_magnitude,
+                delta,
+                &laws.summed,
+            )
         } else {
             zero
         },

@@ -144,7 +144,7 @@ impl BondStore {
 
     /// Unpacks into atom `i` (arrived by migration, or read from a restart
     /// file) the bonds [`Self::pack`] wrote to `buf`; returns the doubles
-    /// read. The bonds join those `i` owns.
+    /// read. Atom `i` owns those bonds and no others.
     pub fn unpack(&mut self, i: usize, buf: &[f64]) -> Result<usize, UnpackError> {
         if buf.len() < 2 {
             return Err(UnpackError::Short {
@@ -171,6 +171,11 @@ impl BondStore {
         }
         self.grow(i + 1);
         self.seen[i] = seen;
+        // the slot's old list belongs to the atom the engine copied from it
+        // (an atom that left, its slot taken by the last one): the arriving
+        // atom owns only what it brings, or a later sort that moves it
+        // ahead of that atom would hand it their bonds
+        self.head[i] = NONE;
         for b in 0..count {
             let at = 2 + b * PACKED_PER_BOND;
             let mut state = BondState::default();

@@ -66,7 +66,7 @@ pub struct LinkReport {
 }
 
 impl LinkReport {
-    fn count(&mut self, cause: LossCause) {
+    pub(super) fn count(&mut self, cause: LossCause) {
         match cause {
             LossCause::OwnerGone => self.owner_gone += 1,
             LossCause::PartnerUnreached => self.partner_unreached += 1,
@@ -171,17 +171,23 @@ impl BondStore {
         self.ends.truncate(kept);
         self.kinds.truncate(kept);
         self.rebuild_lists();
-        for i in 0..atoms.nlocal {
-            self.seen[i] = atoms.ids.get(i);
+        Ok(self.finish_link(report, atoms.ids, atoms.nlocal))
+    }
+
+    /// The end of a link: every local atom marked seen, the losses
+    /// counted, the store linked.
+    pub(super) fn finish_link(&mut self, mut report: LinkReport, ids: Ids<'_>, nlocal: usize) -> LinkReport {
+        for i in 0..nlocal {
+            self.seen[i] = ids.get(i);
         }
         report.linked = self.bonds.len() as i64;
-        self.nlocal = atoms.nlocal;
+        self.nlocal = nlocal;
         self.counts.lost_owner_gone += report.owner_gone;
         self.counts.lost_partner_unreached += report.partner_unreached;
         self.counts.lost_id_reused += report.id_reused;
         self.counts.lost_no_model += report.no_model;
         self.linked = true;
-        Ok(report)
+        report
     }
 
     /// Bond `b`'s partner (its image closest to the owner) and kind, or why

@@ -15,12 +15,14 @@
 mod atoms;
 mod id_map;
 mod link;
+mod listed;
 mod pass;
 mod view;
 
 pub use atoms::UnpackError;
 pub use id_map::Ids;
 pub use link::{LinkAtoms, LinkError, LinkReport, LossCause};
+pub use listed::{ListedAtoms, ListedBond};
 pub use pass::{creates_here, BrokenBond, StepFailure, StepFailureReason, CHUNK};
 pub use view::ViewError;
 

@@ -8,7 +8,8 @@ use super::guard::{reference, reference_mut, slice, slice_mut, time_step, Failed
 use super::results::refused;
 use crate::bond::{BondModel, BondOutput, BOND_STATE_LEN};
 use crate::bond_store::{
-    creates_here, BondStore, BrokenBond, Ids, LinkAtoms, LinkReport, StepFailureReason, StoreCounts, CHUNK,
+    creates_here, BondStore, BrokenBond, Ids, LinkAtoms, LinkReport, ListedAtoms, ListedBond,
+    StepFailureReason, StoreCounts, CHUNK,
 };
 use crate::kinematics::PairKinematics;
 
@@ -266,6 +267,42 @@ pub unsafe extern "C" fn granbond_bond_store_link(
     *report = store
         .link(&view)
         .map_err(|e| Failure::new(Status::InvalidArgument, e.0))?;
+    Ok(())
+}
+
+/// Links a store whose bonds the engine's topology names (`bond_style
+/// granbond`): the store holds exactly the `nlisted` bonds of `listed`
+/// after it (owner local, partner the topology's image, kind the bond
+/// type), keeping the state of those it held, creating the others at rest
+/// at their present length, and counting in `report` those it held that
+/// the list does not name (lost). `ids` and `x` (3 doubles an atom) hold
+/// the local atoms first, `nlocal` of them, then the ghosts.
+///
+/// # Safety
+/// Pointers must be null or valid: `listed` for `nlisted` bonds, `x` for
+/// `3 * ids->count` doubles.
+#[allow(clippy::too_many_arguments)]
+#[entry(store: reference_mut, ids: reference, report: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_link_listed(
+    store: *mut BondStore,
+    ids: *const AtomIds,
+    nlocal: usize,
+    x: *const f64,
+    listed: *const ListedBond,
+    nlisted: usize,
+    report: *mut LinkReport,
+) -> Status {
+    let n = ids.count;
+    let atoms = ListedAtoms {
+        ids: self::ids(ids)?,
+        nlocal,
+        x: slice(x, n.saturating_mul(3), "x")?,
+    };
+    let listed = slice(listed, nlisted, "listed")?;
+    *report = store
+        .link_listed(&atoms, listed)
+        .map_err(|e| Failure::new(Status::InvalidArgument, format!("listed: {}", e.0)))?;
     Ok(())
 }
 

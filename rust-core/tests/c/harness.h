@@ -140,6 +140,7 @@ size_t bond_field_count(void);
 int test_bond_fields(void);
 /* store.c */
 int test_bond_store(void);
+int test_bond_store_listed(void);
 
 /* layout.c */
 int test_version_and_layout(void);

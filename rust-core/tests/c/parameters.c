@@ -525,8 +525,15 @@ int test_deck_phrases(void)
     n = check_phrases("voigt", granbond_voigt_phrase_info, &v, voigt_set);
     CHECK(n > 0, "the voigt contact has phrases");
     EXPECT_OK(granbond_bond_phrase_info(0, &p), "bond phrase 0");
-    CHECK(strcmp(p.words, "break distance") == 0 && strcmp(p.sets, "stress_break 0") == 0,
-          "bond phrase 0: a break distance is the stress switch off");
+    CHECK(strcmp(p.words, "break distance") == 0 && strcmp(p.sets, "stress_break 0 bpm_break 0") == 0,
+          "bond phrase 0: a break distance is the stress and BPM switches off");
+    {
+        size_t id, creation = 0;
+        for (id = 0; id < granbond_bond_parameter_count(); id++)
+            creation += granbond_bond_parameter_sets_creation(id) == 1;
+        CHECK(creation == 3, "three rows say when bonds form");
+        CHECK(granbond_bond_parameter_sets_creation(granbond_bond_parameter_count()) == -1, "beyond the table: -1");
+    }
     /* the values after the model's name: a phrase without words */
     EXPECT_OK(granbond_voigt_phrase_info(0, &p), "voigt phrase 0");
     CHECK(p.words[0] == '\0' && strncmp(p.reads, "k_n ", 4) == 0, "voigt's values start with k_n");

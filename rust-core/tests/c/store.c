@@ -232,3 +232,40 @@ int test_bond_store(void)
     granbond_bond_model_free(m);
     return 0;
 }
+
+/* A store whose bonds a topology lists (bond_style granbond): the listed
+ * bond is created at rest at its length, kept while listed, lost when the
+ * list drops it; a malformed entry is refused naming it. */
+int test_bond_store_listed(void)
+{
+    GbBondStore *store = NULL;
+    TwoAtoms a;
+    GbStoreAtoms sa;
+    GbLinkReport report;
+    GbStoreCounts counts;
+    GbListedBond listed = {0, 1, 0}, bad = {5, 1, 0};
+    int32_t bond_ends[2];
+    int64_t partner = 0;
+    double state[GRANBOND_BOND_STATE_LEN];
+
+    two_atoms(&a, R0_NOMINAL);
+    sa = store_atoms(&a);
+    EXPECT_OK(granbond_bond_store_new(&store), "granbond_bond_store_new");
+    EXPECT_OK(granbond_bond_store_link_listed(store, &sa.ids, 2, sa.x, &listed, 1, &report),
+              "granbond_bond_store_link_listed");
+    CHECK(report.linked == 1 && granbond_bond_store_len(store) == 1, "the listed bond is held");
+    EXPECT_OK(granbond_bond_store_bond(store, 0, bond_ends, &partner, state), "granbond_bond_store_bond");
+    CHECK(bond_ends[0] == 0 && bond_ends[1] == 1 && partner == 4, "owner and partner as listed");
+    EXPECT_OK(granbond_bond_store_link_listed(store, &sa.ids, 2, sa.x, NULL, 0, &report),
+              "granbond_bond_store_link_listed, nothing listed");
+    CHECK(report.linked == 0 && report.no_model == 1, "a bond the list drops is lost");
+    EXPECT_OK(granbond_bond_store_counts(store, &counts), "granbond_bond_store_counts");
+    CHECK(counts.created == 1 && counts.lost_no_model == 1 && counts.intact == 0, "created = lost");
+    EXPECT(granbond_bond_store_link_listed(store, &sa.ids, 2, sa.x, &bad, 1, &report), GB_STATUS_INVALID_ARGUMENT,
+           "an owner beyond the local atoms");
+    EXPECT_MESSAGE("listed bond 0");
+    EXPECT(granbond_bond_store_link_listed(NULL, &sa.ids, 2, sa.x, &listed, 1, &report), GB_STATUS_NULL_POINTER,
+           "a null store");
+    granbond_bond_store_free(store);
+    return 0;
+}

@@ -30,7 +30,7 @@ use granbond::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
 };
-use granbond::bond_store::{BrokenBond, LinkReport, StoreCounts};
+use granbond::bond_store::{BrokenBond, LinkReport, ListedBond, StoreCounts};
 use granbond::contact::{
     ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN, VOIGT_PARAMETERS,
 };
@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 105] = [
+pub const ENTRY_POINTS: [&str; 107] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -118,6 +118,7 @@ pub const ENTRY_POINTS: [&str; 105] = [
     "granbond_voigt_params_get",
     "granbond_voigt_params_set",
     "granbond_bond_parameter_needed",
+    "granbond_bond_parameter_sets_creation",
     "granbond_voigt_parameter_needed",
     "granbond_bond_phrase_info",
     "granbond_voigt_phrase_info",
@@ -145,6 +146,7 @@ pub const ENTRY_POINTS: [&str; 105] = [
     "granbond_bond_store_pack",
     "granbond_bond_store_unpack",
     "granbond_bond_store_link",
+    "granbond_bond_store_link_listed",
     "granbond_bond_store_begin_pass",
     "granbond_bond_store_step_next",
     "granbond_bond_store_broken_count",
@@ -1172,6 +1174,9 @@ impl<'t> Session<'t> {
                     );
                 }
             }
+            let creation = fp::granbond_bond_parameter_sets_creation(id);
+            assert!((-1..=1).contains(&creation), "sets_creation {creation}");
+            self.answer_value("granbond_bond_parameter_sets_creation");
         }
         if !bond {
             let mut part = Place::new(granbond::contact::ContactPart::Rolling);
@@ -2004,6 +2009,34 @@ impl<'t> Session<'t> {
             ok(self, "granbond_bond_store_set_seen", status);
             let _ = fs::granbond_bond_store_seen(st, i);
             self.answer_value("granbond_bond_store_seen");
+            // the store linked from a listed topology, after all the above:
+            // the chain's pairs, then one entry beyond the atoms (no input
+            // of its own, so the corpus reads as before)
+            let mut listed: Vec<ListedBond> = (1..nlocal.min(n))
+                .map(|a| ListedBond {
+                    owner: a as i32 - 1,
+                    partner: a as i32,
+                    kind: 0,
+                })
+                .collect();
+            let mut report = Place::new(LinkReport::default());
+            for _ in 0..2 {
+                let status = fs::granbond_bond_store_link_listed(
+                    st,
+                    &wide_ids,
+                    nlocal,
+                    x.as_ptr(),
+                    listed.as_ptr(),
+                    listed.len(),
+                    report.ptr(Pointer::Valid),
+                );
+                ok(self, "granbond_bond_store_link_listed", status);
+                listed.push(ListedBond {
+                    owner: nlocal as i32,
+                    partner: 0,
+                    kind: 0,
+                });
+            }
         }
         // SAFETY: from granbond_bond_store_new, not used again; null is allowed.
         unsafe {
