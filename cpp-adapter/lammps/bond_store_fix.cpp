@@ -283,18 +283,24 @@ GbStoreCounts FixGranbondBonds::counts() const
     return c;
 }
 
-// The counts summed over the ranks, after their own size: LAMMPS hands
-// restart() what follows the payload's length.
+// The counts and the energy sums summed over the ranks, after their own
+// size: LAMMPS hands restart() what follows the payload's length. A file
+// with the counts alone (written before the sums) is read as zero sums.
 void FixGranbondBonds::write_restart(FILE *fp)
 {
     GbStoreCounts mine = counts(), all;
     MPI_Allreduce(&mine, &all, sizeof(GbStoreCounts) / sizeof(int64_t), MPI_INT64_T, MPI_SUM, world);
+    GbEnergySums myEnergy, allEnergy;
+    std::memset(&myEnergy, 0, sizeof myEnergy);
+    granbond_bond_store_energy_sums(store_, &myEnergy);
+    MPI_Allreduce(&myEnergy, &allEnergy, sizeof(GbEnergySums) / sizeof(double), MPI_DOUBLE, MPI_SUM, world);
     if (comm->me == 0) {
-        const int64_t layout = static_cast<int64_t>(sizeof(GbStoreCounts));
-        const int size = static_cast<int>(sizeof(int64_t) + sizeof(GbStoreCounts));
+        const int64_t layout = static_cast<int64_t>(sizeof(GbStoreCounts) + sizeof(GbEnergySums));
+        const int size = static_cast<int>(sizeof(int64_t) + layout);
         fwrite(&size, sizeof(int), 1, fp);
         fwrite(&layout, sizeof(int64_t), 1, fp);
         fwrite(&all, sizeof(GbStoreCounts), 1, fp);
+        fwrite(&allEnergy, sizeof(GbEnergySums), 1, fp);
     }
 }
 
@@ -302,13 +308,18 @@ void FixGranbondBonds::restart(char *buf)
 {
     int64_t layout = 0;
     std::memcpy(&layout, buf, sizeof layout);
-    if (layout != static_cast<int64_t>(sizeof(GbStoreCounts)))
+    const int64_t counted = static_cast<int64_t>(sizeof(GbStoreCounts));
+    if (layout != counted && layout != counted + static_cast<int64_t>(sizeof(GbEnergySums)))
         error->all(FLERR, "fix granbond/bonds: the restart file's bond counts have another layout; write the "
                           "restart file again with this granbond");
     if (comm->me != 0) return;
     GbStoreCounts c;
     std::memcpy(&c, buf + sizeof layout, sizeof c);
     granbond_bond_store_restore_counts(store_, &c);
+    if (layout == counted) return;
+    GbEnergySums e;
+    std::memcpy(&e, buf + sizeof layout + sizeof c, sizeof e);
+    granbond_bond_store_restore_energy_sums(store_, &e);
 }
 
 double FixGranbondBonds::memory_usage()

@@ -73,6 +73,11 @@ public:
     std::vector<BreakEvent> &breakEvents() { return breaks_; }
     int breakLogUsers = 0;
     int bondOutputUsers = 0;
+    // pair_style granbond energy yes: the store keeps the bonds' energy
+    // budget; energyOutputUsers (compute granbond/local asking for a bond's
+    // dissipated energy) keeps each bond's share too.
+    bool energyBudget = false;
+    int energyOutputUsers = 0;
     // The contact history's flag of a pair: 0 apart (its history all
     // zero), 1 touching, kBondedMark bonded. The last is a cache of the
     // bond store, marked again from it after every list build and wherever

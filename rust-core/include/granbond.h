@@ -64,10 +64,28 @@
 #define BOND_BUDGET_BYTES 200
 
 /**
- * Doubles an atom's packed bonds take: its seen id, the count, and per
- * bond the partner's id and the state.
+ * Doubles a packed bond takes: the partner's id and the state (and, while
+ * the energy budget is kept, its extras: see [`BondStore::pack`]).
  */
 #define PACKED_PER_BOND (1 + GRANBOND_BOND_STATE_LEN)
+
+/**
+ * Doubles of a bond's damping loads kept between passes: the force on `i`
+ * and the torques on `i` and `j`.
+ */
+#define DAMPING_LOADS_LEN 9
+
+/**
+ * The bytes a bond costs beyond [`super::BYTES_PER_BOND`] while the budget
+ * is kept: its damping loads of the latest pass.
+ */
+#define BUDGET_BYTES_PER_BOND (DAMPING_LOADS_LEN * 8)
+
+/**
+ * The bytes a bond costs beyond those while its own dissipated energies
+ * are kept too (damping, hysteresis).
+ */
+#define DISSIPATED_BYTES_PER_BOND (2 * 8)
 
 /**
  * Bonds one [`BondStore::step_next`] steps at most.
@@ -82,7 +100,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 16
+#define GRANBOND_ABI_VERSION 17
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -1169,6 +1187,25 @@ typedef struct GbStoreCounts {
    */
   int64_t intact;
 } GbStoreCounts;
+
+/**
+ * The energy of a rank's bonds that left them (J), since the budget was
+ * first kept (or restored).
+ */
+typedef struct GbEnergySums {
+  /**
+   * Dissipated by the damping.
+   */
+  double damping;
+  /**
+   * Dissipated by the hysteresis (the history's moves).
+   */
+  double hysteresis;
+  /**
+   * Released by breaks: what the broken bonds stored.
+   */
+  double released;
+} GbEnergySums;
 
 /**
  * Where the parts of a pair record lie, in doubles from its start.
@@ -2519,6 +2556,61 @@ enum GbStatus granbond_bond_store_stored_energy(const struct GbBondStore *store,
                                                 size_t nkinds,
                                                 const struct GbAtomArrays *atoms,
                                                 double *energy);
+
+/**
+ * Keeps the bonds' energy budget (`on` non-zero) or stops keeping it: the
+ * energy the damping and the hysteresis dissipate and breaks release,
+ * summed in every force pass (`granbond_bond_store_energy_sums`); with
+ * `per_bond` non-zero, each bond's dissipated energies too
+ * (`granbond_bond_store_bond_energy`). While kept, a bond costs
+ * `BUDGET_BYTES_PER_BOND` more (`DISSIPATED_BYTES_PER_BOND` more again
+ * with `per_bond`) and a pass steps each damped bond twice; turned off,
+ * nothing. The same on every rank.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_keep_energy_budget(struct GbBondStore *store,
+                                                     int32_t on,
+                                                     int32_t per_bond);
+
+/**
+ * The energy this rank's bonds dissipated by damping and by hysteresis and
+ * released by breaking since the budget was first kept (J), written to
+ * `sums`; zero while it never was.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_energy_sums(const struct GbBondStore *store,
+                                              struct GbEnergySums *sums);
+
+/**
+ * Restores energy sums read from a restart file.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_restore_energy_sums(struct GbBondStore *store,
+                                                      const struct GbEnergySums *sums);
+
+/**
+ * Bond `k`'s energies as of the latest link (J), written to `energy` (3
+ * doubles): what it stores now, with its kind's model (`models[kind]`) at
+ * its atoms' positions, and what it dissipated by damping and by
+ * hysteresis since the store kept them (`granbond_bond_store_keep_energy_budget`
+ * with `per_bond`; refused while not kept).
+ *
+ * # Safety
+ * Pointers must be null or valid: `models` for `nkinds` entries, the
+ * atoms' arrays as they say, `energy` for 3 doubles.
+ */
+enum GbStatus granbond_bond_store_bond_energy(const struct GbBondStore *store,
+                                              const struct GbBondModel *const *models,
+                                              size_t nkinds,
+                                              const struct GbAtomArrays *atoms,
+                                              size_t k,
+                                              double *energy);
 
 /**
  * The layout of a pair record, with the Voigt contact's state first

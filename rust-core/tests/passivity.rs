@@ -304,7 +304,13 @@ fn surplus(
 }
 
 fn history(s: &BondState) -> [f64; 5] {
-    [s.delta_max, s.delta_min, s.twist_max, s.twist_min, s.bend_opposite]
+    [
+        s.delta_max,
+        s.delta_min,
+        s.twist_max,
+        s.twist_min,
+        s.bend_opposite,
+    ]
 }
 
 /// The same history to round-off; the bending history is a vector kept

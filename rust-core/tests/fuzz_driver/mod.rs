@@ -30,7 +30,7 @@ use granbond::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
 };
-use granbond::bond_store::{BrokenBond, LinkReport, StoreCounts};
+use granbond::bond_store::{BrokenBond, EnergySums, LinkReport, StoreCounts};
 use granbond::contact::{
     ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN, VOIGT_PARAMETERS,
 };
@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 101] = [
+pub const ENTRY_POINTS: [&str; 105] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -163,6 +163,10 @@ pub const ENTRY_POINTS: [&str; 101] = [
     "granbond_bond_store_would_create",
     "granbond_bond_store_count_atoms",
     "granbond_bond_store_stored_energy",
+    "granbond_bond_store_keep_energy_budget",
+    "granbond_bond_store_energy_sums",
+    "granbond_bond_store_restore_energy_sums",
+    "granbond_bond_store_bond_energy",
 ];
 
 /// The set-by-name and need entries of one parameter table.
@@ -1666,6 +1670,10 @@ impl<'t> Session<'t> {
         // SAFETY (every call below): `st` is a live store; the other
         // pointers are null, misaligned or valid for their documented sizes.
         unsafe {
+            // the energy budget kept or not, and per bond or not, by the
+            // atom count (no input read: the corpus reads on as before)
+            let status = fs::granbond_bond_store_keep_energy_budget(st, (n % 2) as i32, (n % 4 < 2) as i32);
+            ok(self, "granbond_bond_store_keep_energy_budget", status);
             let status = fs::granbond_bond_store_grow(st, n);
             ok(self, "granbond_bond_store_grow", status);
             let mut report = Place::new(LinkReport::default());
@@ -1788,6 +1796,19 @@ impl<'t> Session<'t> {
             if ok(self, "granbond_bond_store_stored_energy", status) {
                 assert!(!energy.get().is_nan(), "stored energy NaN");
             }
+            let mut sums = Place::new(EnergySums::default());
+            let status = fs::granbond_bond_store_energy_sums(st, sums.ptr(Pointer::Valid));
+            ok(self, "granbond_bond_store_energy_sums", status);
+            let mut bond_energy = [f64::NAN; 3];
+            let status = fs::granbond_bond_store_bond_energy(
+                st,
+                models.as_ptr(),
+                2,
+                &arrays,
+                0,
+                bond_energy.as_mut_ptr(),
+            );
+            ok(self, "granbond_bond_store_bond_energy", status);
             let _ = fs::granbond_bond_store_bytes(st);
             self.answer_value("granbond_bond_store_bytes");
             let mut bond_ends = [0i32; 3];
@@ -1922,6 +1943,9 @@ impl<'t> Session<'t> {
                 let mut c = Place::new(fuzzed);
                 let status = fs::granbond_bond_store_restore_counts(ot, c.ptr(input.late_pointer()));
                 ok(self, "granbond_bond_store_restore_counts", status);
+                let mut sums = Place::new(EnergySums::default());
+                let status = fs::granbond_bond_store_restore_energy_sums(ot, sums.ptr(Pointer::Valid));
+                ok(self, "granbond_bond_store_restore_energy_sums", status);
                 fs::granbond_bond_store_free(ot);
                 self.answer_value("granbond_bond_store_free");
             }
