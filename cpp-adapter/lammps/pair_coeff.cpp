@@ -284,7 +284,14 @@ void PairGranbond::settings(int narg, char **arg)
     if (narg != 0 && !energy)
         error->all(FLERR, std::string("pair_style granbond takes only 'energy yes|no' (got '") + arg[0] +
                               "'); the models are set per type pair with pair_coeff");
-    energyBudget = energy && utils::logical(FLERR, arg[1], false, lmp) == 1;
+    if (narg == 0) {
+        energyBudget = false;
+        return;
+    }
+    const std::string value = arg[1];
+    if (value != "yes" && value != "on" && value != "no" && value != "off")
+        error->all(FLERR, "pair_style granbond energy: expected yes or no (or on, off), got '" + value + "'");
+    energyBudget = value == "yes" || value == "on";
 }
 
 void PairGranbond::coeff(int narg, char **arg)

@@ -24,6 +24,15 @@ claim per mode:
              (translation and rotation) plus `pe` (the bonds' stored
              energy) stays constant to 1e-5 of itself on 1 and 2 ranks,
              while `pe` takes up a good part of it.
+  budget     a bonded block in free flight, spinning and spreading, its
+             bonds damped, hysteretic, some breaking (`pair_style granbond
+             energy yes`): kinetic energy (translation and rotation) + `pe`
+             + the energy dissipated by damping and by hysteresis +
+             released by breaks (compute pair granbond's values 9-11)
+             stays constant on 1 and 2 ranks within twice what kinetic +
+             stored energy does for the same block with elastic, undamped
+             bonds that do not break (the integrator's error), while each
+             of the three terms takes a share of it.
   momentum   a bonded block in free flight, spinning, its bonds breaking, a
              sphere inserted far away between two runs, on 1 and 3 ranks
              under `newton on` and `off`: the total linear momentum and
@@ -157,6 +166,34 @@ def check_energy(a, workdir):
         print(f"ok: {n} ranks: kinetic + stored energy within {drift:.2g} of itself, pe up to {share:.2f} of it")
 
 
+def budget_drift(text):
+    total = thermo_column(text, "v_total")
+    if not total:
+        raise Failure("no thermo output")
+    return total, max(abs(t - total[0]) for t in total) / total[0]
+
+
+def check_budget(a, workdir):
+    elastic = run(a, 1, "free_body_budget.in", os.path.join(workdir, "elastic"), {"elastic": "1"})
+    _, integrator = budget_drift(elastic)
+    for n in [1, 2] if a.mpiexec else [1]:
+        d = os.path.join(workdir, f"np{n}")
+        text = run(a, n, "free_body_budget.in", d)
+        total, drift = budget_drift(text)
+        created, broken = thermo_column(text, "c_pg[1]")[-1], thermo_column(text, "c_pg[2]")[-1]
+        shares = {name: thermo_column(text, col)[-1] / total[0]
+                  for name, col in (("damping", "c_pg[9]"), ("hysteresis", "c_pg[10]"), ("released", "c_pg[11]"))}
+        if not 0 < broken < created or min(shares.values()) < 0.01:
+            raise Failure(f"{n} ranks: {broken:g} of {created:g} bonds broke; shares of the budget {shares}")
+        if drift > 2 * integrator:
+            raise Failure(f"{n} ranks: the budget moved by {drift:.3g} of itself, kinetic + stored energy of the "
+                          f"elastic block by {integrator:.3g}")
+        print(f"ok: {n} ranks: {broken:g} of {created:g} bonds broke; damping {shares['damping']:.3f}, hysteresis "
+              f"{shares['hysteresis']:.3f}, released {shares['released']:.3f} of the budget, which moved by "
+              f"{drift:.2g} of itself (elastic block: {integrator:.2g})")
+
+
 if __name__ == "__main__":
     run_modes(__doc__, {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
-                         "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy})
+                         "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy,
+                         "budget": check_budget})
