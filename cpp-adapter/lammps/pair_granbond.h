@@ -68,6 +68,11 @@ public:
     // non-zero (fix bond/breaklog).
     GbBondStore *bondStore() const;
     const GbBondModel *bondModel(size_t kind) const { return kind < bond_.size() ? bond_[kind] : nullptr; }
+    // The models by kind and the atoms' arrays, as the store's calls take
+    // them (a bond's energies).
+    const GbBondModel *const *bondModels() const { return bond_.data(); }
+    size_t bondKinds() const { return bond_.size(); }
+    GbAtomArrays atomArrays() const;
     bool storeCurrent() const;
     const std::vector<GbBondOutput> &bondOutputs() const { return outputs_; }
     std::vector<BreakEvent> &breakEvents() { return breaks_; }
@@ -130,7 +135,6 @@ private:
     bool tryBond(size_t tp, int i, int j, int *touch, double *history);
     void countBonds();
     void checkStore();
-    GbAtomArrays atomArrays() const;
 
     std::vector<TypePair> pairs_;
     std::vector<GbVoigtModel *> voigt_;

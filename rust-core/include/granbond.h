@@ -21,6 +21,11 @@
 #define BOND_FIELD_COUNT 38
 
 /**
+ * Number of fields of [`BOND_ENERGY_FIELDS`].
+ */
+#define BOND_ENERGY_FIELD_COUNT 3
+
+/**
  * Number of `double` slots of a bond output as engines keep it
  * (`granbond_bond_output_store`, `GB_STATE_KIND_BOND_OUTPUT`).
  */
@@ -2012,6 +2017,24 @@ const char *granbond_last_error_message(void);
 int32_t granbond_last_error_parameter(void);
 
 /**
+ * Number of a bond's energy fields: those the bond store gives
+ * (`granbond_bond_store_bond_energy` writes this many doubles).
+ */
+size_t granbond_bond_energy_field_count(void);
+
+/**
+ * Name (the engines' keyword), SI unit and description of energy field
+ * `id` (`id < granbond_bond_energy_field_count()`), in static storage.
+ *
+ * # Safety
+ * `name`, `unit` and `description` must be null or valid for writes.
+ */
+enum GbStatus granbond_bond_energy_field_info(size_t id,
+                                              const char **name,
+                                              const char **unit,
+                                              const char **description);
+
+/**
  * Number of a bond's output fields (`granbond_bond_fields` writes this
  * many doubles).
  */
@@ -2595,8 +2618,9 @@ enum GbStatus granbond_bond_store_restore_energy_sums(struct GbBondStore *store,
                                                       const struct GbEnergySums *sums);
 
 /**
- * Bond `k`'s energies as of the latest link (J), written to `energy` (3
- * doubles): what it stores now, with its kind's model (`models[kind]`) at
+ * Bond `k`'s energies as of the latest link (J), written to `energy`
+ * (`granbond_bond_energy_field_count()` doubles, the energy fields'
+ * order): what it stores now, with its kind's model (`models[kind]`) at
  * its atoms' positions, and what it dissipated by damping and by
  * hysteresis since the store kept them (`granbond_bond_store_keep_energy_budget`
  * with `per_bond`; refused while not kept).

@@ -31,8 +31,11 @@ claim per mode:
              released by breaks (compute pair granbond's values 9-11)
              stays constant on 1 and 2 ranks within twice what kinetic +
              stored energy does for the same block with elastic, undamped
-             bonds that do not break (the integrator's error), while each
-             of the three terms takes a share of it.
+             bonds as stiff as the others unload, that do not break (the
+             integrator's error), while each
+             of the three terms takes a share of it. The intact bonds'
+             own energies (compute granbond/local) add up to `pe`, and to
+             the dissipated terms until the first break (after it, to less).
   momentum   a bonded block in free flight, spinning, its bonds breaking, a
              sphere inserted far away between two runs, on 1 and 3 ranks
              under `newton on` and `off`: the total linear momentum and
@@ -173,6 +176,23 @@ def budget_drift(text):
     return total, max(abs(t - total[0]) for t in total) / total[0]
 
 
+def check_bond_energies(text, n):
+    cols = [thermo_column(text, c) for c in ("c_pg[2]", "PotEng", "c_pg[9]", "c_pg[10]", "c_bs[1]", "c_bs[2]",
+                                             "c_bs[3]")]
+    before_breaks = 0
+    for broken, pe, damping, hysteresis, stored, own_damping, own_hysteresis in zip(*cols):
+        if abs(stored - pe) > 1e-9 * max(abs(pe), 1e-30):
+            raise Failure(f"{n} ranks: the bonds' own stored energies add up to {stored:.17g}, pe is {pe:.17g}")
+        for own, term, name in ((own_damping, damping, "damping"), (own_hysteresis, hysteresis, "hysteresis")):
+            scale = 1e-9 * max(abs(term), 1e-30)
+            if (broken == 0 and abs(own - term) > scale) or own > term + scale:
+                raise Failure(f"{n} ranks, {broken:g} broken: the intact bonds' own {name} adds up to {own:.17g}, "
+                              f"the budget's is {term:.17g}")
+        before_breaks += broken == 0 and damping > 0
+    if before_breaks == 0:
+        raise Failure(f"{n} ranks: no output between the first damping and the first break")
+
+
 def check_budget(a, workdir):
     elastic = run(a, 1, "free_body_budget.in", os.path.join(workdir, "elastic"), {"elastic": "1"})
     _, integrator = budget_drift(elastic)
@@ -188,6 +208,7 @@ def check_budget(a, workdir):
         if drift > 2 * integrator:
             raise Failure(f"{n} ranks: the budget moved by {drift:.3g} of itself, kinetic + stored energy of the "
                           f"elastic block by {integrator:.3g}")
+        check_bond_energies(text, n)
         print(f"ok: {n} ranks: {broken:g} of {created:g} bonds broke; damping {shares['damping']:.3f}, hysteresis "
               f"{shares['hysteresis']:.3f}, released {shares['released']:.3f} of the budget, which moved by "
               f"{drift:.2g} of itself (elastic block: {integrator:.2g})")

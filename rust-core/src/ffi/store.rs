@@ -750,8 +750,9 @@ pub unsafe extern "C" fn granbond_bond_store_restore_energy_sums(
     Ok(())
 }
 
-/// Bond `k`'s energies as of the latest link (J), written to `energy` (3
-/// doubles): what it stores now, with its kind's model (`models[kind]`) at
+/// Bond `k`'s energies as of the latest link (J), written to `energy`
+/// (`granbond_bond_energy_field_count()` doubles, the energy fields'
+/// order): what it stores now, with its kind's model (`models[kind]`) at
 /// its atoms' positions, and what it dissipated by damping and by
 /// hysteresis since the store kept them (`granbond_bond_store_keep_energy_budget`
 /// with `per_bond`; refused while not kept).

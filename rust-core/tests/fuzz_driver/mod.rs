@@ -24,7 +24,7 @@
 //! planes, layouts, counts, indices, ids and kinds.
 #![allow(dead_code)]
 
-use granbond::bond::fields::{BOND_FIELDS, BOND_FIELD_COUNT};
+use granbond::bond::fields::{BOND_ENERGY_FIELDS, BOND_ENERGY_FIELD_COUNT, BOND_FIELDS, BOND_FIELD_COUNT};
 use granbond::bond::output_slots::{store_output, BOND_OUTPUT_LEN};
 use granbond::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode, BOND_STATE_LEN, PARAMETERS,
@@ -42,7 +42,8 @@ use granbond::ffi::contact_geometry as fcg;
 use granbond::ffi::deck::{self as fd, PhraseRow};
 use granbond::ffi::error::{granbond_last_error_message, granbond_last_error_parameter};
 use granbond::ffi::fields::{
-    granbond_bond_field_count, granbond_bond_field_info, granbond_bond_fields, granbond_bond_stress_limits,
+    granbond_bond_energy_field_count, granbond_bond_energy_field_info, granbond_bond_field_count,
+    granbond_bond_field_info, granbond_bond_fields, granbond_bond_stress_limits,
 };
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::parameters::{self as fp, ParameterRow};
@@ -61,7 +62,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 105] = [
+pub const ENTRY_POINTS: [&str; 107] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -128,6 +129,8 @@ pub const ENTRY_POINTS: [&str; 105] = [
     "granbond_bond_file_loads",
     "granbond_bond_field_count",
     "granbond_bond_field_info",
+    "granbond_bond_energy_field_count",
+    "granbond_bond_energy_field_info",
     "granbond_bond_fields",
     "granbond_bond_stress_limits",
     "granbond_bond_store_new",
@@ -2999,6 +3002,21 @@ impl<'t> Session<'t> {
             // SAFETY: static NUL-terminated storage of the library.
             let got = unsafe { CStr::from_ptr(name) };
             assert_eq!(got.to_str().ok(), Some(BOND_FIELDS[id].name));
+        }
+        // the energy fields, by the same id
+        let count = granbond_bond_energy_field_count();
+        assert_eq!(count, BOND_ENERGY_FIELD_COUNT, "granbond_bond_energy_field_count");
+        self.answer_value("granbond_bond_energy_field_count");
+        // SAFETY: valid outputs.
+        let status = unsafe { granbond_bond_energy_field_info(id, &mut name, &mut unit, &mut description) };
+        if self.answer("granbond_bond_energy_field_info", status) {
+            assert!(
+                id < count,
+                "granbond_bond_energy_field_info: OK for field {id} of {count}"
+            );
+            // SAFETY: static NUL-terminated storage of the library.
+            let got = unsafe { CStr::from_ptr(name) };
+            assert_eq!(got.to_str().ok(), Some(BOND_ENERGY_FIELDS[id].name));
         }
     }
 
