@@ -127,11 +127,11 @@ int FixGranbondBonds::pack_exchange(int i, double *buf)
 
 int FixGranbondBonds::unpack_exchange(int nlocal, double *buf)
 {
-    // the count in buf[1] says the length; the core checks it
-    const double count = buf[1];
-    const size_t n = 2 + static_cast<size_t>(count > 0.0 ? count : 0.0) * (1 + GRANBOND_BOND_STATE_LEN);
-    size_t read = 0;
-    if (granbond_bond_store_unpack(store_, static_cast<size_t>(nlocal), buf, n, &read) != GB_STATUS_OK)
+    // the head of the atom's bonds says their length (a negative count
+    // has a third double); the core reads it and checks the rest
+    size_t n = 0, read = 0;
+    if (granbond_bond_store_packed_len_in(buf, buf[1] < 0.0 ? 3 : 2, &n) != GB_STATUS_OK ||
+        granbond_bond_store_unpack(store_, static_cast<size_t>(nlocal), buf, n, &read) != GB_STATUS_OK)
         fail("unpacking the bonds of an atom from another rank");
     return static_cast<int>(read);
 }

@@ -2302,6 +2302,17 @@ enum GbStatus granbond_bond_store_unpack(struct GbBondStore *store,
                                          size_t *read);
 
 /**
+ * The doubles one atom's bonds packed by `granbond_bond_store_pack` take,
+ * read from the head of `buf` (`head` doubles there: at least 2, and 3
+ * where the second is negative), written to `len`: where the next atom
+ * starts in an engine's buffer of several.
+ *
+ * # Safety
+ * Pointers must be null or valid; `buf` for `head` doubles.
+ */
+enum GbStatus granbond_bond_store_packed_len_in(const double *buf, size_t head, size_t *len);
+
+/**
  * Finds every bond's atoms again after a neighbour-list build (see
  * `crate::bond_store`'s link): owners among the local atoms, partners as
  * their images closest to the owners. `kinds[ti * (ntypes + 1) + tj]` is

@@ -9,8 +9,8 @@ use granbond_test_support as common;
 use common::strategies::{bond_params, bonded_pair};
 use granbond::bond::{BondModel, BondOutput, BondParams, BondStatus};
 use granbond::bond_store::{
-    creates_here, step_budget, BondStore, EnergySums, Ids, LinkAtoms, BUDGET_BYTES_PER_BOND, CHUNK,
-    DAMPING_LOADS_LEN, DISSIPATED_BYTES_PER_BOND,
+    creates_here, packed_len_in, step_budget, BondStore, EnergySums, Ids, LinkAtoms, BUDGET_BYTES_PER_BOND,
+    CHUNK, DAMPING_LOADS_LEN, DISSIPATED_BYTES_PER_BOND,
 };
 use granbond::pair_source::AtomArrays;
 use proptest::prelude::*;
@@ -386,6 +386,7 @@ fn a_migrating_bond_takes_its_share_of_the_budget_along() {
     assert!(!owned.is_empty() && owned.iter().any(|d| d[0] > 0.0), "{owned:?}");
     let mut buf = vec![0.0; store.packed_len(centre)];
     let written = store.pack(centre, true, &mut buf).expect("room");
+    assert_eq!(packed_len_in(&buf[..3]), Ok(written), "the head says the length");
     for (kept, per_bond) in [(true, true), (false, false)] {
         let mut other = BondStore::new();
         other.keep_energy_budget(kept, per_bond);

@@ -47,6 +47,56 @@ fn whole(x: f64, what: &'static str) -> Result<i64, UnpackError> {
     }
 }
 
+/// The form of one atom's packed bonds, read from its head.
+struct Packed {
+    count: usize,
+    /// Doubles before the first bond.
+    head: usize,
+    /// Doubles a bond takes.
+    per_bond: usize,
+    /// Doubles in all.
+    len: usize,
+}
+
+fn packed_form(buf: &[f64]) -> Result<Packed, UnpackError> {
+    let short = |wanted| UnpackError::Short {
+        len: buf.len(),
+        wanted,
+    };
+    let count = whole(*buf.get(1).ok_or(short(2))?, "bond count")?;
+    // a negative count: each bond carries extras, their number next
+    let (head, extras) = if count < 0 {
+        let extras = whole(*buf.get(2).ok_or(short(3))?, "number of extras")?;
+        let extras = usize::try_from(extras)
+            .ok()
+            .filter(|&e| e <= BOND_STATE_LEN)
+            .ok_or(UnpackError::Malformed("number of extras"))?;
+        (3, extras)
+    } else {
+        (2, 0)
+    };
+    let count = usize::try_from(count.unsigned_abs()).map_err(|_| UnpackError::Malformed("bond count"))?;
+    let per_bond = PACKED_PER_BOND + extras;
+    let len = count
+        .checked_mul(per_bond)
+        .and_then(|n| n.checked_add(head))
+        .ok_or(UnpackError::Malformed("bond count"))?;
+    Ok(Packed {
+        count,
+        head,
+        per_bond,
+        len,
+    })
+}
+
+/// The doubles one atom's packed bonds take ([`BondStore::pack`]), read
+/// from their head (`buf` holds at least the head: 2 doubles, 3 where the
+/// count is negative): where an engine's buffer of several atoms holds the
+/// next atom.
+pub fn packed_len_in(buf: &[f64]) -> Result<usize, UnpackError> {
+    Ok(packed_form(buf)?.len)
+}
+
 impl BondStore {
     /// The engine's per-atom arrays hold `nmax` atoms now.
     pub fn grow(&mut self, nmax: usize) {
@@ -181,25 +231,12 @@ impl BondStore {
             });
         }
         let seen = whole(buf[0], "seen id")?;
-        let count = whole(buf[1], "bond count")?;
-        // a negative count: each bond carries extras, their number next
-        let (head, extras) = if count < 0 {
-            let extras = buf.get(2).map_or(Ok(-1), |&e| whole(e, "number of extras"))?;
-            let extras = usize::try_from(extras)
-                .ok()
-                .filter(|&e| e <= BOND_STATE_LEN)
-                .ok_or(UnpackError::Malformed("number of extras"))?;
-            (3, extras)
-        } else {
-            (2, 0)
-        };
-        let count =
-            usize::try_from(count.unsigned_abs()).map_err(|_| UnpackError::Malformed("bond count"))?;
-        let per_bond = PACKED_PER_BOND + extras;
-        let wanted = count
-            .checked_mul(per_bond)
-            .and_then(|n| n.checked_add(head))
-            .ok_or(UnpackError::Malformed("bond count"))?;
+        let Packed {
+            count,
+            head,
+            per_bond,
+            len: wanted,
+        } = packed_form(buf)?;
         if buf.len() < wanted {
             return Err(UnpackError::Short {
                 len: buf.len(),

@@ -19,7 +19,7 @@ mod link;
 mod pass;
 mod view;
 
-pub use atoms::UnpackError;
+pub use atoms::{packed_len_in, UnpackError};
 pub use budget::{
     step_budget, BondBudgetStep, EnergySums, BUDGET_BYTES_PER_BOND, DAMPING_LOADS_LEN,
     DISSIPATED_BYTES_PER_BOND,

@@ -8,8 +8,8 @@ use super::guard::{reference, reference_mut, slice, slice_mut, time_step, Failed
 use super::results::refused;
 use crate::bond::{BondModel, BondOutput, BOND_STATE_LEN};
 use crate::bond_store::{
-    creates_here, BondStore, BrokenBond, EnergySums, Ids, LinkAtoms, LinkReport, StepFailureReason,
-    StoreCounts, CHUNK,
+    creates_here, packed_len_in, BondStore, BrokenBond, EnergySums, Ids, LinkAtoms, LinkReport,
+    StepFailureReason, StoreCounts, CHUNK,
 };
 use crate::kinematics::PairKinematics;
 
@@ -228,6 +228,25 @@ pub unsafe extern "C" fn granbond_bond_store_unpack(
     *read = store
         .unpack(i, buf)
         .map_err(|e| Failure::new(Status::InvalidArgument, format!("buf: {e}")))?;
+    Ok(())
+}
+
+/// The doubles one atom's bonds packed by `granbond_bond_store_pack` take,
+/// read from the head of `buf` (`head` doubles there: at least 2, and 3
+/// where the second is negative), written to `len`: where the next atom
+/// starts in an engine's buffer of several.
+///
+/// # Safety
+/// Pointers must be null or valid; `buf` for `head` doubles.
+#[entry(len: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_packed_len_in(
+    buf: *const f64,
+    head: usize,
+    len: *mut usize,
+) -> Status {
+    let buf = slice(buf, head.min(3), "buf")?;
+    *len = packed_len_in(buf).map_err(|e| Failure::new(Status::InvalidArgument, format!("buf: {e}")))?;
     Ok(())
 }
 

@@ -62,7 +62,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 107] = [
+pub const ENTRY_POINTS: [&str; 108] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -170,6 +170,7 @@ pub const ENTRY_POINTS: [&str; 107] = [
     "granbond_bond_store_energy_sums",
     "granbond_bond_store_restore_energy_sums",
     "granbond_bond_store_bond_energy",
+    "granbond_bond_store_packed_len_in",
 ];
 
 /// The set-by-name and need entries of one parameter table.
@@ -1932,6 +1933,12 @@ impl<'t> Session<'t> {
                 };
                 if input.below(4) == 3 {
                     buf[input.below(len + 1)] = input.f64();
+                }
+                let mut head_len = Place::new(0usize);
+                let status =
+                    fs::granbond_bond_store_packed_len_in(buf.as_ptr(), 3, head_len.ptr(Pointer::Valid));
+                if ok(self, "granbond_bond_store_packed_len_in", status) && packed {
+                    assert_eq!(head_len.get(), written.get(), "packed_len_in of a packed atom");
                 }
                 let status = fs::granbond_bond_store_unpack(
                     ot,
