@@ -305,12 +305,12 @@ const SOFTER: f64 = 1e-3;
 
 #[test]
 fn a_free_cluster_keeps_kinetic_stored_dissipated_and_released_energy() {
-    let r = run(hysteretic_damped_breaking(), 1e-8, 20000);
+    let r = run(hysteretic_damped_breaking(), 1e-8, 10000);
     println!(
         "drift {:.3e} of {:.4e} J; damping {:.3e}, hysteresis {:.3e}, released {:.3e}; {} of {} bonds broke; {} bytes",
         r.drift, r.start, r.sums.damping, r.sums.hysteresis, r.sums.released, r.broken, r.created, r.bytes
     );
-    let elastic = run(softer(common::elastic_params(), SOFTER), 1e-8, 20000);
+    let elastic = run(softer(common::elastic_params(), SOFTER), 1e-8, 10000);
     println!("elastic, undamped, unbreakable: drift {:.3e}", elastic.drift);
     assert!(
         r.broken > 0 && r.broken < r.created,

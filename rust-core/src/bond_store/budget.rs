@@ -67,6 +67,17 @@ pub(super) struct Budget {
     /// Per bond, only while asked for: its dissipated energies (damping,
     /// hysteresis).
     dissipated: Option<Vec<[f64; 2]>>,
+    /// The pass's buffers for one chunk.
+    pub(super) scratch: Scratch,
+}
+
+/// A chunk's states before its step, and its undamped step's states and
+/// outputs.
+#[derive(Debug, Default)]
+pub(super) struct Scratch {
+    pub(super) before: Vec<BondState>,
+    pub(super) twin: Vec<BondState>,
+    pub(super) elastic: Vec<BondOutput>,
 }
 
 impl Budget {
@@ -74,6 +85,7 @@ impl Budget {
         Self {
             damping_loads: vec![[0.0; DAMPING_LOADS_LEN]; bonds],
             dissipated: per_bond.then(|| vec![[0.0; 2]; bonds]),
+            scratch: Scratch::default(),
         }
     }
 
@@ -105,12 +117,16 @@ impl Budget {
         }
     }
 
+    /// Per bond, and the chunk's buffers (once a pass used them).
     pub(super) fn bytes(&self) -> usize {
+        let s = &self.scratch;
         self.damping_loads.capacity() * BUDGET_BYTES_PER_BOND
             + self
                 .dissipated
                 .as_ref()
                 .map_or(0, |d| d.capacity() * DISSIPATED_BYTES_PER_BOND)
+            + (s.before.capacity() + s.twin.capacity()) * std::mem::size_of::<BondState>()
+            + s.elastic.capacity() * std::mem::size_of::<BondOutput>()
     }
 
     /// Bond `k`'s extras as a packed bond carries them.
@@ -289,20 +305,16 @@ fn bond_step_budget(
     fresh: bool,
 ) -> BondBudgetStep {
     let v = pair.velocities();
-    let damping_loads = match elastic {
-        Some(e) => {
-            let (l, le) = (loads(out), loads(e));
-            [0, 1, 2, 3, 4, 5, 6, 7, 8].map(|c| l[c] - le[c])
-        }
-        None => [0.0; DAMPING_LOADS_LEN],
-    };
-    let now = dot(&damping_loads, &v);
-    let mut step = BondBudgetStep {
-        damping: -0.5 * dt * (dot(previous, &v) + now),
-        damping_law: -dt * now,
-        ..BondBudgetStep::default()
-    };
-    *previous = damping_loads;
+    let mut step = BondBudgetStep::default();
+    // without damping the loads kept stay zero
+    if let Some(e) = elastic {
+        let (l, le) = (loads(out), loads(e));
+        let damping_loads = [0, 1, 2, 3, 4, 5, 6, 7, 8].map(|c| l[c] - le[c]);
+        let now = dot(&damping_loads, &v);
+        step.damping = -0.5 * dt * (dot(previous, &v) + now);
+        step.damping_law = -dt * now;
+        *previous = damping_loads;
+    }
     if dt == 0.0 {
         return BondBudgetStep::default();
     }

@@ -156,14 +156,13 @@ impl BondStore {
         })?;
         ends[..n].copy_from_slice(pairs);
         let outs = &mut outs[..n];
-        // the energy budget reads the states before the step
-        let before = self.budget.is_some().then(|| {
-            let mut before = [BondState::default(); CHUNK];
-            for (c, bond) in before.iter_mut().zip(&self.bonds[first..last]) {
-                *c = bond.state;
-            }
-            before
-        });
+        // the energy budget reads the states before the step (in its own
+        // buffers, which it keeps from chunk to chunk)
+        let mut scratch = self.budget.as_mut().map(|b| std::mem::take(&mut b.scratch));
+        if let Some(s) = &mut scratch {
+            s.before.clear();
+            s.before.extend(self.bonds[first..last].iter().map(|b| b.state));
+        }
         let stepped = if self.cursor.advance {
             // left uninitialised beyond the chunk: a chunk of a few bonds
             // would otherwise pay for clearing all CHUNK of them
@@ -208,25 +207,24 @@ impl BondStore {
                 ))
             }
         }
-        if let Some(before) = &before {
+        if let Some(mut s) = scratch {
             // the same steps undamped: their loads less the step's are the
             // damping's
-            let mut elastic = [BondOutput::default(); CHUNK];
             let undamped = model.undamped().map(|u| {
-                let mut copies = *before;
-                let mut refs: [*mut BondState; CHUNK] = [std::ptr::null_mut(); CHUNK];
-                for (r, c) in refs.iter_mut().zip(copies.iter_mut()) {
-                    *r = c;
-                }
-                // SAFETY: as above, over the copies.
-                let states =
-                    unsafe { std::slice::from_raw_parts_mut(refs.as_mut_ptr() as *mut &mut BondState, n) };
+                s.twin.clear();
+                s.twin.extend_from_slice(&s.before);
+                s.elastic.clear();
+                s.elastic.resize(n, BondOutput::default());
+                let mut refs: Vec<&mut BondState> = s.twin.iter_mut().collect();
                 // the damped step succeeded on these kinematics and states
-                let _ = u.step_indexed(&kinematics, self.cursor.dt, states, &mut elastic[..n]);
-                &elastic[..n]
+                let _ = u.step_indexed(&kinematics, self.cursor.dt, &mut refs, &mut s.elastic);
             });
+            let elastic = undamped.map(|()| &s.elastic[..]);
             let (dt, fresh) = (self.cursor.dt, self.cursor.fresh);
-            self.tally_energy(model, &atoms, dt, first, &before[..n], outs, undamped, fresh);
+            self.tally_energy(model, &atoms, dt, first, &s.before, outs, elastic, fresh);
+            if let Some(b) = self.budget.as_mut() {
+                b.scratch = s;
+            }
         }
         self.cursor.next = last;
         for (k, out) in outs.iter_mut().enumerate() {
