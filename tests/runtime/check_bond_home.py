@@ -36,6 +36,7 @@ claim per mode:
              of the three terms takes a share of it. The intact bonds'
              own energies (compute granbond/local) add up to `pe`, and to
              the dissipated terms until the first break (after it, to less).
+             The same through a restart file half way.
   momentum   a bonded block in free flight, spinning, its bonds breaking, a
              sphere inserted far away between two runs, on 1 and 3 ranks
              under `newton on` and `off`: the total linear momentum and
@@ -212,6 +213,13 @@ def check_budget(a, workdir):
         print(f"ok: {n} ranks: {broken:g} of {created:g} bonds broke; damping {shares['damping']:.3f}, hysteresis "
               f"{shares['hysteresis']:.3f}, released {shares['released']:.3f} of the budget, which moved by "
               f"{drift:.2g} of itself (elastic block: {integrator:.2g})")
+        # half the run, a restart file, the other half: the sums come back
+        text = run(a, n, "free_body_budget.in", os.path.join(workdir, f"np{n}-restart"), {"restart": "1"})
+        _, drift = budget_drift(text)
+        if drift > 2 * integrator or thermo_column(text, "c_pg[2]")[-1] != broken:
+            raise Failure(f"{n} ranks, through a restart file: the budget moved by {drift:.3g} of itself, "
+                          f"{thermo_column(text, 'c_pg[2]')[-1]:g} bonds broke ({broken:g} without)")
+        print(f"ok: {n} ranks, through a restart file: the budget moved by {drift:.2g} of itself")
 
 
 if __name__ == "__main__":
