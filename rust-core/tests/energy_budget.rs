@@ -404,4 +404,3 @@ fn a_migrating_bond_takes_its_share_of_the_budget_along() {
         }
     }
 }
-
