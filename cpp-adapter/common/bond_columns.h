@@ -19,7 +19,11 @@ namespace granbond {
 
 class BondColumns {
 public:
-    BondColumns() : fields_(granbond_bond_field_count(), 0.0) {}
+    // `storeEnergy`: the engine's bonds live in the core's bond store, whose
+    // per-bond energies (granbond_bond_energy_field_info) are keywords too.
+    explicit BondColumns(bool storeEnergy = false) :
+        fields_(granbond_bond_field_count(), 0.0), storeEnergy_(storeEnergy)
+    {}
 
     // Reads the keywords; returns what is wrong (naming the keyword), or an
     // empty string.
@@ -41,6 +45,8 @@ public:
                     columns_.push_back(Column{kRecord, GRANBOND_BOND_STATE_LEN + c});
             } else if (word == "all") {
                 for (size_t f = 0; f < fields_.size(); f++) columns_.push_back(Column{kField, static_cast<int>(f)});
+            } else if (storeEnergy_ && energyField(word) >= 0) {
+                columns_.push_back(Column{kEnergy, energyField(word)});
             } else {
                 const int f = field(word);
                 if (f < 0) return "unknown keyword '" + word + "' (known: " + known() + ")";
@@ -68,11 +74,21 @@ public:
 
     size_t size() const { return columns_.size(); }
 
+    // Whether a column is one of the bond store's energies.
+    bool wantsEnergy() const
+    {
+        for (const Column &c : columns_)
+            if (c.kind == kEnergy) return true;
+        return false;
+    }
+
     // The row of one bond: its model and pair record
     // (granbond_record_layout(with_contact)) as sphere i keeps it, the
-    // spheres' ids and centres. On failure the core's message says why.
+    // spheres' ids and centres, and (where wantsEnergy()) its energies from
+    // the store (granbond_bond_store_bond_energy). On failure the core's
+    // message says why.
     GbStatus row(const GbBondModel *model, int with_contact, const double *record, double tag_i, double tag_j,
-                 const double *x_i, const double *x_j, double *out)
+                 const double *x_i, const double *x_j, double *out, const double *energy = nullptr)
     {
         const GbStatus s = granbond_bond_fields(model, with_contact, record, x_i, x_j, fields_.data());
         if (s != GB_STATUS_OK) return s;
@@ -83,6 +99,7 @@ public:
             case kIdJ: out[c] = tag_j; break;
             case kPos: out[c] = col.index < 3 ? x_i[col.index] : x_j[col.index - 3]; break;
             case kRecord: out[c] = record[col.index]; break;
+            case kEnergy: out[c] = energy ? energy[col.index] : 0.0; break;
             default: out[c] = fields_[col.index]; break;
             }
         }
@@ -101,7 +118,19 @@ public:
         return -1;
     }
 
-    static std::string known()
+    // The position of energy field `name` in the core's table, or -1.
+    static int energyField(const std::string &name)
+    {
+        const size_t n = granbond_bond_energy_field_count();
+        for (size_t f = 0; f < n; f++) {
+            const char *fname = nullptr, *unit = nullptr, *description = nullptr;
+            if (granbond_bond_energy_field_info(f, &fname, &unit, &description) == GB_STATUS_OK && name == fname)
+                return static_cast<int>(f);
+        }
+        return -1;
+    }
+
+    std::string known() const
     {
         std::string s = "id pos state output all";
         const size_t n = granbond_bond_field_count();
@@ -109,17 +138,24 @@ public:
             const char *fname = nullptr, *unit = nullptr, *description = nullptr;
             if (granbond_bond_field_info(f, &fname, &unit, &description) == GB_STATUS_OK) s += std::string(" ") + fname;
         }
+        const size_t ne = storeEnergy_ ? granbond_bond_energy_field_count() : 0;
+        for (size_t f = 0; f < ne; f++) {
+            const char *fname = nullptr, *unit = nullptr, *description = nullptr;
+            if (granbond_bond_energy_field_info(f, &fname, &unit, &description) == GB_STATUS_OK)
+                s += std::string(" ") + fname;
+        }
         return s;
     }
 
 private:
-    enum Kind { kIdI, kIdJ, kPos, kRecord, kField };
+    enum Kind { kIdI, kIdJ, kPos, kRecord, kField, kEnergy };
     struct Column {
         Kind kind;
         int index;
     };
     std::vector<Column> columns_;
     std::vector<double> fields_;
+    bool storeEnergy_;
 };
 
 }

@@ -113,11 +113,11 @@ int BondStoreFix::pack_exchange(int i, double *buf)
 
 int BondStoreFix::unpack_exchange(int nlocal, double *buf)
 {
-    // the count in buf[1] says the length; the core checks it
-    const double count = buf[1];
-    const size_t n = 2 + static_cast<size_t>(count > 0.0 ? count : 0.0) * (1 + GRANBOND_BOND_STATE_LEN);
-    size_t read = 0;
-    if (granbond_bond_store_unpack(store_, static_cast<size_t>(nlocal), buf, n, &read) != GB_STATUS_OK)
+    // the head of the atom's bonds says their length (a negative count
+    // has a third double); the core reads it and checks the rest
+    size_t n = 0, read = 0;
+    if (granbond_bond_store_packed_len_in(buf, buf[1] < 0.0 ? 3 : 2, &n) != GB_STATUS_OK ||
+        granbond_bond_store_unpack(store_, static_cast<size_t>(nlocal), buf, n, &read) != GB_STATUS_OK)
         fail("unpacking the bonds of an atom from another rank");
     return static_cast<int>(read);
 }
@@ -289,18 +289,25 @@ GbStoreCounts BondStoreFix::counts() const
     return c;
 }
 
-// The counts summed over the ranks, after their own size: the engines hand
-// restart() what follows the payload's length.
+// The counts and the energy sums summed over the ranks, after their own
+// size: the engines hand restart() what follows the payload's length. A
+// file with the counts alone (written before the sums) is read as zero
+// sums.
 void BondStoreFix::write_restart(FILE *fp)
 {
     GbStoreCounts mine = counts(), all;
     MPI_Allreduce(&mine, &all, sizeof(GbStoreCounts) / sizeof(int64_t), MPI_INT64_T, MPI_SUM, world);
+    GbEnergySums myEnergy, allEnergy;
+    std::memset(&myEnergy, 0, sizeof myEnergy);
+    granbond_bond_store_energy_sums(store_, &myEnergy);
+    MPI_Allreduce(&myEnergy, &allEnergy, sizeof(GbEnergySums) / sizeof(double), MPI_DOUBLE, MPI_SUM, world);
     if (comm->me == 0) {
-        const int64_t layout = static_cast<int64_t>(sizeof(GbStoreCounts));
-        const int size = static_cast<int>(sizeof(int64_t) + sizeof(GbStoreCounts));
+        const int64_t layout = static_cast<int64_t>(sizeof(GbStoreCounts) + sizeof(GbEnergySums));
+        const int size = static_cast<int>(sizeof(int64_t) + layout);
         fwrite(&size, sizeof(int), 1, fp);
         fwrite(&layout, sizeof(int64_t), 1, fp);
         fwrite(&all, sizeof(GbStoreCounts), 1, fp);
+        fwrite(&allEnergy, sizeof(GbEnergySums), 1, fp);
     }
 }
 
@@ -308,13 +315,18 @@ void BondStoreFix::restart(char *buf)
 {
     int64_t layout = 0;
     std::memcpy(&layout, buf, sizeof layout);
-    if (layout != static_cast<int64_t>(sizeof(GbStoreCounts)))
+    const int64_t counted = static_cast<int64_t>(sizeof(GbStoreCounts));
+    if (layout != counted && layout != counted + static_cast<int64_t>(sizeof(GbEnergySums)))
         error->all(FLERR, "fix granbond/bonds: the restart file's bond counts have another layout; write the "
                           "restart file again with this granbond");
     if (comm->me != 0) return;
     GbStoreCounts c;
     std::memcpy(&c, buf + sizeof layout, sizeof c);
     granbond_bond_store_restore_counts(store_, &c);
+    if (layout == counted) return;
+    GbEnergySums e;
+    std::memcpy(&e, buf + sizeof layout + sizeof c, sizeof e);
+    granbond_bond_store_restore_energy_sums(store_, &e);
 }
 
 double BondStoreFix::memory_usage()

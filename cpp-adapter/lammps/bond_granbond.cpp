@@ -167,6 +167,8 @@ double BondGranbond::equilibrium_distance(int)
     return all / 1.5;
 }
 
+GbAtomArrays BondGranbond::atomArrays() const { return atomArraysOf(atom); }
+
 GbBondStore *BondGranbond::bondStore() const { return bonds_ ? bonds_->store() : nullptr; }
 
 // The type of the topology's entry for the pair: its owner's (which holds

@@ -50,6 +50,9 @@ public:
     bool storeCurrent() const override;
     const std::vector<GbBondOutput> &bondOutputs() const override { return outputs_; }
     std::vector<BreakEvent> &breakEvents() override { return breaks_; }
+    const GbBondModel *const *bondModels() const override { return models_.data(); }
+    size_t bondKinds() const override { return models_.size(); }
+    GbAtomArrays atomArrays() const override;
     // The store's counts summed over ranks: created, broken, intact, broken
     // by distance, tension, compression, shear, lost. Collective.
     void counts(double *values) const;

@@ -29,8 +29,16 @@ public:
     virtual const std::vector<GbBondOutput> &bondOutputs() const = 0;
     // The bonds broken in force passes (kept while breakLogUsers > 0).
     virtual std::vector<BreakEvent> &breakEvents() = 0;
+    // The models by kind and the atoms' arrays, as the store's calls take
+    // them (a bond's energies).
+    virtual const GbBondModel *const *bondModels() const = 0;
+    virtual size_t bondKinds() const = 0;
+    virtual GbAtomArrays atomArrays() const = 0;
     int breakLogUsers = 0;
     int bondOutputUsers = 0;
+    // compute granbond/local asking for a bond's dissipated energies: the
+    // store keeps each bond's share while it is non-zero.
+    int energyOutputUsers = 0;
 
 protected:
     // never deleted through this interface: the styles own themselves

@@ -188,6 +188,9 @@ public:
         std::vector<double> row(ncols);
         double record[GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN];
         const std::vector<GbBondOutput> &outs = pair->bondOutputs();
+        const bool energies = columns_.wantsEnergy();
+        const GbAtomArrays arrays = pair->atomArrays();
+        std::vector<double> energy(granbond_bond_energy_field_count(), 0.0);
         forEachBond(lmp, pair, "compute granbond/local", [&](int i, int j, size_t kind, size_t k, const double *state) {
             if (!(mask[i] & groupbit) || !(mask[j] & groupbit)) return;
             // the record the core's fields read: the state, then the loads
@@ -197,9 +200,12 @@ public:
             std::memset(&none, 0, sizeof none);
             const GbBondOutput &o = k < outs.size() ? outs[k] : none;
             const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = lo == i ? j : i;
-            if (granbond_bond_output_store(&o, record + GRANBOND_BOND_STATE_LEN) != GB_STATUS_OK ||
+            if ((energies && granbond_bond_store_bond_energy(pair->bondStore(), pair->bondModels(), pair->bondKinds(),
+                                                             &arrays, k, energy.data()) != GB_STATUS_OK) ||
+                granbond_bond_output_store(&o, record + GRANBOND_BOND_STATE_LEN) != GB_STATUS_OK ||
                 columns_.row(pair->bondModel(kind), 0, record, static_cast<double>(atom->tag[i]),
-                             static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j], row.data()) != GB_STATUS_OK)
+                             static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j], row.data(),
+                             energy.data()) != GB_STATUS_OK)
                 error->one(FLERR, "compute granbond/local: atoms " + std::to_string(static_cast<long long>(atom->tag[lo])) +
                                       " and " + std::to_string(static_cast<long long>(atom->tag[hi])) + ": " +
                                       coreReason());
@@ -227,14 +233,21 @@ private:
     void listen(BondSource *pair)
     {
         BondSource *current = currentSource(lmp);
-        if (pair_ && pair_ == current) pair_->bondOutputUsers--;
+        const int energy = columns_.wantsEnergy() ? 1 : 0;
+        if (pair_ && pair_ == current) {
+            pair_->bondOutputUsers--;
+            pair_->energyOutputUsers -= energy;
+        }
         pair_ = pair;
-        if (pair_) pair_->bondOutputUsers++;
+        if (pair_) {
+            pair_->bondOutputUsers++;
+            pair_->energyOutputUsers += energy;
+        }
     }
 
     BondSource *pair_ = nullptr;
 
-    BondColumns columns_;
+    BondColumns columns_{true};
     std::vector<double> buffer_;
     int rows_;
     double *data_;

@@ -222,6 +222,12 @@ void PairGranbond::countBonds()
     pvector[5] = static_cast<double>(c.broken_compression);
     pvector[6] = static_cast<double>(c.broken_shear);
     pvector[7] = static_cast<double>(lostCount(c));
+    GbEnergySums e;
+    if (granbond_bond_store_energy_sums(bonds_->store(), &e) != GB_STATUS_OK)
+        error->one(FLERR, "pair granbond: " + coreReason());
+    pvector[8] = e.damping;
+    pvector[9] = e.hysteresis;
+    pvector[10] = e.released;
 }
 
 // GRANBOND_CHECK_STORE: after a pass, the bonds recounted against the

@@ -42,11 +42,23 @@ using words::Args;
 using words::Clause;
 using words::value;
 
+// pair_style granbond [energy yes|no]: the models are per type pair; the
+// one setting is whether the bonds' energy budget is kept (compute pair
+// granbond's values 9-11).
 void PairGranbond::settings(int narg, char **arg)
 {
-    if (narg != 0)
-        error->all(FLERR, std::string("pair_style granbond takes no arguments (got '") + arg[0] +
+    const bool energy = narg == 2 && std::strcmp(arg[0], "energy") == 0;
+    if (narg != 0 && !energy)
+        error->all(FLERR, std::string("pair_style granbond takes only 'energy yes|no' (got '") + arg[0] +
                               "'); the models are set per type pair with pair_coeff");
+    if (narg == 0) {
+        energyBudget = false;
+        return;
+    }
+    const std::string value = arg[1];
+    if (value != "yes" && value != "on" && value != "no" && value != "off")
+        error->all(FLERR, "pair_style granbond energy: expected yes or no (or on, off), got '" + value + "'");
+    energyBudget = value == "yes" || value == "on";
 }
 
 void PairGranbond::coeff(int narg, char **arg)

@@ -72,8 +72,9 @@ PairGranbond::PairGranbond(LAMMPS *lmp) :
     // `compute ID all pair granbond` (summed over ranks by the compute):
     // bonds created and broken since the first run, intact after the latest
     // pass, broken by mode (distance, tension, compression, shear), and
-    // lost without breaking (docs/reference/pair_granbond.md)
-    nextra = 8;
+    // lost without breaking, and the energy the bonds dissipated by damping
+    // and by hysteresis and released by breaking (docs/reference/pair_granbond.md)
+    nextra = 11;
     pvector = new double[nextra]();
 
     const GbLayout expected = granbond_header_layout();
@@ -412,6 +413,10 @@ void PairGranbond::compute(int eflag, int vflag)
     // the bonds, from their store; those that broke go back to the contact loop
     if (anyBond_) {
         if (update->setupflag || neighbor->ago == 0) linkBonds();
+        if (update->setupflag &&
+            granbond_bond_store_keep_energy_budget(bonds_->store(), energyBudget || energyOutputUsers > 0,
+                                                   energyOutputUsers > 0) != GB_STATUS_OK)
+            error->one(FLERR, "pair granbond: " + coreReason());
         // a creation step ahead: pairs whose bonds break are kept from it
         bool remember = false;
         for (const GbBondModel *b : bond_) {

@@ -73,6 +73,13 @@ public:
     bool storeCurrent() const override;
     const std::vector<GbBondOutput> &bondOutputs() const override { return outputs_; }
     std::vector<BreakEvent> &breakEvents() override { return breaks_; }
+    const GbBondModel *const *bondModels() const override { return bond_.data(); }
+    size_t bondKinds() const override { return bond_.size(); }
+    GbAtomArrays atomArrays() const override;
+    // pair_style granbond energy yes: the store keeps the bonds' energy
+    // budget; energyOutputUsers (compute granbond/local asking for a bond's
+    // dissipated energy) keeps each bond's share too.
+    bool energyBudget = false;
     // The contact history's flag of a pair: 0 apart (its history all
     // zero), 1 touching, kBondedMark bonded. The last is a cache of the
     // bond store, marked again from it after every list build and wherever
@@ -124,7 +131,6 @@ private:
     bool tryBond(size_t tp, int i, int j, int *touch, double *history);
     void countBonds();
     void checkStore();
-    GbAtomArrays atomArrays() const;
 
     std::vector<TypePair> pairs_;
     std::vector<GbVoigtModel *> voigt_;

@@ -21,6 +21,11 @@
 #define BOND_FIELD_COUNT 38
 
 /**
+ * Number of fields of [`BOND_ENERGY_FIELDS`].
+ */
+#define BOND_ENERGY_FIELD_COUNT 3
+
+/**
  * Number of `double` slots of a bond output as engines keep it
  * (`granbond_bond_output_store`, `GB_STATE_KIND_BOND_OUTPUT`).
  */
@@ -64,10 +69,28 @@
 #define BOND_BUDGET_BYTES 200
 
 /**
- * Doubles an atom's packed bonds take: its seen id, the count, and per
- * bond the partner's id and the state.
+ * Doubles a packed bond takes: the partner's id and the state (and, while
+ * the energy budget is kept, its extras: see [`BondStore::pack`]).
  */
 #define PACKED_PER_BOND (1 + GRANBOND_BOND_STATE_LEN)
+
+/**
+ * Doubles of a bond's damping loads kept between passes: the force on `i`
+ * and the torques on `i` and `j`.
+ */
+#define DAMPING_LOADS_LEN 9
+
+/**
+ * The bytes a bond costs beyond [`super::BYTES_PER_BOND`] while the budget
+ * is kept: its damping loads of the latest pass.
+ */
+#define BUDGET_BYTES_PER_BOND (DAMPING_LOADS_LEN * 8)
+
+/**
+ * The bytes a bond costs beyond those while its own dissipated energies
+ * are kept too (damping, hysteresis).
+ */
+#define DISSIPATED_BYTES_PER_BOND (2 * 8)
 
 /**
  * Bonds one [`BondStore::step_next`] steps at most.
@@ -82,7 +105,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 18
+#define GRANBOND_ABI_VERSION 19
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -1259,6 +1282,25 @@ typedef struct GbStoreCounts {
 } GbStoreCounts;
 
 /**
+ * The energy of a rank's bonds that left them (J), since the budget was
+ * first kept (or restored).
+ */
+typedef struct GbEnergySums {
+  /**
+   * Dissipated by the damping.
+   */
+  double damping;
+  /**
+   * Dissipated by the hysteresis (the history's moves).
+   */
+  double hysteresis;
+  /**
+   * Released by breaks: what the broken bonds stored.
+   */
+  double released;
+} GbEnergySums;
+
+/**
  * Where the parts of a pair record lie, in doubles from its start.
  */
 typedef struct GbRecordLayout {
@@ -2085,6 +2127,24 @@ const char *granbond_last_error_message(void);
 int32_t granbond_last_error_parameter(void);
 
 /**
+ * Number of a bond's energy fields: those the bond store gives
+ * (`granbond_bond_store_bond_energy` writes this many doubles).
+ */
+size_t granbond_bond_energy_field_count(void);
+
+/**
+ * Name (the engines' keyword), SI unit and description of energy field
+ * `id` (`id < granbond_bond_energy_field_count()`), in static storage.
+ *
+ * # Safety
+ * `name`, `unit` and `description` must be null or valid for writes.
+ */
+enum GbStatus granbond_bond_energy_field_info(size_t id,
+                                              const char **name,
+                                              const char **unit,
+                                              const char **description);
+
+/**
  * Number of a bond's output fields (`granbond_bond_fields` writes this
  * many doubles).
  */
@@ -2368,6 +2428,17 @@ enum GbStatus granbond_bond_store_unpack(struct GbBondStore *store,
                                          const double *buf,
                                          size_t len,
                                          size_t *read);
+
+/**
+ * The doubles one atom's bonds packed by `granbond_bond_store_pack` take,
+ * read from the head of `buf` (`head` doubles there: at least 2, and 3
+ * where the second is negative), written to `len`: where the next atom
+ * starts in an engine's buffer of several.
+ *
+ * # Safety
+ * Pointers must be null or valid; `buf` for `head` doubles.
+ */
+enum GbStatus granbond_bond_store_packed_len_in(const double *buf, size_t head, size_t *len);
 
 /**
  * Finds every bond's atoms again after a neighbour-list build (see
@@ -2686,6 +2757,62 @@ enum GbStatus granbond_bond_store_stored_energy(const struct GbBondStore *store,
                                                 size_t nkinds,
                                                 const struct GbAtomArrays *atoms,
                                                 double *energy);
+
+/**
+ * Keeps the bonds' energy budget (`on` non-zero) or stops keeping it: the
+ * energy the damping and the hysteresis dissipate and breaks release,
+ * summed in every force pass (`granbond_bond_store_energy_sums`); with
+ * `per_bond` non-zero, each bond's dissipated energies too
+ * (`granbond_bond_store_bond_energy`). While kept, a bond costs
+ * `BUDGET_BYTES_PER_BOND` more (`DISSIPATED_BYTES_PER_BOND` more again
+ * with `per_bond`) and a pass steps each damped bond twice; turned off,
+ * nothing. The same on every rank.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_bond_store_new`.
+ */
+enum GbStatus granbond_bond_store_keep_energy_budget(struct GbBondStore *store,
+                                                     int32_t on,
+                                                     int32_t per_bond);
+
+/**
+ * The energy this rank's bonds dissipated by damping and by hysteresis and
+ * released by breaking since the budget was first kept (J), written to
+ * `sums`; zero while it never was.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_energy_sums(const struct GbBondStore *store,
+                                              struct GbEnergySums *sums);
+
+/**
+ * Restores energy sums read from a restart file.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_bond_store_restore_energy_sums(struct GbBondStore *store,
+                                                      const struct GbEnergySums *sums);
+
+/**
+ * Bond `k`'s energies as of the latest link (J), written to `energy`
+ * (`granbond_bond_energy_field_count()` doubles, the energy fields'
+ * order): what it stores now, with its kind's model (`models[kind]`) at
+ * its atoms' positions, and what it dissipated by damping and by
+ * hysteresis since the store kept them (`granbond_bond_store_keep_energy_budget`
+ * with `per_bond`; refused while not kept).
+ *
+ * # Safety
+ * Pointers must be null or valid: `models` for `nkinds` entries, the
+ * atoms' arrays as they say, `energy` for 3 doubles.
+ */
+enum GbStatus granbond_bond_store_bond_energy(const struct GbBondStore *store,
+                                              const struct GbBondModel *const *models,
+                                              size_t nkinds,
+                                              const struct GbAtomArrays *atoms,
+                                              size_t k,
+                                              double *energy);
 
 /**
  * The layout of a pair record, with the Voigt contact's state first

@@ -3,7 +3,7 @@
 //! drift from what the engines write. `GRANBOND_BLESS=1 cargo test --test
 //! field_docs` rewrites them.
 
-use granbond::bond::fields::BOND_FIELDS;
+use granbond::bond::fields::{BondField, BOND_ENERGY_FIELDS, BOND_FIELDS};
 use std::path::Path;
 
 const BEGIN: &str = "<!-- bond-fields: the core's field table (cargo test --test field_docs) -->";
@@ -13,9 +13,13 @@ const PAGES: [&str; 2] = [
     "docs/reference/compute_pair_gran_local_bond.md",
 ];
 
-fn table() -> String {
+const ENERGY_BEGIN: &str =
+    "<!-- bond-energy-fields: the core's energy field table (cargo test --test field_docs) -->";
+const ENERGY_END: &str = "<!-- /bond-energy-fields -->";
+
+fn table(fields: &[BondField]) -> String {
     let mut t = String::from("| keyword | unit | value |\n|---|---|---|\n");
-    for f in BOND_FIELDS.iter() {
+    for f in fields.iter() {
         t += &format!("| `{}` | {} | {} |\n", f.name, f.unit, f.description);
     }
     t
@@ -24,18 +28,21 @@ fn table() -> String {
 #[test]
 fn reference_pages_list_the_cores_fields() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let want = table();
-    for page in PAGES {
+    let tables = PAGES
+        .iter()
+        .map(|&page| (page, BEGIN, END, table(&BOND_FIELDS)))
+        .chain([(PAGES[0], ENERGY_BEGIN, ENERGY_END, table(&BOND_ENERGY_FIELDS))]);
+    for (page, begin, end, want) in tables {
         let path = root.join(page);
         let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{page}: {e}"));
         let start = text
-            .find(BEGIN)
-            .unwrap_or_else(|| panic!("{page}: no line {BEGIN}"))
-            + BEGIN.len()
+            .find(begin)
+            .unwrap_or_else(|| panic!("{page}: no line {begin}"))
+            + begin.len()
             + 1;
         let stop = text[start..]
-            .find(END)
-            .unwrap_or_else(|| panic!("{page}: no line {END}"))
+            .find(end)
+            .unwrap_or_else(|| panic!("{page}: no line {end}"))
             + start;
         if std::env::var_os("GRANBOND_BLESS").is_some() {
             let blessed = format!("{}{}{}", &text[..start], want, &text[stop..]);

@@ -24,6 +24,19 @@ per mode (LAMMPS unless said):
              (translation and rotation) plus `pe` (the bonds' stored
              energy) stays constant to 1e-5 of itself on 1 and 2 ranks,
              while `pe` takes up a good part of it.
+  budget     a bonded block in free flight, spinning and spreading, its
+             bonds damped, hysteretic, some breaking (`pair_style granbond
+             energy yes`): kinetic energy (translation and rotation) + `pe`
+             + the energy dissipated by damping and by hysteresis +
+             released by breaks (compute pair granbond's values 9-11)
+             stays constant on 1 and 2 ranks within twice what kinetic +
+             stored energy does for the same block with elastic, undamped
+             bonds as stiff as the others unload, that do not break (the
+             integrator's error), while each
+             of the three terms takes a share of it. The intact bonds'
+             own energies (compute granbond/local) add up to `pe`, and to
+             the dissipated terms until the first break (after it, to less).
+             The same through a restart file half way.
   momentum   a bonded block in free flight, spinning, its bonds breaking, a
              sphere inserted far away between two runs (LIGGGHTS: by fix
              insert/rate/region during the run, frictionless Hertz
@@ -212,9 +225,60 @@ def check_insert(a, workdir):
             raise Failure(f"{deck}, {n} ranks: a correct deck warned: {warned}")
         print(f"ok: {deck}, {n} ranks: the bond two-sided at every output (f1 = {f1[-1]:.4g} N), momentum within "
               f"{drift:.2g} of a sphere's, created {created[-1]:g} = intact {intact[-1]:g}")
+def budget_drift(text):
+    total = thermo_column(text, "v_total")
+    if not total:
+        raise Failure("no thermo output")
+    return total, max(abs(t - total[0]) for t in total) / total[0]
+
+
+def check_bond_energies(text, n):
+    cols = [thermo_column(text, c) for c in ("c_pg[2]", "PotEng", "c_pg[9]", "c_pg[10]", "c_bs[1]", "c_bs[2]",
+                                             "c_bs[3]")]
+    before_breaks = 0
+    for broken, pe, damping, hysteresis, stored, own_damping, own_hysteresis in zip(*cols):
+        if abs(stored - pe) > 1e-9 * max(abs(pe), 1e-30):
+            raise Failure(f"{n} ranks: the bonds' own stored energies add up to {stored:.17g}, pe is {pe:.17g}")
+        for own, term, name in ((own_damping, damping, "damping"), (own_hysteresis, hysteresis, "hysteresis")):
+            scale = 1e-9 * max(abs(term), 1e-30)
+            if (broken == 0 and abs(own - term) > scale) or own > term + scale:
+                raise Failure(f"{n} ranks, {broken:g} broken: the intact bonds' own {name} adds up to {own:.17g}, "
+                              f"the budget's is {term:.17g}")
+        before_breaks += broken == 0 and damping > 0
+    if before_breaks == 0:
+        raise Failure(f"{n} ranks: no output between the first damping and the first break")
+
+
+def check_budget(a, workdir):
+    elastic = run(a, 1, "free_body_budget.in", os.path.join(workdir, "elastic"), {"elastic": "1"})
+    _, integrator = budget_drift(elastic)
+    for n in [1, 2] if a.mpiexec else [1]:
+        d = os.path.join(workdir, f"np{n}")
+        text = run(a, n, "free_body_budget.in", d)
+        total, drift = budget_drift(text)
+        created, broken = thermo_column(text, "c_pg[1]")[-1], thermo_column(text, "c_pg[2]")[-1]
+        shares = {name: thermo_column(text, col)[-1] / total[0]
+                  for name, col in (("damping", "c_pg[9]"), ("hysteresis", "c_pg[10]"), ("released", "c_pg[11]"))}
+        if not 0 < broken < created or min(shares.values()) < 0.01:
+            raise Failure(f"{n} ranks: {broken:g} of {created:g} bonds broke; shares of the budget {shares}")
+        if drift > 2 * integrator:
+            raise Failure(f"{n} ranks: the budget moved by {drift:.3g} of itself, kinetic + stored energy of the "
+                          f"elastic block by {integrator:.3g}")
+        check_bond_energies(text, n)
+        print(f"ok: {n} ranks: {broken:g} of {created:g} bonds broke; damping {shares['damping']:.3f}, hysteresis "
+              f"{shares['hysteresis']:.3f}, released {shares['released']:.3f} of the budget, which moved by "
+              f"{drift:.2g} of itself (elastic block: {integrator:.2g})")
+        # half the run, a restart file, the other half: the sums come back
+        text = run(a, n, "free_body_budget.in", os.path.join(workdir, f"np{n}-restart"), {"restart": "1"})
+        _, drift = budget_drift(text)
+        if drift > 2 * integrator or thermo_column(text, "c_pg[2]")[-1] != broken:
+            raise Failure(f"{n} ranks, through a restart file: the budget moved by {drift:.3g} of itself, "
+                          f"{thermo_column(text, 'c_pg[2]')[-1]:g} bonds broke ({broken:g} without)")
+        print(f"ok: {n} ranks, through a restart file: the budget moved by {drift:.2g} of itself")
 
 
 if __name__ == "__main__":
     run_modes(__doc__, {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
                          "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy,
-                         "insert": check_insert})
+                         "insert": check_insert,
+                         "budget": check_budget})

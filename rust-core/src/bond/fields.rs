@@ -131,6 +131,31 @@ pub const BOND_FIELDS: [BondField; BOND_FIELD_COUNT] = [
     field("torque_tangential_z", "N m", "the part of the torque on sphere i across n, z"),
 ];
 
+/// Number of fields of [`BOND_ENERGY_FIELDS`].
+pub const BOND_ENERGY_FIELD_COUNT: usize = 3;
+
+/// A bond's energies: fields the bond store gives
+/// (`granbond_bond_store_bond_energy`), not its record, in that order; the
+/// dissipated ones while the store keeps each bond's share of the energy
+/// budget.
+pub const BOND_ENERGY_FIELDS: [BondField; BOND_ENERGY_FIELD_COUNT] = [
+    field(
+        "energy_stored",
+        "J",
+        "energy the bond stores now: each law integrated from zero deformation at its present history",
+    ),
+    field(
+        "energy_damping",
+        "J",
+        "energy the bond's damping dissipated since the store kept it (the run that asked for it)",
+    ),
+    field(
+        "energy_hysteresis",
+        "J",
+        "energy the bond's hysteresis dissipated since the store kept it",
+    ),
+];
+
 /// `v` split into its part along the unit vector `n` and the rest.
 fn split(v: [f64; 3], n: [f64; 3]) -> ([f64; 3], [f64; 3]) {
     let along = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];

@@ -12,6 +12,7 @@ use crate::kinematics::{KinematicsError, PairKinematics};
 use crate::pair_source::IndexedPairs;
 use crate::simd::Simd;
 use std::ops::Deref;
+use std::sync::OnceLock;
 
 /// A bond type as engines use it (`GbBondModel` in the C ABI): its
 /// [`BondLaws`], read through `Deref`, and the compiled steps chosen for
@@ -22,6 +23,9 @@ pub struct BondModel {
     /// For every step entry, on the instruction set chosen once, at
     /// construction.
     kernels: Kernels,
+    /// The same laws without damping, built when first asked for
+    /// ([`Self::undamped`]).
+    undamped: OnceLock<Option<Box<BondModel>>>,
 }
 
 /// A model is read as its laws (`model.params`, `model.features`, ...).
@@ -39,7 +43,34 @@ impl BondModel {
     pub fn new(params: BondParams) -> Result<Self, ParameterError> {
         let laws = BondLaws::new(params)?;
         let kernels = Self::kernels_for(&laws, Simd::chosen(), true);
-        Ok(Self { laws, kernels })
+        Ok(Self {
+            laws,
+            kernels,
+            undamped: OnceLock::new(),
+        })
+    }
+
+    /// The same laws without damping, `None` for a model without it: a
+    /// step of it from the same state gives the same history and the
+    /// loads the laws alone exert, so the damping's loads are the
+    /// difference (the energy budget, `crate::bond_store`).
+    pub fn undamped(&self) -> Option<&BondModel> {
+        self.undamped
+            .get_or_init(|| {
+                let p = &self.params;
+                let any_eta = [p.eta_fn, p.eta_ft, p.eta_tn, p.eta_tt].iter().any(|&e| e > 0.0);
+                if !p.damping_on() || !any_eta {
+                    return None;
+                }
+                let params = BondParams {
+                    damping: 0,
+                    damping_smooth: 0,
+                    ..self.params
+                };
+                // the parameters were valid with damping: they are without
+                BondModel::new(params).ok().map(Box::new)
+            })
+            .as_deref()
     }
 
     /// The steps of `laws` on `simd`: LIGGGHTS-INL's law (`inl_compatible`)

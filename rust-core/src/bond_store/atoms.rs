@@ -4,6 +4,7 @@
 //! restart files). The bonds move with their owner atom; the store keeps
 //! them keyed by ids, so the link after the event finds them again.
 
+use super::budget::packed_extras;
 use super::{BondStore, StoredBond, NONE, PACKED_PER_BOND};
 use crate::bond::{BondState, BondStatus, BOND_STATE_LEN};
 
@@ -44,6 +45,56 @@ fn whole(x: f64, what: &'static str) -> Result<i64, UnpackError> {
     } else {
         Err(UnpackError::Malformed(what))
     }
+}
+
+/// The form of one atom's packed bonds, read from its head.
+struct Packed {
+    count: usize,
+    /// Doubles before the first bond.
+    head: usize,
+    /// Doubles a bond takes.
+    per_bond: usize,
+    /// Doubles in all.
+    len: usize,
+}
+
+fn packed_form(buf: &[f64]) -> Result<Packed, UnpackError> {
+    let short = |wanted| UnpackError::Short {
+        len: buf.len(),
+        wanted,
+    };
+    let count = whole(*buf.get(1).ok_or(short(2))?, "bond count")?;
+    // a negative count: each bond carries extras, their number next
+    let (head, extras) = if count < 0 {
+        let extras = whole(*buf.get(2).ok_or(short(3))?, "number of extras")?;
+        let extras = usize::try_from(extras)
+            .ok()
+            .filter(|&e| e <= BOND_STATE_LEN)
+            .ok_or(UnpackError::Malformed("number of extras"))?;
+        (3, extras)
+    } else {
+        (2, 0)
+    };
+    let count = usize::try_from(count.unsigned_abs()).map_err(|_| UnpackError::Malformed("bond count"))?;
+    let per_bond = PACKED_PER_BOND + extras;
+    let len = count
+        .checked_mul(per_bond)
+        .and_then(|n| n.checked_add(head))
+        .ok_or(UnpackError::Malformed("bond count"))?;
+    Ok(Packed {
+        count,
+        head,
+        per_bond,
+        len,
+    })
+}
+
+/// The doubles one atom's packed bonds take ([`BondStore::pack`]), read
+/// from their head (`buf` holds at least the head: 2 doubles, 3 where the
+/// count is negative): where an engine's buffer of several atoms holds the
+/// next atom.
+pub fn packed_len_in(buf: &[f64]) -> Result<usize, UnpackError> {
+    Ok(packed_form(buf)?.len)
 }
 
 impl BondStore {
@@ -101,38 +152,65 @@ impl BondStore {
 
     /// Doubles [`Self::pack`] writes for atom `i`.
     pub fn packed_len(&self, i: usize) -> usize {
-        2 + PACKED_PER_BOND * self.owned(i).count()
+        self.packed_len_of(self.owned(i).count())
+    }
+
+    fn packed_len_of(&self, bonds: usize) -> usize {
+        let extras = packed_extras(self.budget.is_some());
+        if bonds == 0 || extras == 0 {
+            2 + PACKED_PER_BOND * bonds
+        } else {
+            3 + (PACKED_PER_BOND + extras) * bonds
+        }
     }
 
     /// The most doubles [`Self::pack`] writes for one local atom, as of the
     /// latest link and the bonds created since (a bound for the engine's
     /// exchange and restart buffers).
     pub fn most_packed_len(&self) -> usize {
-        2 + PACKED_PER_BOND * self.most_owned
+        self.packed_len_of(self.most_owned)
     }
 
     /// Packs atom `i`'s bonds into `buf` (at least [`Self::packed_len`]
     /// doubles): its seen id, the count, then per bond the partner's id and
-    /// the state. With `leaving` (the atom migrates to another rank) the
-    /// bonds leave this store; without (a restart file) they stay. Returns
-    /// the doubles written, or `None` if `buf` is too short.
+    /// the state. While the energy budget is kept, the count is written
+    /// negative and followed by the number of extras each bond carries
+    /// after its state (its damping loads of the latest pass, its
+    /// dissipated energies): a buffer says what it holds, whoever reads it.
+    /// With `leaving` (the atom migrates to another rank) the bonds leave
+    /// this store; without (a restart file) they stay. Returns the doubles
+    /// written, or `None` if `buf` is too short.
     pub fn pack(&mut self, i: usize, leaving: bool, buf: &mut [f64]) -> Option<usize> {
         let len = self.packed_len(i);
         if buf.len() < len {
             return None;
         }
         buf[0] = self.seen(i) as f64;
-        let mut at = 2;
         let owned: Vec<usize> = self.owned(i).collect();
+        let extras = if owned.is_empty() {
+            0
+        } else {
+            packed_extras(self.budget.is_some())
+        };
+        let mut at = 2;
         buf[1] = owned.len() as f64;
+        if extras > 0 {
+            buf[1] = -buf[1];
+            buf[2] = extras as f64;
+            at = 3;
+        }
         for k in owned {
-            let bond = &mut self.bonds[k];
+            let bond = &self.bonds[k];
             buf[at] = bond.partner as f64;
             buf[at + 1..at + 1 + BOND_STATE_LEN].copy_from_slice(bond.state.as_slots());
             at += PACKED_PER_BOND;
+            if let (Some(budget), true) = (&self.budget, extras > 0) {
+                buf[at..at + extras].copy_from_slice(&budget.packed(k));
+                at += extras;
+            }
             if leaving {
                 // gone from this rank without a count: the next link drops it
-                bond.state.status = BondStatus::Unbonded as i32 as f64;
+                self.bonds[k].state.status = BondStatus::Unbonded as i32 as f64;
             }
         }
         if leaving {
@@ -153,12 +231,12 @@ impl BondStore {
             });
         }
         let seen = whole(buf[0], "seen id")?;
-        let count = whole(buf[1], "bond count")?;
-        let count = usize::try_from(count).map_err(|_| UnpackError::Malformed("bond count"))?;
-        let wanted = count
-            .checked_mul(PACKED_PER_BOND)
-            .and_then(|n| n.checked_add(2))
-            .ok_or(UnpackError::Malformed("bond count"))?;
+        let Packed {
+            count,
+            head,
+            per_bond,
+            len: wanted,
+        } = packed_form(buf)?;
         if buf.len() < wanted {
             return Err(UnpackError::Short {
                 len: buf.len(),
@@ -166,7 +244,7 @@ impl BondStore {
             });
         }
         for b in 0..count {
-            let at = 2 + b * PACKED_PER_BOND;
+            let at = head + b * per_bond;
             whole(buf[at], "partner id")?;
         }
         self.grow(i + 1);
@@ -177,18 +255,21 @@ impl BondStore {
         // ahead of that atom would hand it their bonds
         self.head[i] = NONE;
         for b in 0..count {
-            let at = 2 + b * PACKED_PER_BOND;
+            let at = head + b * per_bond;
             let mut state = BondState::default();
             state
                 .as_slots_mut()
                 .copy_from_slice(&buf[at + 1..at + 1 + BOND_STATE_LEN]);
-            self.push(
+            let k = self.push(
                 i,
                 StoredBond {
                     partner: buf[at] as i64,
                     state,
                 },
             );
+            if let Some(budget) = &mut self.budget {
+                budget.unpacked(k, &buf[at + PACKED_PER_BOND..at + per_bond]);
+            }
         }
         self.most_owned = self.most_owned.max(count);
         self.linked = false;
@@ -199,6 +280,9 @@ impl BondStore {
     pub(super) fn push(&mut self, i: usize, bond: StoredBond) -> usize {
         let k = self.bonds.len();
         self.bonds.push(bond);
+        if let Some(budget) = &mut self.budget {
+            budget.push();
+        }
         self.next.push(self.head[i]);
         self.head[i] = k as u32;
         k

@@ -170,6 +170,9 @@ impl BondStore {
         self.bonds.truncate(kept);
         self.ends.truncate(kept);
         self.kinds.truncate(kept);
+        if let Some(budget) = &mut self.budget {
+            budget.truncate(kept);
+        }
         self.rebuild_lists();
         Ok(self.finish_link(report, atoms.ids, atoms.nlocal))
     }
@@ -253,6 +256,9 @@ impl BondStore {
                 self.bonds.swap(b, to);
                 self.ends.swap(b, to);
                 self.kinds.swap(b, to);
+                if let Some(budget) = &mut self.budget {
+                    budget.swap(b, to);
+                }
                 place.swap(b, to);
             }
         }

@@ -13,13 +13,18 @@
 //! atom ids: sorting, deleting or inserting atoms moves nothing in it.
 
 mod atoms;
+mod budget;
 mod id_map;
 mod link;
 mod listed;
 mod pass;
 mod view;
 
-pub use atoms::UnpackError;
+pub use atoms::{packed_len_in, UnpackError};
+pub use budget::{
+    step_budget, BondBudgetStep, EnergySums, BUDGET_BYTES_PER_BOND, DAMPING_LOADS_LEN,
+    DISSIPATED_BYTES_PER_BOND,
+};
 pub use id_map::Ids;
 pub use link::{LinkAtoms, LinkError, LinkReport, LossCause};
 pub use listed::{ListedAtoms, ListedBond};
@@ -27,6 +32,7 @@ pub use pass::{creates_here, BrokenBond, StepFailure, StepFailureReason, CHUNK};
 pub use view::ViewError;
 
 use crate::bond::{BondState, BondStatus, BOND_STATE_LEN};
+use budget::Budget;
 use id_map::IdMap;
 
 /// One bond as the store keeps it. The owner is the atom whose list holds
@@ -57,8 +63,8 @@ const _: () = assert!(BYTES_PER_BOND <= BOND_BUDGET_BYTES);
 /// The end of an owner's list.
 const NONE: u32 = u32::MAX;
 
-/// Doubles an atom's packed bonds take: its seen id, the count, and per
-/// bond the partner's id and the state.
+/// Doubles a packed bond takes: the partner's id and the state (and, while
+/// the energy budget is kept, its extras: see [`BondStore::pack`]).
 pub const PACKED_PER_BOND: usize = 1 + BOND_STATE_LEN;
 
 /// Counts since the store was made (or restored), on this rank. Summed over
@@ -139,6 +145,9 @@ pub struct BondStore {
     view_before: Vec<(u32, u32)>,
     left_view: Vec<(u32, u32)>,
     counts: StoreCounts,
+    /// The energy budget's per-bond part, while a deck asks for it.
+    budget: Option<Budget>,
+    energy: EnergySums,
 }
 
 impl BondStore {
@@ -201,6 +210,7 @@ impl BondStore {
             + self.broken_now.capacity() * size_of::<BrokenBond>()
             + (self.view.capacity() + self.view_before.capacity() + self.left_view.capacity())
                 * size_of::<(u32, u32)>()
+            + self.budget.as_ref().map_or(0, Budget::bytes)
     }
 
     /// Gives back the room that growing left beyond the bonds held (more
@@ -212,6 +222,9 @@ impl BondStore {
             self.next.shrink_to_fit();
             self.ends.shrink_to_fit();
             self.kinds.shrink_to_fit();
+            if let Some(b) = &mut self.budget {
+                b.shrink_to_fit();
+            }
         }
     }
 

@@ -31,6 +31,8 @@ pub(super) struct Cursor {
     // the run's time step, also in a setup pass (a law's own setup step)
     run_dt: f64,
     next: usize,
+    /// The first bond formed in this pass.
+    fresh: usize,
 }
 
 /// A bond that broke in the pass.
@@ -106,6 +108,7 @@ impl BondStore {
             dt: if advance { dt } else { 0.0 },
             run_dt: dt,
             next: 0,
+            fresh: self.bonds.len(),
         };
         if !remember_breaks {
             self.broken_pairs = Vec::new();
@@ -156,6 +159,13 @@ impl BondStore {
         })?;
         ends[..n].copy_from_slice(pairs);
         let outs = &mut outs[..n];
+        // the energy budget reads the states before the step (in its own
+        // buffers, which it keeps from chunk to chunk)
+        let mut scratch = self.budget.as_mut().map(|b| std::mem::take(&mut b.scratch));
+        if let Some(s) = &mut scratch {
+            s.before.clear();
+            s.before.extend(self.bonds[first..last].iter().map(|b| b.state));
+        }
         let stepped = if self.cursor.advance {
             // left uninitialised beyond the chunk: a chunk of a few bonds
             // would otherwise pay for clearing all CHUNK of them
@@ -206,6 +216,25 @@ impl BondStore {
                     self.ends[first + k],
                     StepFailureReason::Kinematics(e),
                 ))
+            }
+        }
+        if let Some(mut s) = scratch {
+            // the same steps undamped: their loads less the step's are the
+            // damping's
+            let undamped = model.undamped().map(|u| {
+                s.twin.clear();
+                s.twin.extend_from_slice(&s.before);
+                s.elastic.clear();
+                s.elastic.resize(n, BondOutput::default());
+                let mut refs: Vec<&mut BondState> = s.twin.iter_mut().collect();
+                // the damped step succeeded on these kinematics and states
+                let _ = u.step_indexed(&kinematics, self.cursor.dt, &mut refs, &mut s.elastic);
+            });
+            let elastic = undamped.map(|()| &s.elastic[..]);
+            let (dt, fresh) = (self.cursor.dt, self.cursor.fresh);
+            self.tally_energy(model, &atoms, dt, first, &s.before, outs, elastic, fresh);
+            if let Some(b) = self.budget.as_mut() {
+                b.scratch = s;
             }
         }
         self.cursor.next = last;
@@ -352,12 +381,18 @@ impl BondStore {
                 self.bonds.swap(kept, k);
                 self.ends.swap(kept, k);
                 self.kinds.swap(kept, k);
+                if let Some(budget) = &mut self.budget {
+                    budget.swap(kept, k);
+                }
                 kept += 1;
             }
         }
         self.bonds.truncate(kept);
         self.ends.truncate(kept);
         self.kinds.truncate(kept);
+        if let Some(budget) = &mut self.budget {
+            budget.truncate(kept);
+        }
         self.rebuild_lists();
         self.trim();
     }
@@ -397,32 +432,58 @@ impl BondStore {
         if !self.linked {
             return None;
         }
-        let n = atoms.count();
         let mut sum = 0.0;
-        for (k, bond) in self.bonds.iter().enumerate() {
-            let [i, j] = self.ends[k].map(|a| a as usize);
-            if i >= n || j >= n {
-                return None;
+        for k in 0..self.bonds.len() {
+            match self.energy_of(k, models, &atoms) {
+                Err(()) => return None,
+                Ok(e) => sum += e.unwrap_or(0.0),
             }
-            let Some(model) = models.get(usize::from(self.kinds[k])).copied().flatten() else {
-                continue;
-            };
-            let d = [0, 1, 2].map(|c| atoms.x[3 * i + c] - atoms.x[3 * j + c]);
-            let r = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-            if !(r > 0.0) {
-                continue;
-            }
-            let axis = d.map(|c| c / r);
-            sum += model
-                .stored_energy(
-                    &bond.state,
-                    axis,
-                    bond.state.r0 - r,
-                    atoms.radius[i],
-                    atoms.radius[j],
-                )
-                .total();
         }
         Some(sum)
+    }
+
+    /// The energy bond `k` stores now (J), as [`Self::stored_energy`] counts
+    /// it; `None` beyond the bonds, before a link, for a kind without a
+    /// model or atoms beyond `atoms`.
+    pub fn bond_stored_energy(
+        &self,
+        k: usize,
+        models: &[Option<&BondModel>],
+        atoms: AtomArrays<'_>,
+    ) -> Option<f64> {
+        if !self.linked || k >= self.bonds.len() {
+            return None;
+        }
+        self.energy_of(k, models, &atoms).ok().flatten()
+    }
+
+    /// Bond `k`'s stored energy: `Err` for atoms beyond `atoms`, `None` for
+    /// a kind without a model (it counts nothing).
+    fn energy_of(
+        &self,
+        k: usize,
+        models: &[Option<&BondModel>],
+        atoms: &AtomArrays<'_>,
+    ) -> Result<Option<f64>, ()> {
+        let n = atoms.count();
+        let [i, j] = self.ends[k].map(|a| a as usize);
+        if i >= n || j >= n {
+            return Err(());
+        }
+        let Some(model) = models.get(usize::from(self.kinds[k])).copied().flatten() else {
+            return Ok(None);
+        };
+        let d = [0, 1, 2].map(|c| atoms.x[3 * i + c] - atoms.x[3 * j + c]);
+        let r = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        if !(r > 0.0) {
+            return Ok(Some(0.0));
+        }
+        let state = &self.bonds[k].state;
+        let axis = d.map(|c| c / r);
+        Ok(Some(
+            model
+                .stored_energy(state, axis, state.r0 - r, atoms.radius[i], atoms.radius[j])
+                .total(),
+        ))
     }
 }

@@ -5,23 +5,79 @@
 use super::entry;
 use super::error::{Failure, Status};
 use super::guard::{finite, finite_vector3, reference, reference_mut, slice, slice_mut};
-use crate::bond::fields::{bond_fields, BOND_FIELDS, BOND_FIELD_COUNT};
+use crate::bond::fields::{
+    bond_fields, BondField, BOND_ENERGY_FIELDS, BOND_ENERGY_FIELD_COUNT, BOND_FIELDS, BOND_FIELD_COUNT,
+};
 use crate::bond::output_slots::BOND_OUTPUT_LEN;
 use crate::bond::{BondModel, BondState, BOND_STATE_LEN};
 use crate::record::RecordLayout;
 use std::ffi::{c_char, CString};
 use std::sync::OnceLock;
 
+/// The name, unit and description of every field of `table`, as C strings.
+fn strings_of(table: &[BondField]) -> Vec<[CString; 3]> {
+    let c = |s: &str| CString::new(s).expect("no NUL in the field table");
+    table
+        .iter()
+        .map(|f| [c(f.name), c(f.unit), c(f.description)])
+        .collect()
+}
+
 /// The name, unit and description of every field, as C strings.
 fn c_strings() -> &'static [[CString; 3]] {
     static TABLE: OnceLock<Vec<[CString; 3]>> = OnceLock::new();
-    TABLE.get_or_init(|| {
-        let c = |s: &str| CString::new(s).expect("no NUL in the field table");
-        BOND_FIELDS
-            .iter()
-            .map(|f| [c(f.name), c(f.unit), c(f.description)])
-            .collect()
-    })
+    TABLE.get_or_init(|| strings_of(&BOND_FIELDS))
+}
+
+/// The same for the energy fields.
+fn energy_strings() -> &'static [[CString; 3]] {
+    static TABLE: OnceLock<Vec<[CString; 3]>> = OnceLock::new();
+    TABLE.get_or_init(|| strings_of(&BOND_ENERGY_FIELDS))
+}
+
+/// Writes row `id` of `rows` (`what` names the table in the error).
+fn write_info(
+    rows: &'static [[CString; 3]],
+    what: &str,
+    id: usize,
+    name: &mut *const c_char,
+    unit: &mut *const c_char,
+    description: &mut *const c_char,
+) -> Result<(), Failure> {
+    let row = rows.get(id).ok_or_else(|| {
+        Failure::new(
+            Status::InvalidArgument,
+            format!("{what} id {id} out of range (there are {} fields)", rows.len()),
+        )
+    })?;
+    *name = row[0].as_ptr();
+    *unit = row[1].as_ptr();
+    *description = row[2].as_ptr();
+    Ok(())
+}
+
+/// Number of a bond's energy fields: those the bond store gives
+/// (`granbond_bond_store_bond_energy` writes this many doubles).
+#[entry(or = 0)]
+#[no_mangle]
+pub extern "C" fn granbond_bond_energy_field_count() -> usize {
+    BOND_ENERGY_FIELD_COUNT
+}
+
+/// Name (the engines' keyword), SI unit and description of energy field
+/// `id` (`id < granbond_bond_energy_field_count()`), in static storage.
+///
+/// # Safety
+/// `name`, `unit` and `description` must be null or valid for writes.
+#[entry(name: reference_mut, unit: reference_mut, description: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_energy_field_info(
+    id: usize,
+    name: *mut *const c_char,
+    unit: *mut *const c_char,
+    description: *mut *const c_char,
+) -> Status {
+    write_info(energy_strings(), "energy field", id, name, unit, description)
 }
 
 /// Number of a bond's output fields (`granbond_bond_fields` writes this
@@ -46,16 +102,7 @@ pub unsafe extern "C" fn granbond_bond_field_info(
     unit: *mut *const c_char,
     description: *mut *const c_char,
 ) -> Status {
-    let row = c_strings().get(id).ok_or_else(|| {
-        Failure::new(
-            Status::InvalidArgument,
-            format!("field id {id} out of range (there are {BOND_FIELD_COUNT} fields)"),
-        )
-    })?;
-    *name = row[0].as_ptr();
-    *unit = row[1].as_ptr();
-    *description = row[2].as_ptr();
-    Ok(())
+    write_info(c_strings(), "field", id, name, unit, description)
 }
 
 /// The fields of one bond of `model`, written to `values`

@@ -8,8 +8,8 @@ use super::guard::{reference, reference_mut, slice, slice_mut, time_step, Failed
 use super::results::refused;
 use crate::bond::{BondModel, BondOutput, BOND_STATE_LEN};
 use crate::bond_store::{
-    creates_here, BondStore, BrokenBond, Ids, LinkAtoms, LinkReport, ListedAtoms, ListedBond,
-    StepFailureReason, StoreCounts, CHUNK,
+    creates_here, packed_len_in, BondStore, BrokenBond, EnergySums, Ids, LinkAtoms, LinkReport, ListedAtoms,
+    ListedBond, StepFailureReason, StoreCounts, CHUNK,
 };
 use crate::kinematics::PairKinematics;
 
@@ -228,6 +228,25 @@ pub unsafe extern "C" fn granbond_bond_store_unpack(
     *read = store
         .unpack(i, buf)
         .map_err(|e| Failure::new(Status::InvalidArgument, format!("buf: {e}")))?;
+    Ok(())
+}
+
+/// The doubles one atom's bonds packed by `granbond_bond_store_pack` take,
+/// read from the head of `buf` (`head` doubles there: at least 2, and 3
+/// where the second is negative), written to `len`: where the next atom
+/// starts in an engine's buffer of several.
+///
+/// # Safety
+/// Pointers must be null or valid; `buf` for `head` doubles.
+#[entry(len: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_packed_len_in(
+    buf: *const f64,
+    head: usize,
+    len: *mut usize,
+) -> Status {
+    let buf = slice(buf, head.min(3), "buf")?;
+    *len = packed_len_in(buf).map_err(|e| Failure::new(Status::InvalidArgument, format!("buf: {e}")))?;
     Ok(())
 }
 
@@ -756,5 +775,99 @@ pub unsafe extern "C" fn granbond_bond_store_stored_energy(
             "the store was not linked since atoms moved, or a bond's atom lies beyond the atoms' arrays",
         )
     })?;
+    Ok(())
+}
+
+/// Keeps the bonds' energy budget (`on` non-zero) or stops keeping it: the
+/// energy the damping and the hysteresis dissipate and breaks release,
+/// summed in every force pass (`granbond_bond_store_energy_sums`); with
+/// `per_bond` non-zero, each bond's dissipated energies too
+/// (`granbond_bond_store_bond_energy`). While kept, a bond costs
+/// `BUDGET_BYTES_PER_BOND` more (`DISSIPATED_BYTES_PER_BOND` more again
+/// with `per_bond`) and a pass steps each damped bond twice; turned off,
+/// nothing. The same on every rank.
+///
+/// # Safety
+/// `store` must be null or from `granbond_bond_store_new`.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_keep_energy_budget(
+    store: *mut BondStore,
+    on: i32,
+    per_bond: i32,
+) -> Status {
+    store.keep_energy_budget(on != 0, per_bond != 0);
+    Ok(())
+}
+
+/// The energy this rank's bonds dissipated by damping and by hysteresis and
+/// released by breaking since the budget was first kept (J), written to
+/// `sums`; zero while it never was.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[entry(store: reference, sums: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_energy_sums(
+    store: *const BondStore,
+    sums: *mut EnergySums,
+) -> Status {
+    *sums = store.energy_sums();
+    Ok(())
+}
+
+/// Restores energy sums read from a restart file.
+///
+/// # Safety
+/// Pointers must be null or valid.
+#[entry(store: reference_mut, sums: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_restore_energy_sums(
+    store: *mut BondStore,
+    sums: *const EnergySums,
+) -> Status {
+    store.restore_energy_sums(sums);
+    Ok(())
+}
+
+/// Bond `k`'s energies as of the latest link (J), written to `energy`
+/// (`granbond_bond_energy_field_count()` doubles, the energy fields'
+/// order): what it stores now, with its kind's model (`models[kind]`) at
+/// its atoms' positions, and what it dissipated by damping and by
+/// hysteresis since the store kept them (`granbond_bond_store_keep_energy_budget`
+/// with `per_bond`; refused while not kept).
+///
+/// # Safety
+/// Pointers must be null or valid: `models` for `nkinds` entries, the
+/// atoms' arrays as they say, `energy` for 3 doubles.
+#[entry(store: reference, atoms: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_bond_energy(
+    store: *const BondStore,
+    models: *const *const BondModel,
+    nkinds: usize,
+    atoms: *const AtomArrayPointers,
+    k: usize,
+    energy: *mut f64,
+) -> Status {
+    let models = model_table(models, nkinds)?;
+    let arrays = atom_arrays(atoms)?;
+    let energy = slice_mut(energy, 3, "energy")?;
+    let dissipated = store.dissipated(k).ok_or_else(|| {
+        Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "k: bond {k} of {}, or the bonds' dissipated energies are not kept",
+                store.len()
+            ),
+        )
+    })?;
+    let stored = store.bond_stored_energy(k, models, arrays).ok_or_else(|| {
+        Failure::new(
+            Status::InvalidArgument,
+            format!("k: bond {k} has no model, the store is not linked, or its atoms lie beyond the atoms' arrays"),
+        )
+    })?;
+    energy.copy_from_slice(&[stored, dissipated[0], dissipated[1]]);
     Ok(())
 }

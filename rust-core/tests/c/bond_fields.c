@@ -59,6 +59,13 @@ int test_bond_fields(void)
     for (c = 0; c < GRANBOND_BOND_STATE_LEN; c++)
         record[layout.bond + c] = state[c];
     EXPECT_OK(granbond_bond_output_store(&out, record + layout.loads), "granbond_bond_output_store");
+    {
+        const char *name = NULL, *unit = NULL, *description = NULL;
+        EXPECT_OK(granbond_bond_energy_field_info(0, &name, &unit, &description), "granbond_bond_energy_field_info");
+        CHECK(strcmp(name, "energy_stored") == 0 && strcmp(unit, "J") == 0, "the first energy field");
+        EXPECT(granbond_bond_energy_field_info(granbond_bond_energy_field_count(), &name, &unit, &description),
+               GB_STATUS_INVALID_ARGUMENT, "granbond_bond_energy_field_info, beyond the table");
+    }
     EXPECT_OK(granbond_bond_fields(m, 0, record, k.x_i, k.x_j, values), "granbond_bond_fields");
 
     /* eq. 5, virgin tension: k_fn2 |delta| on A = pi (lambda min R)^2 */

@@ -139,6 +139,18 @@ int test_bond_store(void)
         EXPECT_OK(granbond_bond_store_stored_energy(store, models, 1, &arrays, &energy),
                   "granbond_bond_store_stored_energy");
         CHECK(energy >= 0.0 && energy < 1e-6, "a bond near its rest length stores little energy");
+        /* a bond's energies: kept per bond only while asked for */
+        {
+            double e[3] = {-1.0, -1.0, -1.0};
+            EXPECT(granbond_bond_store_bond_energy(store, models, 1, &arrays, 0, e), GB_STATUS_INVALID_ARGUMENT,
+                   "granbond_bond_store_bond_energy, not kept");
+            EXPECT_OK(granbond_bond_store_keep_energy_budget(store, 1, 1), "granbond_bond_store_keep_energy_budget");
+            EXPECT_OK(granbond_bond_store_bond_energy(store, models, 1, &arrays, 0, e),
+                      "granbond_bond_store_bond_energy");
+            CHECK(e[0] == energy && e[1] == 0.0 && e[2] == 0.0, "its stored energy, nothing dissipated yet");
+            CHECK(granbond_bond_energy_field_count() == 3, "three energy fields");
+            EXPECT_OK(granbond_bond_store_keep_energy_budget(store, 0, 0), "granbond_bond_store_keep_energy_budget, off");
+        }
     }
 
     /* The view: the rows another rank's ghosts of these atoms would get. */
@@ -174,6 +186,11 @@ int test_bond_store(void)
            "granbond_bond_store_pack, buffer too short");
     EXPECT_MESSAGE("capacity");
     EXPECT_OK(granbond_bond_store_pack(store, 1, 1, buf, 64, &written), "granbond_bond_store_pack, leaving");
+    {
+        size_t len = 0;
+        EXPECT_OK(granbond_bond_store_packed_len_in(buf, 2, &len), "granbond_bond_store_packed_len_in");
+        CHECK(len == written, "the head of the packed bonds says their length");
+    }
     EXPECT_OK(granbond_bond_store_new(&other), "granbond_bond_store_new");
     EXPECT_OK(granbond_bond_store_grow(other, 2), "granbond_bond_store_grow");
     EXPECT_OK(granbond_bond_store_unpack(other, 1, buf, written, &read), "granbond_bond_store_unpack");
@@ -191,6 +208,7 @@ int test_bond_store(void)
     a.x[0] += (MAX_DISTANCE - R0_NOMINAL) * 2.0 * AXIS[0] * 10.0;
     a.x[1] += (MAX_DISTANCE - R0_NOMINAL) * 2.0 * AXIS[1] * 10.0;
     a.x[2] += (MAX_DISTANCE - R0_NOMINAL) * 2.0 * AXIS[2] * 10.0;
+    EXPECT_OK(granbond_bond_store_keep_energy_budget(other, 1, 0), "granbond_bond_store_keep_energy_budget");
     EXPECT_OK(granbond_bond_store_begin_pass(other, DT, 1, 0), "granbond_bond_store_begin_pass");
     EXPECT_OK(granbond_bond_store_step_next(other, models, 1, &arrays, &ids, ends, outs, &count, NULL),
               "granbond_bond_store_step_next, stretched");
@@ -216,6 +234,15 @@ int test_bond_store(void)
     EXPECT_OK(granbond_bond_store_restore_counts(other, &counts), "granbond_bond_store_restore_counts");
     EXPECT_OK(granbond_bond_store_counts(other, &counts), "granbond_bond_store_counts");
     CHECK(counts.created == 5, "counts restored");
+    {
+        GbEnergySums sums;
+        EXPECT_OK(granbond_bond_store_energy_sums(other, &sums), "granbond_bond_store_energy_sums");
+        CHECK(sums.released > 0.0 && sums.hysteresis == 0.0, "the broken bond released what it stored");
+        sums.damping = 3.0;
+        EXPECT_OK(granbond_bond_store_restore_energy_sums(other, &sums), "granbond_bond_store_restore_energy_sums");
+        EXPECT_OK(granbond_bond_store_energy_sums(other, &sums), "granbond_bond_store_energy_sums");
+        CHECK(sums.damping == 3.0, "energy sums restored");
+    }
 
     /* Per-atom events. */
     EXPECT_OK(granbond_bond_store_set_seen(other, 0, 77), "granbond_bond_store_set_seen");

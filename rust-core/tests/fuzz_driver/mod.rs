@@ -24,13 +24,13 @@
 //! planes, layouts, counts, indices, ids and kinds.
 #![allow(dead_code)]
 
-use granbond::bond::fields::{BOND_FIELDS, BOND_FIELD_COUNT};
+use granbond::bond::fields::{BOND_ENERGY_FIELDS, BOND_ENERGY_FIELD_COUNT, BOND_FIELDS, BOND_FIELD_COUNT};
 use granbond::bond::output_slots::{store_output, BOND_OUTPUT_LEN};
 use granbond::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
 };
-use granbond::bond_store::{BrokenBond, LinkReport, ListedBond, StoreCounts};
+use granbond::bond_store::{BrokenBond, EnergySums, LinkReport, ListedBond, StoreCounts};
 use granbond::contact::{
     ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN, VOIGT_PARAMETERS,
 };
@@ -42,7 +42,8 @@ use granbond::ffi::contact_geometry as fcg;
 use granbond::ffi::deck::{self as fd, PhraseRow};
 use granbond::ffi::error::{granbond_last_error_message, granbond_last_error_parameter};
 use granbond::ffi::fields::{
-    granbond_bond_field_count, granbond_bond_field_info, granbond_bond_fields, granbond_bond_stress_limits,
+    granbond_bond_energy_field_count, granbond_bond_energy_field_info, granbond_bond_field_count,
+    granbond_bond_field_info, granbond_bond_fields, granbond_bond_stress_limits,
 };
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::parameters::{self as fp, ParameterRow};
@@ -61,7 +62,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 107] = [
+pub const ENTRY_POINTS: [&str; 114] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -132,6 +133,8 @@ pub const ENTRY_POINTS: [&str; 107] = [
     "granbond_bond_file_loads",
     "granbond_bond_field_count",
     "granbond_bond_field_info",
+    "granbond_bond_energy_field_count",
+    "granbond_bond_energy_field_info",
     "granbond_bond_fields",
     "granbond_bond_stress_limits",
     "granbond_bond_store_new",
@@ -169,6 +172,11 @@ pub const ENTRY_POINTS: [&str; 107] = [
     "granbond_bond_store_would_create",
     "granbond_bond_store_count_atoms",
     "granbond_bond_store_stored_energy",
+    "granbond_bond_store_keep_energy_budget",
+    "granbond_bond_store_energy_sums",
+    "granbond_bond_store_restore_energy_sums",
+    "granbond_bond_store_bond_energy",
+    "granbond_bond_store_packed_len_in",
 ];
 
 /// The set-by-name and need entries of one parameter table.
@@ -1713,6 +1721,10 @@ impl<'t> Session<'t> {
         // SAFETY (every call below): `st` is a live store; the other
         // pointers are null, misaligned or valid for their documented sizes.
         unsafe {
+            // the energy budget kept or not, and per bond or not, by the
+            // atom count (no input read: the corpus reads on as before)
+            let status = fs::granbond_bond_store_keep_energy_budget(st, (n % 2) as i32, (n % 4 < 2) as i32);
+            ok(self, "granbond_bond_store_keep_energy_budget", status);
             let status = fs::granbond_bond_store_grow(st, n);
             ok(self, "granbond_bond_store_grow", status);
             let mut report = Place::new(LinkReport::default());
@@ -1862,6 +1874,19 @@ impl<'t> Session<'t> {
             if ok(self, "granbond_bond_store_stored_energy", status) {
                 assert!(!energy.get().is_nan(), "stored energy NaN");
             }
+            let mut sums = Place::new(EnergySums::default());
+            let status = fs::granbond_bond_store_energy_sums(st, sums.ptr(Pointer::Valid));
+            ok(self, "granbond_bond_store_energy_sums", status);
+            let mut bond_energy = [f64::NAN; 3];
+            let status = fs::granbond_bond_store_bond_energy(
+                st,
+                models.as_ptr(),
+                2,
+                &arrays,
+                0,
+                bond_energy.as_mut_ptr(),
+            );
+            ok(self, "granbond_bond_store_bond_energy", status);
             let _ = fs::granbond_bond_store_bytes(st);
             self.answer_value("granbond_bond_store_bytes");
             let mut bond_ends = [0i32; 3];
@@ -1983,6 +2008,12 @@ impl<'t> Session<'t> {
                 if input.below(4) == 3 {
                     buf[input.below(len + 1)] = input.f64();
                 }
+                let mut head_len = Place::new(0usize);
+                let status =
+                    fs::granbond_bond_store_packed_len_in(buf.as_ptr(), 3, head_len.ptr(Pointer::Valid));
+                if ok(self, "granbond_bond_store_packed_len_in", status) && packed {
+                    assert_eq!(head_len.get(), written.get(), "packed_len_in of a packed atom");
+                }
                 let status = fs::granbond_bond_store_unpack(
                     ot,
                     input.below(n),
@@ -1996,6 +2027,9 @@ impl<'t> Session<'t> {
                 let mut c = Place::new(fuzzed);
                 let status = fs::granbond_bond_store_restore_counts(ot, c.ptr(input.late_pointer()));
                 ok(self, "granbond_bond_store_restore_counts", status);
+                let mut sums = Place::new(EnergySums::default());
+                let status = fs::granbond_bond_store_restore_energy_sums(ot, sums.ptr(Pointer::Valid));
+                ok(self, "granbond_bond_store_restore_energy_sums", status);
                 fs::granbond_bond_store_free(ot);
                 self.answer_value("granbond_bond_store_free");
             }
@@ -3077,6 +3111,21 @@ impl<'t> Session<'t> {
             // SAFETY: static NUL-terminated storage of the library.
             let got = unsafe { CStr::from_ptr(name) };
             assert_eq!(got.to_str().ok(), Some(BOND_FIELDS[id].name));
+        }
+        // the energy fields, by the same id
+        let count = granbond_bond_energy_field_count();
+        assert_eq!(count, BOND_ENERGY_FIELD_COUNT, "granbond_bond_energy_field_count");
+        self.answer_value("granbond_bond_energy_field_count");
+        // SAFETY: valid outputs.
+        let status = unsafe { granbond_bond_energy_field_info(id, &mut name, &mut unit, &mut description) };
+        if self.answer("granbond_bond_energy_field_info", status) {
+            assert!(
+                id < count,
+                "granbond_bond_energy_field_info: OK for field {id} of {count}"
+            );
+            // SAFETY: static NUL-terminated storage of the library.
+            let got = unsafe { CStr::from_ptr(name) };
+            assert_eq!(got.to_str().ok(), Some(BOND_ENERGY_FIELDS[id].name));
         }
     }
 
