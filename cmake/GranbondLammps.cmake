@@ -38,7 +38,7 @@ endif()
 message(STATUS "granbond: LAMMPS headers from Debian source ${GRANBOND_LAMMPS_DEB_VERSION}")
 
 set(LAMMPS_ADAPTER_DIR "${PROJECT_SOURCE_DIR}/cpp-adapter/lammps")
-set(GRANBOND_LAMMPS_SOURCES ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp ${LAMMPS_ADAPTER_DIR}/pair_coeff.cpp
+set(GRANBOND_LAMMPS_SOURCES ${LAMMPS_ADAPTER_DIR}/pair_granbond.cpp ${LAMMPS_ADAPTER_DIR}/pair_init.cpp ${LAMMPS_ADAPTER_DIR}/pair_coeff.cpp
     ${LAMMPS_ADAPTER_DIR}/bond_watch.cpp ${LAMMPS_ADAPTER_DIR}/pair_restart.cpp ${LAMMPS_ADAPTER_DIR}/pair_bonds.cpp
     ${LAMMPS_ADAPTER_DIR}/bond_store_fix.cpp ${PROJECT_SOURCE_DIR}/cpp-adapter/common/fix_granbond_bonds.cpp
     ${LAMMPS_ADAPTER_DIR}/bond_granbond.cpp ${LAMMPS_ADAPTER_DIR}/bond_topology.cpp

@@ -89,6 +89,10 @@ public:
     GbAtomIds atomIds() const;
 
 private:
+    // the contact history's fix, and the placeholder that keeps its place
+    // in the fix list until init_style makes it
+    static constexpr const char *kFixDummy = "NEIGH_HISTORY_GRANBOND_DUMMY";
+    static constexpr const char *kFix = "NEIGH_HISTORY_GRANBOND";
     void allocate();
     void freeModels();
     void buildModel(int i, int j);
