@@ -2,6 +2,8 @@
 #include "atoms_fix.h"
 #include "bonds_fix.h"
 #include "bond_local.h"
+#include "bond_energy.h"
+#include "bond_nonlinear_cohesion.h"
 #include "core_bridge.h"
 #include "fix_granbond_atoms.h"
 #include "combination_check.h"
@@ -90,6 +92,24 @@ void BondBook::restoreTotals(const double totals[kTotals], bool root)
     // intact bonds are counted afresh; the pair bonds' events come back
     // with their store (fix granbond/bonds)
     for (int k = 0; k < kTotals; k++) restored_[k] = root && k != 0 && k != 1 && k != 2 && k != 5 && k != 6 ? totals[k] : 0.0;
+}
+
+BondNonlinearCohesion *PairBondsUse::need(LAMMPS_NS::LAMMPS *lmp, const char *style) const
+{
+    BondNonlinearCohesion *b = BondBook::of(lmp).pairBonds;
+    if (!b)
+        endRun(lmp->error, FLERR, std::string(style) + " needs pair_style gran with cohesion bond/nonlinear "
+                                                       "(defined before the run)");
+    return b;
+}
+
+void PairBondsUse::follow(LAMMPS_NS::LAMMPS *lmp, BondNonlinearCohesion *model)
+{
+    // a model that is gone (a replaced pair style) has no counter left
+    BondNonlinearCohesion *current = BondBook::of(lmp).pairBonds;
+    if (model_ && model_ == current) (model_->*users_)--;
+    model_ = model;
+    if (model_) (model_->*users_)++;
 }
 
 namespace {
@@ -248,6 +268,7 @@ void registerBondStyles(LAMMPS_NS::LAMMPS *lmp)
     std::map<std::string, FixCreator> *fixes = lmp->modify->*member(FixMapTag());
     if (computes) (*computes)["bond/counter"] = &createCounter;
     if (computes) (*computes)["pair/gran/local/bond"] = &createPairGranLocalBond;
+    if (computes) (*computes)["granbond/energy"] = &createGranbondEnergy;
     if (fixes) (*fixes)["bond/breaklog"] = &createBreakLog;
     if (fixes) (*fixes)[atomsFixStyle()] = &createAtomsFix;
     if (fixes) (*fixes)[bondsFixStyle()] = &createBondsFix;

@@ -87,6 +87,22 @@ private:
     double restored_[kTotals] = {0, 0, 0, 0, 0, 0, 0, 0};
 };
 
+// A compute's hold on the pair style's bond model: it counts itself in one
+// of the model's user counters (`bondOutputUsers`, `energyUsers`), which
+// make the model keep what the compute reads, while it follows the model.
+class PairBondsUse {
+public:
+    explicit PairBondsUse(int BondNonlinearCohesion::*users) : users_(users) {}
+    // The pair style's bond model; ends the run without one, naming `style`.
+    BondNonlinearCohesion *need(LAMMPS_NS::LAMMPS *lmp, const char *style) const;
+    // Follows `model` from now on (null: none).
+    void follow(LAMMPS_NS::LAMMPS *lmp, BondNonlinearCohesion *model);
+
+private:
+    int BondNonlinearCohesion::*users_;
+    BondNonlinearCohesion *model_ = nullptr;
+};
+
 // The warning for bonds dropped with their model (takeDropped).
 std::string droppedMessage(long long dropped);
 

@@ -40,12 +40,12 @@ public:
     }
     ~ComputePairGranLocalBond()
     {
-        listen(0);
+        use_.follow(lmp, 0);
         std::free(data_);
         std::free(pointers_);
     }
 
-    void init() { listen(bonds()); }
+    void init() { use_.follow(lmp, bonds()); }
 
     void compute_local()
     {
@@ -123,26 +123,10 @@ private:
         row[8] = (i < nlocal && j < nlocal) ? 0.0 : (domain->is_periodic_ghost(i) || domain->is_periodic_ghost(j)) ? 1.0 : 0.0;
     }
 
-    BondNonlinearCohesion *bonds()
-    {
-        BondNonlinearCohesion *b = BondBook::of(lmp).pairBonds;
-        if (!b)
-            endRun(error, FLERR, "compute pair/gran/local/bond needs pair_style gran with cohesion bond/nonlinear "
-                                 "(defined before the run)");
-        return b;
-    }
+    BondNonlinearCohesion *bonds() { return use_.need(lmp, "compute pair/gran/local/bond"); }
 
-    // Follows `model` from now on (null: none); the model keeps its bonds'
-    // outputs only while a compute follows it.
-    void listen(BondNonlinearCohesion *model)
-    {
-        BondNonlinearCohesion *current = BondBook::of(lmp).pairBonds;
-        if (model_ && model_ == current) model_->bondOutputUsers--;
-        model_ = model;
-        if (model_) model_->bondOutputUsers++;
-    }
-
-    BondNonlinearCohesion *model_ = 0;
+    // the model keeps its bonds' outputs only while a compute follows it
+    PairBondsUse use_{&BondNonlinearCohesion::bondOutputUsers};
     const bool inl_;   // no keywords: LIGGGHTS-INL's layout
     BondColumns columns_;
     std::vector<double> rows_;

@@ -92,6 +92,13 @@ public:
     bool storeCurrent() const;
     const std::vector<GbBondOutput> &bondOutputs() const { return outputs_; }
     int bondOutputUsers = 0;
+    // The energy budget of this rank's pair bonds (compute granbond/energy,
+    // while `energyUsers` is non-zero; kept from the next run's start):
+    // stored now, dissipated by damping and by hysteresis, released by
+    // breaks (J). Wall bonds keep none.
+    static const int kEnergyTerms = 4;
+    void energyTerms(double out[kEnergyTerms]) const;
+    int energyUsers = 0;
 
 private:
     static bool bondedFlag(const SurfacesCloseData &d) { return d.contact_flags && (*d.contact_flags & kBondedFlag); }

@@ -34,6 +34,21 @@ bool BondNonlinearCohesion::storeCurrent() const
     return passStep_ == update->ntimestep && passAtoms_ == static_cast<bigint>(atom->nlocal) + atom->nghost;
 }
 
+void BondNonlinearCohesion::energyTerms(double out[kEnergyTerms]) const
+{
+    for (int k = 0; k < kEnergyTerms; k++) out[k] = 0.0;
+    GbBondStore *store = bondStore();
+    if (!store) return;
+    const GbAtomArrays arrays = atomArraysOf(atom);
+    GbEnergySums e;
+    if (granbond_bond_store_stored_energy(store, parameters_.table(), kinds_.size(), &arrays, &out[0]) != GB_STATUS_OK ||
+        granbond_bond_store_energy_sums(store, &e) != GB_STATUS_OK)
+        endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: the bonds' energy: " + coreReason());
+    out[1] = e.damping;
+    out[2] = e.hysteresis;
+    out[3] = e.released;
+}
+
 void BondNonlinearCohesion::failPair(int i, int j, const char *what)
 {
     endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: " + std::string(what) + " of atoms " +

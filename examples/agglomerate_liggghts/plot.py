@@ -15,6 +15,8 @@ Writes into OUT_DIR:
   fragments.csv       one row per fragment: size
   post/vtk/           the bond network (bonds.pvd, breaks.pvd) of post/network.dump
   network.png         that network at three steps, seen from the side
+  budget.png          kinetic energy and the bonds' energy budget
+                      (post/energy.txt) stacked over time
 Analysis only (counting and graph components): no physics here.
 """
 
@@ -219,6 +221,19 @@ def main(out):
     for name in ("broken_bonds.png", "fragment_sizes.png", "fragments.png", "fragments.vtk"):
         print(f"wrote {os.path.join(out, name)}")
     network(out)
+    budget(out)
+
+
+def budget(out):
+    """The bonds' energy budget of post/energy.txt stacked over time with
+    the kinetic energy (budget.png, the LAMMPS example's plot_budget.py)."""
+    source = os.path.join(out, "post", "energy.txt")
+    if not os.path.exists(source):
+        return
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lammps_agglomerate", "plot_budget.py")
+    subprocess.run([sys.executable, script, source, os.path.join(out, "budget.png"),
+                    "LIGGGHTS cohesion bond/nonlinear: the bonds' energy budget, ball into a wall at 3 m/s"],
+                   check=True)
 
 
 def network(out):

@@ -6,7 +6,8 @@ dissipated by damping and by hysteresis and released by breaking, stacked;
 the rest of the first output's total is what the contacts and the wall
 hold or dissipated, which the bonds' budget does not count.
 
-usage: plot_budget.py energy.txt budget.png
+usage: plot_budget.py energy.txt budget.png [TITLE]
+(examples/agglomerate_liggghts/plot.py draws LIGGGHTS's with its own title)
 """
 import sys
 
@@ -16,7 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def main(source, target):
+def main(source, target, title="LAMMPS pair granbond: the bonds' energy budget, ball into a wall at 3 m/s"):
     rows = [list(map(float, line.split())) for line in open(source) if line.strip() and not line.startswith("#")]
     time = [r[1] * 1e3 for r in rows]
     names = ["kinetic (translation)", "kinetic (rotation)", "stored in bonds", "dissipated by damping",
@@ -30,7 +31,7 @@ def main(source, target):
     ax.set_xlabel("time (ms)")
     ax.set_ylabel("energy (mJ)")
     ax.set_xlim(time[0], time[-1])
-    ax.set_title("LAMMPS pair granbond: the bonds' energy budget, ball into a wall at 3 m/s")
+    ax.set_title(title)
     ax.legend(loc="lower left", fontsize=8)
     fig.tight_layout()
     fig.savefig(target, dpi=120)
@@ -41,6 +42,6 @@ def main(source, target):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    main(*sys.argv[1:])
