@@ -117,11 +117,14 @@ bool BondNonlinearCohesion::keepsTangentialFor(int itype, int jtype) const
 void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
 {
     parameters_.connectToProperties(registry);
-    keepsTangential_ = false;
+    keepsTangential_ = keepsLoads_ = false;
     const int n = parameters_.ntypes();
     for (int a = 1; a <= n; a++)
-        for (int b = 1; b <= n; b++)
+        for (int b = 1; b <= n; b++) {
             if (keepsTangentialFor(a, b)) keepsTangential_ = true;
+            const GbBondModel *m = parameters_.model(a, b);
+            if (m && granbond_bond_keeps_contact_loads(m)) keepsLoads_ = true;
+        }
     // `bonded yes` stores a clump id per atom under this name (LIGGGHTS-INL
     // looks for "bondnonlinear_random_id", which no fix creates)
     clumpIds_ = isWall_ ? 0

@@ -119,6 +119,7 @@ private:
     // granbond_bond_keeps_contact_loads: LIGGGHTS-INL's linear bond).
     bool keepsContactLoads(int itype, int jtype) const
     {
+        if (!keepsLoads_) return false;
         const GbBondModel *m = parameters_.model(itype, jtype);
         return m && granbond_bond_keeps_contact_loads(m) != 0;
     }
@@ -168,6 +169,7 @@ private:
 
     BondNonlinearParameters parameters_;
     bool keepsTangential_;      // some type pair's model keeps the contact's tangential loads
+    bool keepsLoads_ = false;   // ... keeps all the contact's loads (keepsContactLoads)
     const bool isWall_;
     int offset_;        // walls: core state slots
     int outputOffset_;  // walls: last output (GB_STATE_KIND_BOND_OUTPUT slots)
