@@ -1,5 +1,6 @@
 #include "bond_store_fix.h"
 #include "core_message.h"
+#include "error_line.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -10,7 +11,6 @@
 #include "modify.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -34,12 +34,7 @@ struct InputCommand : Input {
 
 void endRun(LAMMPS *lmp, const std::string &message)
 {
-    FILE *streams[2] = {lmp->screen, lmp->logfile};
-    for (FILE *s : streams)
-        if (s) {
-            fprintf(s, "ERROR on proc %d: %s\n", lmp->comm->me, message.c_str());
-            fflush(s);
-        }
+    flushErrorLine(lmp, message);
     lmp->error->one(FLERR, message);
     std::abort();   // not reached
 }

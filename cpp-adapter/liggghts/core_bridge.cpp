@@ -1,5 +1,6 @@
 #include "core_bridge.h"
 #include "core_message.h"
+#include "error_line.h"
 
 #include <cstdio>
 #include <string>
@@ -39,14 +40,7 @@ void endRun(LAMMPS_NS::Error *error, const char *file, int line, const std::stri
 void endRunOnThisRank(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &message)
 {
     lastMessage() = message;
-    // error->one aborts MPI without flushing, so a redirected screen or log
-    // would lose the message: write and flush it first
-    FILE *streams[2] = {lmp->screen, lmp->logfile};
-    for (FILE *s : streams)
-        if (s) {
-            fprintf(s, "ERROR on proc %d: %s (%s:%d)\n", lmp->comm->me, message.c_str(), file, line);
-            fflush(s);
-        }
+    flushErrorLine(lmp, message + " (" + file + ":" + std::to_string(line) + ")");
     lmp->error->one(file, line, lastMessage().c_str());
 }
 
