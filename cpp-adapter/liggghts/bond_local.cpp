@@ -41,11 +41,16 @@ public:
     ~ComputePairGranLocalBond()
     {
         use_.follow(lmp, 0);
+        energyUse_.follow(lmp, 0);
         std::free(data_);
         std::free(pointers_);
     }
 
-    void init() { use_.follow(lmp, bonds()); }
+    void init()
+    {
+        use_.follow(lmp, bonds());
+        if (columns_.wantsEnergy()) energyUse_.follow(lmp, bonds());
+    }
 
     void compute_local()
     {
@@ -65,6 +70,8 @@ public:
         // the latest force pass
         double record[GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN];
         const std::vector<GbBondOutput> &outs = model->bondOutputs();
+        const bool energies = store && columns_.wantsEnergy();
+        std::vector<double> energy(granbond_bond_energy_field_count(), 0.0);
         for (size_t k = 0; k < n; k++) {
             int32_t ends[2];
             int64_t partner = 0;
@@ -78,9 +85,10 @@ public:
             const GbBondModel *m = model->model(atom->type[i], atom->type[j]);
             if (inl_) inlHead(i, j, row.data());
             if (tail) std::copy(record, record + tail, row.data() + head + columns_.size());
+            if (energies) model->bondEnergy(k, energy.data());
             if (!m || granbond_bond_output_store(&o, record + GRANBOND_BOND_STATE_LEN) != GB_STATUS_OK ||
                 columns_.row(m, 0, record, static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
-                             atom->x[i], atom->x[j], row.data() + head) != GB_STATUS_OK)
+                             atom->x[i], atom->x[j], row.data() + head, energy.data()) != GB_STATUS_OK)
                 endRunOnThisRank(lmp, FLERR,
                                  "compute pair/gran/local/bond: atoms " +
                                      std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
@@ -125,10 +133,12 @@ private:
 
     BondNonlinearCohesion *bonds() { return use_.need(lmp, "compute pair/gran/local/bond"); }
 
-    // the model keeps its bonds' outputs only while a compute follows it
+    // the model keeps its bonds' outputs only while a compute follows it,
+    // and each bond's energies only while one asks for them
     PairBondsUse use_{&BondNonlinearCohesion::bondOutputUsers};
+    PairBondsUse energyUse_{&BondNonlinearCohesion::energyOutputUsers};
     const bool inl_;   // no keywords: LIGGGHTS-INL's layout
-    BondColumns columns_;
+    BondColumns columns_{true};
     std::vector<double> rows_;
     double *data_;
     double **pointers_;

@@ -200,8 +200,10 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
     if (!passing_) return;
     if (update->setupflag || linkedAt_ != neighbor->ncalls) linkBonds();
     GbBondStore *store = bonds_->store();
-    // the budget is kept from a run's start while a compute asks for it
-    if (update->setupflag && granbond_bond_store_keep_energy_budget(store, energyUsers > 0, 0) != GB_STATUS_OK)
+    // the budget is kept from a run's start while a compute asks for it,
+    // each bond's share while a per-bond output does
+    if (update->setupflag && granbond_bond_store_keep_energy_budget(store, energyUsers > 0 || energyOutputUsers > 0,
+                                                                   energyOutputUsers > 0) != GB_STATUS_OK)
         endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: " + coreReason());
     // a creation step ahead: pairs whose bonds break are kept from it
     bool remember = false, creates = false;

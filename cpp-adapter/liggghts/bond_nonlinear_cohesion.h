@@ -99,6 +99,12 @@ public:
     static const int kEnergyTerms = 4;
     void energyTerms(double out[kEnergyTerms]) const;
     int energyUsers = 0;
+    // Bond `k`'s energies in the store's order (stored, dissipated by damping
+    // and by hysteresis: granbond_bond_energy_field_info), kept while
+    // `energyOutputUsers` (compute pair/gran/local/bond asking for them) is
+    // non-zero; kept from the next run's start.
+    void bondEnergy(size_t k, double *out) const;
+    int energyOutputUsers = 0;
 
 private:
     static bool bondedFlag(const SurfacesCloseData &d) { return d.contact_flags && (*d.contact_flags & kBondedFlag); }

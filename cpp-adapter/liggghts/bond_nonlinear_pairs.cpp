@@ -49,6 +49,13 @@ void BondNonlinearCohesion::energyTerms(double out[kEnergyTerms]) const
     out[3] = e.released;
 }
 
+void BondNonlinearCohesion::bondEnergy(size_t k, double *out) const
+{
+    const GbAtomArrays arrays = atomArraysOf(atom);
+    if (granbond_bond_store_bond_energy(bondStore(), parameters_.table(), kinds_.size(), &arrays, k, out) != GB_STATUS_OK)
+        endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: a bond's energy: " + coreReason());
+}
+
 void BondNonlinearCohesion::failPair(int i, int j, const char *what)
 {
     endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: " + std::string(what) + " of atoms " +

@@ -387,20 +387,22 @@ fn a_migrating_bond_takes_its_share_of_the_budget_along() {
     let mut buf = vec![0.0; store.packed_len(centre)];
     let written = store.pack(centre, true, &mut buf).expect("room");
     assert_eq!(packed_len_in(&buf[..3]), Ok(written), "the head says the length");
-    for (kept, per_bond) in [(true, true), (false, false)] {
+    // a store that keeps the budget (migration), and one that does not yet
+    // (a restart file read before the run's start says whether it is kept)
+    for kept in [true, false] {
         let mut other = BondStore::new();
-        other.keep_energy_budget(kept, per_bond);
+        other.keep_energy_budget(kept, kept);
         assert_eq!(other.unpack(0, &buf[..written]), Ok(written));
         let mut arrived: Vec<Option<[f64; 2]>> = (0..other.len()).map(|k| other.dissipated(k)).collect();
-        if per_bond {
-            // in any order: the owner's list is its own
-            let mut want: Vec<Option<[f64; 2]>> = owned.iter().copied().map(Some).collect();
-            let by = |d: &Option<[f64; 2]>| d.map(|d| d[0].to_bits());
-            want.sort_by_key(by);
-            arrived.sort_by_key(by);
-            assert_eq!(arrived, want);
-        } else {
-            assert!(arrived.iter().all(Option::is_none));
-        }
+        // in any order: the owner's list is its own
+        let mut want: Vec<Option<[f64; 2]>> = owned.iter().copied().map(Some).collect();
+        let by = |d: &Option<[f64; 2]>| d.map(|d| d[0].to_bits());
+        want.sort_by_key(by);
+        arrived.sort_by_key(by);
+        assert_eq!(arrived, want, "kept before: {kept}");
+        // a run that does not ask for the budget drops it
+        other.keep_energy_budget(false, false);
+        assert!((0..other.len()).all(|k| other.dissipated(k).is_none()));
+        assert_eq!(other.energy_budget_kept(), (false, false));
     }
 }

@@ -31,7 +31,11 @@ fn reference_pages_list_the_cores_fields() {
     let tables = PAGES
         .iter()
         .map(|&page| (page, BEGIN, END, table(&BOND_FIELDS)))
-        .chain([(PAGES[0], ENERGY_BEGIN, ENERGY_END, table(&BOND_ENERGY_FIELDS))]);
+        .chain(
+            PAGES
+                .iter()
+                .map(|&page| (page, ENERGY_BEGIN, ENERGY_END, table(&BOND_ENERGY_FIELDS))),
+        );
     for (page, begin, end, want) in tables {
         let path = root.join(page);
         let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{page}: {e}"));

@@ -62,6 +62,7 @@ usage: check_bond_home.py --mode MODE --kind lammps|liggghts --engine BIN
                           [--mpiexec MPIEXEC] --workdir DIR
 """
 
+import math
 import os
 import sys
 
@@ -235,13 +236,23 @@ def budget_drift(text):
     return total, max(abs(t - total[0]) for t in total) / total[0]
 
 
-def check_bond_energies(text, n):
-    cols = [thermo_column(text, c) for c in ("c_pg[2]", "PotEng", "c_pg[9]", "c_pg[10]", "c_bs[1]", "c_bs[2]",
-                                             "c_bs[3]")]
+# The columns of the budget decks: broken bonds, stored energy, dissipated by
+# damping and by hysteresis, then the sums of the intact bonds' own three.
+BOND_ENERGY_COLUMNS = {
+    "lammps": ("c_pg[2]", "PotEng", "c_pg[9]", "c_pg[10]", "c_bs[1]", "c_bs[2]", "c_bs[3]"),
+    "liggghts": ("c_bc[2]", "c_en[1]", "c_en[2]", "c_en[3]", "c_bs[1]", "c_bs[2]", "c_bs[3]"),
+}
+
+
+def check_bond_energies(text, n, kind="lammps", stored_tolerance=1e-9):
+    cols = [thermo_column(text, c) for c in BOND_ENERGY_COLUMNS[kind]]
+    if not cols[0]:
+        raise Failure(f"{n} ranks: no thermo output")
     before_breaks = 0
     for broken, pe, damping, hysteresis, stored, own_damping, own_hysteresis in zip(*cols):
-        if abs(stored - pe) > 1e-9 * max(abs(pe), 1e-30):
-            raise Failure(f"{n} ranks: the bonds' own stored energies add up to {stored:.17g}, pe is {pe:.17g}")
+        if abs(stored - pe) > stored_tolerance * max(abs(pe), 1e-30):
+            raise Failure(f"{n} ranks: the bonds' own stored energies add up to {stored:.17g}, the budget's stored "
+                          f"energy is {pe:.17g}")
         for own, term, name in ((own_damping, damping, "damping"), (own_hysteresis, hysteresis, "hysteresis")):
             scale = 1e-9 * max(abs(term), 1e-30)
             if (broken == 0 and abs(own - term) > scale) or own > term + scale:
@@ -252,13 +263,131 @@ def check_bond_energies(text, n):
         raise Failure(f"{n} ranks: no output between the first damping and the first break")
 
 
+def state_slots():
+    """The bond state's slot names in the core's order, from the table of
+    docs/models/bond-nonlinear.md ("Bond state")."""
+    path = os.path.join(HERE, "..", "..", "docs", "models", "bond-nonlinear.md")
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    table = text[text.index("## Bond state"):text.index("## Time step")]
+    slots = []
+    for line in table.splitlines():
+        if not line.startswith("| `"):
+            continue
+        for name in line.split("|")[1].replace("`", "").split(","):
+            name = name.strip()
+            if name.endswith("_x/y/z"):
+                slots += [name[:-5] + c for c in "xyz"]
+            else:
+                slots.append(name)
+    return slots
+
+
+def bond_dump_deck(workdir, every):
+    """A deck fragment that dumps each intact bond's r0, r, stored energy and
+    state with 17 digits every `every` steps to bonds.dump; returns its path."""
+    os.makedirs(workdir, exist_ok=True)
+    ncol = 3 + len(state_slots())
+    path = os.path.join(workdir, "bond_dump.inc")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("compute bd all pair/gran/local/bond r0 r energy_stored state\n"
+                f"dump bonds all local {every} bonds.dump " + " ".join(f"c_bd[{k}]" for k in range(1, ncol + 1)) +
+                "\n" + 'dump_modify bonds format "' + " ".join(["%.17g"] * ncol) + '"\n')
+    return path
+
+
+# The elastic block's bond (free_body_budget_liggghts.in, elastic 1): spheres
+# of 1 mm radius, lambda 0.5, and its stiffnesses per unit area.
+ELASTIC_BOND = {"rb": 0.5e-3, "k_fn1": 2e7, "k_fn2": 2e9, "eps": 1e-4, "k_ft": 4e8, "k_tn": 8e8, "k_tt": 8e8}
+
+
+def loading_curve_energy(r0, r, state):
+    """The energy an elastic bond (ku = k, kc = 0) of ELASTIC_BOND stores for
+    its state: each law's loading curve integrated from zero deformation
+    (docs/models/bond-nonlinear.md, "Energy"; the core's elastic_energy)."""
+    p = ELASTIC_BOND
+    area = math.pi * p["rb"] ** 2
+    polar = area * p["rb"] ** 2 / 2
+    inertia = polar / 2
+    d = r0 - r
+    if d < 0:
+        normal = p["k_fn2"] * area * d * d / 2
+    elif d < p["eps"]:
+        normal = p["k_fn1"] * area * d * d / (2 * math.sqrt(p["eps"]))
+    else:
+        normal = p["k_fn1"] * area * (2 / 3 * d ** 1.5 - p["eps"] ** 1.5 / 6)
+    norm2 = lambda name: sum(state[name + c] ** 2 for c in "xyz")  # noqa: E731
+    return (normal + norm2("shear_force_") / (2 * p["k_ft"] * area) + p["k_tn"] * polar * norm2("twist_angle_") / 2
+            + p["k_tt"] * inertia * norm2("bend_angle_") / 2)
+
+
+def check_stored_is_loading_curve(dump):
+    """Each elastic bond's stored energy (energy_stored) is its loading
+    curves' energy for its state, bond by bond, at every dumped step."""
+    slots = state_slots()
+    rows = worst = 0
+    parts = set()
+    with open(dump, encoding="utf-8") as f:
+        lines = f.read().splitlines()
+    at = 0
+    while at < len(lines):
+        if not lines[at].startswith("ITEM: NUMBER OF ENTRIES"):
+            at += 1
+            continue
+        count = int(lines[at + 1])
+        while not lines[at].startswith("ITEM: ENTRIES"):
+            at += 1
+        for line in lines[at + 1:at + 1 + count]:
+            values = [float(v) for v in line.split()]
+            r0, r, stored = values[:3]
+            state = dict(zip(slots, values[3:]))
+            want = loading_curve_energy(r0, r, state)
+            scale = max(abs(want), 1e-30)
+            worst = max(worst, abs(stored - want) / scale)
+            if abs(stored - want) > 1e-9 * scale:
+                raise Failure(f"bonds.dump: a bond (r0 {r0:.17g}, r {r:.17g}) stores {stored:.17g} J, its loading "
+                              f"curves {want:.17g} J")
+            parts.update(name for name in ("shear_force_x", "twist_angle_x", "bend_angle_x") if state[name] != 0)
+            parts.add("tension" if r > r0 else "compression")
+            rows += 1
+        at += 1 + count
+    if rows == 0 or len(parts) < 5:
+        raise Failure(f"bonds.dump: {rows} rows, deformed in {sorted(parts)} only")
+    print(f"ok: elastic block: each of {rows} bond rows stores its loading curves' energy for its state (within "
+          f"{worst:.2g} of it; {', '.join(sorted(parts))})")
+
+
+def check_liggghts_restart_budget(a, n, workdir):
+    """The bonds that do not break, half the run, a restart file, the other
+    half: after the restart as before it, the intact bonds' own energies add
+    up to the budget's, which goes on through the file."""
+    d = os.path.join(workdir, f"np{n}-restart")
+    first = run(a, n, "free_body_budget_liggghts.in", d, {"stage": "2", "unbroken": "1"})
+    second = run(a, n, "free_body_budget_liggghts.in", d, {"stage": "3", "unbroken": "1"})
+    for label, text in (("before", first), ("after", second)):
+        if thermo_column(text, "c_bc[2]")[-1] != 0:
+            raise Failure(f"{n} ranks, {label} the restart file: bonds broke")
+        check_bond_energies(text, n, "liggghts", 1e-13)
+    damping = thermo_column(second, "c_en[2]")
+    if not damping[0] >= thermo_column(first, "c_en[2]")[-1] > 0:
+        raise Failure(f"{n} ranks: the damping's energy was {thermo_column(first, 'c_en[2]')[-1]:.17g} J at the "
+                      f"restart file, {damping[0]:.17g} J after it")
+    print(f"ok: {n} ranks, through a restart file: the intact bonds' own energies add up to the budget's before and "
+          f"after it (damping {damping[-1]:.4g} J at the end)")
+
+
 def check_budget(a, workdir):
     liggghts = a.kind == "liggghts"
     # LIGGGHTS: its counter is compute bond/counter, the budget compute granbond/energy
     deck = "free_body_budget_liggghts.in" if liggghts else "free_body_budget.in"
     counts = ("c_bc[1]", "c_bc[2]") if liggghts else ("c_pg[1]", "c_pg[2]")
     terms = ("c_en[2]", "c_en[3]", "c_en[4]") if liggghts else ("c_pg[9]", "c_pg[10]", "c_pg[11]")
-    elastic = run(a, 1, deck, os.path.join(workdir, "elastic"), {"elastic": "1"})
+    elastic_dir = os.path.join(workdir, "elastic")
+    if liggghts:
+        elastic = run(a, 1, deck, elastic_dir, {"elastic": "1", "dumpdeck": bond_dump_deck(elastic_dir, 500)})
+        check_stored_is_loading_curve(os.path.join(elastic_dir, "bonds.dump"))
+    else:
+        elastic = run(a, 1, deck, elastic_dir, {"elastic": "1"})
     _, integrator = budget_drift(elastic)
     # the yardstick itself: elastic bonds conserve kinetic + stored energy
     if integrator > 1e-5:
@@ -275,12 +404,14 @@ def check_budget(a, workdir):
         if drift > 2 * integrator:
             raise Failure(f"{n} ranks: the budget moved by {drift:.3g} of itself, kinetic + stored energy of the "
                           f"elastic block by {integrator:.3g}")
-        if not liggghts:
-            check_bond_energies(text, n)
+        # LIGGGHTS: the same numbers summed in the same order on each rank
+        check_bond_energies(text, n, a.kind, 1e-13 if liggghts else 1e-9)
         print(f"ok: {n} ranks: {broken:g} of {created:g} bonds broke; damping {shares['damping']:.3f}, hysteresis "
               f"{shares['hysteresis']:.3f}, released {shares['released']:.3f} of the budget, which moved by "
-              f"{drift:.2g} of itself (elastic block: {integrator:.2g})")
+              f"{drift:.2g} of itself (elastic block: {integrator:.2g}); the intact bonds' own energies add up to "
+              f"the budget's")
         if liggghts:
+            check_liggghts_restart_budget(a, n, workdir)
             continue
         # half the run, a restart file, the other half: the sums come back
         text = run(a, n, "free_body_budget.in", os.path.join(workdir, f"np{n}-restart"), {"restart": "1"})

@@ -147,12 +147,12 @@ pub const BOND_ENERGY_FIELDS: [BondField; BOND_ENERGY_FIELD_COUNT] = [
     field(
         "energy_damping",
         "J",
-        "energy the bond's damping dissipated since the store kept it (the run that asked for it)",
+        "energy the bond's damping dissipated since it first kept its budget (restart files carry it)",
     ),
     field(
         "energy_hysteresis",
         "J",
-        "energy the bond's hysteresis dissipated since the store kept it",
+        "energy the bond's hysteresis dissipated since it first kept its budget",
     ),
 ];
 

@@ -4,7 +4,7 @@
 //! restart files). The bonds move with their owner atom; the store keeps
 //! them keyed by ids, so the link after the event finds them again.
 
-use super::budget::packed_extras;
+use super::budget::{packed_extras, DAMPING_LOADS_LEN};
 use super::{BondStore, StoredBond, NONE, PACKED_PER_BOND};
 use crate::bond::{BondState, BondStatus, BOND_STATE_LEN};
 
@@ -246,6 +246,14 @@ impl BondStore {
         for b in 0..count {
             let at = head + b * per_bond;
             whole(buf[at], "partner id")?;
+        }
+        // bonds that carry the budget's extras (a restart file's, written
+        // while the budget was kept) keep them until the run's start says
+        // whether the budget is kept, so a bond's dissipated energies go on
+        // through a restart file as the sums do
+        let carried = per_bond - PACKED_PER_BOND;
+        if count > 0 && carried > 0 && self.budget.is_none() {
+            self.keep_energy_budget(true, carried > DAMPING_LOADS_LEN);
         }
         self.grow(i + 1);
         self.seen[i] = seen;
