@@ -38,7 +38,12 @@ per mode (LAMMPS unless said):
              the dissipated terms until the first break (after it, to less).
              The same through a restart file half way. LIGGGHTS: the same
              block (cohesion bond/nonlinear, compute granbond/energy), on 1
-             and 2 ranks.
+             and 2 ranks, the intact bonds' own energies (compute
+             pair/gran/local/bond) adding up likewise (the stored energy
+             exactly); with bonds that do not break, they add up to the
+             budget's at every output before and after a restart file half
+             way; and each elastic bond stores its loading curves' energy
+             for its state (dumped every 500 steps).
   momentum   a bonded block in free flight, spinning, its bonds breaking, a
              sphere inserted far away between two runs (LIGGGHTS: by fix
              insert/rate/region during the run, frictionless Hertz
