@@ -247,6 +247,15 @@ void BondStoreFix::returnGhostLoads()
 #endif
 }
 
+void BondStoreFix::returnGhostShares(double *table, int width, int column)
+{
+    sharesTable_ = table;
+    sharesWidth_ = width;
+    sharesColumn_ = column;
+    returnGhostLoads();
+    sharesTable_ = nullptr;
+}
+
 int BondStoreFix::pack_reverse_comm(int n, int first, double *buf)
 {
     const int nlocal = atom->nlocal;
@@ -268,7 +277,10 @@ void BondStoreFix::unpack_reverse_comm(int n, int *list, double *buf)
     for (int k = 0; k < n; k++) {
         const int i = list[k];
         const double *b = buf + 6 * k;
-        if (i < nlocal) {
+        if (i < nlocal && sharesTable_) {
+            double *row = sharesTable_ + static_cast<size_t>(i) * sharesWidth_ + sharesColumn_;
+            for (int c = 0; c < 6; c++) row[c] += b[c];
+        } else if (i < nlocal) {
             for (int c = 0; c < 3; c++) {
                 f[i][c] += b[c];
                 torque[i][c] += b[3 + c];

@@ -86,6 +86,10 @@ public:
     // Collective; for newton off, where the engine leaves ghost forces.
     void returnGhostLoads();
     double *ghostLoads();
+    // The same buffer's 6 doubles a ghost added instead to the owners' rows
+    // of a per-atom `table` (`width` doubles an atom, from `column`): the
+    // atoms' shares of their bonds' damping loads. Collective.
+    void returnGhostShares(double *table, int width, int column);
     // Counts of this rank; a restart file brings back the sums on rank 0.
     GbStoreCounts counts() const;
     // The room one atom's bonds take in exchange and restart buffers, over
@@ -109,6 +113,8 @@ private:
 
     GbBondStore *store_;
     std::vector<double> ghostLoads_;
+    double *sharesTable_ = nullptr;   // returnGhostShares' table while it runs
+    int sharesWidth_ = 0, sharesColumn_ = 0;
     std::vector<double> row_;   // one atom's whole view row, while paged
     int viewWidth_;             // doubles the widest view row takes, this exchange
     int page_;                  // the page in flight

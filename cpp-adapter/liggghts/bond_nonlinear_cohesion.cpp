@@ -200,10 +200,17 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
     if (!passing_) return;
     if (update->setupflag || linkedAt_ != neighbor->ncalls) linkBonds();
     GbBondStore *store = bonds_->store();
-    // the budget is kept from a run's start while a compute asks for it,
-    // each bond's share while a per-bond output does
-    if (update->setupflag && granbond_bond_store_keep_energy_budget(store, energyUsers > 0 || energyOutputUsers > 0,
-                                                                   energyOutputUsers > 0) != GB_STATUS_OK)
+    // computeDissipatedEnergy on: the engine's surface model made the
+    // per-atom table (INL's: the energy, then force and torque sums)
+    if (update->setupflag)
+        dissipated_ = static_cast<LAMMPS_NS::FixPropertyAtom *>(modify->find_fix_property(
+            "dissipated_energy", "property/atom", "vector", 7, 0, "cohesion bond/nonlinear", false));
+    // the budget is kept from a run's start while a compute asks for it
+    // (the damping loads also for computeDissipatedEnergy), each bond's
+    // share while a per-bond output does
+    if (update->setupflag &&
+        granbond_bond_store_keep_energy_budget(store, energyUsers > 0 || energyOutputUsers > 0 || dissipated_,
+                                               energyOutputUsers > 0) != GB_STATUS_OK)
         endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: " + coreReason());
     // a creation step ahead: pairs whose bonds break are kept from it
     bool remember = false, creates = false;

@@ -105,6 +105,12 @@ public:
     // non-zero; kept from the next run's start.
     void bondEnergy(size_t k, double *out) const;
     int energyOutputUsers = 0;
+    // computeDissipatedEnergy on (LIGGGHTS-INL's switch; the engine's
+    // surface model then holds the per-atom `dissipated_energy`): after
+    // each force pass every atom's row gets minus the damping loads its
+    // bonds put on it, in columns 2-7, as INL's linear bond files them
+    // (granbond_bond_store_add_dissipated_shares).
+    void addDissipatedShares();
 
 private:
     static bool bondedFlag(const SurfacesCloseData &d) { return d.contact_flags && (*d.contact_flags & kBondedFlag); }
@@ -207,6 +213,8 @@ private:
     bigint passAtoms_;
     bool checkStore_;             // GRANBOND_CHECK_STORE: recount the bonds after each pass
     bool warnedLost_;             // bonds lost without breaking were told (once)
+    LAMMPS_NS::FixPropertyAtom *dissipated_ = nullptr;   // computeDissipatedEnergy's per-atom table, or null
+    std::vector<double> shares_;  // this pass's shares, local then ghost atoms (6 doubles an atom)
 };
 
 }

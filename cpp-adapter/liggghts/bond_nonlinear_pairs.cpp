@@ -56,6 +56,23 @@ void BondNonlinearCohesion::bondEnergy(size_t k, double *out) const
         endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: a bond's energy: " + coreReason());
 }
 
+void BondNonlinearCohesion::addDissipatedShares()
+{
+    const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+    shares_.assign(6 * static_cast<size_t>(nall), 0.0);
+    if (granbond_bond_store_add_dissipated_shares(bonds_->store(), parameters_.table(), kinds_.size(), shares_.data(),
+                                                  static_cast<size_t>(nall), 6, 0) != GB_STATUS_OK)
+        endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: computeDissipatedEnergy: " + coreReason());
+    double **table = dissipated_->array_atom;
+    for (int i = 0; i < nlocal; i++)
+        for (int c = 0; c < 6; c++) table[i][1 + c] += shares_[6 * static_cast<size_t>(i) + c];
+    // a bond's partner on another rank (or a periodic image) gets its
+    // share at its owner, through the store's fix
+    double *ghosts = bonds_->ghostLoads();
+    std::copy(shares_.begin() + 6 * static_cast<size_t>(nlocal), shares_.end(), ghosts);
+    bonds_->returnGhostShares(nlocal > 0 ? table[0] : nullptr, 7, 1);
+}
+
 void BondNonlinearCohesion::failPair(int i, int j, const char *what)
 {
     endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: " + std::string(what) + " of atoms " +
@@ -242,6 +259,7 @@ void BondNonlinearCohesion::finishPairPass()
 {
     stepBonds(advance_);
     bonds_->finishPass(formedThisPass_, !force->newton_pair, bondOutputUsers > 0 && advance_ ? &outputs_ : nullptr);
+    if (advance_ && dissipated_) addDissipatedShares();
     formedThisPass_ = false;
     countPairs();
     if (checkStore_) checkStore();

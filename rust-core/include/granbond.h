@@ -16,6 +16,12 @@
 #define MAX_REACH_DIAMETERS 10.0
 
 /**
+ * Doubles of one atom's share: minus the damping force on it, then minus
+ * the damping torque on it.
+ */
+#define SHARE_LEN 6
+
+/**
  * Number of fields of [`BOND_FIELDS`].
  */
 #define BOND_FIELD_COUNT 38
@@ -105,7 +111,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 19
+#define GRANBOND_ABI_VERSION 20
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -2794,6 +2800,29 @@ enum GbStatus granbond_bond_store_energy_sums(const struct GbBondStore *store,
  */
 enum GbStatus granbond_bond_store_restore_energy_sums(struct GbBondStore *store,
                                                       const struct GbEnergySums *sums);
+
+/**
+ * Adds each intact bond's shares of its damping loads of the latest force
+ * pass to a per-atom table, as LIGGGHTS-INL's `computeDissipatedEnergy`
+ * files them (minus the damping force, then minus the damping torque, on
+ * each of the bond's atoms; `crate::bond::dissipated_shares`): `table`
+ * holds `rows` atoms (the engine's local atoms, in its order) of `width`
+ * doubles, the 6 doubles of a share from column `column`. Bonds of a kind
+ * without a model (`models[kind]` null) or whose law files none add
+ * nothing. Needs the energy budget kept (`granbond_bond_store_keep_energy_budget`),
+ * which holds the loads, and the store linked.
+ *
+ * # Safety
+ * Pointers must be null or valid: `models` for `nkinds` entries, `table`
+ * for `rows * width` doubles.
+ */
+enum GbStatus granbond_bond_store_add_dissipated_shares(const struct GbBondStore *store,
+                                                        const struct GbBondModel *const *models,
+                                                        size_t nkinds,
+                                                        double *table,
+                                                        size_t rows,
+                                                        size_t width,
+                                                        size_t column);
 
 /**
  * Bond `k`'s energies as of the latest link (J), written to `energy`

@@ -406,3 +406,66 @@ fn a_migrating_bond_takes_its_share_of_the_budget_along() {
         assert_eq!(other.energy_budget_kept(), (false, false));
     }
 }
+
+/// The atoms' shares of their bonds' damping loads (LIGGGHTS-INL's
+/// `computeDissipatedEnergy` columns): each atom's is minus the damping
+/// force and torque it feels, the loads of the damped pass less those of
+/// the same pass undamped, atom by atom; INL's bond/nonlinear files none.
+#[test]
+fn each_atom_takes_minus_the_damping_loads_it_feels() {
+    let damped = BondParams {
+        create_distance: 2.2 * R,
+        create_step: 1,
+        max_distance: 4.0 * R,
+        ..hysteretic_damped_breaking()
+    };
+    let undamped = BondParams { damping: 0, ..damped };
+    let (md, mu) = (common::model(damped), common::model(undamped));
+    let mut c = Cluster::block(3, 2.05 * R, 0.2, 40.0);
+    let mut u = Cluster::block(3, 2.05 * R, 0.2, 40.0);
+    let (mut sd, mut su) = (BondStore::new(), BondStore::new());
+    sd.grow(c.ids.len());
+    su.grow(u.ids.len());
+    sd.keep_energy_budget(true, false);
+    c.pass(&mut sd, &md, 1e-8, true);
+    u.pass(&mut su, &mu, 1e-8, true);
+    // the same motion for both: the damping changes the loads, not the state
+    for _ in 0..20 {
+        for k in 0..c.x.len() {
+            c.x[k] += 1e-8 * c.v[k];
+            u.x[k] = c.x[k];
+        }
+        c.pass(&mut sd, &md, 1e-8, false);
+        u.pass(&mut su, &mu, 1e-8, false);
+    }
+    let n = c.ids.len();
+    let mut table = vec![0.0; 7 * n];
+    sd.add_dissipated_shares(&[Some(&md)], &mut table, 7, 1, n)
+        .expect("kept and linked");
+    let (mut worst, mut largest) = (0.0f64, 0.0f64);
+    for a in 0..n {
+        assert_eq!(table[7 * a], 0.0, "column 0 is not a share");
+        for q in 0..3 {
+            let force = c.force[3 * a + q] - u.force[3 * a + q];
+            let torque = c.torque[3 * a + q] - u.torque[3 * a + q];
+            worst = worst
+                .max((table[7 * a + 1 + q] + force).abs())
+                .max((table[7 * a + 4 + q] + torque).abs());
+            largest = largest.max(force.abs() * R).max(torque.abs());
+        }
+    }
+    assert!(largest > 0.0, "the damping acted");
+    assert!(worst <= 1e-12 * largest / R, "off by {worst:.3e}, damping loads up to {largest:.3e}");
+    // LIGGGHTS-INL's bond/nonlinear files none
+    let inl = common::model(BondParams { inl_compatible: 1, ..damped });
+    let mut si = BondStore::new();
+    si.grow(n);
+    si.keep_energy_budget(true, false);
+    let mut ci = Cluster::block(3, 2.05 * R, 0.2, 40.0);
+    ci.pass(&mut si, &inl, 1e-8, true);
+    ci.pass(&mut si, &inl, 1e-8, false);
+    let mut none = vec![0.0; 7 * n];
+    si.add_dissipated_shares(&[Some(&inl)], &mut none, 7, 1, n)
+        .expect("kept and linked");
+    assert!(none.iter().all(|&s| s == 0.0));
+}

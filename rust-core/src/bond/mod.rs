@@ -4,7 +4,8 @@
 //! One module per law (`normal_law`, `hysteresis`, `shear`, `twist_bend`,
 //! `damping`, `breakage`, `section`, `energy`); the state and the output
 //! engines keep (`state`, `wall`, `output_slots`) and when its results count
-//! as finite (`finite`). Above them, each depending
+//! as finite (`finite`); each atom's share of the damping loads INL's
+//! `computeDissipatedEnergy` files (`dissipated_shares`). Above them, each depending
 //! only on the ones before: the laws of a bond type ([`laws`]) and the parts
 //! switched on ([`features`]) and how a step reads them (`switches`); the
 //! assembled step (`step`); the paths that
@@ -16,6 +17,7 @@ pub mod creation;
 pub mod creation_check;
 pub mod damping;
 mod dispatch;
+pub mod dissipated_shares;
 pub mod energy;
 pub mod features;
 pub mod fields;

@@ -129,6 +129,11 @@ impl Budget {
             + s.elastic.capacity() * std::mem::size_of::<BondOutput>()
     }
 
+    /// Bond `k`'s damping loads of the latest pass.
+    pub(super) fn damping_loads(&self, k: usize) -> Option<&[f64; DAMPING_LOADS_LEN]> {
+        self.damping_loads.get(k)
+    }
+
     /// Bond `k`'s extras as a packed bond carries them.
     pub(super) fn packed(&self, k: usize) -> [f64; PACKED_EXTRAS] {
         let mut extras = [0.0; PACKED_EXTRAS];

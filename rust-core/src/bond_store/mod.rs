@@ -18,6 +18,7 @@ mod id_map;
 mod link;
 mod listed;
 mod pass;
+mod shares;
 mod view;
 
 pub use atoms::{packed_len_in, UnpackError};
@@ -28,6 +29,7 @@ pub use budget::{
 pub use id_map::Ids;
 pub use link::{LinkAtoms, LinkError, LinkReport, LossCause};
 pub use listed::{ListedAtoms, ListedBond};
+pub use shares::SharesError;
 pub use pass::{creates_here, BrokenBond, StepFailure, StepFailureReason, CHUNK};
 pub use view::ViewError;
 

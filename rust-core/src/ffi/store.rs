@@ -9,7 +9,7 @@ use super::results::refused;
 use crate::bond::{BondModel, BondOutput, BOND_STATE_LEN};
 use crate::bond_store::{
     creates_here, packed_len_in, BondStore, BrokenBond, EnergySums, Ids, LinkAtoms, LinkReport, ListedAtoms,
-    ListedBond, StepFailureReason, StoreCounts, CHUNK,
+    ListedBond, SharesError, StepFailureReason, StoreCounts, CHUNK,
 };
 use crate::kinematics::PairKinematics;
 
@@ -828,6 +828,49 @@ pub unsafe extern "C" fn granbond_bond_store_restore_energy_sums(
 ) -> Status {
     store.restore_energy_sums(sums);
     Ok(())
+}
+
+/// Adds each intact bond's shares of its damping loads of the latest force
+/// pass to a per-atom table, as LIGGGHTS-INL's `computeDissipatedEnergy`
+/// files them (minus the damping force, then minus the damping torque, on
+/// each of the bond's atoms; `crate::bond::dissipated_shares`): `table`
+/// holds `rows` atoms (the engine's local atoms, in its order) of `width`
+/// doubles, the 6 doubles of a share from column `column`. Bonds of a kind
+/// without a model (`models[kind]` null) or whose law files none add
+/// nothing. Needs the energy budget kept (`granbond_bond_store_keep_energy_budget`),
+/// which holds the loads, and the store linked.
+///
+/// # Safety
+/// Pointers must be null or valid: `models` for `nkinds` entries, `table`
+/// for `rows * width` doubles.
+#[entry(store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_add_dissipated_shares(
+    store: *const BondStore,
+    models: *const *const BondModel,
+    nkinds: usize,
+    table: *mut f64,
+    rows: usize,
+    width: usize,
+    column: usize,
+) -> Status {
+    let models = model_table(models, nkinds)?;
+    let len = rows.checked_mul(width).ok_or_else(|| {
+        Failure::new(Status::InvalidArgument, "rows, width: their product overflows")
+    })?;
+    let table = slice_mut(table, len, "table")?;
+    store
+        .add_dissipated_shares(models, table, width, column, rows)
+        .map_err(|e| {
+            Failure::new(
+                Status::InvalidArgument,
+                match e {
+                    SharesError::NotKept => "store: the energy budget, which holds the damping loads, is not kept",
+                    SharesError::NotLinked => "store: not linked since atoms moved",
+                    SharesError::Width => "column, width: a share of 6 doubles from column does not fit width",
+                },
+            )
+        })
 }
 
 /// Bond `k`'s energies as of the latest link (J), written to `energy`

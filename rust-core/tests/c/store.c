@@ -149,7 +149,21 @@ int test_bond_store(void)
                       "granbond_bond_store_bond_energy");
             CHECK(e[0] == energy && e[1] == 0.0 && e[2] == 0.0, "its stored energy, nothing dissipated yet");
             CHECK(granbond_bond_energy_field_count() == 3, "three energy fields");
+            {
+                /* the atoms' shares of the damping loads: none kept before a force pass */
+                double table[2 * 7] = {0};
+                EXPECT(granbond_bond_store_add_dissipated_shares(store, models, 1, table, 2, 7, 2),
+                       GB_STATUS_INVALID_ARGUMENT, "granbond_bond_store_add_dissipated_shares, a share beyond the row");
+                EXPECT_OK(granbond_bond_store_add_dissipated_shares(store, models, 1, table, 2, 7, 1),
+                          "granbond_bond_store_add_dissipated_shares");
+                CHECK(table[1] == 0.0 && table[8] == 0.0, "no damping loads yet: nothing added");
+            }
             EXPECT_OK(granbond_bond_store_keep_energy_budget(store, 0, 0), "granbond_bond_store_keep_energy_budget, off");
+            {
+                double table[7] = {0};
+                EXPECT(granbond_bond_store_add_dissipated_shares(store, models, 1, table, 1, 7, 1),
+                       GB_STATUS_INVALID_ARGUMENT, "granbond_bond_store_add_dissipated_shares, no budget kept");
+            }
         }
     }
 

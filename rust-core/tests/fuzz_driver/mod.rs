@@ -176,6 +176,7 @@ pub const ENTRY_POINTS: [&str; 114] = [
     "granbond_bond_store_energy_sums",
     "granbond_bond_store_restore_energy_sums",
     "granbond_bond_store_bond_energy",
+    "granbond_bond_store_add_dissipated_shares",
     "granbond_bond_store_packed_len_in",
 ];
 
@@ -1887,6 +1888,19 @@ impl<'t> Session<'t> {
                 bond_energy.as_mut_ptr(),
             );
             ok(self, "granbond_bond_store_bond_energy", status);
+            let mut shares = [0.0f64; 2 * 7];
+            let status = fs::granbond_bond_store_add_dissipated_shares(
+                st,
+                models.as_ptr(),
+                2,
+                Self::batch_ptr(&mut shares, input.late_pointer()),
+                input.below(3),
+                7,
+                input.below(3),
+            );
+            if ok(self, "granbond_bond_store_add_dissipated_shares", status) {
+                assert!(shares.iter().all(|s| s.is_finite()), "shares not finite: {shares:?}");
+            }
             let _ = fs::granbond_bond_store_bytes(st);
             self.answer_value("granbond_bond_store_bytes");
             let mut bond_ends = [0i32; 3];
