@@ -455,9 +455,15 @@ fn each_atom_takes_minus_the_damping_loads_it_feels() {
         }
     }
     assert!(largest > 0.0, "the damping acted");
-    assert!(worst <= 1e-12 * largest / R, "off by {worst:.3e}, damping loads up to {largest:.3e}");
+    assert!(
+        worst <= 1e-12 * largest / R,
+        "off by {worst:.3e}, damping loads up to {largest:.3e}"
+    );
     // LIGGGHTS-INL's bond/nonlinear files none
-    let inl = common::model(BondParams { inl_compatible: 1, ..damped });
+    let inl = common::model(BondParams {
+        inl_compatible: 1,
+        ..damped
+    });
     let mut si = BondStore::new();
     si.grow(n);
     si.keep_energy_budget(true, false);

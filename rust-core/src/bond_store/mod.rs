@@ -29,8 +29,8 @@ pub use budget::{
 pub use id_map::Ids;
 pub use link::{LinkAtoms, LinkError, LinkReport, LossCause};
 pub use listed::{ListedAtoms, ListedBond};
-pub use shares::SharesError;
 pub use pass::{creates_here, BrokenBond, StepFailure, StepFailureReason, CHUNK};
+pub use shares::SharesError;
 pub use view::ViewError;
 
 use crate::bond::{BondState, BondStatus, BOND_STATE_LEN};

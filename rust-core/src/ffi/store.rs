@@ -855,9 +855,9 @@ pub unsafe extern "C" fn granbond_bond_store_add_dissipated_shares(
     column: usize,
 ) -> Status {
     let models = model_table(models, nkinds)?;
-    let len = rows.checked_mul(width).ok_or_else(|| {
-        Failure::new(Status::InvalidArgument, "rows, width: their product overflows")
-    })?;
+    let len = rows
+        .checked_mul(width)
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, "rows, width: their product overflows"))?;
     let table = slice_mut(table, len, "table")?;
     store
         .add_dissipated_shares(models, table, width, column, rows)
@@ -865,9 +865,13 @@ pub unsafe extern "C" fn granbond_bond_store_add_dissipated_shares(
             Failure::new(
                 Status::InvalidArgument,
                 match e {
-                    SharesError::NotKept => "store: the energy budget, which holds the damping loads, is not kept",
+                    SharesError::NotKept => {
+                        "store: the energy budget, which holds the damping loads, is not kept"
+                    }
                     SharesError::NotLinked => "store: not linked since atoms moved",
-                    SharesError::Width => "column, width: a share of 6 doubles from column does not fit width",
+                    SharesError::Width => {
+                        "column, width: a share of 6 doubles from column does not fit width"
+                    }
                 },
             )
         })

@@ -1899,7 +1899,10 @@ impl<'t> Session<'t> {
                 input.below(3),
             );
             if ok(self, "granbond_bond_store_add_dissipated_shares", status) {
-                assert!(shares.iter().all(|s| s.is_finite()), "shares not finite: {shares:?}");
+                assert!(
+                    shares.iter().all(|s| s.is_finite()),
+                    "shares not finite: {shares:?}"
+                );
             }
             let _ = fs::granbond_bond_store_bytes(st);
             self.answer_value("granbond_bond_store_bytes");
