@@ -62,7 +62,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 114] = [
+pub const ENTRY_POINTS: [&str; 115] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
