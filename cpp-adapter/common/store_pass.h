@@ -1,13 +1,17 @@
 // What both adapters' passes over the bond store share: the engine's atoms
-// as the core reads them, the chunks of a pass stepped with their loads
-// handed to the adapter, and the words for the bonds a link lost. The
-// adapters add the loads to their atoms their own way (LIGGGHTS: its
-// relaxation factor) and find the pairs in their own lists.
+// as the core reads them, the link after a list build, the chunks of a
+// pass stepped with their loads handed to the adapter, and the count and
+// words of the bonds a link lost. The adapters add the loads to their
+// atoms their own way (LIGGGHTS: its relaxation factor) and find the pairs
+// in their own lists.
 #ifndef GRANBOND_STORE_PASS_H
 #define GRANBOND_STORE_PASS_H
 
 #include "core_message.h"
+#include "fix_granbond_bonds.h"
 #include "granbond.h"
+
+#include <mpi.h>
 
 #include <string>
 #include <vector>
@@ -104,14 +108,41 @@ GbStatus proposePair(GbBondStore *store, const GbBondModel *model, uint16_t kind
     return s;
 }
 
-// The causes of the bonds a link lost, summed over the ranks (owner gone,
-// partner unreached, id reused, no model), in the words `why` gives each.
-inline std::string lostCauses(const long long all[4], const char *const why[4])
+// Finds every bond's atoms again after a list build
+// (granbond_bond_store_link): `kinds` the bond kind of each type pair (-1
+// none), `reach` how far the ghost atoms reach.
+template <class Atom>
+GbStatus linkStore(GbBondStore *store, const Atom *atom, const std::vector<int32_t> &kinds, int ntypes,
+                   double reach, GbLinkReport &report)
 {
-    std::string causes;
+    GbStoreAtoms sa;
+    sa.ids = atomIdsOf(atom);
+    sa.nlocal = static_cast<size_t>(atom->nlocal);
+    sa.x = atom->nmax > 0 ? atom->x[0] : nullptr;
+    sa.types = atom->type;
+    sa.reach = reach;
+    return granbond_bond_store_link(store, &sa, kinds.data(), static_cast<size_t>(ntypes), &report);
+}
+
+// The bonds a link of a pair style's store lost, summed over the ranks
+// (collective): their number, and their causes in words in `causes` ("N
+// because ...; ..."), `noModel` adding what takes a type pair's bond model
+// away in this engine.
+inline long long lostBonds(const GbLinkReport &report, MPI_Comm world, const std::string &noModel,
+                           std::string &causes)
+{
+    const long long mine[4] = {report.owner_gone, report.partner_unreached, report.id_reused, report.no_model};
+    long long all[4];
+    MPI_Allreduce(mine, all, 4, MPI_LONG_LONG, MPI_SUM, world);
+    const std::string why[4] = {
+        "their atom left the system (deleted, or lost through a boundary)",
+        "their partner was not among the atoms within the communication cutoff (deleted, lost, or moved "
+        "farther than the bond's reach between runs)",
+        "an atom's id was taken over by a new atom", "their atoms' types have no bond model any more" + noModel};
+    causes.clear();
     for (int c = 0; c < 4; c++)
         if (all[c] > 0) causes += (causes.empty() ? "" : "; ") + std::to_string(all[c]) + " because " + why[c];
-    return causes;
+    return all[0] + all[1] + all[2] + all[3];
 }
 
 }
