@@ -1,17 +1,14 @@
 // What both adapters' passes over the bond store share: the engine's atoms
 // as the core reads them, the link after a list build, the chunks of a
-// pass stepped with their loads handed to the adapter, and the count and
-// words of the bonds a link lost. The adapters add the loads to their
-// atoms their own way (LIGGGHTS: its relaxation factor) and find the pairs
-// in their own lists.
+// pass stepped with their loads handed to the adapter. The adapters add
+// the loads to their atoms their own way (LIGGGHTS: its relaxation factor)
+// and find the pairs in their own lists.
 #ifndef GRANBOND_STORE_PASS_H
 #define GRANBOND_STORE_PASS_H
 
 #include "core_message.h"
 #include "fix_granbond_bonds.h"
 #include "granbond.h"
-
-#include <mpi.h>
 
 #include <string>
 #include <vector>
@@ -122,27 +119,6 @@ GbStatus linkStore(GbBondStore *store, const Atom *atom, const std::vector<int32
     sa.types = atom->type;
     sa.reach = reach;
     return granbond_bond_store_link(store, &sa, kinds.data(), static_cast<size_t>(ntypes), &report);
-}
-
-// The bonds a link of a pair style's store lost, summed over the ranks
-// (collective): their number, and their causes in words in `causes` ("N
-// because ...; ..."), `noModel` adding what takes a type pair's bond model
-// away in this engine.
-inline long long lostBonds(const GbLinkReport &report, MPI_Comm world, const std::string &noModel,
-                           std::string &causes)
-{
-    const long long mine[4] = {report.owner_gone, report.partner_unreached, report.id_reused, report.no_model};
-    long long all[4];
-    MPI_Allreduce(mine, all, 4, MPI_LONG_LONG, MPI_SUM, world);
-    const std::string why[4] = {
-        "their atom left the system (deleted, or lost through a boundary)",
-        "their partner was not among the atoms within the communication cutoff (deleted, lost, or moved "
-        "farther than the bond's reach between runs)",
-        "an atom's id was taken over by a new atom", "their atoms' types have no bond model any more" + noModel};
-    causes.clear();
-    for (int c = 0; c < 4; c++)
-        if (all[c] > 0) causes += (causes.empty() ? "" : "; ") + std::to_string(all[c]) + " because " + why[c];
-    return all[0] + all[1] + all[2] + all[3];
 }
 
 }

@@ -4,11 +4,11 @@
 // atoms. Every rule is the core's; this file finds the bonds in the
 // engine's lists and adds the loads.
 #include "bond_granbond.h"
+#include "bond_ledger.h"
 #include "bond_store_fix.h"
 #include "coeff_words.h"
 #include "core_message.h"
 #include "restart_rows.h"
-#include "store_check.h"
 #include "atom_loads.h"
 
 #include "atom.h"

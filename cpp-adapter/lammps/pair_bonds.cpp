@@ -7,6 +7,7 @@
 #include "pair_granbond.h"
 #include "bond_store_fix.h"
 #include "core_message.h"
+#include "bond_ledger.h"
 #include "store_check.h"
 #include "atom_loads.h"
 #include "store_pass.h"

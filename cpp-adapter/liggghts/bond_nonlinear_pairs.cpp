@@ -4,6 +4,7 @@
 // form put in, the view sent round where either happened on any rank, the
 // counts, and the store's check. Every rule is the core's; this file finds
 // the pairs in the engine's lists and adds the loads.
+#include "bond_ledger.h"
 #include "bond_nonlinear_cohesion.h"
 #include "bonds_fix.h"
 #include "core_bridge.h"
