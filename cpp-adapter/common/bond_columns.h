@@ -82,15 +82,16 @@ public:
         return false;
     }
 
-    // The row of one bond: its model and pair record
-    // (granbond_record_layout(with_contact)) as sphere i keeps it, the
-    // spheres' ids and centres, and (where wantsEnergy()) its energies from
-    // the store (granbond_bond_store_bond_energy). On failure the core's
-    // message says why.
-    GbStatus row(const GbBondModel *model, int with_contact, const double *record, double tag_i, double tag_j,
+    // The row of one bond: its model and record as sphere i sees it (the
+    // state, then the output of the latest force pass as
+    // granbond_bond_output_store writes it), the spheres' ids and centres,
+    // and (where wantsEnergy()) its energies from the store
+    // (granbond_bond_store_bond_energy). On failure the core's message says
+    // why.
+    GbStatus row(const GbBondModel *model, const double *record, double tag_i, double tag_j,
                  const double *x_i, const double *x_j, double *out, const double *energy = nullptr)
     {
-        const GbStatus s = granbond_bond_fields(model, with_contact, record, x_i, x_j, fields_.data());
+        const GbStatus s = granbond_bond_fields(model, record, x_i, x_j, fields_.data());
         if (s != GB_STATUS_OK) return s;
         for (size_t c = 0; c < columns_.size(); c++) {
             const Column &col = columns_[c];

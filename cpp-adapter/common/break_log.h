@@ -68,6 +68,17 @@ inline GbStatus makeBreakEvent(const GbBondModel *model, const GbBondOutput &out
     return GB_STATUS_OK;
 }
 
+// The event of the bond between atoms i and j of an engine's `atom` that
+// broke with `out`, at `step`: the atom with the smaller id first.
+template<class Atom>
+GbStatus makeBreakEvent(const GbBondModel *model, const GbBondOutput &out, const Atom *atom, int i, int j,
+                        double step, BreakEvent &e)
+{
+    const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = lo == i ? j : i;
+    return makeBreakEvent(model, out, atom->x[lo], atom->x[hi], atom->radius[lo], atom->radius[hi],
+                          static_cast<double>(atom->tag[lo]), static_cast<double>(atom->tag[hi]), step, e);
+}
+
 // Gathers every rank's `mine` on rank 0 (and clears it), which writes them
 // to `file` sorted by step and ids. Collective.
 inline void writeBreakEvents(std::vector<BreakEvent> &mine, FILE *file, MPI_Comm world)

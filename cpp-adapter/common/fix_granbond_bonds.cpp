@@ -169,6 +169,14 @@ int BondStoreFix::unpack_border(int n, int first, double *buf)
 // partner ids), as many as the widest row needs: the engine sizes its
 // forward buffers by comm_forward when a run starts, and bonds may form
 // during it.
+bool BondStoreFix::viewAfterBreaks(bool brokeHere)
+{
+    int mine = brokeHere, any = 0;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any) sendView();
+    return any != 0;
+}
+
 void BondStoreFix::sendView()
 {
     int mine = static_cast<int>(granbond_bond_store_view_width(store_)), all = 0;

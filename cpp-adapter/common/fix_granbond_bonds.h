@@ -81,6 +81,9 @@ public:
     // The view: every atom's row to its ghost images, then asked by the
     // style (granbond_bond_store_bonded). Collective.
     void sendView();
+    // Where any rank broke a bond in the pass so far (`brokeHere` on this
+    // one), the view goes round again; returns whether it did. Collective.
+    bool viewAfterBreaks(bool brokeHere);
     // The loads the pass put on ghost atoms (ghostLoads(), 6 doubles a
     // ghost: force then torque) added to their owners, and cleared.
     // Collective; for newton off, where the engine leaves ghost forces.

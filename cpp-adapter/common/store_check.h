@@ -7,6 +7,7 @@
 #ifndef GRANBOND_STORE_CHECK_H
 #define GRANBOND_STORE_CHECK_H
 
+#include "bond_ledger.h"
 #include "core_message.h"
 #include "granbond.h"
 
@@ -18,16 +19,6 @@
 #include <vector>
 
 namespace granbond {
-
-inline long long brokenCount(const GbStoreCounts &c)
-{
-    return c.broken_distance + c.broken_tension + c.broken_compression + c.broken_shear;
-}
-
-inline long long lostCount(const GbStoreCounts &c)
-{
-    return c.lost_owner_gone + c.lost_partner_unreached + c.lost_id_reused + c.lost_no_model;
-}
 
 // What is wrong with the bonds of `store` on this rank (empty: nothing).
 // `tag` are the ids of the rank's atoms (local, then ghost). Collective.

@@ -1,12 +1,13 @@
 // What both adapters' passes over the bond store share: the engine's atoms
-// as the core reads them, the chunks of a pass stepped with their loads
-// handed to the adapter, and the words for the bonds a link lost. The
-// adapters add the loads to their atoms their own way (LIGGGHTS: its
-// relaxation factor) and find the pairs in their own lists.
+// as the core reads them, the link after a list build, the chunks of a
+// pass stepped with their loads handed to the adapter. The adapters add
+// the loads to their atoms their own way (LIGGGHTS: its relaxation factor)
+// and find the pairs in their own lists.
 #ifndef GRANBOND_STORE_PASS_H
 #define GRANBOND_STORE_PASS_H
 
 #include "core_message.h"
+#include "fix_granbond_bonds.h"
 #include "granbond.h"
 
 #include <string>
@@ -104,14 +105,20 @@ GbStatus proposePair(GbBondStore *store, const GbBondModel *model, uint16_t kind
     return s;
 }
 
-// The causes of the bonds a link lost, summed over the ranks (owner gone,
-// partner unreached, id reused, no model), in the words `why` gives each.
-inline std::string lostCauses(const long long all[4], const char *const why[4])
+// Finds every bond's atoms again after a list build
+// (granbond_bond_store_link): `kinds` the bond kind of each type pair (-1
+// none), `reach` how far the ghost atoms reach.
+template <class Atom>
+GbStatus linkStore(GbBondStore *store, const Atom *atom, const std::vector<int32_t> &kinds, int ntypes,
+                   double reach, GbLinkReport &report)
 {
-    std::string causes;
-    for (int c = 0; c < 4; c++)
-        if (all[c] > 0) causes += (causes.empty() ? "" : "; ") + std::to_string(all[c]) + " because " + why[c];
-    return causes;
+    GbStoreAtoms sa;
+    sa.ids = atomIdsOf(atom);
+    sa.nlocal = static_cast<size_t>(atom->nlocal);
+    sa.x = atom->nmax > 0 ? atom->x[0] : nullptr;
+    sa.types = atom->type;
+    sa.reach = reach;
+    return granbond_bond_store_link(store, &sa, kinds.data(), static_cast<size_t>(ntypes), &report);
 }
 
 }

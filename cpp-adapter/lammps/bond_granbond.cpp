@@ -4,6 +4,7 @@
 // atoms. Every rule is the core's; this file finds the bonds in the
 // engine's lists and adds the loads.
 #include "bond_granbond.h"
+#include "bond_ledger.h"
 #include "bond_store_fix.h"
 #include "coeff_words.h"
 #include "core_message.h"
@@ -88,15 +89,16 @@ void BondGranbond::coeff(int narg, char **arg)
     words::Args a(narg, arg, error, 1, std::string("bond_coeff ") + arg[0]);
     GbBondParams p;
     granbond_bond_params_default(&p);
-    words::Clause<GbBondParams> clause(a, kModel, &granbond_bond_parameter_info, &granbond_bond_phrase_info,
-                                       &granbond_bond_params_set, p);
-    while (!a.done())
-        if (!clause.next()) a.fail("unknown keyword '" + a.peek() + "' (known: " + clause.known() + ")");
-    for (size_t id = 0; id < granbond_bond_parameter_count(); id++) {
-        if (granbond_bond_parameter_sets_creation(id) != 1 || clause.givenBy(id).empty()) continue;
-        a.fail("'" + clause.givenBy(id) + "' says when bonds form; under bond_style granbond the topology names "
-               "the bonds (create_bonds, a data file's Bonds section, molecule templates), each at rest at its "
-               "length when first seen");
+    const std::vector<std::string> given = words::readBondClause(a, kModel, p);
+    for (size_t id = 0; id < given.size(); id++) {
+        const int32_t pairOnly = granbond_bond_parameter_sets_creation(id);
+        if (pairOnly <= 0 || given[id].empty()) continue;
+        if (pairOnly == 1)
+            a.fail("'" + given[id] + "' says when bonds form; under bond_style granbond the topology names the "
+                   "bonds (create_bonds, a data file's Bonds section, molecule templates), each at rest at its "
+                   "length when first seen");
+        a.fail("'" + given[id] + "' says what pair_style granbond's contact does under its bonds; under "
+               "bond_style granbond special_bonds says whether a bonded pair's contact acts");
     }
     for (int t = lo; t <= hi; t++) {
         granbond_bond_model_free(models_[t]);
@@ -190,16 +192,8 @@ void BondGranbond::counts(double *values) const
     GbStoreCounts c;
     std::memset(&c, 0, sizeof c);
     if (bonds_) c = bonds_->counts();
-    const double mine[8] = {static_cast<double>(c.created),
-                            static_cast<double>(c.broken_distance + c.broken_tension + c.broken_compression +
-                                                c.broken_shear),
-                            static_cast<double>(c.intact),
-                            static_cast<double>(c.broken_distance),
-                            static_cast<double>(c.broken_tension),
-                            static_cast<double>(c.broken_compression),
-                            static_cast<double>(c.broken_shear),
-                            static_cast<double>(c.lost_owner_gone + c.lost_partner_unreached + c.lost_id_reused +
-                                                c.lost_no_model)};
+    double mine[8];
+    countsRow(c, mine);
     MPI_Allreduce(mine, values, 8, MPI_DOUBLE, MPI_SUM, world);
 }
 
@@ -345,10 +339,8 @@ void BondGranbond::takeBroken(bool advance)
                 if (atom->bond_atom[j][q] == atom->tag[i]) type = atom->bond_type[j][q];
             const GbBondModel *model = type > 0 && type < static_cast<int>(models_.size()) ? models_[type] : nullptr;
             BreakEvent e;
-            const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = lo == i ? j : i;
-            if (!model || makeBreakEvent(model, b.out, atom->x[lo], atom->x[hi], atom->radius[lo], atom->radius[hi],
-                                         static_cast<double>(atom->tag[lo]), static_cast<double>(atom->tag[hi]),
-                                         static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
+            if (!model || makeBreakEvent(model, b.out, atom, i, j, static_cast<double>(update->ntimestep), e) !=
+                              GB_STATUS_OK)
                 failBond(i, j, "the break log's event");
             breaks_.push_back(e);
         }

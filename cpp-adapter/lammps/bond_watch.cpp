@@ -203,7 +203,7 @@ public:
             if ((energies && granbond_bond_store_bond_energy(pair->bondStore(), pair->bondModels(), pair->bondKinds(),
                                                              &arrays, k, energy.data()) != GB_STATUS_OK) ||
                 granbond_bond_output_store(&o, record + GRANBOND_BOND_STATE_LEN) != GB_STATUS_OK ||
-                columns_.row(pair->bondModel(kind), 0, record, static_cast<double>(atom->tag[i]),
+                columns_.row(pair->bondModel(kind), record, static_cast<double>(atom->tag[i]),
                              static_cast<double>(atom->tag[j]), atom->x[i], atom->x[j], row.data(),
                              energy.data()) != GB_STATUS_OK)
                 error->one(FLERR, "compute granbond/local: atoms " + std::to_string(static_cast<long long>(atom->tag[lo])) +

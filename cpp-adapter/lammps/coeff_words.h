@@ -181,8 +181,8 @@ public:
         return false;
     }
 
-    // The words that set row `id` on this line (empty: not set by the deck).
-    const std::string &givenBy(size_t id) const { return givenBy_[id]; }
+    // The words that set each row on this line (empty: not set by the deck).
+    const std::vector<std::string> &givenBy() const { return givenBy_; }
 
     // Every word this clause knows, for the message of an unknown one.
     std::string known() const
@@ -264,6 +264,18 @@ private:
     std::vector<std::string> givenBy_;   // per row: the words that gave it on this line
     std::vector<double> givenValue_;     // ... and the value they gave
 };
+
+// The rest of the line as bond law `law`'s clause (pair_coeff's
+// bond/nonlinear or bond/linear, bond_coeff's), into `params` holding the
+// law's defaults; returns the words that set each row (empty: not set).
+inline std::vector<std::string> readBondClause(Args &a, const char *law, GbBondParams &params)
+{
+    Clause<GbBondParams> bond(a, law, &granbond_bond_parameter_info, &granbond_bond_phrase_info,
+                              &granbond_bond_params_set, params);
+    while (!a.done())
+        if (!bond.next()) a.fail("unknown keyword '" + a.peek() + "' (known: " + bond.known() + ")");
+    return bond.givenBy();
+}
 
 }
 }

@@ -7,6 +7,7 @@
 #include "pair_granbond.h"
 #include "bond_store_fix.h"
 #include "core_message.h"
+#include "bond_ledger.h"
 #include "store_check.h"
 #include "atom_loads.h"
 #include "store_pass.h"
@@ -53,33 +54,16 @@ bool PairGranbond::storeCurrent() const
 // history's flags are marked from the store.
 void PairGranbond::linkBonds()
 {
-    GbStoreAtoms sa;
-    sa.ids = atomIds();
-    sa.nlocal = static_cast<size_t>(atom->nlocal);
-    sa.x = atom->nmax > 0 ? atom->x[0] : nullptr;
-    sa.types = atom->type;
-    sa.reach = comm->cutghostuser;
     GbLinkReport report;
-    if (granbond_bond_store_link(bonds_->store(), &sa, kinds_.data(), static_cast<size_t>(atom->ntypes), &report) !=
-        GB_STATUS_OK)
+    if (linkStore(bonds_->store(), atom, kinds_, atom->ntypes, comm->cutghostuser, report) != GB_STATUS_OK)
         error->one(FLERR, "pair granbond: finding the bonds' atoms: " + coreReason());
-    const long long mine[4] = {report.owner_gone, report.partner_unreached, report.id_reused, report.no_model};
-    long long all[4];
-    MPI_Allreduce(mine, all, 4, MPI_LONG_LONG, MPI_SUM, world);
-    const long long lost = all[0] + all[1] + all[2] + all[3];
-    if (lost > 0 && comm->me == 0) {
-        const char *const why[4] = {
-            "their atom left the system (deleted, or lost through a boundary)",
-            "their partner was not among the atoms within the communication cutoff (deleted, lost, or moved "
-            "farther than the bond's reach between runs)",
-            "an atom's id was taken over by a new atom",
-            "their atoms' types have no bond model any more (set type, or pair_coeff without bond/nonlinear)"};
-        const std::string causes = lostCauses(all, why);
+    std::string causes;
+    const long long lost = lostBonds(report, world, " (set type, or pair_coeff without bond/nonlinear)", causes);
+    if (lost > 0 && comm->me == 0)
         error->warning(FLERR, "pair granbond (bond/nonlinear): " + std::to_string(lost) + " bonds lost at step " +
                                   std::to_string(static_cast<long long>(update->ntimestep)) +
                                   " without breaking: " + causes +
                                   " (counted in compute pair granbond's 8th value)");
-    }
     bonds_->sendView();
     markBonded();
 }
@@ -112,7 +96,7 @@ void PairGranbond::markBonded()
             livePairs_[ii]++;
             if (touch[jj] == kBondedMark) {
                 touch[jj] = 0;
-                if (!pairs_[tp].contactUnderBond)
+                if (!pairs_[tp].bond.contact_under_bond)
                     std::fill(allhistory + sizeHistory_ * jj, allhistory + sizeHistory_ * (jj + 1), 0.0);
             }
         }
@@ -169,7 +153,7 @@ void PairGranbond::takeBroken(bool advance)
                     touch[jj] = 0;
                     if (static_cast<size_t>(a) < listPosition_.size() && listPosition_[a] >= 0)
                         livePairs_[listPosition_[a]]++;
-                    if (!pairs_[tp].contactUnderBond) {
+                    if (!pairs_[tp].bond.contact_under_bond) {
                         double *h = fixHistory_->firstvalue[a] + sizeHistory_ * jj;
                         std::fill(h, h + sizeHistory_, 0.0);
                     }
@@ -177,20 +161,12 @@ void PairGranbond::takeBroken(bool advance)
         }
         if (breakLogUsers > 0 && advance) {
             BreakEvent e;
-            const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = lo == i ? j : i;
-            if (makeBreakEvent(bond_[tp], b.out, atom->x[lo], atom->x[hi], atom->radius[lo], atom->radius[hi],
-                               static_cast<double>(atom->tag[lo]), static_cast<double>(atom->tag[hi]),
-                               static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
+            if (makeBreakEvent(bond_[tp], b.out, atom, i, j, static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
                 failPair(i, j, "the break log's event");
             breaks_.push_back(e);
         }
     }
-    int mine = nb > 0, any = 0;
-    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-    if (any) {
-        bonds_->sendView();
-        markBonded();
-    }
+    if (bonds_->viewAfterBreaks(nb > 0)) markBonded();
 }
 
 // A pair within the creation rules at a creation step: bonded if the core
@@ -205,7 +181,7 @@ bool PairGranbond::tryBond(size_t tp, int i, int j, int *touch, double *history)
         failPair(i, j, "the bond's creation");
     if (!made) return false;
     *touch = kBondedMark;
-    if (!pairs_[tp].contactUnderBond) std::fill(history, history + sizeHistory_, 0.0);
+    if (!pairs_[tp].bond.contact_under_bond) std::fill(history, history + sizeHistory_, 0.0);
     return true;
 }
 
@@ -213,15 +189,7 @@ bool PairGranbond::tryBond(size_t tp, int i, int j, int *touch, double *history)
 // them over the ranks).
 void PairGranbond::countBonds()
 {
-    const GbStoreCounts c = bonds_->counts();
-    pvector[0] = static_cast<double>(c.created);
-    pvector[1] = static_cast<double>(brokenCount(c));
-    pvector[2] = static_cast<double>(c.intact);
-    pvector[3] = static_cast<double>(c.broken_distance);
-    pvector[4] = static_cast<double>(c.broken_tension);
-    pvector[5] = static_cast<double>(c.broken_compression);
-    pvector[6] = static_cast<double>(c.broken_shear);
-    pvector[7] = static_cast<double>(lostCount(c));
+    countsRow(bonds_->counts(), pvector);
     GbEnergySums e;
     if (granbond_bond_store_energy_sums(bonds_->store(), &e) != GB_STATUS_OK)
         error->one(FLERR, "pair granbond: " + coreReason());

@@ -28,19 +28,15 @@ namespace lammps {
 
 namespace {
 
-// The model words of pair_coeff; `contact_under_bond` is the pass's own
-// setting (whether the contact is stepped under an intact bond), given in
-// the bond's clause.
+// The model words of pair_coeff.
 const char *const kVoigt = "voigt";
 const char *const kBond = "bond/nonlinear";
 const char *const kLinear = "bond/linear";
-const char *const kContactUnderBond = "contact_under_bond";
 
 }
 
 using words::Args;
 using words::Clause;
-using words::value;
 
 // pair_style granbond [energy yes|no]: the models are per type pair; the
 // one setting is whether the bonds' energy budget is kept (compute pair
@@ -73,7 +69,7 @@ void PairGranbond::coeff(int narg, char **arg)
     TypePair tp;
     std::memset(&tp, 0, sizeof tp);
     granbond_voigt_params_default(&tp.voigt);
-    granbond_bond_params_default_in_units(update->unit_style, &tp.bond);
+    granbond_bond_params_default_in_units(update->unit_style, 0, &tp.bond);
     tp.hasBond = 0;
 
     const std::string model = a.word("model (" + std::string(kVoigt) + ")");
@@ -88,30 +84,9 @@ void PairGranbond::coeff(int narg, char **arg)
     if (!a.done()) {
         const char *const law = a.word(kBond) == kLinear ? kLinear : kBond;
         tp.hasBond = 1;
-        if (law == kLinear && granbond_bond_params_set(&tp.bond, "linear", 1.0) != GB_STATUS_OK)
-            error->all(FLERR, std::string("pair_coeff ") + kLinear + ": " + coreReason());
-        Clause<GbBondParams> bond(a, law, &granbond_bond_parameter_info, &granbond_bond_phrase_info,
-                                  &granbond_bond_params_set, tp.bond);
-        bool underBondGiven = false;
-        while (!a.done()) {
-            if (a.peek() == kContactUnderBond) {
-                a.skip(1);
-                const int32_t v = static_cast<int32_t>(value(a, GB_PARAMETER_KIND_SWITCH, kContactUnderBond));
-                if (underBondGiven && v != tp.contactUnderBond)
-                    a.fail(std::string(kContactUnderBond) + " is given twice with different values; give it once");
-                underBondGiven = true;
-                tp.contactUnderBond = v;
-            } else if (!bond.next()) {
-                a.fail("unknown keyword '" + a.peek() + "' (known: " + bond.known() + " " + kContactUnderBond + ")");
-            }
-        }
-        // unless the deck says, the contact goes on under a bond whose law
-        // keeps its loads (the linear bond); a model the core refuses is
-        // reported by buildModel
-        GbBondModel *m = nullptr;
-        if (!underBondGiven && granbond_bond_model_new(&tp.bond, &m) == GB_STATUS_OK)
-            tp.contactUnderBond = granbond_bond_keeps_contact_loads(m);
-        granbond_bond_model_free(m);
+        // the law's own defaults (the linear bond's differ)
+        granbond_bond_params_default_in_units(update->unit_style, law == kLinear, &tp.bond);
+        words::readBondClause(a, law, tp.bond);
     }
 
     int count = 0;

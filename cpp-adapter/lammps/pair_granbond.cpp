@@ -274,7 +274,7 @@ void PairGranbond::compute(int eflag, int vflag)
     const char *const createsNow = createsNow_.data();
     // whether a bonded pair's contact is stepped in this pass at all
     bool underBond = false;
-    for (size_t tp = 0; tp < pairs_.size(); tp++) underBond = underBond || (advance && pairs[tp].contactUnderBond);
+    for (size_t tp = 0; tp < pairs_.size(); tp++) underBond = underBond || (advance && pairs[tp].bond.contact_under_bond);
     const double *const specialLj = force->special_lj;
     const int *const live = anyBond_ && !underBond && livePairs_.size() == static_cast<size_t>(inum) ? livePairs_.data() : nullptr;
     for (int ii = 0; ii < inum; ii++) {
@@ -304,7 +304,7 @@ void PairGranbond::compute(int eflag, int vflag)
                                              : static_cast<size_t>(jtype) * ntypes1 + itype;
             // a bond: stepped above. Its contact's state goes on under it
             // only where the deck asks for it.
-            if (touch[jj] == kBondedMark && !(advance && pairs[tp].contactUnderBond)) continue;
+            if (touch[jj] == kBondedMark && !(advance && pairs[tp].bond.contact_under_bond)) continue;
             const double *const xj = x0 + 3 * static_cast<size_t>(j);
             const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];

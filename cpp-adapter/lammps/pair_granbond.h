@@ -50,15 +50,12 @@ public:
 #endif
     double memory_usage() override;
 
-    // Everything pair_coeff set for one type pair (plain data: written to
-    // restart files as is).
+    // Everything pair_coeff set for one type pair (written to restart files
+    // as rows of the core's tables, pair_restart.cpp).
     struct TypePair {
         GbVoigtParams voigt;
         GbBondParams bond;
         int32_t hasBond;
-        // the contact's state goes on under an intact bond (pair_coeff
-        // ... contact_under_bond yes), or starts afresh when it breaks
-        int32_t contactUnderBond;
     };
 
     // What the per-bond outputs read (bond_watch.cpp): the store and its

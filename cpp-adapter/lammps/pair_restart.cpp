@@ -138,7 +138,9 @@ void PairGranbond::write_restart(FILE *fp)
             fwrite(&setflag[i][j], sizeof(int), 1, fp);
             if (!setflag[i][j]) continue;
             const TypePair &tp = pairs_[at(i, j)];
-            const int flags[2] = {tp.hasBond, tp.contactUnderBond};
+            // the second flag repeats the row contact_under_bond, which the
+            // bond's rows restore
+            const int flags[2] = {tp.hasBond, tp.bond.contact_under_bond};
             fwrite(flags, sizeof(int), 2, fp);
             writeRows(fp, voigtTable(), &tp.voigt, error);
             writeRows(fp, bondTable(), &tp.bond, error);
@@ -178,7 +180,6 @@ void PairGranbond::read_restart(FILE *fp)
             MPI_Bcast(flags, 2, MPI_INT, 0, world);
             TypePair tp;
             tp.hasBond = flags[0];
-            tp.contactUnderBond = flags[1];
             granbond_voigt_params_default(&tp.voigt);
             granbond_bond_params_default(&tp.bond);
             const std::string types = "atom types " + std::to_string(i) + " " + std::to_string(j);

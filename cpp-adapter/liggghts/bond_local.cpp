@@ -87,7 +87,7 @@ public:
             if (tail) std::copy(record, record + tail, row.data() + head + columns_.size());
             if (energies) model->bondEnergy(k, energy.data());
             if (!m || granbond_bond_output_store(&o, record + GRANBOND_BOND_STATE_LEN) != GB_STATUS_OK ||
-                columns_.row(m, 0, record, static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
+                columns_.row(m, record, static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
                              atom->x[i], atom->x[j], row.data() + head, energy.data()) != GB_STATUS_OK)
                 endRunOnThisRank(lmp, FLERR,
                                  "compute pair/gran/local/bond: atoms " +

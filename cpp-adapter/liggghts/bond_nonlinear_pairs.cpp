@@ -4,6 +4,7 @@
 // form put in, the view sent round where either happened on any rank, the
 // counts, and the store's check. Every rule is the core's; this file finds
 // the pairs in the engine's lists and adds the loads.
+#include "bond_ledger.h"
 #include "bond_nonlinear_cohesion.h"
 #include "bonds_fix.h"
 #include "core_bridge.h"
@@ -87,30 +88,15 @@ void BondNonlinearCohesion::failPair(int i, int j, const char *what)
 void BondNonlinearCohesion::linkBonds()
 {
     linkedAt_ = neighbor->ncalls;
-    GbStoreAtoms sa;
-    sa.ids = atomIdsOf(atom);
-    sa.nlocal = static_cast<size_t>(atom->nlocal);
-    sa.x = atom->nmax > 0 ? atom->x[0] : nullptr;
-    sa.types = atom->type;
-    // the ghost atoms' reach (LIGGGHTS's Comm::setup)
-    sa.reach = std::max(neighbor->cutneighmax, comm->cutghostuser);
     GbLinkReport report;
-    if (granbond_bond_store_link(bonds_->store(), &sa, kinds_.data(), static_cast<size_t>(parameters_.ntypes()), &report) !=
-        GB_STATUS_OK)
+    // the ghost atoms' reach (LIGGGHTS's Comm::setup)
+    if (linkStore(bonds_->store(), atom, kinds_, parameters_.ntypes(),
+                  std::max(neighbor->cutneighmax, comm->cutghostuser), report) != GB_STATUS_OK)
         endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: finding the bonds' atoms: " + coreReason());
-    const long long mine[4] = {report.owner_gone, report.partner_unreached, report.id_reused, report.no_model};
-    long long all[4];
-    MPI_Allreduce(mine, all, 4, MPI_LONG_LONG, MPI_SUM, world);
-    const long long lost = all[0] + all[1] + all[2] + all[3];
+    std::string causes;
+    const long long lost = lostBonds(report, world, "", causes);
     if (lost > 0 && comm->me == 0 && !warnedLost_) {
         warnedLost_ = true;
-        const char *const why[4] = {
-            "their atom left the system (deleted, or lost through a boundary)",
-            "their partner was not among the atoms within the communication cutoff (deleted, lost, or the "
-            "atoms moved apart beyond the bond's reach between runs)",
-            "an atom's id was taken over by a new atom",
-            "their atoms' types have no bond model any more"};
-        const std::string causes = lostCauses(all, why);
         error->warning(FLERR, ("cohesion bond/nonlinear: " + std::to_string(lost) + " bonds vanished at step " +
                                std::to_string(static_cast<long long>(update->ntimestep)) + " without breaking: " +
                                causes + "; they are counted as lost in compute bond/counter (column 7), later "
@@ -201,21 +187,13 @@ void BondNonlinearCohesion::takeBroken(bool advance)
         if (granbond_bond_store_broken(store, m, &b) != GB_STATUS_OK)
             endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: " + coreReason());
         const int i = b.ends[0], j = b.ends[1];
-        const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = lo == i ? j : i;
         BreakEvent e;
-        if (makeBreakEvent(parameters_.model(atom->type[i], atom->type[j]), b.out, atom->x[lo], atom->x[hi],
-                           atom->radius[lo], atom->radius[hi], static_cast<double>(atom->tag[lo]),
-                           static_cast<double>(atom->tag[hi]), static_cast<double>(update->ntimestep),
-                           e) != GB_STATUS_OK)
+        if (makeBreakEvent(parameters_.model(atom->type[i], atom->type[j]), b.out, atom, i, j,
+                           static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
             failPair(i, j, "the break log's event");
         book_->record(e);
     }
-    int mine = nb > 0, any = 0;
-    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-    if (any) {
-        bonds_->sendView();
-        markBonded();
-    }
+    if (bonds_->viewAfterBreaks(nb > 0)) markBonded();
 }
 
 // A pair within reach at a creation step, or of one `bonded yes` clump:

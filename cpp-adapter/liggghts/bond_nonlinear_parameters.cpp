@@ -84,7 +84,8 @@ BondNonlinearParameters::BondNonlinearParameters(LAMMPS_NS::LAMMPS *lmp) :
     if (rows_ > kMaxRows)
         error->all(FLERR, (std::string(caller_) + ": the core's parameter table has more rows than this adapter "
                                                   "has property creators (raise kMaxRows)").c_str());
-    granbond_bond_params_default(&switches_);
+    // the law's defaults (the linear bond's differ), for the switches'
+    granbond_bond_params_default_in_units(update->unit_style, linear_, &switches_);
     switchValues_.assign(rows_, false);
     perTypePair_.assign(rows_, static_cast<double **>(0));
     scalars_.assign(rows_, 0.0);
@@ -100,23 +101,15 @@ void BondNonlinearParameters::freeModels()
     ntypes_ = 0;
 }
 
-// The row of the core's table that switches the linear bond on.
-size_t BondNonlinearParameters::linearRow() const
-{
-    for (size_t k = 0; k < rows_; k++)
-        if (std::string(row(k).keyword) == "linear") return k;
-    error->all(FLERR, "cohesion bond: the core's parameter table has no row 'linear'");
-    return 0;
-}
-
 const char *BondNonlinearParameters::name(size_t id) const { return lawName(linear_ ? 1 : 0, id); }
 
 void BondNonlinearParameters::registerSettings(Settings &settings)
 {
     for (size_t k = 0; k < rows_; k++) {
-        const GbParameterInfo info = row(k);
-        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH && name(k))
-            settings.registerOnOff(name(k), switchValues_[k], info.default_value != 0.0);
+        double law = 0.0;
+        if (row(k).liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH && name(k) &&
+            granbond_bond_params_get(&switches_, k, &law) == GB_STATUS_OK)
+            settings.registerOnOff(name(k), switchValues_[k], law != 0.0);
     }
 }
 
@@ -131,8 +124,7 @@ void BondNonlinearParameters::set(GbBondParams &p, size_t id, double value, cons
 
 void BondNonlinearParameters::connectToProperties(PropertyRegistry &registry)
 {
-    granbond_bond_params_default_in_units(update->unit_style, &switches_);
-    if (linear_) set(switches_, linearRow(), 1.0, "");
+    granbond_bond_params_default_in_units(update->unit_style, linear_, &switches_);
     for (size_t k = 0; k < rows_; k++) {
         const GbParameterInfo info = row(k);
         if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH && name(k))

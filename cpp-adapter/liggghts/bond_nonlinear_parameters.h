@@ -59,7 +59,6 @@ private:
     void registerContactDistanceFactor(::PropertyRegistry &registry);
 
     void set(GbBondParams &p, size_t id, double value, const std::string &where);
-    size_t linearRow() const;
     // The name this model's decks give row `id`, or null if it has none.
     const char *name(size_t id) const;
 

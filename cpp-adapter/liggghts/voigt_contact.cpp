@@ -4,244 +4,13 @@
 #include "core_bridge.h"
 #include "core_message.h"
 
-#include <array>
-#include <cstddef>
 #include <cstdio>
-#include <cstdlib>
-#include <map>
 #include <string>
-#include <utility>
 
 using namespace LIGGGHTS::ContactModels;
 
 namespace granbond {
 namespace liggghts {
-
-// ------------------------------------------------------------ model table
-
-void VoigtModelTable::build(LAMMPS_NS::Error *error, const char *who, int ntypes,
-                            const std::vector<GbVoigtParams> &params)
-{
-    checkCoreLayout(error);
-    clear();
-    stride_ = ntypes + 1;
-    models_.assign(stride_ * stride_, static_cast<GbVoigtModel *>(0));
-    for (int a = 1; a <= ntypes; a++)
-        for (int b = 1; b <= ntypes; b++) {
-            GbVoigtModel *model = 0;
-            if (granbond_voigt_model_new(&params[a * stride_ + b], &model) != GB_STATUS_OK) {
-                const std::string msg = std::string(who) + " (atom types " + std::to_string(a) + " and " +
-                                        std::to_string(b) + "): " + coreReason();
-                clear();
-                endRun(error, FLERR, msg);
-            }
-            models_[a * stride_ + b] = model;
-        }
-}
-
-void VoigtModelTable::clear()
-{
-    for (size_t k = 0; k < models_.size(); k++)
-        granbond_voigt_model_free(models_[k]);
-    models_.clear();
-}
-
-namespace {
-
-// The core's Voigt table, row by row, with the part of the contact each
-// row belongs to.
-struct VoigtRow {
-    GbParameterInfo info;
-    GbContactPart part;
-};
-
-const std::vector<VoigtRow> &voigtRows()
-{
-    static const std::vector<VoigtRow> rows = [] {
-        std::vector<VoigtRow> r;
-        VoigtRow row;
-        for (size_t id = 0; granbond_voigt_parameter_info(id, &row.info) == GB_STATUS_OK; id++) {
-            if (granbond_voigt_parameter_part(id, &row.part) != GB_STATUS_OK) std::abort();   // id < rows, read
-            r.push_back(row);
-        }
-        return r;
-    }();
-    return rows;
-}
-
-// The engine's registry takes a plain function per property, so there is
-// one creator per row id of the core's table, reading the row's name.
-const size_t kMaxRows = 32;
-
-template<size_t N>
-MatrixProperty *createRow(PropertyRegistry &registry, const char *caller, bool)
-{
-    return MODEL_PARAMS::createPerTypePairProperty(registry, voigtRows()[N].info.liggghts_name, caller);
-}
-
-template<size_t... N>
-std::array<MatrixPropertyCreator, sizeof...(N)> rowCreators(std::index_sequence<N...>)
-{
-    return {{&createRow<N>...}};
-}
-
-const std::array<MatrixPropertyCreator, kMaxRows> kRowCreators = rowCreators(std::make_index_sequence<kMaxRows>());
-
-bool in(unsigned parts, GbContactPart part) { return (parts & partBit(part)) != 0; }
-
-void set(LAMMPS_NS::Error *error, const std::string &caller, GbVoigtParams &p, const GbParameterInfo &info,
-         double value)
-{
-    if (granbond_voigt_params_set(&p, info.keyword, value) != GB_STATUS_OK)
-        endRun(error, FLERR, caller + ": " + coreReason());
-}
-
-std::map<const void *, VoigtContactShare *> &shares()
-{
-    static std::map<const void *, VoigtContactShare *> all;
-    return all;
-}
-
-
-}
-
-// ------------------------------------------------------------ deck
-
-VoigtDeck::VoigtDeck(unsigned owns, unsigned reads) :
-    owns_(owns), reads_(reads | owns), values_(voigtRows().size(), static_cast<double **>(0)),
-    switches_(voigtRows().size(), false)
-{}
-
-void setPresentParts(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, unsigned present)
-{
-    for (const VoigtRow &r : voigtRows())
-        if (r.info.kind == GB_PARAMETER_KIND_SWITCH && r.info.liggghts_source == GB_LIGGGHTS_SOURCE_FIXED)
-            set(error, caller, p, r.info, in(present, r.part) ? 1.0 : 0.0);
-}
-
-void VoigtDeck::registerSettings(::Settings &settings)
-{
-    const std::vector<VoigtRow> &rows = voigtRows();
-    for (size_t k = 0; k < rows.size(); k++)
-        if (in(owns_, rows[k].part) && rows[k].info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
-            settings.registerOnOff(rows[k].info.liggghts_name, switches_[k], rows[k].info.default_value != 0.0);
-}
-
-void VoigtDeck::connect(::PropertyRegistry &registry, const char *caller)
-{
-    // LIGGGHTS's own creators scale the stiffness and damping of a
-    // coarse-grained deck; the core's table takes the values as written,
-    // so such a deck would silently run other physics
-    if (registry.getLAMMPS()->force->cg_active())
-        endRun(registry.getLAMMPS()->error, FLERR,
-               std::string(caller) + ": coarse-graining (the coarsegraining command) is not supported by the voigt "
-                                     "sub-models");
-    const std::vector<VoigtRow> &rows = voigtRows();
-    if (rows.size() > kMaxRows)
-        endRun(registry.getLAMMPS()->error, FLERR,
-               std::string(caller) + ": the core's Voigt table has more rows than this adapter has property "
-                                     "creators (raise kMaxRows)");
-    for (size_t k = 0; k < rows.size(); k++) {
-        values_[k] = 0;
-        if (!in(reads_, rows[k].part) || rows[k].info.liggghts_source != GB_LIGGGHTS_SOURCE_PER_TYPE_PAIR) continue;
-        // registry keys of our own, so they cannot meet a stock model's
-        // key of the same property with another creator
-        const std::string key = std::string("voigt_") + rows[k].info.liggghts_name;
-        registry.registerProperty(key, kRowCreators[k]);
-        registry.connect(key, values_[k], caller);
-    }
-}
-
-void VoigtDeck::fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, int a, int b, unsigned parts,
-                     unsigned present) const
-{
-    const std::vector<VoigtRow> &rows = voigtRows();
-    const std::string where = std::string(caller) + " (fix property/global, atom types " + std::to_string(a) +
-                              " and " + std::to_string(b) + ")";
-    for (size_t k = 0; k < rows.size(); k++) {
-        if (!in(parts, rows[k].part)) continue;
-        if (values_[k]) set(error, where, p, rows[k].info, values_[k][a][b]);
-        if (in(owns_, rows[k].part) && rows[k].info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
-            set(error, caller, p, rows[k].info, switches_[k] ? 1.0 : 0.0);
-    }
-    if (present) setPresentParts(error, caller, p, present);
-}
-
-std::vector<GbVoigtParams> VoigtDeck::all(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts,
-                                          unsigned present) const
-{
-    const int stride = ntypes + 1;
-    GbVoigtParams defaults;
-    granbond_voigt_params_default(&defaults);
-    std::vector<GbVoigtParams> params(stride * stride, defaults);
-    for (int a = 1; a <= ntypes; a++)
-        for (int b = 1; b <= ntypes; b++) fill(error, caller, params[a * stride + b], a, b, parts, present);
-    return params;
-}
-
-// ------------------------------------------------------------ shared state
-
-VoigtContactShare::VoigtContactShare() :
-    frame(),
-    normal(false),
-    tangential_offset(-1),
-    rolling_offset(-1),
-    users_(0),
-    stride_(0),
-    settingRegistered_(false),
-    contactUnderBond_(false),
-    bondStatus_(-1),
-    bondedFlag_(-1)
-{}
-
-void VoigtContactShare::registerSettings(::Settings &settings)
-{
-    if (settingRegistered_) return;
-    settingRegistered_ = true;
-    settings.registerOnOff("contactUnderBond", contactUnderBond_, false);
-}
-
-void VoigtContactShare::findBond(LIGGGHTS::ContactModels::ContactModelBase *cmb)
-{
-    bondStatus_ = cmb->get_history_offset("bondnonlinear_status");
-    bondedFlag_ = cmb->get_history_offset("bondnonlinear_bonded_flag");
-}
-
-VoigtContactShare *VoigtContactShare::attach(const void *owner, bool *first)
-{
-    VoigtContactShare *&share = shares()[owner];
-    *first = !share;
-    if (!share) share = new VoigtContactShare();
-    share->users_++;
-    return share;
-}
-
-void VoigtContactShare::detach(const void *owner)
-{
-    std::map<const void *, VoigtContactShare *>::iterator it = shares().find(owner);
-    if (it != shares().end() && --it->second->users_ == 0) {
-        delete it->second;
-        shares().erase(it);
-    }
-}
-
-void VoigtContactShare::resize(int ntypes)
-{
-    if (ntypes + 1 == stride_) return;
-    stride_ = ntypes + 1;
-    GbVoigtParams defaults;
-    granbond_voigt_params_default(&defaults);
-    params_.assign(stride_ * stride_, defaults);
-}
-
-void VoigtContactShare::rebuild(LAMMPS_NS::Error *error)
-{
-    if (!fused()) return;
-    const unsigned present = partBit(GB_CONTACT_PART_NORMAL) | partBit(GB_CONTACT_PART_TANGENTIAL) |
-                             (fusedRolling() ? partBit(GB_CONTACT_PART_ROLLING) : 0u);
-    for (size_t k = 0; k < params_.size(); k++) setPresentParts(error, "voigt contact", params_[k], present);
-    table_.build(error, "voigt contact", stride_ - 1, params_);
-}
 
 // ------------------------------------------------------------ translation
 
@@ -505,13 +274,27 @@ void VoigtNormal::wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_
 
 template<class EngineBase>
 VoigtHistoryModel<EngineBase>::VoigtHistoryModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
-                                                 ContactModelBase *cmb, size_t firstSlot, const char *offsetName,
-                                                 int contactFlag) :
-    EngineBase(lmp, hsetup, cmb), owner_(cmb), skip_(false), contactFlag_(contactFlag)
+                                                 ContactModelBase *cmb, GbContactPart part, const char *caller,
+                                                 size_t firstSlot, const char *offsetName, int contactFlag) :
+    EngineBase(lmp, hsetup, cmb), part_(part), caller_(caller), owner_(cmb), skip_(false),
+    contactFlag_(contactFlag), deck_(partBit(part), 0)
 {
     share_ = VoigtContactShare::attach(owner_, &computesFrame_);
     offset_ = registerStateSlots(hsetup, GB_STATE_KIND_CONTACT, lmp->error, firstSlot, 3, "voigt_");
     cmb->add_history_offset(offsetName, offset_);
+    (part == GB_CONTACT_PART_TANGENTIAL ? share_->tangential_offset : share_->rolling_offset) = offset_;
+}
+
+template<class EngineBase>
+void VoigtHistoryModel<EngineBase>::connectToProperties(::PropertyRegistry &registry)
+{
+    LAMMPS_NS::Error *const error = this->error;
+    deck_.connect(registry, caller_);
+    const int ntypes = registry.max_type();
+    models_.build(error, caller_, ntypes, deck_.all(error, caller_, ntypes, deck_.owns(), deck_.owns()));
+    share_->contribute(error, caller_, ntypes, deck_);
+    // every sub-model exists by now
+    skip_ = part_ == GB_CONTACT_PART_TANGENTIAL ? share_->fused() : share_->fusedRolling();
 }
 
 template<class EngineBase>
@@ -558,24 +341,10 @@ template class VoigtHistoryModel<RollingModelBase>;
 
 VoigtTangential::VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                                  ContactModelBase *cmb) :
-    VoigtHistoryModel<TangentialModelBase>(lmp, hsetup, cmb,
+    VoigtHistoryModel<TangentialModelBase>(lmp, hsetup, cmb, GB_CONTACT_PART_TANGENTIAL, "tangential voigt",
                                            slotNamed(GB_STATE_KIND_CONTACT, "tangential_spring_x", lmp->error),
-                                           "voigt_tangential_spring",
-                                           CONTACT_TANGENTIAL_MODEL),
-    deck_(partBit(GB_CONTACT_PART_TANGENTIAL), 0)
-{
-    share_->tangential_offset = offset_;
-}
-
-void VoigtTangential::connectToProperties(::PropertyRegistry &registry)
-{
-    const char *caller = "tangential voigt";
-    deck_.connect(registry, caller);
-    const int ntypes = registry.max_type();
-    models_.build(error, caller, ntypes, deck_.all(error, caller, ntypes, deck_.owns(), deck_.owns()));
-    share_->contribute(error, caller, ntypes, deck_);
-    skip_ = share_->fused();   // every sub-model exists by now
-}
+                                           "voigt_tangential_spring", CONTACT_TANGENTIAL_MODEL)
+{}
 
 void VoigtTangential::intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
@@ -600,24 +369,10 @@ void VoigtTangential::intersect(const SurfacesIntersectData &sidata, ForceData &
 
 VoigtRolling::VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                            ContactModelBase *cmb) :
-    VoigtHistoryModel<RollingModelBase>(lmp, hsetup, cmb,
+    VoigtHistoryModel<RollingModelBase>(lmp, hsetup, cmb, GB_CONTACT_PART_ROLLING, "rolling_friction voigt",
                                         slotNamed(GB_STATE_KIND_CONTACT, "rolling_angle_x", lmp->error),
-                                        "voigt_rolling_angle",
-                                        CONTACT_ROLLING_MODEL),
-    deck_(partBit(GB_CONTACT_PART_ROLLING), 0)
-{
-    share_->rolling_offset = offset_;
-}
-
-void VoigtRolling::connectToProperties(::PropertyRegistry &registry)
-{
-    const char *caller = "rolling_friction voigt";
-    deck_.connect(registry, caller);
-    const int ntypes = registry.max_type();
-    models_.build(error, caller, ntypes, deck_.all(error, caller, ntypes, deck_.owns(), deck_.owns()));
-    share_->contribute(error, caller, ntypes, deck_);
-    skip_ = share_->fusedRolling();   // every sub-model exists by now
-}
+                                        "voigt_rolling_angle", CONTACT_ROLLING_MODEL)
+{}
 
 void VoigtRolling::intersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {

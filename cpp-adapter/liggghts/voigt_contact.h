@@ -3,8 +3,9 @@
 // `rolling_friction voigt`, each usable with stock models in the other
 // slots. No physics here: see rust-core (src/contact).
 //
-// Compiled once (voigt_contact.cpp); the NormalModel<> / TangentialModel<> /
-// RollingModel<> specialisations in *_model_voigt.h only inherit from these.
+// Compiled once (voigt_contact.cpp; the deck's parameters and the share in
+// voigt_deck.h); the NormalModel<> / TangentialModel<> / RollingModel<>
+// specialisations in voigt_models.h only inherit from these.
 //
 // The sub-models of one ContactModel (one pair style or one wall fix) share a
 // VoigtContactShare: the contact frame of the contact at hand (computed by
@@ -21,6 +22,7 @@
 #include "rolling_model_base.h"
 #include "granbond.h"
 #include "run_checks.h"
+#include "voigt_deck.h"
 
 #include <cstddef>
 #include <deque>
@@ -35,127 +37,6 @@ namespace liggghts {
 using LIGGGHTS::ContactModels::ForceData;
 using LIGGGHTS::ContactModels::SurfacesCloseData;
 using LIGGGHTS::ContactModels::SurfacesIntersectData;
-
-// One validated core model per atom-type pair.
-class VoigtModelTable {
-public:
-    VoigtModelTable() : stride_(0) {}
-    ~VoigtModelTable() { clear(); }
-
-    // params[a * (ntypes + 1) + b] for types a, b in 1..ntypes; a refusal by
-    // the core ends the run with its message (which names the property).
-    void build(LAMMPS_NS::Error *error, const char *who, int ntypes, const std::vector<GbVoigtParams> &params);
-    const GbVoigtModel *at(int itype, int jtype) const { return models_[itype * stride_ + jtype]; }
-    // As the core's checks take the table: entry a * (ntypes() + 1) + b.
-    const GbVoigtModel *const *data() const { return models_.data(); }
-    int ntypes() const { return stride_ - 1; }
-
-private:
-    VoigtModelTable(const VoigtModelTable &);
-    VoigtModelTable &operator=(const VoigtModelTable &);
-    void clear();
-
-    int stride_;
-    std::vector<GbVoigtModel *> models_;
-};
-
-// The parts of the Voigt contact (granbond_voigt_parameter_part) as bits.
-inline unsigned partBit(GbContactPart part) { return 1u << static_cast<unsigned>(part); }
-
-// What a voigt sub-model reads from the deck, row by row of the core's
-// Voigt table: the per-type-pair properties of the parts it reads (by the
-// row's LIGGGHTS name) and the switches of the parts it owns (registered
-// with the engine's settings).
-class VoigtDeck {
-public:
-    VoigtDeck(unsigned owns, unsigned reads);
-
-    void registerSettings(::Settings &settings);
-    void connect(::PropertyRegistry &registry, const char *caller);
-    // The rows of the parts in `parts` for types a, b written into `p`; the
-    // switches that say a part is present (LiggghtsSource FIXED) on for
-    // the parts in `present`. The core refuses a value out of range.
-    void fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, int a, int b, unsigned parts,
-              unsigned present) const;
-    // `fill` for every pair of types 1..ntypes, over the core's defaults.
-    std::vector<GbVoigtParams> all(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts,
-                                   unsigned present) const;
-    unsigned owns() const { return owns_; }
-
-private:
-    unsigned owns_, reads_;
-    std::vector<double **> values_;   // per row: the connected property, or null
-    std::deque<bool> switches_;       // per row: the engine's Settings take a bool&
-};
-
-// Writes the switches that say a part is present into `p`.
-void setPresentParts(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, unsigned present);
-
-class VoigtContactShare {
-public:
-    // Joins the share of ContactModel `owner`; `*first` tells whether the
-    // caller is the first voigt sub-model constructed for it.
-    static VoigtContactShare *attach(const void *owner, bool *first);
-    static void detach(const void *owner);
-
-    // Writes each type pair's parameters owned by the caller into the
-    // combined set, and rebuilds the combined models when they are used.
-    // Every sub-model has validated its own parameters by then.
-    void contribute(LAMMPS_NS::Error *error, const char *caller, int ntypes, const VoigtDeck &deck)
-    {
-        resize(ntypes);
-        for (int a = 1; a <= ntypes; a++)
-            for (int b = 1; b <= ntypes; b++)
-                deck.fill(error, caller, params_[a * stride_ + b], a, b, deck.owns(), 0);
-        rebuild(error);
-    }
-
-    // The whole contact in one core call: normal and tangential voigt, with
-    // the rolling history right after the tangential one when rolling is
-    // voigt too (the engine gives consecutive offsets to consecutive
-    // sub-models, and only cohesion registers between normal and tangential).
-    bool fused() const { return normal && tangential_offset >= 0; }
-    bool fusedRolling() const { return fused() && rolling_offset == tangential_offset + 3; }
-    const GbVoigtModel *fusedModel(int itype, int jtype) const { return table_.at(itype, jtype); }
-    const VoigtModelTable &fusedTable() const { return table_; }
-
-    // `contactUnderBond on|off`, registered by whichever voigt sub-model
-    // the engine asks for its settings first (each name once per style).
-    void registerSettings(::Settings &settings);
-    // Finds where a `cohesion bond/nonlinear` of the same style says a bond
-    // is, if there is one (all sub-models are constructed by then): a bit of
-    // a pair's contact flag, or a wall bond's status slot.
-    void findBond(LIGGGHTS::ContactModels::ContactModelBase *cmb);
-    // With contactUnderBond off, an intact bond holds the contact's history
-    // at zero: the contact starts afresh when the bond breaks.
-    bool heldByBond(const LIGGGHTS::ContactModels::SurfacesCloseData &d) const
-    {
-        if (!bondMayHold()) return false;
-        if (bondedFlag_ > 0) return d.contact_flags && (*d.contact_flags & bondedFlag_);
-        return d.contact_history && d.contact_history[bondStatus_] == GB_BOND_STATUS_INTACT;
-    }
-    // Known once the settings are read and every sub-model is constructed.
-    bool bondMayHold() const { return (bondStatus_ >= 0 || bondedFlag_ > 0) && !contactUnderBond_; }
-
-    GbContactFrame frame;
-    bool normal;               // model voigt present
-    int tangential_offset;     // history offset of tangential voigt, -1 if absent
-    int rolling_offset;        // history offset of rolling_friction voigt, -1 if absent
-
-private:
-    VoigtContactShare();
-    void resize(int ntypes);
-    void rebuild(LAMMPS_NS::Error *error);
-
-    int users_;
-    int stride_;
-    bool settingRegistered_;
-    bool contactUnderBond_;
-    int bondStatus_;   // history offset of a wall bond's status, -1 without one
-    int bondedFlag_;   // the contact flag's bit of a pair bond, -1 without one
-    std::vector<GbVoigtParams> params_;
-    VoigtModelTable table_;
-};
 
 // Records handed between the engine, this adapter and the core (the
 // engine's contact data, the frame, the core's output, the engine's force
@@ -324,17 +205,27 @@ private:
 
 // What tangential and rolling voigt have in common: three slots of the
 // core's contact state (forgotten when the contact ends), the contact frame
-// they compute or read, and their own validated models. Instantiated (in
-// voigt_contact.cpp) for TangentialModelBase and RollingModelBase.
+// they compute or read, the deck's values of their part of the contact and
+// their own validated models. Instantiated (in voigt_contact.cpp) for
+// TangentialModelBase and RollingModelBase.
 template<class EngineBase>
 class VoigtHistoryModel : public EngineBase {
 public:
+    // `part`: the part of the Voigt contact, `caller` the sub-model as the
+    // deck names it, `firstSlot` its first slot of the contact state, kept
+    // in the history under `offsetName`; `contactFlag` its bit of a pair's
+    // contact flag
     VoigtHistoryModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
-                      LIGGGHTS::ContactModels::ContactModelBase *cmb, size_t firstSlot, const char *offsetName,
-                      int contactFlag);
+                      LIGGGHTS::ContactModels::ContactModelBase *cmb, GbContactPart part, const char *caller,
+                      size_t firstSlot, const char *offsetName, int contactFlag);
     ~VoigtHistoryModel();
 
-    void registerSettings(::Settings &settings) { share_->registerSettings(settings); }
+    void registerSettings(::Settings &settings)
+    {
+        deck_.registerSettings(settings);
+        share_->registerSettings(settings);
+    }
+    void connectToProperties(::PropertyRegistry &registry);
     void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *cmb)
     {
         share_->findBond(cmb);
@@ -351,12 +242,15 @@ protected:
     // the contact (heldByBond), zeroed stored slots and a zero `scratch`.
     double *begin(const SurfacesIntersectData &sidata, bool always, double *scratch);
 
+    const GbContactPart part_;
+    const char *const caller_;
     const void *owner_;
     VoigtContactShare *share_;
     bool computesFrame_;
     bool skip_;   // model voigt does the whole contact
     int offset_;
     const int contactFlag_;
+    VoigtDeck deck_;
     VoigtModelTable models_;
 };
 
@@ -365,12 +259,6 @@ public:
     VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                     LIGGGHTS::ContactModels::ContactModelBase *cmb);
 
-    void registerSettings(::Settings &settings)
-    {
-        deck_.registerSettings(settings);
-        share_->registerSettings(settings);
-    }
-    void connectToProperties(::PropertyRegistry &registry);
     // inline: in voigt x voigt the call costs only the flag and the test
     void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
@@ -380,8 +268,6 @@ public:
 
 private:
     void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
-
-    VoigtDeck deck_;
 };
 
 class VoigtRolling : public VoigtHistoryModel<LIGGGHTS::ContactModels::RollingModelBase> {
@@ -389,12 +275,6 @@ public:
     VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                  LIGGGHTS::ContactModels::ContactModelBase *cmb);
 
-    void registerSettings(::Settings &settings)
-    {
-        deck_.registerSettings(settings);
-        share_->registerSettings(settings);
-    }
-    void connectToProperties(::PropertyRegistry &registry);
     void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         if (sidata.contact_flags) *sidata.contact_flags |= LIGGGHTS::ContactModels::CONTACT_ROLLING_MODEL;
@@ -403,8 +283,6 @@ public:
 
 private:
     void intersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
-
-    VoigtDeck deck_;
 };
 
 }

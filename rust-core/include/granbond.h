@@ -290,15 +290,6 @@ typedef enum GbStateKind {
    * (`granbond_bond_output_store`).
    */
   GB_STATE_KIND_BOND_OUTPUT = 3,
-  /**
-   * A pair record with the Voigt contact's state: contact, bond, bond
-   * loads (`granbond_record_layout`).
-   */
-  GB_STATE_KIND_PAIR_RECORD = 4,
-  /**
-   * A pair record without the contact's state: bond, bond loads.
-   */
-  GB_STATE_KIND_BOND_RECORD = 5,
 } GbStateKind;
 
 /**
@@ -431,18 +422,6 @@ typedef struct GbLayout {
    * `sizeof(GbCheckReport)`.
    */
   size_t check_report;
-  /**
-   * `sizeof(GbRecordLayout)`.
-   */
-  size_t record_layout;
-  /**
-   * `sizeof(GbSweepPass)`.
-   */
-  size_t sweep_pass;
-  /**
-   * `sizeof(GbSweepTally)`.
-   */
-  size_t sweep_tally;
   /**
    * `sizeof(GbStoreAtoms)`.
    */
@@ -668,6 +647,17 @@ typedef struct GbBondParams {
    * tangential and rolling loads kept under an overlapping bond.
    */
   int32_t inl_compatible;
+  /**
+   * The contact's state (the tangential spring, the rolling angle) goes
+   * on under an intact bond, stepped as if the bond were not there, and
+   * the contact acts from where it stands when the bond breaks; off, it
+   * is held at zero under the bond and starts afresh at the break. Which
+   * of the contact's loads act under the bond is the law's
+   * (`keeps_contact_loads`, `keeps_contact_tangential`). On by default for the
+   * linear bond ([`BondParams::linear_default_in_units`]), whose law
+   * keeps the contact's loads.
+   */
+  int32_t contact_under_bond;
   /**
    * LIGGGHTS-INL's linear bond (`cohesion bond`,
    * docs/models/bond-linear.md) instead of `bond/nonlinear`: the rows
@@ -1306,94 +1296,6 @@ typedef struct GbEnergySums {
   double released;
 } GbEnergySums;
 
-/**
- * Where the parts of a pair record lie, in doubles from its start.
- */
-typedef struct GbRecordLayout {
-  /**
-   * The contact state: `contact_len` doubles from 0 (0 where the engine
-   * keeps the contact's state).
-   */
-  size_t contact_len;
-  /**
-   * The bond state ([`crate::bond::BondState`]).
-   */
-  size_t bond;
-  /**
-   * The bond's status ([`crate::bond::BondStatus`] as a double): what an
-   * adapter reads to know whether a pair is bonded.
-   */
-  size_t status;
-  /**
-   * The loads of the bond's latest force pass
-   * ([`crate::bond::output_slots`]).
-   */
-  size_t loads;
-  /**
-   * The whole record.
-   */
-  size_t len;
-} GbRecordLayout;
-
-/**
- * One pass, as the engine describes it.
- */
-typedef struct GbSweepPass {
-  /**
-   * The time step (force passes).
-   */
-  double dt;
-  /**
-   * 1: a force pass, which advances the bonds; 0: a setup pass.
-   */
-  int32_t advance;
-  /**
-   * 1: the contact's state goes on under an intact bond and acts, from
-   * where it stands, when the bond breaks; 0: it starts afresh.
-   */
-  int32_t contact_under_bond;
-  /**
-   * 1: the records hold the Voigt contact's state first
-   * ([`RecordLayout::new`]).
-   */
-  int32_t with_contact;
-  /**
-   * 1: a force pass stores an intact bond's loads in its record (and
-   * clears them at a break); 0: the caller keeps the pass's outputs and
-   * files them with [`file_loads`] before anything reads the records'
-   * loads, and a force pass reads and writes only the first
-   * [`RecordLayout::loads`] doubles of each record.
-   */
-  int32_t keep_loads;
-} GbSweepPass;
-
-/**
- * The bonds one pass counted (only those its caller marked as counted:
- * each bond once over all ranks).
- */
-typedef struct GbSweepTally {
-  /**
-   * Intact after the pass.
-   */
-  int64_t intact;
-  /**
-   * Broken in this pass by distance ([`BreakMode::Distance`]).
-   */
-  int64_t broken_distance;
-  /**
-   * Broken in this pass by tension ([`BreakMode::Tension`]).
-   */
-  int64_t broken_tension;
-  /**
-   * Broken in this pass by compression ([`BreakMode::Compression`]).
-   */
-  int64_t broken_compression;
-  /**
-   * Broken in this pass by shear ([`BreakMode::Shear`]).
-   */
-  int64_t broken_shear;
-} GbSweepTally;
-
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -1422,15 +1324,19 @@ enum GbStatus granbond_check_layout(const struct GbLayout *expected);
 enum GbStatus granbond_bond_params_default(struct GbBondParams *params);
 
 /**
- * Fills `params` with the defaults in the deck units of `units`, the
- * engine's `units` style ("si", "micro", ...): the defaults that carry
+ * Fills `params` with the defaults of a law in the deck units of `units`,
+ * the engine's `units` style ("si", "micro", ...): the defaults that carry
  * units converted from SI, or left without a value (NaN) where the style
- * has no physical scale (`BondParams::default_in_units`).
+ * has no physical scale (`BondParams::default_in_units`). `linear`
+ * non-zero: those of LIGGGHTS-INL's linear bond, `linear` and
+ * `contact_under_bond` on (`BondParams::linear_default_in_units`).
  *
  * # Safety
  * `units` must be null or a C string; `params` null or valid for writes.
  */
-enum GbStatus granbond_bond_params_default_in_units(const char *units, struct GbBondParams *params);
+enum GbStatus granbond_bond_params_default_in_units(const char *units,
+                                                    int32_t linear,
+                                                    struct GbBondParams *params);
 
 /**
  * Validates `params` and builds a model. On `InvalidParameter` the message
@@ -2171,9 +2077,11 @@ enum GbStatus granbond_bond_field_info(size_t id,
 
 /**
  * The fields of one bond of `model`, written to `values`
- * (`double[granbond_bond_field_count()]`, in the table's order): its pair
- * record `record` (`granbond_record_layout(with_contact)`) as sphere `i`
- * keeps it, and the centres `x_i`, `x_j` (`double[3]` each) of the two
+ * (`double[granbond_bond_field_count()]`, in the table's order): its
+ * `record` as sphere `i` sees it (its state, `GRANBOND_BOND_STATE_LEN`
+ * doubles, then the output of its latest force pass as
+ * `granbond_bond_output_store` writes it, `GRANBOND_BOND_OUTPUT_LEN`
+ * doubles), and the centres `x_i`, `x_j` (`double[3]` each) of the two
  * spheres. Refused, `values` left alone: non-finite centres or a record
  * whose bond state or loads hold a non-finite number
  * (`GB_STATUS_NON_FINITE_INPUT`), coincident centres
@@ -2183,12 +2091,11 @@ enum GbStatus granbond_bond_field_info(size_t id,
  * (never breaks) is written as it is.
  *
  * # Safety
- * `model` must be null or a model; `record` null or valid for the
- * record's length; `x_i`, `x_j` null or three doubles; `values` null or
+ * `model` must be null or a model; `record` null or valid for
+ * `GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN` doubles; `x_i`, `x_j` null or three doubles; `values` null or
  * valid for the field count.
  */
 enum GbStatus granbond_bond_fields(const struct GbBondModel *model,
-                                   int32_t with_contact,
                                    const double *record,
                                    const double *x_i,
                                    const double *x_j,
@@ -2323,9 +2230,11 @@ enum GbStatus granbond_voigt_parameter_needed(const struct GbVoigtParams *params
                                               int32_t *needed);
 
 /**
- * Whether row `id` of the bond table says when bonds form (1) or not (0):
- * a deck whose bonds come from an engine's topology gives none of those
- * rows. -1 for an `id` beyond the table.
+ * Whether row `id` of the bond table belongs to bonds a pair style forms
+ * between touching spheres: 1 a row that says when bonds form, 2 one that
+ * says what the contact does under the bond (`contact_under_bond`), 0
+ * neither. A deck whose bonds come from an engine's topology gives none of
+ * those rows. -1 for an `id` beyond the table.
  */
 int32_t granbond_bond_parameter_sets_creation(size_t id);
 
@@ -2843,81 +2752,6 @@ enum GbStatus granbond_bond_store_bond_energy(const struct GbBondStore *store,
                                               size_t k,
                                               double *energy);
 
-/**
- * The layout of a pair record, with the Voigt contact's state first
- * (`with_contact` 1, LAMMPS `pair granbond`) or without it (0, where the
- * engine keeps the contact's state), written to `layout`. The slots'
- * names and swap rules are those of `granbond_state_slot` with
- * `GB_STATE_KIND_PAIR_RECORD` or `GB_STATE_KIND_BOND_RECORD`.
- *
- * # Safety
- * `layout` must be null or valid for writes.
- */
-enum GbStatus granbond_record_layout(int32_t with_contact, struct GbRecordLayout *layout);
-
-/**
- * One pass (`pass`: a force or a setup pass) over `count` bonded pairs of
- * one bond model, as an engine's index of bonds holds them: bond `k`
- * joins atoms `pairs[2k]` (`i`) and `pairs[2k + 1]` (`j`) of the engine's
- * arrays `atoms`, and its pair record (`granbond_record_layout`, no two
- * the same) starts at `records[k]`.
- *
- * A force pass advances every bond (bit for bit `granbond_bond_compute_indexed`
- * on the records' bond states) and writes its loads to `out[k]`; with
- * `pass->keep_loads`, an intact bond's loads are also kept in its record
- * (without, the caller files `out` with `granbond_bond_file_loads` before
- * anything reads them, and the pass reads and writes only the first
- * `layout.loads` doubles of each record); a bond that breaks has `status`
- * broken and its `break_mode` in `out[k]`, and unless
- * `pass->contact_under_bond`, its record's contact state is cleared. A
- * setup pass advances nothing and writes to `out[k]` the loads kept in
- * the records. Bonds with `counted[k]` non-zero (each bond on one rank
- * only) are added to `tally`: intact after the pass, broken by mode.
- *
- * Stops at the first bad input and writes its index to `failed_index` (if
- * not null); a null or misaligned `records[k]` and an atom index outside
- * `0 .. atoms->count` are reported before any bond is advanced.
- *
- * # Safety
- * Pointers must be null or valid for the sizes above (`pairs`: `2 count`
- * ints; `counted`: `count` bytes; each `records[k]`: a record's length, or
- * `layout.loads` doubles in a force pass without `keep_loads`).
- */
-enum GbStatus granbond_bond_sweep(const struct GbBondModel *model,
-                                  const struct GbSweepPass *pass,
-                                  size_t count,
-                                  const struct GbAtomArrays *atoms,
-                                  const int32_t *pairs,
-                                  const uint8_t *counted,
-                                  double *const *records,
-                                  struct GbBondOutput *out,
-                                  struct GbSweepTally *tally,
-                                  size_t *failed_index);
-
-/**
- * Files the outputs `outs[k]` of the latest passes of `count` bonds in
- * their whole pair records `records[k]` (`granbond_record_layout` of
- * `pass->with_contact`), as a force pass of `pass` with `keep_loads` would
- * have left them: an intact bond's loads stored; those of a bond that broke
- * in the pass (a break mode) cleared and, unless
- * `pass->contact_under_bond`, its contact's state; any other output (a bond
- * broken before, or all zero as no pass wrote it) leaves its record alone. For
- * engines that sweep without `keep_loads` (or step copies of the bond
- * states alone, `with_contact` 0), at a break and before anything reads the
- * records' loads: a run's end, a restart file, an output of the bonds. A
- * null or misaligned record is reported, its index written to
- * `failed_index` (if not null), before any is filed.
- *
- * # Safety
- * Pointers must be null or valid: `records` and `outs` hold `count`
- * entries, each `records[k]` a record's length.
- */
-enum GbStatus granbond_bond_file_loads(const struct GbSweepPass *pass,
-                                       size_t count,
-                                       double *const *records,
-                                       const struct GbBondOutput *outs,
-                                       size_t *failed_index);
-
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus
@@ -2947,9 +2781,6 @@ static inline GbLayout granbond_header_layout(void)
     l.tangential_output = sizeof(GbTangentialOutput);
     l.type_bodies = sizeof(GbTypeBodies);
     l.check_report = sizeof(GbCheckReport);
-    l.record_layout = sizeof(GbRecordLayout);
-    l.sweep_pass = sizeof(GbSweepPass);
-    l.sweep_tally = sizeof(GbSweepTally);
     l.store_atoms = sizeof(GbStoreAtoms);
     l.link_report = sizeof(GbLinkReport);
     l.store_counts = sizeof(GbStoreCounts);

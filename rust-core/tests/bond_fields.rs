@@ -7,12 +7,11 @@ use granbond_test_support as common;
 
 use common::{bond_at, model, pair_at, params, step, RADIUS};
 use granbond::bond::fields::{BOND_FIELDS, BOND_FIELD_COUNT};
-use granbond::bond::output_slots::store_output;
-use granbond::bond::{BondParams, BOND_STATE_LEN};
+use granbond::bond::output_slots::{store_output, BOND_OUTPUT_SLOTS};
+use granbond::bond::{BondParams, BOND_SLOTS, BOND_STATE_LEN};
 use granbond::ffi::error::granbond_last_error_message;
 use granbond::ffi::fields::{granbond_bond_field_count, granbond_bond_field_info, granbond_bond_fields};
 use granbond::ffi::Status;
-use granbond::record::{record_slots, RecordLayout};
 use granbond::state_layout::swap_state;
 use std::f64::consts::PI;
 use std::ffi::{c_char, CStr};
@@ -34,16 +33,15 @@ fn stress_params() -> BondParams {
     }
 }
 
-/// The record (no contact part) of a bond created at `R0` and stretched by
-/// `STRETCH` along x in one step at rest, as sphere i keeps it.
+/// The record (state, then output) of a bond created at `R0` and stretched
+/// by `STRETCH` along x in one step at rest, as sphere i keeps it.
 fn stretched_record(p: BondParams) -> Vec<f64> {
     let m = model(p);
     let mut state = bond_at(R0);
     let out = step(&m, &pair_at(R0 + STRETCH), 1e-7, &mut state);
-    let layout = RecordLayout::new(false);
-    let mut record = vec![0.0; layout.len];
-    record[layout.bond..layout.bond + BOND_STATE_LEN].copy_from_slice(state.as_slots());
-    record[layout.loads..layout.len].copy_from_slice(&store_output(&out));
+    let mut record = state.as_slots().to_vec();
+    record.extend_from_slice(&store_output(&out));
+    assert_eq!(record.len(), BOND_STATE_LEN + BOND_OUTPUT_SLOTS.len());
     record
 }
 
@@ -53,7 +51,6 @@ fn fields_of(p: BondParams, record: &[f64], x_i: [f64; 3], x_j: [f64; 3]) -> Vec
     let status = unsafe {
         granbond_bond_fields(
             &m,
-            0,
             record.as_ptr(),
             x_i.as_ptr(),
             x_j.as_ptr(),
@@ -138,7 +135,7 @@ fn a_stretched_bond_shows_the_closed_forms_of_the_virgin_tension_line() {
 fn the_other_sphere_sees_the_same_bond() {
     let record = stretched_record(stress_params());
     let mut swapped = record.clone();
-    let slots: Vec<_> = record_slots(false).collect();
+    let slots: Vec<_> = BOND_SLOTS.iter().chain(&BOND_OUTPUT_SLOTS).copied().collect();
     swap_state(&slots, &mut swapped);
     let x_i = [R0 + STRETCH, 0.0, 0.0];
     let mine = fields_of(stress_params(), &record, x_i, [0.0; 3]);
@@ -174,7 +171,7 @@ fn bad_inputs_are_refused_naming_the_argument() {
     let x = [R0, 0.0, 0.0];
     let nan = [f64::NAN, 0.0, 0.0];
     let call = |rec: *const f64, xi: &[f64; 3], xj: &[f64; 3], out: *mut f64| unsafe {
-        granbond_bond_fields(&m, 0, rec, xi.as_ptr(), xj.as_ptr(), out)
+        granbond_bond_fields(&m, rec, xi.as_ptr(), xj.as_ptr(), out)
     };
     let message = || {
         unsafe { CStr::from_ptr(granbond_last_error_message()) }

@@ -7,8 +7,8 @@ use granbond_test_support as common;
 
 use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode};
 use granbond::bond_store::{
-    creates_here, BondStore, Ids, LinkAtoms, LinkReport, StoreCounts, StoredBond, BOND_BUDGET_BYTES,
-    BYTES_PER_BOND, CHUNK,
+    creates_here, BondStore, Ids, LinkAtoms, LinkReport, StepFailureReason, StoreCounts, StoredBond,
+    BOND_BUDGET_BYTES, BYTES_PER_BOND, CHUNK,
 };
 use granbond::kinematics::PairKinematics;
 use granbond::pair_source::AtomArrays;
@@ -678,6 +678,77 @@ fn a_broken_bond_leaves_the_store_and_cannot_form_again_in_its_pass() {
     assert_eq!((c.created, c.broken_distance, c.intact), (1, 1, 0));
     assert!(balanced(&c));
     assert_eq!(store.len(), 0);
+}
+
+#[test]
+fn each_break_is_counted_by_its_mode() {
+    // stress mode: a normal strength that a 1e-7 m stretch or squeeze
+    // exceeds, or a shear strength that one step of sliding exceeds
+    let sigma = BondParams {
+        stress_break: 1,
+        max_sigma: 1.0,
+        ..common::params()
+    };
+    let tau = BondParams {
+        stress_break: 1,
+        max_tau: 1.0,
+        ..common::params()
+    };
+    for (p, moved_by, mode) in [
+        (sigma, [1e-7, 0.0], BreakMode::Tension),
+        (sigma, [-1e-7, 0.0], BreakMode::Compression),
+        (tau, [0.0, 1.0], BreakMode::Shear),
+    ] {
+        let model = bond_model(p);
+        let (mut store, mut atoms) = bonded_pair(&model);
+        atoms.x[3] += moved_by[0];
+        atoms.v[4] = moved_by[1];
+        link(&mut store, &atoms);
+        let passed = pass(&mut store, &model, &atoms, 1e-7, true);
+        assert_eq!(passed.outs[0].1.break_mode, mode as i32, "{mode:?}");
+        let c = store.counts();
+        let by_mode = [
+            (BreakMode::Distance, c.broken_distance),
+            (BreakMode::Tension, c.broken_tension),
+            (BreakMode::Compression, c.broken_compression),
+            (BreakMode::Shear, c.broken_shear),
+        ];
+        for (m, n) in by_mode {
+            assert_eq!(n, i64::from(m == mode), "{mode:?}: counted under {m:?}");
+        }
+        assert!(balanced(&c));
+    }
+}
+
+#[test]
+fn an_atom_index_beyond_the_arrays_is_named_before_any_bond_moves() {
+    let model = bond_model(common::params());
+    let (mut store, mut atoms) = lattice_store(3, &model);
+    atoms.drift(2e-6);
+    link(&mut store, &atoms);
+    let before = bonds_by_id(&store, &atoms);
+    // arrays that end before the last atom, as an engine that shrank them
+    // without linking again would pass
+    let mut short = atoms.clone();
+    short.truncate(atoms.len() - 1);
+    store.begin_pass(1e-6, true, false);
+    let (mut ends, mut outs) = ([[0; 2]; CHUNK], [BondOutput::default(); CHUNK]);
+    let failure = store
+        .step_next(
+            &[Some(&model)],
+            short.arrays(),
+            Ids::Wide(&atoms.ids),
+            &mut ends,
+            &mut outs,
+        )
+        .expect_err("an atom beyond the arrays");
+    assert_eq!(failure.reason, StepFailureReason::IndexOutOfRange);
+    let last = (atoms.len() - 1) as i32;
+    assert!(
+        failure.ends.contains(&last),
+        "{failure:?} names the bond of the last atom"
+    );
+    assert_eq!(bonds_by_id(&store, &atoms), before, "no bond moved");
 }
 
 #[test]

@@ -505,3 +505,31 @@ fn smoothing_velocities_default_to_the_same_physical_quantities_in_every_unit_st
     };
     assert!(BondModel::new(given).is_ok());
 }
+
+/// What the contact does under a bond is a row of the bond table, set by
+/// either engine's name: off for `bond/nonlinear` (the contact held at
+/// zero under the bond, afresh at the break), on for the linear bond, whose
+/// law keeps the contact's loads under the bond; both values build a model
+/// that says so.
+#[test]
+fn the_contact_under_the_bond_is_a_row_with_each_law_s_default() {
+    use granbond::parameters::set_by_name;
+    let row = PARAMETERS
+        .iter()
+        .find(|r| r.name == "contact_under_bond")
+        .expect("a row of the table");
+    assert_eq!(row.liggghts_name, "contactUnderBond");
+    let nonlinear = BondParams::default_in_units("si");
+    let linear = BondParams::linear_default_in_units("si");
+    assert!(!BondModel::new(nonlinear).unwrap().contact_goes_on_under_bond());
+    let m = BondModel::new(linear).unwrap();
+    assert!(m.contact_goes_on_under_bond() && m.keeps_contact_loads());
+    for (p, name) in [(nonlinear, "contact_under_bond"), (linear, "contactUnderBond")] {
+        for value in [1.0, 0.0] {
+            let mut q = p;
+            set_by_name("bond/nonlinear", PARAMETERS, &mut q, name, value).unwrap();
+            let m = BondModel::new(q).expect("either value, either law");
+            assert_eq!(m.contact_goes_on_under_bond(), value == 1.0, "{name} {value}");
+        }
+    }
+}

@@ -61,7 +61,8 @@
   refused     settings that cannot work are refused naming what to write:
               LAMMPS's default special_bonds (1-3 pairs out of the
               neighbour list), 1-2 pairs out of it (a broken bond's pair
-              could never touch), and a creation keyword in bond_coeff.
+              could never touch), a creation keyword in bond_coeff, and
+              contact_under_bond there (special_bonds says it).
 
 usage: check_bond_style.py --mode MODE --engine LMP_GRANBOND --wheel-lmp LMP
                            --plugin SO --libpath DIR [--mpiexec MPIEXEC_MPICH]
@@ -328,7 +329,9 @@ def check_refused(a, workdir):
     cases = [("special_bonds lj 0 1 1 coul 1 1 1", "special_bonds lj 0 0 0 coul 0 0 0", "special_bonds"),
              ("special_bonds lj 0 1 1 coul 1 1 1", "special_bonds lj 0 1 1 coul 0 1 1", "never touch"),
              ("bond_coeff   1 ${law} break stress 5e6 5e3 ratio 0.001",
-              "bond_coeff   1 ${law} break stress 5e6 5e3 ratio 0.001 create_distance 2.1e-3", "create_distance")]
+              "bond_coeff   1 ${law} break stress 5e6 5e3 ratio 0.001 create_distance 2.1e-3", "create_distance"),
+             ("bond_coeff   1 ${law} break stress 5e6 5e3 ratio 0.001",
+              "bond_coeff   1 ${law} break stress 5e6 5e3 ratio 0.001 contact_under_bond yes", "contact_under_bond")]
     with open(os.path.join(DECKS, "in.row_types")) as f:
         deck = f.read()
     failures = []

@@ -151,6 +151,13 @@ impl BondLaws {
         self.linear
     }
 
+    /// Whether the contact's state goes on under an intact bond and acts
+    /// from where it stands when the bond breaks (`contact_under_bond`);
+    /// otherwise it is held at zero under the bond and starts afresh.
+    pub fn contact_goes_on_under_bond(&self) -> bool {
+        BondParams::switch(self.params.contact_under_bond)
+    }
+
     /// Whether a wall bond follows LIGGGHTS-INL's geometry (`bond::wall`):
     /// under its code (`inl_compatible`) and its linear bond.
     pub fn inl_wall(&self) -> bool {

@@ -49,7 +49,8 @@ pub use energy::BondEnergy;
 pub use laws::BondLaws;
 pub use model::BondModel;
 pub use params::{
-    liggghts_name, BondParams, ParameterError, CREATION_ROWS, LINEAR_NAMES, PARAMETERS, PHRASES,
+    liggghts_name, BondParams, ParameterError, CREATION_ROWS, LINEAR_NAMES, PAIR_BOND_ROWS, PARAMETERS,
+    PHRASES,
 };
 pub use state::{BondOutput, BondState, BondStatus, BOND_SLOTS, BOND_STATE_LEN};
 pub use wall::{WallBondState, WALL_BOND_SLOTS, WALL_BOND_STATE_LEN};

@@ -137,8 +137,9 @@ impl BondModel {
     /// afresh: LIGGGHTS-INL's code (`inl_compatible`) evaluates a trial
     /// step, which moves only the history extremes and breaks nothing, and
     /// its linear bond (`linear`) one that moves nothing.
-    /// `Ok(false)` for the default law, which applies the loads of the
-    /// latest force pass (`crate::sweep::setup_loads`): nothing is written.
+    /// `Ok(false)` for the default law, whose setup pass evaluates its
+    /// stored state over a zero time step (`crate::bond_store`'s pass):
+    /// nothing is written.
     /// `wall`: `kin` is a wall bond's, its partner from
     /// [`super::wall::wall_kinematics`] (which does not move here).
     pub fn setup_step(

@@ -111,6 +111,15 @@ pub struct BondParams {
     /// and twisting and bending per Cartesian component, and the contact's
     /// tangential and rolling loads kept under an overlapping bond.
     pub inl_compatible: i32,
+    /// The contact's state (the tangential spring, the rolling angle) goes
+    /// on under an intact bond, stepped as if the bond were not there, and
+    /// the contact acts from where it stands when the bond breaks; off, it
+    /// is held at zero under the bond and starts afresh at the break. Which
+    /// of the contact's loads act under the bond is the law's
+    /// (`keeps_contact_loads`, `keeps_contact_tangential`). On by default for the
+    /// linear bond ([`BondParams::linear_default_in_units`]), whose law
+    /// keeps the contact's loads.
+    pub contact_under_bond: i32,
     /// LIGGGHTS-INL's linear bond (`cohesion bond`,
     /// docs/models/bond-linear.md) instead of `bond/nonlinear`: the rows
     /// it reads are [`LINEAR_NAMES`].
@@ -189,6 +198,7 @@ impl Default for BondParams {
             twist: 1,
             bend: 1,
             inl_compatible: 0,
+            contact_under_bond: 0,
             linear: 0,
             k_n: 0.0,
             k_t: 0.0,
@@ -308,6 +318,7 @@ crate::parameter_table!(
         twist, "normalTorqueStress", Switch, "switch", Switch, ALWAYS;
         bend, "shearTorqueStress", Switch, "switch", Switch, ALWAYS;
         inl_compatible, "inlCompatible", Switch, "switch", Switch, ALWAYS;
+        contact_under_bond, "contactUnderBond", Switch, "switch", Switch, ALWAYS;
         linear, "cohesion bond", Fixed, "switch", Switch, ALWAYS;
         k_n, "normalBondStiffnessPerUnitArea", PerTypePair, "N/m^3", NonNegative, LINEAR;
         k_t, "tangentialBondStiffnessPerUnitArea", PerTypePair, "N/m^3", NonNegative, LINEAR;
@@ -324,7 +335,7 @@ crate::parameter_table!(
 /// The rows LIGGGHTS-INL's linear bond (`cohesion bond`) reads, each with
 /// the name INL's decks give it where it differs from `bond/nonlinear`'s
 /// (empty: the row's own name). Every other row belongs to `bond/nonlinear`
-/// alone; the rows after `inl_compatible` to the linear bond alone.
+/// alone; the rows from `linear` on to the linear bond alone.
 pub const LINEAR_NAMES: &[(&str, &str)] = &[
     ("lambda", "radiusMultiplierBond"),
     ("k_n", ""),
@@ -351,6 +362,7 @@ pub const LINEAR_NAMES: &[(&str, &str)] = &[
     ("damping_smooth", ""),
     ("dissipation", ""),
     ("drucker_prager", ""),
+    ("contact_under_bond", ""),
     ("tension", ""),
     ("compression", ""),
     ("shear", ""),
@@ -381,6 +393,12 @@ pub fn liggghts_name(linear: bool, id: usize) -> Option<&'static str> {
 /// gives none of them: a listed bond exists from the start, at rest at its
 /// length.
 pub const CREATION_ROWS: &[&str] = &["create_distance", "create_step", "create_always"];
+
+/// The rows of bonds a pair style forms between touching spheres beyond
+/// [`CREATION_ROWS`]: what the contact does under the bond. Where an
+/// engine's topology names the bonds, whether a bonded pair's contact acts
+/// is the topology's own setting (LAMMPS `special_bonds`).
+pub const PAIR_BOND_ROWS: &[&str] = &["contact_under_bond"];
 
 /// The `bond/nonlinear` phrases of `pair_coeff` (docs/reference/pair_granbond.md):
 /// a break mode is the stress or BPM switch, a tension ratio switches the ratio on,
@@ -469,6 +487,17 @@ impl BondParams {
             smooth_velocity: v,
             smooth_angular_velocity: w,
             ..d
+        }
+    }
+
+    /// [`Self::default_in_units`] for LIGGGHTS-INL's linear bond: `linear`
+    /// on, and the contact goes on under its bonds (`contact_under_bond`),
+    /// as the law keeps the contact's loads there.
+    pub fn linear_default_in_units(style: &str) -> Self {
+        Self {
+            linear: 1,
+            contact_under_bond: 1,
+            ..Self::default_in_units(style)
         }
     }
 

@@ -11,8 +11,6 @@ use crate::ffi::checks::CheckReport;
 use crate::ffi::contact::TangentialOutput;
 use crate::ffi::store::StoreAtoms;
 use crate::kinematics::PairKinematics;
-use crate::record::RecordLayout;
-use crate::sweep::{SweepPass, SweepTally};
 use crate::timestep_check::TypeBodies;
 use std::mem::size_of;
 
@@ -56,12 +54,6 @@ pub struct Layout {
     pub type_bodies: usize,
     /// `sizeof(GbCheckReport)`.
     pub check_report: usize,
-    /// `sizeof(GbRecordLayout)`.
-    pub record_layout: usize,
-    /// `sizeof(GbSweepPass)`.
-    pub sweep_pass: usize,
-    /// `sizeof(GbSweepTally)`.
-    pub sweep_tally: usize,
     /// `sizeof(GbStoreAtoms)`.
     pub store_atoms: usize,
     /// `sizeof(GbLinkReport)`.
@@ -101,9 +93,6 @@ pub fn library_layout() -> Layout {
         tangential_output: size_of::<TangentialOutput>(),
         type_bodies: size_of::<TypeBodies>(),
         check_report: size_of::<CheckReport>(),
-        record_layout: size_of::<RecordLayout>(),
-        sweep_pass: size_of::<SweepPass>(),
-        sweep_tally: size_of::<SweepTally>(),
         store_atoms: size_of::<StoreAtoms>(),
         link_report: size_of::<LinkReport>(),
         store_counts: size_of::<StoreCounts>(),
@@ -141,7 +130,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
         ));
     }
     let e = reference(expected, "expected")?;
-    let items: [(&str, usize, usize); 21] = [
+    let items: [(&str, usize, usize); 18] = [
         ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
         ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
         ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
@@ -161,9 +150,6 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
         ),
         ("sizeof(GbTypeBodies)", e.type_bodies, l.type_bodies),
         ("sizeof(GbCheckReport)", e.check_report, l.check_report),
-        ("sizeof(GbRecordLayout)", e.record_layout, l.record_layout),
-        ("sizeof(GbSweepPass)", e.sweep_pass, l.sweep_pass),
-        ("sizeof(GbSweepTally)", e.sweep_tally, l.sweep_tally),
         ("sizeof(GbStoreAtoms)", e.store_atoms, l.store_atoms),
         ("sizeof(GbLinkReport)", e.link_report, l.link_report),
         ("sizeof(GbStoreCounts)", e.store_counts, l.store_counts),

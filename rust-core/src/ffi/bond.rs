@@ -32,10 +32,12 @@ pub unsafe extern "C" fn granbond_bond_params_default(params: *mut BondParams) -
     Ok(())
 }
 
-/// Fills `params` with the defaults in the deck units of `units`, the
-/// engine's `units` style ("si", "micro", ...): the defaults that carry
+/// Fills `params` with the defaults of a law in the deck units of `units`,
+/// the engine's `units` style ("si", "micro", ...): the defaults that carry
 /// units converted from SI, or left without a value (NaN) where the style
-/// has no physical scale (`BondParams::default_in_units`).
+/// has no physical scale (`BondParams::default_in_units`). `linear`
+/// non-zero: those of LIGGGHTS-INL's linear bond, `linear` and
+/// `contact_under_bond` on (`BondParams::linear_default_in_units`).
 ///
 /// # Safety
 /// `units` must be null or a C string; `params` null or valid for writes.
@@ -43,12 +45,18 @@ pub unsafe extern "C" fn granbond_bond_params_default(params: *mut BondParams) -
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_params_default_in_units(
     units: *const c_char,
+    linear: i32,
     params: *mut BondParams,
 ) -> Status {
     if units.is_null() {
         return Err(Failure::new(Status::NullPointer, "argument `units` is null"));
     }
-    *params = BondParams::default_in_units(&CStr::from_ptr(units).to_string_lossy());
+    let style = CStr::from_ptr(units).to_string_lossy();
+    *params = if linear != 0 {
+        BondParams::linear_default_in_units(&style)
+    } else {
+        BondParams::default_in_units(&style)
+    };
     Ok(())
 }
 

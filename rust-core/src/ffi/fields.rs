@@ -10,7 +10,6 @@ use crate::bond::fields::{
 };
 use crate::bond::output_slots::BOND_OUTPUT_LEN;
 use crate::bond::{BondModel, BondState, BOND_STATE_LEN};
-use crate::record::RecordLayout;
 use std::ffi::{c_char, CString};
 use std::sync::OnceLock;
 
@@ -106,9 +105,11 @@ pub unsafe extern "C" fn granbond_bond_field_info(
 }
 
 /// The fields of one bond of `model`, written to `values`
-/// (`double[granbond_bond_field_count()]`, in the table's order): its pair
-/// record `record` (`granbond_record_layout(with_contact)`) as sphere `i`
-/// keeps it, and the centres `x_i`, `x_j` (`double[3]` each) of the two
+/// (`double[granbond_bond_field_count()]`, in the table's order): its
+/// `record` as sphere `i` sees it (its state, `GRANBOND_BOND_STATE_LEN`
+/// doubles, then the output of its latest force pass as
+/// `granbond_bond_output_store` writes it, `GRANBOND_BOND_OUTPUT_LEN`
+/// doubles), and the centres `x_i`, `x_j` (`double[3]` each) of the two
 /// spheres. Refused, `values` left alone: non-finite centres or a record
 /// whose bond state or loads hold a non-finite number
 /// (`GB_STATUS_NON_FINITE_INPUT`), coincident centres
@@ -118,21 +119,19 @@ pub unsafe extern "C" fn granbond_bond_field_info(
 /// (never breaks) is written as it is.
 ///
 /// # Safety
-/// `model` must be null or a model; `record` null or valid for the
-/// record's length; `x_i`, `x_j` null or three doubles; `values` null or
+/// `model` must be null or a model; `record` null or valid for
+/// `GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN` doubles; `x_i`, `x_j` null or three doubles; `values` null or
 /// valid for the field count.
 #[entry(model: reference, x_i: finite_vector3, x_j: finite_vector3)]
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_fields(
     model: *const BondModel,
-    with_contact: i32,
     record: *const f64,
     x_i: *const f64,
     x_j: *const f64,
     values: *mut f64,
 ) -> Status {
-    let layout = RecordLayout::new(with_contact != 0);
-    let record = slice(record, layout.len, "record")?;
+    let record = slice(record, BOND_STATE_LEN + BOND_OUTPUT_LEN, "record")?;
     let values = slice_mut(values, BOND_FIELD_COUNT, "values")?;
     if x_i == x_j {
         return Err(Failure::new(
@@ -140,12 +139,12 @@ pub unsafe extern "C" fn granbond_bond_fields(
             format!("x_i and x_j coincide ({x_i:?}): a bond's spheres are apart"),
         ));
     }
-    let state: &[f64; BOND_STATE_LEN] = record[layout.bond..layout.bond + BOND_STATE_LEN]
+    let state: &[f64; BOND_STATE_LEN] = record[..BOND_STATE_LEN]
         .try_into()
         .expect("the bond part has BOND_STATE_LEN slots");
     // SAFETY: BondState is repr(C) of exactly BOND_STATE_LEN f64.
     let state = &*(state as *const [f64; BOND_STATE_LEN] as *const BondState);
-    let loads: &[f64; BOND_OUTPUT_LEN] = record[layout.loads..layout.loads + BOND_OUTPUT_LEN]
+    let loads: &[f64; BOND_OUTPUT_LEN] = record[BOND_STATE_LEN..]
         .try_into()
         .expect("the loads part has BOND_OUTPUT_LEN slots");
     let read = state.as_slots().iter().chain(loads.iter());

@@ -8,7 +8,6 @@ use super::guard::reference_mut;
 use crate::bond::output_slots::BOND_OUTPUT_SLOTS;
 use crate::bond::{BOND_SLOTS, WALL_BOND_SLOTS};
 use crate::contact::CONTACT_SLOTS;
-use crate::record::record_slots;
 use crate::state_layout::StateSlot;
 use std::ffi::{c_char, CString};
 use std::sync::OnceLock;
@@ -26,11 +25,6 @@ pub enum StateKind {
     /// A bond step's output as an engine keeps it in the pair's history
     /// (`granbond_bond_output_store`).
     BondOutput = 3,
-    /// A pair record with the Voigt contact's state: contact, bond, bond
-    /// loads (`granbond_record_layout`).
-    PairRecord = 4,
-    /// A pair record without the contact's state: bond, bond loads.
-    BondRecord = 5,
 }
 
 fn slots(kind: StateKind) -> &'static [StateSlot] {
@@ -39,18 +33,11 @@ fn slots(kind: StateKind) -> &'static [StateSlot] {
         StateKind::WallBond => &WALL_BOND_SLOTS,
         StateKind::Contact => &CONTACT_SLOTS,
         StateKind::BondOutput => &BOND_OUTPUT_SLOTS,
-        StateKind::PairRecord => record_table(true),
-        StateKind::BondRecord => record_table(false),
     }
 }
 
-fn record_table(with_contact: bool) -> &'static [StateSlot] {
-    static TABLES: [OnceLock<Vec<StateSlot>>; 2] = [const { OnceLock::new() }; 2];
-    TABLES[with_contact as usize].get_or_init(|| record_slots(with_contact).collect())
-}
-
 fn c_names(kind: StateKind) -> &'static [CString] {
-    static TABLES: [OnceLock<Vec<CString>>; 6] = [const { OnceLock::new() }; 6];
+    static TABLES: [OnceLock<Vec<CString>>; 4] = [const { OnceLock::new() }; 4];
     TABLES[kind as usize].get_or_init(|| {
         slots(kind)
             .iter()
@@ -66,8 +53,6 @@ fn state_kind(raw: i32, _name: &str) -> Result<StateKind, Failure> {
         1 => Ok(StateKind::WallBond),
         2 => Ok(StateKind::Contact),
         3 => Ok(StateKind::BondOutput),
-        4 => Ok(StateKind::PairRecord),
-        5 => Ok(StateKind::BondRecord),
         _ => Err(Failure::new(
             Status::InvalidArgument,
             format!("unknown state kind {raw}"),

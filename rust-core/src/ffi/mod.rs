@@ -21,7 +21,6 @@ pub mod layout;
 pub mod parameters;
 pub mod results;
 pub mod store;
-pub mod sweep;
 
 pub use error::Status;
 

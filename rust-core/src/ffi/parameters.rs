@@ -5,7 +5,7 @@
 use super::entry;
 use super::error::{Failure, Status};
 use super::guard::{reference, reference_mut};
-use crate::bond::{liggghts_name, BondParams, CREATION_ROWS, PARAMETERS};
+use crate::bond::{liggghts_name, BondParams, CREATION_ROWS, PAIR_BOND_ROWS, PARAMETERS};
 use crate::contact::{VoigtParams, VOIGT_PARAMETERS};
 use crate::parameters::{set_by_name, ParameterInfo, SetError};
 pub use crate::parameters::{LiggghtsSource, ParameterKind};
@@ -280,14 +280,18 @@ pub unsafe extern "C" fn granbond_voigt_parameter_needed(
     needed_by(VOIGT_PARAMETERS, params, id, needed)
 }
 
-/// Whether row `id` of the bond table says when bonds form (1) or not (0):
-/// a deck whose bonds come from an engine's topology gives none of those
-/// rows. -1 for an `id` beyond the table.
+/// Whether row `id` of the bond table belongs to bonds a pair style forms
+/// between touching spheres: 1 a row that says when bonds form, 2 one that
+/// says what the contact does under the bond (`contact_under_bond`), 0
+/// neither. A deck whose bonds come from an engine's topology gives none of
+/// those rows. -1 for an `id` beyond the table.
 #[entry(or = -1)]
 #[no_mangle]
 pub extern "C" fn granbond_bond_parameter_sets_creation(id: usize) -> i32 {
     match PARAMETERS.get(id) {
-        Some(row) => CREATION_ROWS.contains(&row.name) as i32,
+        Some(row) if CREATION_ROWS.contains(&row.name) => 1,
+        Some(row) if PAIR_BOND_ROWS.contains(&row.name) => 2,
+        Some(_) => 0,
         None => -1,
     }
 }

@@ -110,7 +110,7 @@ static GbStatus null_bond_params_default(struct world *c, int k)
 
 static GbStatus null_bond_params_default_in_units(struct world *c, int k)
 {
-    return granbond_bond_params_default_in_units(ARG(k, 0, "si"), ARG(k, 1, &c->bond_params));
+    return granbond_bond_params_default_in_units(ARG(k, 0, "si"), 0, ARG(k, 1, &c->bond_params));
 }
 
 static GbStatus null_bond_model_new(struct world *c, int k)

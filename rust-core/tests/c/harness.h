@@ -157,7 +157,6 @@ int test_bond_indexed_results(void);
 int test_bond_indexed(void);
 int test_bond_break(void);
 int test_bond_limits(void);
-int test_bond_sweep(void);
 /* bond_output.c */
 int test_bond_output_slots(void);
 int test_bond_centre(void);

@@ -74,24 +74,18 @@ static int expect_slot(int32_t kind, size_t index, const char *name, int32_t fli
 
 int test_state_layout(void)
 {
-    static const int32_t kinds[6] = {GB_STATE_KIND_BOND,        GB_STATE_KIND_WALL_BOND,
-                                     GB_STATE_KIND_CONTACT,     GB_STATE_KIND_BOND_OUTPUT,
-                                     GB_STATE_KIND_PAIR_RECORD, GB_STATE_KIND_BOND_RECORD};
-    static const size_t lengths[6] = {
-        GRANBOND_BOND_STATE_LEN,
-        GRANBOND_WALL_BOND_STATE_LEN,
-        GRANBOND_CONTACT_STATE_LEN,
-        GRANBOND_BOND_OUTPUT_LEN,
-        GRANBOND_CONTACT_STATE_LEN + GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN,
-        GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN};
+    static const int32_t kinds[4] = {GB_STATE_KIND_BOND, GB_STATE_KIND_WALL_BOND, GB_STATE_KIND_CONTACT,
+                                     GB_STATE_KIND_BOND_OUTPUT};
+    static const size_t lengths[4] = {GRANBOND_BOND_STATE_LEN, GRANBOND_WALL_BOND_STATE_LEN,
+                                      GRANBOND_CONTACT_STATE_LEN, GRANBOND_BOND_OUTPUT_LEN};
     const char *name = NULL;
     int32_t flips = 0;
     int k;
 
-    for (k = 0; k < 6; k++)
+    for (k = 0; k < 4; k++)
         CHECK(granbond_state_len(kinds[k]) == lengths[k],
               say("granbond_state_len(%d) = %u", (int)kinds[k], (unsigned)lengths[k]));
-    CHECK(granbond_state_len(6) == 0, "granbond_state_len(6) = 0 (unknown kind)");
+    CHECK(granbond_state_len(4) == 0, "granbond_state_len(4) = 0 (unknown kind)");
     CHECK(granbond_state_len(-1) == 0, "granbond_state_len(-1) = 0 (unknown kind)");
 
     if (expect_slot(GB_STATE_KIND_BOND, 0, "status", 0) || expect_slot(GB_STATE_KIND_BOND, 1, "r0", 0) ||
@@ -116,10 +110,7 @@ int test_state_layout(void)
         expect_slot(GB_STATE_KIND_BOND_OUTPUT, 8, "bond_torque_2_z", 0) ||
         expect_slot(GB_STATE_KIND_BOND_OUTPUT, 9, "bond_side", 1) ||
         expect_slot(GB_STATE_KIND_BOND_OUTPUT, 10, "bond_sigma", 0) ||
-        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 11, "bond_tau", 0) ||
-        expect_slot(GB_STATE_KIND_PAIR_RECORD, 0, "tangential_spring_x", 1) ||
-        expect_slot(GB_STATE_KIND_PAIR_RECORD, GRANBOND_CONTACT_STATE_LEN, "status", 0) ||
-        expect_slot(GB_STATE_KIND_BOND_RECORD, GRANBOND_BOND_STATE_LEN + 9, "bond_side", 1))
+        expect_slot(GB_STATE_KIND_BOND_OUTPUT, 11, "bond_tau", 0))
         return 1;
 
     /* Every slot: a non-empty name, unique within its kind. */
@@ -168,7 +159,7 @@ int test_state_layout(void)
            "granbond_state_slot(contact, SIZE_MAX)");
     EXPECT(granbond_state_slot(GB_STATE_KIND_BOND_OUTPUT, GRANBOND_BOND_OUTPUT_LEN, &name, &flips),
            GB_STATUS_INVALID_ARGUMENT, "granbond_state_slot(bond output, GRANBOND_BOND_OUTPUT_LEN)");
-    EXPECT(granbond_state_slot(6, 0, &name, &flips), GB_STATUS_INVALID_ARGUMENT, "granbond_state_slot(kind 6, 0)");
+    EXPECT(granbond_state_slot(4, 0, &name, &flips), GB_STATUS_INVALID_ARGUMENT, "granbond_state_slot(kind 4, 0)");
     EXPECT_MESSAGE("unknown state kind");
     EXPECT(granbond_state_slot(-1, 0, &name, &flips), GB_STATUS_INVALID_ARGUMENT,
            "granbond_state_slot(kind -1, 0)");

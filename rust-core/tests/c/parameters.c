@@ -277,12 +277,12 @@ int test_bond_params(void)
 
     /* Defaults in a unit style: the smoothing velocities are 1e-5 m/s and
        1e-3 rad/s in its units; lj has none, so smooth damping needs them. */
-    EXPECT_OK(granbond_bond_params_default_in_units("micro", &p), "granbond_bond_params_default_in_units(micro)");
+    EXPECT_OK(granbond_bond_params_default_in_units("micro", 0, &p), "granbond_bond_params_default_in_units(micro)");
     CHECK(fabs(p.smooth_velocity - 1e-5) < 1e-20 && fabs(p.smooth_angular_velocity - 1e-9) < 1e-24,
           "micro: 1e-5 um/us and 1e-9 rad/us");
-    EXPECT_OK(granbond_bond_params_default_in_units("cgs", &p), "granbond_bond_params_default_in_units(cgs)");
+    EXPECT_OK(granbond_bond_params_default_in_units("cgs", 0, &p), "granbond_bond_params_default_in_units(cgs)");
     CHECK(fabs(p.smooth_velocity - 1e-3) < 1e-18 && p.smooth_angular_velocity == 1e-3, "cgs: 1e-3 cm/s, 1e-3 rad/s");
-    EXPECT_OK(granbond_bond_params_default_in_units("lj", &p), "granbond_bond_params_default_in_units(lj)");
+    EXPECT_OK(granbond_bond_params_default_in_units("lj", 0, &p), "granbond_bond_params_default_in_units(lj)");
     CHECK(isnan(p.smooth_velocity) && isnan(p.smooth_angular_velocity), "lj: no smoothing velocities");
     EXPECT_OK(granbond_bond_model_new(&p, &m), "granbond_bond_model_new(lj defaults, smooth damping off)");
     granbond_bond_model_free(m);
@@ -290,7 +290,14 @@ int test_bond_params(void)
     p.damping_smooth = 1;
     if (expect_bond_refused(&p, "smooth_velocity", NULL, "lj defaults with smooth damping"))
         return 1;
-    EXPECT(granbond_bond_params_default_in_units(NULL, &p), GB_STATUS_NULL_POINTER,
+    /* The linear bond's defaults: its law, and the contact going on under
+       its bonds (its law keeps the contact's loads there). */
+    EXPECT_OK(granbond_bond_params_default_in_units("si", 1, &p), "granbond_bond_params_default_in_units(si, linear)");
+    CHECK(p.linear == 1 && p.contact_under_bond == 1 && p.smooth_velocity == 1e-5,
+          "the linear bond: linear and contact_under_bond on, the units' defaults");
+    EXPECT_OK(granbond_bond_params_default_in_units("si", 0, &p), "granbond_bond_params_default_in_units(si)");
+    CHECK(p.linear == 0 && p.contact_under_bond == 0, "bond/nonlinear: the contact held under the bond");
+    EXPECT(granbond_bond_params_default_in_units(NULL, 0, &p), GB_STATUS_NULL_POINTER,
            "granbond_bond_params_default_in_units(NULL units)");
     EXPECT_OK(granbond_bond_params_default(&p), "granbond_bond_params_default");
 
@@ -528,10 +535,13 @@ int test_deck_phrases(void)
     CHECK(strcmp(p.words, "break distance") == 0 && strcmp(p.sets, "stress_break 0 bpm_break 0") == 0,
           "bond phrase 0: a break distance is the stress and BPM switches off");
     {
-        size_t id, creation = 0;
-        for (id = 0; id < granbond_bond_parameter_count(); id++)
+        size_t id, creation = 0, contact = 0;
+        for (id = 0; id < granbond_bond_parameter_count(); id++) {
             creation += granbond_bond_parameter_sets_creation(id) == 1;
+            contact += granbond_bond_parameter_sets_creation(id) == 2;
+        }
         CHECK(creation == 3, "three rows say when bonds form");
+        CHECK(contact == 1, "one row says what the contact does under the bond");
         CHECK(granbond_bond_parameter_sets_creation(granbond_bond_parameter_count()) == -1, "beyond the table: -1");
     }
     /* the values after the model's name: a phrase without words */

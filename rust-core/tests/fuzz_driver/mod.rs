@@ -27,8 +27,7 @@
 use granbond::bond::fields::{BOND_ENERGY_FIELDS, BOND_ENERGY_FIELD_COUNT, BOND_FIELDS, BOND_FIELD_COUNT};
 use granbond::bond::output_slots::{store_output, BOND_OUTPUT_LEN};
 use granbond::bond::{
-    BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode, BOND_STATE_LEN, PARAMETERS,
-    WALL_BOND_STATE_LEN,
+    BondModel, BondOutput, BondParams, BondState, BOND_STATE_LEN, PARAMETERS, WALL_BOND_STATE_LEN,
 };
 use granbond::bond_store::{BrokenBond, EnergySums, LinkReport, ListedBond, StoreCounts};
 use granbond::contact::{
@@ -48,11 +47,8 @@ use granbond::ffi::fields::{
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::parameters::{self as fp, ParameterRow};
 use granbond::ffi::store::{self as fs, AtomIds, StoreAtoms, GRANBOND_BOND_STORE_CHUNK};
-use granbond::ffi::sweep::{granbond_bond_file_loads, granbond_bond_sweep, granbond_record_layout};
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
-use granbond::record::RecordLayout;
-use granbond::sweep::{SweepPass, SweepTally};
 use granbond::timestep_check::TypeBodies;
 use std::collections::BTreeMap;
 use std::ffi::{c_char, CStr};
@@ -62,7 +58,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 115] = [
+pub const ENTRY_POINTS: [&str; 112] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -128,9 +124,6 @@ pub const ENTRY_POINTS: [&str; 115] = [
     "granbond_last_error_parameter",
     "granbond_state_len",
     "granbond_state_slot",
-    "granbond_record_layout",
-    "granbond_bond_sweep",
-    "granbond_bond_file_loads",
     "granbond_bond_field_count",
     "granbond_bond_field_info",
     "granbond_bond_energy_field_count",
@@ -494,10 +487,9 @@ const fn max(a: usize, b: usize) -> usize {
 
 /// Slots of the largest state of a model.
 const MAX_STATE: usize = max(max(BOND_STATE_LEN, WALL_BOND_STATE_LEN), CONTACT_STATE_LEN);
-/// A pool entry holds the largest state or pair record, and one slot more
-/// (a misaligned pointer stays inside): every entry can be handed to any
-/// model and to the bond sweep.
-const ENTRY: usize = max(MAX_STATE, RecordLayout::new(true).len) + 1;
+/// A pool entry holds the largest state, and one slot more (a misaligned
+/// pointer stays inside): every entry can be handed to any model.
+const ENTRY: usize = MAX_STATE + 1;
 type Entry = [f64; ENTRY];
 const POOL: usize = 8;
 const MAX_BATCH: usize = 8;
@@ -554,7 +546,7 @@ fn realistic_pair(input: &mut Input) -> PairKinematics {
 }
 
 /// What `Session::indexed_bonds` draws: the engine's arrays and index of
-/// bonds, the pool entries of the bonds' states or records, and how the
+/// bonds, the pool entries of the bonds' states, and how the
 /// pointer arguments are passed (atoms, pairs, states, out, failed_index).
 struct IndexedBonds {
     model: *const BondModel,
@@ -589,23 +581,6 @@ impl IndexedBonds {
                 .any(|&i| usize::try_from(i).map_or(true, |i| i >= atoms))
         })
     }
-}
-
-/// `start` with the bonds that `counted` marks added by what the pass left
-/// them: intact, or broken in the pass by mode.
-fn tally_after(start: SweepTally, out: &[BondOutput], counted: &[u8]) -> SweepTally {
-    let mut t = start;
-    for (o, _) in out.iter().zip(counted).filter(|(_, &c)| c != 0) {
-        t.intact += (o.status == BondStatus::Intact as i32) as i64;
-        match o.break_mode {
-            m if m == BreakMode::Distance as i32 => t.broken_distance += 1,
-            m if m == BreakMode::Tension as i32 => t.broken_tension += 1,
-            m if m == BreakMode::Compression as i32 => t.broken_compression += 1,
-            m if m == BreakMode::Shear as i32 => t.broken_shear += 1,
-            _ => {}
-        }
-    }
-    t
 }
 
 fn bits(values: &[f64]) -> Vec<u64> {
@@ -954,8 +929,7 @@ impl<'t> Session<'t> {
             5 => self.bond_may_create(input),
             6 => self.bond_create(input, true),
             7 => self.bond_compute(input),
-            8 | 9 => self.bond_indexed(input),
-            10 => self.bond_sweep(input),
+            8..=10 => self.bond_indexed(input),
             11 => self.wall_try_create(input),
             12 => self.wall_compute(input),
             13 | 14 => self.bond_reach(input),
@@ -1016,14 +990,28 @@ impl<'t> Session<'t> {
             assert_eq!(p.get(), BondParams::default());
         }
         // the same in a unit style (or none)
-        let style = ["si", "cgs", "micro", "nano", "lj", ""][input.below(6)];
+        let drawn = input.below(6);
+        let style = ["si", "cgs", "micro", "nano", "lj", ""][drawn];
         let units = std::ffi::CString::new(style).expect("no NUL");
         let units_ptr = if style.is_empty() { null() } else { units.as_ptr() };
+        // the linear bond's defaults with every other style (no byte more
+        // drawn, so the corpus's inputs keep their meaning)
+        let linear = drawn % 2 == 1;
         let how = input.pointer();
         // SAFETY: a C string or null; the params pointer null, misaligned or valid.
-        let status = unsafe { fb::granbond_bond_params_default_in_units(units_ptr, p.ptr(how)) };
+        let status =
+            unsafe { fb::granbond_bond_params_default_in_units(units_ptr, linear as i32, p.ptr(how)) };
         if self.answer("granbond_bond_params_default_in_units", status) {
-            let (got, want) = (p.get(), BondParams::default_in_units(style));
+            let want = if linear {
+                BondParams::linear_default_in_units(style)
+            } else {
+                BondParams::default_in_units(style)
+            };
+            let got = p.get();
+            assert_eq!(
+                (got.linear, got.contact_under_bond),
+                (want.linear, want.contact_under_bond)
+            );
             assert_eq!(got.smooth_velocity.to_bits(), want.smooth_velocity.to_bits());
             assert_eq!(
                 got.smooth_angular_velocity.to_bits(),
@@ -1184,7 +1172,7 @@ impl<'t> Session<'t> {
                 }
             }
             let creation = fp::granbond_bond_parameter_sets_creation(id);
-            assert!((-1..=1).contains(&creation), "sets_creation {creation}");
+            assert!((-1..=2).contains(&creation), "sets_creation {creation}");
             self.answer_value("granbond_bond_parameter_sets_creation");
         }
         if !bond {
@@ -1657,11 +1645,6 @@ impl<'t> Session<'t> {
         );
     }
 
-    /// `granbond_bond_sweep` over records in pool entries, its bonds drawn
-    /// as `bond_indexed` draws them, so that an input made for one drives
-    /// the other past the same checks; then what the indexed entry does
-    /// not take, where zero bytes mean a force pass over records without
-    /// the contact's state, all bonds counted and valid pointers.
     /// A rank's bond store through its life: atoms linked, bonds created,
     /// stepped (force and setup passes), broken, packed to another store
     /// and unpacked there, the per-atom events; ids, types, kinds and
@@ -2097,374 +2080,6 @@ impl<'t> Session<'t> {
         self.answer_value("granbond_bond_store_free");
     }
 
-    fn bond_sweep(&mut self, input: &mut Input) {
-        const F: &str = "granbond_bond_sweep";
-        let mut b = self.indexed_bonds(input);
-        let count = b.count;
-        let flags = input.byte();
-        let mut pass = SweepPass {
-            dt: b.dt,
-            advance: (flags & 1 == 0) as i32,
-            contact_under_bond: (flags >> 1 & 1) as i32,
-            with_contact: (flags >> 2 & 1) as i32,
-            keep_loads: (flags >> 3 & 1 == 0) as i32,
-        };
-        input.mutate(&mut pass);
-        let layout = self.record_layout(input, pass.with_contact);
-        let mut counted: Vec<u8> = (0..count + 1).map(|_| [1, 0, 2, 255][input.below(4)]).collect();
-        // a running tally: the pass adds to it
-        let n = input.below(4) as i64;
-        let start = SweepTally {
-            intact: n,
-            broken_distance: n,
-            broken_tension: n,
-            broken_compression: n,
-            broken_shear: n,
-        };
-        if input.below(4) == 1 {
-            // bonds as just created, over a contact state that is not zero,
-            // so that clearing it shows: the pool rarely holds them at the
-            // offset of a record with the contact's state
-            for &e in &b.entries {
-                let r = &mut self.pool[e];
-                for (c, v) in r[..layout.contact_len].iter_mut().enumerate() {
-                    *v = 1e-6 * (c + 1) as f64;
-                }
-                r[layout.bond..layout.loads].copy_from_slice(BondState::created(2e-3).as_slots());
-            }
-        }
-        // words written over, the kept loads too, which no other
-        // operation writes
-        for _ in 0..input.below(3) {
-            let e = b.entries.get(input.below(count.max(1))).copied();
-            let (slot, value) = (input.below(layout.len), input.f64());
-            if let Some(e) = e {
-                self.pool[e][slot] = value;
-            }
-        }
-        let (hpass, hcounted, htally) = (input.late_pointer(), input.late_pointer(), input.late_pointer());
-        let then_setup = input.below(4) != 3;
-
-        // the records as `indexed_bonds` passes them, taken again after the
-        // writes above, from one borrow of the pool
-        let pool = self.pool.as_mut_ptr();
-        let mut records: Vec<*mut f64> = b
-            .entries
-            .iter()
-            .zip(&b.states)
-            .map(|(&e, &s)| match s {
-                s if s.is_null() => null_mut(),
-                // SAFETY: `e` is an entry of the pool.
-                s => unsafe { (pool.add(e) as *mut u8).add(s as usize % align_of::<f64>()) as *mut f64 },
-            })
-            .collect();
-        records.push(null_mut());
-        let mut out = vec![BondOutput::default(); count + 1];
-        let mut failed = Place::new(usize::MAX);
-        let mut p = Place::new(pass);
-        let mut tally = Place::new(start);
-        let [ha, hp, hs, ho, hf] = b.how;
-        let before = self.pool.clone();
-        // SAFETY: arrays of `atoms->count` atoms, `2 count` indices, `count`
-        // flags, `count` distinct records of `layout.len` doubles, `count`
-        // outputs (null or misaligned pointers are checked).
-        let status = unsafe {
-            granbond_bond_sweep(
-                b.model,
-                p.ptr(hpass),
-                count,
-                b.atoms.ptr(ha),
-                Self::batch_ptr(&mut b.pairs, hp),
-                Self::batch_ptr(&mut counted, hcounted),
-                Self::batch_ptr(&mut records, hs),
-                Self::batch_ptr(&mut out, ho),
-                tally.ptr(htally),
-                failed.ptr(hf),
-            )
-        };
-        // `u8` has no alignment to miss: one byte in is the next flags
-        let counted = match hcounted {
-            Pointer::Misaligned => &counted[1..],
-            _ => &counted[..count],
-        };
-        let records = &records[..count];
-        let out = &out[..count];
-
-        if !self.answer(F, status) {
-            let valid = !b.model.is_null()
-                && b.how
-                    .iter()
-                    .chain([&hpass, &htally])
-                    .all(|&h| h == Pointer::Valid)
-                && hcounted != Pointer::Null
-                && b.arrays_pass();
-            let bad_record = records
-                .iter()
-                .position(|&r| r.is_null() || !(r as usize).is_multiple_of(align_of::<f64>()));
-            let first = match bad_record {
-                Some(k) if records[k].is_null() => Some((Status::NullPointer, k)),
-                Some(k) => Some((Status::Misaligned, k)),
-                None => b.first_bad_pair().map(|k| (Status::InvalidArgument, k)),
-            };
-            if let (true, Some((want, k))) = (valid, first) {
-                assert_eq!(status, want, "{F}: bond {k} refused as {status:?}: {}", message());
-                assert_eq!(failed.get(), k, "{F}: failed_index for bond {k}");
-            }
-            // pointers, indices and the time step are refused before any
-            // bond is advanced
-            if matches!(status, Status::NullPointer | Status::InvalidArgument) {
-                assert!(
-                    same_pool(&before, &self.pool),
-                    "{F}: {status:?} but a record changed"
-                );
-                assert_eq!(tally.get(), start, "{F}: {status:?} but the tally changed");
-            }
-            if hf == Pointer::Valid && failed.get() != usize::MAX {
-                assert!(
-                    failed.get() < count,
-                    "{F}: failed_index {} of {count}",
-                    failed.get()
-                );
-            }
-            return;
-        }
-
-        assert_eq!(
-            tally.get(),
-            tally_after(start, out, counted),
-            "{F}: the tally is not that of the bonds counted ({counted:?}), by status and break mode: {:?}",
-            out.iter().map(|o| (o.status, o.break_mode)).collect::<Vec<_>>()
-        );
-        if b.entries.iter().all(|&e| all_finite(&before[e][..layout.len])) {
-            for o in out {
-                self.check_bond_output(F, o);
-            }
-        }
-        if pass.advance == 0 {
-            self.check_setup_pass(&before, &b.entries, &layout, out);
-            return;
-        }
-        self.check_force_pass(&b, &pass, &layout, &before, out);
-        if then_setup {
-            if pass.keep_loads == 0 {
-                // SAFETY: the records and outputs of the pass, every pointer valid.
-                let status = unsafe {
-                    granbond_bond_file_loads(&pass, count, records.as_ptr(), out.as_ptr(), null_mut())
-                };
-                assert!(
-                    self.answer("granbond_bond_file_loads", status),
-                    "granbond_bond_file_loads: refused the records a force pass took"
-                );
-            }
-            // the loads kept are those the force pass applied, bit for bit
-            let setup = SweepPass { advance: 0, ..pass };
-            let mut again = vec![BondOutput::default(); count];
-            let mut t = SweepTally::default();
-            let kept = self.pool.clone();
-            // SAFETY: as above, every pointer valid.
-            let status = unsafe {
-                granbond_bond_sweep(
-                    b.model,
-                    &setup,
-                    count,
-                    b.atoms.ptr(Pointer::Valid),
-                    b.pairs.as_ptr(),
-                    counted.as_ptr(),
-                    records.as_ptr(),
-                    again.as_mut_ptr(),
-                    &mut t,
-                    null_mut(),
-                )
-            };
-            assert!(
-                self.answer(F, status),
-                "{F}: a setup pass refused what a force pass took"
-            );
-            assert_eq!(
-                t,
-                tally_after(SweepTally::default(), &again, counted),
-                "{F}: setup tally"
-            );
-            self.check_setup_pass(&kept, &b.entries, &layout, &again);
-            for (k, (o, s)) in out.iter().zip(&again).enumerate() {
-                let (mut o, mut s) = (*o, *s);
-                o.break_mode = BreakMode::None as i32;
-                if o.status == BondStatus::Intact as i32 {
-                    // the record keeps neither
-                    (o.normal_force, o.delta, s.normal_force, s.delta) = (0.0, 0.0, 0.0, 0.0);
-                } else {
-                    o = BondOutput {
-                        status: o.status,
-                        ..BondOutput::default()
-                    };
-                }
-                assert_eq!(
-                    bond_output_bits(&s),
-                    bond_output_bits(&o),
-                    "{F}: bond {k}: the setup pass applies {s:?}, the force pass applied {o:?}"
-                );
-            }
-        }
-    }
-
-    /// After an OK setup pass: nothing written, each bond's output as its
-    /// record's status says.
-    fn check_setup_pass(
-        &mut self,
-        before: &[Entry],
-        entries: &[usize],
-        layout: &RecordLayout,
-        out: &[BondOutput],
-    ) {
-        const F: &str = "granbond_bond_sweep";
-        assert!(
-            same_pool(before, &self.pool),
-            "{F}: a setup pass changed a record"
-        );
-        for (k, (o, &e)) in out.iter().zip(entries).enumerate() {
-            let status = BondStatus::from_slot(before[e][layout.status]) as i32;
-            assert_eq!(o.status, status, "{F}: setup pass, bond {k}'s status");
-            assert_eq!(
-                o.break_mode,
-                BreakMode::None as i32,
-                "{F}: setup pass, bond {k} broke"
-            );
-        }
-    }
-
-    /// After an OK force pass: the bond states and outputs of
-    /// `granbond_bond_compute_indexed` on copies, bit for bit; each record's
-    /// loads and contact state as the bond's output says; nothing else
-    /// written.
-    fn check_force_pass(
-        &mut self,
-        b: &IndexedBonds,
-        pass: &SweepPass,
-        layout: &RecordLayout,
-        before: &[Entry],
-        out: &[BondOutput],
-    ) {
-        const F: &str = "granbond_bond_sweep";
-        let count = b.count;
-        let mut copies: Vec<[f64; BOND_STATE_LEN]> = b
-            .entries
-            .iter()
-            .map(|&e| {
-                before[e][layout.bond..layout.loads]
-                    .try_into()
-                    .expect("a bond state")
-            })
-            .collect();
-        let mut states: Vec<*mut f64> = copies.iter_mut().map(|c| c.as_mut_ptr()).collect();
-        let mut want = vec![BondOutput::default(); count];
-        let atoms = b.atoms.get();
-        // SAFETY: the arguments the sweep took, with distinct copies of its
-        // records' bond states.
-        let status = unsafe {
-            fb::granbond_bond_compute_indexed(
-                b.model,
-                count,
-                &atoms,
-                b.pairs.as_ptr(),
-                pass.dt,
-                states.as_mut_ptr(),
-                want.as_mut_ptr(),
-                null_mut(),
-            )
-        };
-        // not counted: with every pointer valid it would reach OK for
-        // inputs that never drive the indexed entry itself there
-        assert_eq!(
-            status,
-            Status::Ok,
-            "{F}: OK, but granbond_bond_compute_indexed refused the same bonds: {}",
-            message()
-        );
-        for (e, entry) in before.iter().enumerate() {
-            if !b.entries.contains(&e) {
-                assert_eq!(bits(entry), bits(&self.pool[e]), "{F}: wrote outside its records");
-            }
-        }
-        for (k, &e) in b.entries.iter().enumerate() {
-            let (old, new, o) = (&before[e], &self.pool[e], &out[k]);
-            assert_eq!(
-                bits(&new[layout.bond..layout.loads]),
-                bits(&copies[k]),
-                "{F}: bond {k}'s state is not that of granbond_bond_compute_indexed"
-            );
-            assert_eq!(
-                bond_output_bits(o),
-                bond_output_bits(&want[k]),
-                "{F}: bond {k}'s output is not that of granbond_bond_compute_indexed"
-            );
-            assert_eq!(
-                bits(&old[layout.len..]),
-                bits(&new[layout.len..]),
-                "{F}: wrote past record {k}"
-            );
-            let contact = ..layout.contact_len;
-            let loads = layout.loads..layout.len;
-            let (want_contact, want_loads) = if pass.keep_loads == 0 {
-                // the caller files them (granbond_bond_file_loads)
-                let cleared = vec![0.0; layout.contact_len];
-                let broke = o.break_mode != BreakMode::None as i32 && pass.contact_under_bond == 0;
-                let contact = if broke { &cleared[..] } else { &old[contact] };
-                (bits(contact), bits(&old[loads.clone()]))
-            } else if o.status == BondStatus::Intact as i32 {
-                (bits(&old[contact]), bits(&store_output(o)))
-            } else if o.break_mode != BreakMode::None as i32 {
-                let cleared = vec![0.0; layout.contact_len];
-                let contact = if pass.contact_under_bond == 0 {
-                    &cleared[..]
-                } else {
-                    &old[contact]
-                };
-                (bits(contact), bits(&[0.0; BOND_OUTPUT_LEN]))
-            } else {
-                (bits(&old[contact]), bits(&old[loads.clone()]))
-            };
-            assert_eq!(
-                bits(&new[contact]),
-                want_contact,
-                "{F}: bond {k} ({o:?}): contact state"
-            );
-            assert_eq!(bits(&new[loads]), want_loads, "{F}: bond {k} ({o:?}): kept loads");
-        }
-    }
-
-    /// `granbond_record_layout` for `with_contact`, checked against the
-    /// parts' lengths and `granbond_state_len`; the layout the ABI answers
-    /// with, or the one it should have.
-    fn record_layout(&mut self, input: &mut Input, with_contact: i32) -> RecordLayout {
-        const F: &str = "granbond_record_layout";
-        let want = RecordLayout::new(with_contact != 0);
-        let mut l = Place::new(RecordLayout {
-            contact_len: usize::MAX,
-            ..want
-        });
-        let how = input.late_pointer();
-        // SAFETY: null, misaligned or valid.
-        let status = unsafe { granbond_record_layout(with_contact, l.ptr(how)) };
-        if !self.answer(F, status) {
-            return want;
-        }
-        let l = l.get();
-        let (contact, kind) = match with_contact {
-            0 => (0, 5),
-            _ => (CONTACT_STATE_LEN, 4),
-        };
-        assert!(
-            l.contact_len == contact
-                && l.bond == contact
-                && (l.bond..l.loads).contains(&l.status)
-                && l.loads == l.bond + BOND_STATE_LEN
-                && l.len == l.loads + BOND_OUTPUT_LEN
-                && l.len == granbond_state_len(kind),
-            "{F}({with_contact}): {l:?}"
-        );
-        l
-    }
-
     fn wall_try_create(&mut self, input: &mut Input) {
         let m = self.bond_model(input);
         let sphere = self.sphere(input);
@@ -2591,17 +2206,15 @@ impl<'t> Session<'t> {
     }
 
     fn bond_fields(&mut self, m: *const BondModel, distance: f64) {
-        let layout = RecordLayout::new(false);
-        let mut record = vec![0.0; layout.len];
-        record[layout.bond..layout.bond + BOND_STATE_LEN]
-            .copy_from_slice(BondState::created(2e-3).as_slots());
+        // the state, then the output slots (all zero: no pass wrote them)
+        let mut record = vec![0.0; BOND_STATE_LEN + BOND_OUTPUT_LEN];
+        record[..BOND_STATE_LEN].copy_from_slice(BondState::created(2e-3).as_slots());
         let (x_i, x_j) = ([distance, 0.0, 0.0], [0.0; 3]);
         let mut values = vec![f64::NAN; BOND_FIELD_COUNT];
         // SAFETY: the model pointer as the driver keeps it; valid buffers.
         let status = unsafe {
             granbond_bond_fields(
                 m,
-                0,
                 record.as_ptr(),
                 x_i.as_ptr(),
                 x_j.as_ptr(),
@@ -3086,8 +2699,6 @@ impl<'t> Session<'t> {
             1 => WALL_BOND_STATE_LEN,
             2 => CONTACT_STATE_LEN,
             3 => BOND_OUTPUT_LEN,
-            4 => CONTACT_STATE_LEN + BOND_STATE_LEN + BOND_OUTPUT_LEN,
-            5 => BOND_STATE_LEN + BOND_OUTPUT_LEN,
             _ => 0,
         };
         assert_eq!(len, want, "granbond_state_len({kind})");
@@ -3104,9 +2715,6 @@ impl<'t> Session<'t> {
             // SAFETY: static NUL-terminated storage of the library.
             let got = unsafe { CStr::from_ptr(name.get()) };
             assert!(!got.to_bytes().is_empty());
-            if kind == 4 || kind == 5 {
-                self.record_slot_is_its_parts(kind, index, got, flips.get());
-            }
         }
     }
 
@@ -3144,31 +2752,6 @@ impl<'t> Session<'t> {
             let got = unsafe { CStr::from_ptr(name) };
             assert_eq!(got.to_str().ok(), Some(BOND_ENERGY_FIELDS[id].name));
         }
-    }
-
-    /// A pair record's slot is named and swapped as the slot of the part
-    /// it lies in: contact state, bond state, bond loads.
-    fn record_slot_is_its_parts(&mut self, kind: i32, index: usize, name: &CStr, flips: i32) {
-        let contact = if kind == 4 { CONTACT_STATE_LEN } else { 0 };
-        let (part, at) = match index {
-            i if i < contact => (2, i),
-            i if i < contact + BOND_STATE_LEN => (0, i - contact),
-            i => (3, i - contact - BOND_STATE_LEN),
-        };
-        let (mut part_name, mut part_flips) = (null::<c_char>(), -7);
-        // SAFETY: valid pointers.
-        let status = unsafe { granbond_state_slot(part, at, &mut part_name, &mut part_flips) };
-        assert!(
-            self.answer("granbond_state_slot", status),
-            "granbond_state_slot: kind {kind} has slot {index}, kind {part} has no slot {at}"
-        );
-        // SAFETY: static NUL-terminated storage of the library.
-        let part_name = unsafe { CStr::from_ptr(part_name) };
-        assert_eq!(
-            (name, flips),
-            (part_name, part_flips),
-            "granbond_state_slot: slot {index} of kind {kind} is not slot {at} of kind {part}"
-        );
     }
 }
 

@@ -1,0 +1,143 @@
+// The Voigt contact's parameters as LIGGGHTS decks give them (the
+// per-type-pair properties and switches of each part, by the rows of the
+// core's Voigt table), the core models built from them, and the state the
+// voigt sub-models of one pair style or wall fix share
+// (VoigtContactShare). Compiled in voigt_deck.cpp.
+#ifndef GRANBOND_LIGGGHTS_VOIGT_DECK_H
+#define GRANBOND_LIGGGHTS_VOIGT_DECK_H
+
+#include "liggghts_engine.h"
+#include "granbond.h"
+
+#include <deque>
+#include <vector>
+
+namespace granbond {
+namespace liggghts {
+
+// One validated core model per atom-type pair.
+class VoigtModelTable {
+public:
+    VoigtModelTable() : stride_(0) {}
+    ~VoigtModelTable() { clear(); }
+
+    // params[a * (ntypes + 1) + b] for types a, b in 1..ntypes; a refusal by
+    // the core ends the run with its message (which names the property).
+    void build(LAMMPS_NS::Error *error, const char *who, int ntypes, const std::vector<GbVoigtParams> &params);
+    const GbVoigtModel *at(int itype, int jtype) const { return models_[itype * stride_ + jtype]; }
+    // As the core's checks take the table: entry a * (ntypes() + 1) + b.
+    const GbVoigtModel *const *data() const { return models_.data(); }
+    int ntypes() const { return stride_ - 1; }
+
+private:
+    VoigtModelTable(const VoigtModelTable &);
+    VoigtModelTable &operator=(const VoigtModelTable &);
+    void clear();
+
+    int stride_;
+    std::vector<GbVoigtModel *> models_;
+};
+
+// The parts of the Voigt contact (granbond_voigt_parameter_part) as bits.
+inline unsigned partBit(GbContactPart part) { return 1u << static_cast<unsigned>(part); }
+
+// What a voigt sub-model reads from the deck, row by row of the core's
+// Voigt table: the per-type-pair properties of the parts it reads (by the
+// row's LIGGGHTS name) and the switches of the parts it owns (registered
+// with the engine's settings).
+class VoigtDeck {
+public:
+    VoigtDeck(unsigned owns, unsigned reads);
+
+    void registerSettings(::Settings &settings);
+    void connect(::PropertyRegistry &registry, const char *caller);
+    // The rows of the parts in `parts` for types a, b written into `p`; the
+    // switches that say a part is present (LiggghtsSource FIXED) on for
+    // the parts in `present`. The core refuses a value out of range.
+    void fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, int a, int b, unsigned parts,
+              unsigned present) const;
+    // `fill` for every pair of types 1..ntypes, over the core's defaults.
+    std::vector<GbVoigtParams> all(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts,
+                                   unsigned present) const;
+    unsigned owns() const { return owns_; }
+
+private:
+    unsigned owns_, reads_;
+    std::vector<double **> values_;   // per row: the connected property, or null
+    std::deque<bool> switches_;       // per row: the engine's Settings take a bool&
+};
+
+// Writes the switches that say a part is present into `p`.
+void setPresentParts(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, unsigned present);
+
+class VoigtContactShare {
+public:
+    // Joins the share of ContactModel `owner`; `*first` tells whether the
+    // caller is the first voigt sub-model constructed for it.
+    static VoigtContactShare *attach(const void *owner, bool *first);
+    static void detach(const void *owner);
+
+    // Writes each type pair's parameters owned by the caller into the
+    // combined set, and rebuilds the combined models when they are used.
+    // Every sub-model has validated its own parameters by then.
+    void contribute(LAMMPS_NS::Error *error, const char *caller, int ntypes, const VoigtDeck &deck)
+    {
+        resize(ntypes);
+        for (int a = 1; a <= ntypes; a++)
+            for (int b = 1; b <= ntypes; b++)
+                deck.fill(error, caller, params_[a * stride_ + b], a, b, deck.owns(), 0);
+        rebuild(error);
+    }
+
+    // The whole contact in one core call: normal and tangential voigt, with
+    // the rolling history right after the tangential one when rolling is
+    // voigt too (the engine gives consecutive offsets to consecutive
+    // sub-models, and only cohesion registers between normal and tangential).
+    bool fused() const { return normal && tangential_offset >= 0; }
+    bool fusedRolling() const { return fused() && rolling_offset == tangential_offset + 3; }
+    const GbVoigtModel *fusedModel(int itype, int jtype) const { return table_.at(itype, jtype); }
+    const VoigtModelTable &fusedTable() const { return table_; }
+
+    // The bond table's switch of what the contact does under a bond
+    // (granbond_bond_parameter_sets_creation 2), registered by whichever
+    // voigt sub-model the engine asks for its settings first.
+    void registerSettings(::Settings &settings);
+    // Finds where a `cohesion bond/nonlinear` of the same style says a bond
+    // is, if there is one (all sub-models are constructed by then): a bit of
+    // a pair's contact flag, or a wall bond's status slot.
+    void findBond(LIGGGHTS::ContactModels::ContactModelBase *cmb);
+    // With that switch off, an intact bond holds the contact's history at
+    // zero: the contact starts afresh when the bond breaks.
+    bool heldByBond(const LIGGGHTS::ContactModels::SurfacesCloseData &d) const
+    {
+        if (!bondMayHold()) return false;
+        if (bondedFlag_ > 0) return d.contact_flags && (*d.contact_flags & bondedFlag_);
+        return d.contact_history && d.contact_history[bondStatus_] == GB_BOND_STATUS_INTACT;
+    }
+    // Known once the settings are read and every sub-model is constructed.
+    bool bondMayHold() const { return (bondStatus_ >= 0 || bondedFlag_ > 0) && !goesOnUnderBond_; }
+
+    GbContactFrame frame;
+    bool normal;               // model voigt present
+    int tangential_offset;     // history offset of tangential voigt, -1 if absent
+    int rolling_offset;        // history offset of rolling_friction voigt, -1 if absent
+
+private:
+    VoigtContactShare();
+    void resize(int ntypes);
+    void rebuild(LAMMPS_NS::Error *error);
+
+    int users_;
+    int stride_;
+    bool settingRegistered_;
+    bool goesOnUnderBond_;
+    int bondStatus_;   // history offset of a wall bond's status, -1 without one
+    int bondedFlag_;   // the contact flag's bit of a pair bond, -1 without one
+    std::vector<GbVoigtParams> params_;
+    VoigtModelTable table_;
+};
+
+}
+}
+
+#endif
