@@ -20,8 +20,9 @@ pub struct RecordLayout {
     pub contact_len: usize,
     /// The bond state ([`crate::bond::BondState`]).
     pub bond: usize,
-    /// The bond's status ([`crate::bond::BondStatus`] as a double): what an
-    /// adapter reads to know whether a pair is bonded.
+    /// The bond's rest length, whose sign is its status
+    /// ([`crate::bond::BondStatus::from_rest`]): what an adapter reads to
+    /// know whether a pair is bonded.
     pub status: usize,
     /// The loads of the bond's latest force pass
     /// ([`crate::bond::output_slots`]).
@@ -30,8 +31,8 @@ pub struct RecordLayout {
     pub len: usize,
 }
 
-/// Index of the status in the bond state.
-const STATUS_SLOT: usize = slot_of!(status);
+/// Index of the status (the rest length's sign) in the bond state.
+const STATUS_SLOT: usize = slot_of!(rest);
 
 impl RecordLayout {
     /// The record with the Voigt contact's state first (`with_contact`) or

@@ -161,7 +161,7 @@ pub fn setup_loads(
     counted: bool,
     tally: &mut SweepTally,
 ) -> BondOutput {
-    let status = BondStatus::from_slot(record[layout.status]);
+    let status = BondStatus::from_rest(record[layout.status]);
     if status != BondStatus::Intact {
         return BondOutput {
             status: status as i32,

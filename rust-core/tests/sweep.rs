@@ -143,8 +143,8 @@ fn the_layout_names_each_part_where_the_slot_table_has_it() {
         let l = layout(with_contact);
         let names: Vec<&str> = record_slots(with_contact).map(|s| s.name).collect();
         assert_eq!(names.len(), l.len);
-        assert_eq!(names[l.status], "status");
-        assert_eq!(names[l.bond], "status");
+        assert_eq!(names[l.status], "rest");
+        assert_eq!(names[l.bond], "rest");
         assert_eq!(names[l.loads], "bond_force_x");
         assert_eq!(l.loads, l.bond + BOND_STATE_LEN);
         let kind = if with_contact {
