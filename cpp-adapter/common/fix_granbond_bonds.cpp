@@ -309,10 +309,11 @@ GbStoreCounts BondStoreFix::counts() const
     return c;
 }
 
-// The counts and the energy sums summed over the ranks, after their own
-// size: the engines hand restart() what follows the payload's length. A
-// file with the counts alone (written before the sums) is read as zero
-// sums.
+// The counts and the energy sums summed over the ranks, and the layout of
+// the bonds' state the per-atom part holds, after their own size: the
+// engines hand restart() what follows the payload's length, and read the
+// global part before the per-atom one, so a file whose bonds have another
+// layout is refused before a bond is read.
 void BondStoreFix::write_restart(FILE *fp)
 {
     GbStoreCounts mine = counts(), all;
@@ -322,28 +323,39 @@ void BondStoreFix::write_restart(FILE *fp)
     granbond_bond_store_energy_sums(store_, &myEnergy);
     MPI_Allreduce(&myEnergy, &allEnergy, sizeof(GbEnergySums) / sizeof(double), MPI_DOUBLE, MPI_SUM, world);
     if (comm->me == 0) {
-        const int64_t layout = static_cast<int64_t>(sizeof(GbStoreCounts) + sizeof(GbEnergySums));
+        const int64_t layout = static_cast<int64_t>(sizeof(GbStoreCounts) + sizeof(GbEnergySums) + sizeof(int64_t));
+        const int64_t stateLayout = GRANBOND_STATE_LAYOUT_VERSION;
         const int size = static_cast<int>(sizeof(int64_t) + layout);
         fwrite(&size, sizeof(int), 1, fp);
         fwrite(&layout, sizeof(int64_t), 1, fp);
         fwrite(&all, sizeof(GbStoreCounts), 1, fp);
         fwrite(&allEnergy, sizeof(GbEnergySums), 1, fp);
+        fwrite(&stateLayout, sizeof(int64_t), 1, fp);
     }
 }
 
 void BondStoreFix::restart(char *buf)
 {
-    int64_t layout = 0;
+    int64_t layout = 0, stateLayout = 0;
     std::memcpy(&layout, buf, sizeof layout);
-    const int64_t counted = static_cast<int64_t>(sizeof(GbStoreCounts));
-    if (layout != counted && layout != counted + static_cast<int64_t>(sizeof(GbEnergySums)))
-        error->all(FLERR, "fix granbond/bonds: the restart file's bond counts have another layout; write the "
-                          "restart file again with this granbond");
+    const int64_t expected = static_cast<int64_t>(sizeof(GbStoreCounts) + sizeof(GbEnergySums) + sizeof(int64_t));
+    if (layout == expected)
+        std::memcpy(&stateLayout, buf + sizeof layout + expected - sizeof stateLayout, sizeof stateLayout);
+    if (stateLayout != GRANBOND_STATE_LAYOUT_VERSION) {
+        // a file without the state layout holds bonds of layout 3 or earlier
+        const std::string written = layout == expected ? "bond state layout " + std::to_string(stateLayout)
+                                                       : "an older bond state layout";
+        const std::string message = "fix granbond/bonds: the restart file's bonds were written with " + written +
+                                    ", and this granbond reads layout " +
+                                    std::to_string(GRANBOND_STATE_LAYOUT_VERSION) +
+                                    " only: continue the run with the granbond that wrote the file, or start "
+                                    "it again from its data file or deck";
+        error->all(FLERR, message.c_str());
+    }
     if (comm->me != 0) return;
     GbStoreCounts c;
     std::memcpy(&c, buf + sizeof layout, sizeof c);
     granbond_bond_store_restore_counts(store_, &c);
-    if (layout == counted) return;
     GbEnergySums e;
     std::memcpy(&e, buf + sizeof layout + sizeof c, sizeof e);
     granbond_bond_store_restore_energy_sums(store_, &e);

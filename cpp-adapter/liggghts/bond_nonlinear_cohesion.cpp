@@ -81,7 +81,8 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
         // the per-contact output pass reports the applied forces
         offset_ = registerStateSlots(hsetup, GB_STATE_KIND_WALL_BOND, error);
         outputOffset_ = registerStateSlots(hsetup, GB_STATE_KIND_BOND_OUTPUT, error);
-        status_ = slotNamed(GB_STATE_KIND_WALL_BOND, "status", error);
+        // the rest length, whose sign is the status: positive while intact
+        status_ = slotNamed(GB_STATE_KIND_WALL_BOND, "rest", error);
         // the names LIGGGHTS-INL publishes, so per-contact tools can find the slots
         cmb->add_history_offset("bondnonlinear_contactflag", offset_);
         cmb->add_history_offset("bondnonlinear_output", outputOffset_);
@@ -290,7 +291,7 @@ void BondNonlinearCohesion::account(const GbBondModel *model, int i, const doubl
                                     bool created, const GbBondOutput &out)
 {
     if (created) tally_.created++;
-    if (state[status_] == GB_BOND_STATUS_INTACT) tally_.intact++;
+    if (state[status_] > 0.0) tally_.intact++;
     if (out.break_mode == GB_BREAK_MODE_NONE) return;
     tally_.broken++;
     BondBook &book = *book_;
@@ -340,7 +341,7 @@ bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out)
     // forces as an uninterrupted one. A law that computes a setup pass's
     // loads afresh (the core says which) does so in the setup pass only.
     if (!d.computeflag || !d.shearupdate) {
-        if (state[status_] != GB_BOND_STATUS_INTACT) return false;
+        if (!(state[status_] > 0.0)) return false;
         if (!(d.computeflag && setupAfresh(d, model, state, out)) &&
             granbond_bond_output_load(outputSlots, &out) != GB_STATUS_OK)
             failed(d.i, d.j, "granbond_bond_output_load");
@@ -386,7 +387,7 @@ bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel 
 
     // an intact bond cannot be created again: skip the core's creation call
     // (it would return at once, not created)
-    if (state[status_] != GB_BOND_STATUS_INTACT) {
+    if (!(state[status_] > 0.0)) {
         double contactPoint[3];
         wallPoint(s.x, d.delta, contactPoint);
         int32_t made = 0;
@@ -395,7 +396,7 @@ bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel 
             failed(d.i, d.j, "granbond_wall_bond_try_create");
         created = made != 0;
     }
-    if (state[status_] != GB_BOND_STATUS_INTACT) return false;
+    if (!(state[status_] > 0.0)) return false;
     if (granbond_wall_bond_compute(model, &s, wallVelocity, update->dt, state, &out) != GB_STATUS_OK)
         failed(d.i, d.j, "granbond_wall_bond_compute");
     return out.status == GB_BOND_STATUS_INTACT;

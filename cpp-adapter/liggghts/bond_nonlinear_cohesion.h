@@ -185,7 +185,7 @@ private:
     const bool isWall_;
     int offset_;        // walls: core state slots
     int outputOffset_;  // walls: last output (GB_STATE_KIND_BOND_OUTPUT slots)
-    size_t status_;     // walls: the status slot in the state (the core's table)
+    size_t status_;     // walls: the rest-length slot, positive while intact (the core's table)
     BondTally tally_;
     BondBook *book_;    // this instance's book (looked up once: std::map)
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)

@@ -112,7 +112,8 @@ public:
     {
         if (!bondMayHold()) return false;
         if (bondedFlag_ > 0) return d.contact_flags && (*d.contact_flags & bondedFlag_);
-        return d.contact_history && d.contact_history[bondStatus_] == GB_BOND_STATUS_INTACT;
+        // the wall bond's rest length: positive while intact
+        return d.contact_history && d.contact_history[bondStatus_] > 0.0;
     }
     // Known once the settings are read and every sub-model is constructed.
     bool bondMayHold() const { return (bondStatus_ >= 0 || bondedFlag_ > 0) && !goesOnUnderBond_; }

@@ -3,15 +3,15 @@ the ctest tests/adapters/check_flicked_chain.py).
 
 chain.txt: step, then x z vx omega_y of spheres 2..5 (fix print).
 bonds dump (dump local of compute pair/gran/local/bond id status state):
-id1 id2 status, then the bond state slots in the core's order (status r0
+id1 id2 status, then the bond state slots in the core's order (rest
 delta_max delta_min shear_force_xyz twist_angle_xyz bend_angle_xyz twist_max
 twist_min bend_history_xyz bend_opposite).
 """
 
 DT = 1.0e-6
 # 0-based columns of the bonds dump
-ID1, ID2, STATUS = 0, 1, 3
-BEND_Y, BEND_HISTORY_Y, BEND_OPPOSITE = 14, 19, 21
+ID1, ID2, STATUS = 0, 1, 2
+BEND_Y, BEND_HISTORY_Y, BEND_OPPOSITE = 13, 18, 20
 K_OVER_KU = 0.5
 
 

@@ -40,7 +40,7 @@
 /**
  * The number of `f64` slots of [`BondState`].
  */
-#define GRANBOND_BOND_STATE_LEN 19
+#define GRANBOND_BOND_STATE_LEN 18
 
 /**
  * How far below the compression break threshold the recommended step keeps
@@ -118,7 +118,7 @@
  * slot is added, removed or changes meaning, so that engines can refuse
  * restart files written with another layout instead of misreading them.
  */
-#define GRANBOND_STATE_LAYOUT_VERSION 3
+#define GRANBOND_STATE_LAYOUT_VERSION 4
 
 /**
  * Capacity of [`CheckReport::message`], terminating NUL included.
@@ -145,7 +145,8 @@
 #define RECOMMENDED_FRACTION 0.2
 
 /**
- * Lifecycle of a pair's bond, stored as a number in slot 0.
+ * Lifecycle of a pair's bond, stored as the sign of the rest length
+ * ([`BondState::rest`]).
  */
 enum GbBondStatus
 #ifdef __cplusplus
@@ -1381,7 +1382,8 @@ enum GbStatus granbond_bond_try_create(const struct GbBondModel *model,
 /**
  * Whether `granbond_bond_try_create` could create a bond at `step` for a
  * pair whose state is `state` (`double[GRANBOND_BOND_STATE_LEN]`; only its
- * status slot is read, not the distance): 1 or 0. For engines that apply
+ * first slot, the rest length whose sign is the status, is read, not the
+ * distance): 1 or 0. For engines that apply
  * the creation rules to every pair every step: where this says 0 they need
  * not gather the pair's kinematics for `granbond_bond_try_create`, which
  * would create nothing. 0 for a null or misaligned `model` or `state`.

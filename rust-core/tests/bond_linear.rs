@@ -423,7 +423,7 @@ fn linear_dissipation_relaxes_the_rest_length_and_the_loads_by_dt_over_its_time(
     let m = model(p);
     let mut s = bond_at(r0);
     step(&m, &pair_at(r0 - d), DT, &mut s);
-    assert!(close(s.r0, r0 - 0.1 * d, 1e-12), "r0 {} after one step", s.r0);
+    assert!(close(s.r0(), r0 - 0.1 * d, 1e-12), "r0 {} after one step", s.r0());
     // a shear force and torques at rest: scaled by 1 - dt/T each step
     let mut s = BondState {
         shear_force: [0.0, 1.0, 0.0],
@@ -441,7 +441,7 @@ fn linear_dissipation_relaxes_the_rest_length_and_the_loads_by_dt_over_its_time(
         DT,
         &mut s,
     );
-    assert_eq!(s.r0, r0);
+    assert_eq!(s.r0(), r0);
 }
 
 #[test]

@@ -322,7 +322,7 @@ fn a_stored_bond_costs_no_more_than_the_budget() {
         per_bond <= BOND_BUDGET_BYTES as f64,
         "the store holds {per_bond:.1} bytes a bond, over the budget of {BOND_BUDGET_BYTES}"
     );
-    assert_eq!(std::mem::size_of::<StoredBond>(), 160);
+    assert_eq!(std::mem::size_of::<StoredBond>(), 152);
 }
 
 #[test]

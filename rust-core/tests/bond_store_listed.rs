@@ -120,7 +120,7 @@ fn a_listed_bond_keeps_its_state_and_a_new_one_starts_at_rest_at_its_length() {
     );
     assert_eq!(states[1].0, [2, 3]);
     assert_eq!(
-        states[1].1.r0,
+        states[1].1.r0(),
         row.x[6] - row.x[3],
         "the new bond 2-3 rests at its length"
     );

@@ -173,7 +173,7 @@ fn creation_respects_distance_and_step() {
         !m.try_create(&inside, 5, &mut s).unwrap(),
         "an intact bond is kept as it is"
     );
-    s.status = BondStatus::Broken as i32 as f64;
+    s.mark_broken();
     assert!(
         !m.try_create(&inside, 5, &mut s).unwrap(),
         "a broken bond is not re-created"
@@ -188,10 +188,8 @@ fn continuous_creation_rebonds_broken_pairs_every_step() {
         ..params()
     });
     let inside = pair_at(2.05 * RADIUS);
-    let mut s = BondState {
-        status: BondStatus::Broken as i32 as f64,
-        ..BondState::default()
-    };
+    let mut s = BondState::default();
+    s.mark_broken();
     assert!(m.try_create(&inside, 123, &mut s).unwrap());
     assert_eq!(s.status(), BondStatus::Intact);
     let mut fresh = BondState::default();
@@ -224,7 +222,7 @@ fn a_wall_bond_acts_like_a_bond_to_a_mirror_sphere() {
     let mut wall = WallBondState::default();
     assert!(m.try_create_wall(&sphere, [0.0; 3], 0, &mut wall).unwrap());
     assert_eq!(wall.partner, [0.0, 0.0, -RADIUS]);
-    assert_eq!(wall.bond.r0, 2.0 * RADIUS);
+    assert_eq!(wall.bond.r0(), 2.0 * RADIUS);
     // Lift the sphere by 1e-7 m: the tension is that of a pair stretched
     // by the same amount, pulling the sphere back to the wall (to the
     // round-off of delta = r0 - r: 1e-16 * r / delta ~ 1e-11).
@@ -287,7 +285,7 @@ fn immediate_creation_skips_the_step_rule_but_not_the_others() {
     let mut s = BondState::default();
     assert!(!m.create_now(&pair_at(2.2 * RADIUS), &mut s).unwrap(), "too far");
     assert!(m.create_now(&pair_at(2.05 * RADIUS), &mut s).unwrap(), "any step");
-    assert_eq!(s.r0, 2.05 * RADIUS);
+    assert_eq!(s.r0(), 2.05 * RADIUS);
     s.delta_max = 1e-6;
     assert!(
         !m.create_now(&pair_at(2.0 * RADIUS), &mut s).unwrap(),
@@ -312,10 +310,10 @@ fn no_bond_forms_beyond_the_creation_reach() {
             for step in from..12 {
                 for status in [BondStatus::Unbonded, BondStatus::Broken] {
                     for r in [1.9, 2.0, 2.05, 2.0999, 2.1, 2.2] {
-                        let mut s = BondState {
-                            status: status as i32 as f64,
-                            ..BondState::default()
-                        };
+                        let mut s = BondState::default();
+                        if status == BondStatus::Broken {
+                            s.mark_broken();
+                        }
                         let made = m.try_create(&pair_at(r * RADIUS), step, &mut s).unwrap();
                         assert!(
                             !made || r * RADIUS < reach,

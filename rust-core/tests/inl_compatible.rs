@@ -246,7 +246,7 @@ fn inl_wall_bond_runs_to_the_contact_point() {
     assert!(m
         .try_create_wall(&sphere(RADIUS), [0.0; 3], 0, &mut state)
         .unwrap());
-    assert_eq!(state.bond.r0, RADIUS, "the distance to the contact point");
+    assert_eq!(state.bond.r0(), RADIUS, "the distance to the contact point");
     let d = 1e-7;
     let mut out = Default::default();
     m.step_wall(&sphere(RADIUS - d), [0.0; 3], DT, &mut state, &mut out)

@@ -54,10 +54,10 @@ fn bond() -> impl Strategy<Value = (PairKinematics, BondState)> {
     (bonded_pair(), twist()).prop_map(|((mut k, mut s), t)| {
         match t {
             Twist::Plain => {}
-            Twist::Broken => s.status = BondStatus::Broken as i32 as f64,
+            Twist::Broken => s.mark_broken(),
             Twist::Unbonded => s = BondState::default(),
             Twist::AtRest => {
-                s = BondState::created(s.r0);
+                s = BondState::created(s.r0());
                 (k.v_i, k.v_j, k.w_i, k.w_j) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3]);
             }
             Twist::FarApart => k.x_i = k.x_i.map(|x| 1.5 * x),
@@ -446,7 +446,6 @@ fn names_the_first_bond_not_finite(p: BondParams, runner: &mut TestRunner) {
         let mut bonds = good.clone();
         for b in [k, k + 5] {
             let state = &mut bonds[b].1;
-            state.status = BondStatus::Intact as i32 as f64;
             state.twist_max = 1.7e308;
             state.bend_opposite = 1.7e308;
         }

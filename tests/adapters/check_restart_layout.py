@@ -1,10 +1,15 @@
-"""Restart files written with an older bond state layout (15 slots per bond,
-before the two-sided twisting/bending history) are refused, never misread:
-tests/adapters/data/state_layout_1_liggghts.restart (the flicked chain, LIGGGHTS) and
-tests/adapters/data/state_layout_1_lammps.restart (the wiggled pair, LAMMPS), both
-written by a granbond of that layout. LIGGGHTS refuses a contact history of
-another length itself; pair_style granbond writes its state layout version
-into LAMMPS restart files and refuses a file without it or with another.
+"""Restart files written with an older bond state layout are refused, never
+misread: tests/adapters/data/state_layout_1_liggghts.restart (the flicked
+chain, LIGGGHTS) and tests/adapters/data/state_layout_1_lammps.restart (the
+wiggled pair, LAMMPS), both written by a granbond of layout 1 (15 slots per
+bond, the bonds in the contact history), and
+tests/adapters/data/state_layout_3_liggghts.restart (the flicked chain,
+LIGGGHTS), written by a granbond of layout 3 (19 slots per bond, the bonds in
+the bond store). LIGGGHTS refuses a contact history of another length
+itself; pair_style granbond writes its state layout version into LAMMPS
+restart files and refuses a file without it or with another; fix
+granbond/bonds (the bond store of both engines) does the same for the
+bonds it holds.
 A file this granbond writes reads back (here for LIGGGHTS; the LAMMPS
 restart ctest for LAMMPS).
 
@@ -29,6 +34,10 @@ def check(engine, lammps, workdir):
                         {"restart": os.path.join(HERE, "data", "state_layout_1_liggghts.restart"),
                          "params": os.path.join(EXAMPLE, "params.in"), "here": EXAMPLE})
     judge_refusal("LIGGGHTS, older layout", rc, text, "contact history", failures)
+    rc, text = run_deck([engine], "restart_old_layout.in", os.path.join(workdir, "liggghts_store"),
+                        {"restart": os.path.join(HERE, "data", "state_layout_3_liggghts.restart"),
+                         "params": os.path.join(EXAMPLE, "params.in"), "here": EXAMPLE})
+    judge_refusal("LIGGGHTS, the store's older layout", rc, text, "older bond state layout", failures)
     # the control: the same deck continues a file this granbond wrote
     fresh = os.path.join(workdir, "liggghts_fresh")
     run_ok([engine], os.path.join(EXAMPLE, "in.flicked_chain"), fresh,

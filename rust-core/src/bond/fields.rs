@@ -184,16 +184,16 @@ pub fn bond_fields(
     let f = out.force_i;
     let normal = f[0] * n[0] + f[1] * n[1] + f[2] * n[2];
     let across = [f[0] - normal * n[0], f[1] - normal * n[1], f[2] - normal * n[2]];
-    let (sigma_max, tau_max) = laws.stress_limits_at(state.r0 - r);
+    let (sigma_max, tau_max) = laws.stress_limits_at(state.r0() - r);
     let ratio = |x: f64, limit: f64| if limit > 0.0 { x / limit } else { 0.0 };
     let t = out.torque_i;
     let (f_n, f_t) = split(f, n);
     let (t_n, t_t) = split(t, n);
     [
-        state.status,
-        state.r0,
+        state.status() as i32 as f64,
+        state.r0(),
         r,
-        r - state.r0,
+        r - state.r0(),
         normal,
         norm(across),
         f[0],

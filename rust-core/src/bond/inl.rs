@@ -234,7 +234,9 @@ pub(super) fn nothing(
         delta,
         ..BondOutput::default()
     };
-    state.status = status as i32 as f64;
+    if status == BondStatus::Broken {
+        state.mark_broken();
+    }
     out.status = status as i32;
     out.break_mode = mode as i32;
 }
@@ -288,7 +290,7 @@ pub(super) fn frame(
     if !(g.r > f64::MIN_POSITIVE) {
         return Err(KinematicsError::CoincidentCentres);
     }
-    let d = state.r0 - g.r;
+    let d = state.rest - g.r;
     if commit && !laws.stress_break && g.r > p.max_distance {
         nothing(state, out, BondStatus::Broken, BreakMode::Distance, d);
         return Ok(None);

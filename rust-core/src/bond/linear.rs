@@ -143,7 +143,7 @@ pub(crate) fn linear_step(
     write_loads(out, &f, normal_damped, shear_damped, twist_damped, bend_damped);
     if commit {
         if dissipation && (on(p.tension) || on(p.compression)) {
-            state.r0 -= d * relaxed(true, dt, p.dissipation_fn);
+            state.rest -= d * relaxed(true, dt, p.dissipation_fn);
         }
         state.shear_force = shear;
         state.twist_angle = twist_angle;

@@ -16,9 +16,10 @@ use crate::vector::{v3, Vec3};
 use std::borrow::BorrowMut;
 use std::ops::Range;
 
+/// The outputs of a bond that exerts nothing: not intact (its state as it
+/// is).
 #[inline(always)]
-fn finish(state: &mut BondState, out: &mut BondOutput, status: BondStatus, mode: BreakMode) {
-    state.status = status as i32 as f64;
+fn finish(out: &mut BondOutput, status: BondStatus, mode: BreakMode) {
     out.force_i = [0.0; 3];
     out.torque_i = [0.0; 3];
     out.torque_j = [0.0; 3];
@@ -45,15 +46,15 @@ pub(crate) fn bond_step<S: Switches>(
     let status = state.status();
     if status != BondStatus::Intact {
         *out = BondOutput::default();
-        finish(state, out, status, BreakMode::None);
+        finish(out, status, BreakMode::None);
         return Ok(());
     }
     kin.check()?;
     let line = centre_line(kin)?;
     let loads = if breaks_by_distance(laws, line.r) {
-        broken_by_distance(state.r0 - line.r)
+        broken_by_distance(state.rest - line.r)
     } else {
-        let relative = relative::<S, f64, Vec3>(laws, &mut kin, line, state.r0);
+        let relative = relative::<S, f64, Vec3>(laws, &mut kin, line, state.rest);
         advance::<S, f64, Vec3, _>(laws, &relative, dt, state)
     };
     out.delta = loads.delta;
@@ -69,9 +70,9 @@ pub(crate) fn bond_step<S: Switches>(
     } else {
         // It exerts nothing.
         (out.force_i, out.torque_i, out.torque_j) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+        state.mark_broken();
         BondStatus::Broken
     };
-    state.status = status as i32 as f64;
     out.status = status as i32;
     out.break_mode = mode as i32;
     Ok(())

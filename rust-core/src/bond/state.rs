@@ -3,7 +3,8 @@
 
 use crate::state_layout::{slot, StateSlot};
 
-/// Lifecycle of a pair's bond, stored as a number in slot 0.
+/// Lifecycle of a pair's bond, stored as the sign of the rest length
+/// ([`BondState::rest`]).
 #[repr(i32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BondStatus {
@@ -17,13 +18,14 @@ pub enum BondStatus {
 }
 
 impl BondStatus {
-    /// The status a slot holds: 1 and 2 as numbered, anything else
-    /// [`BondStatus::Unbonded`].
+    /// The status a rest-length slot ([`BondState::rest`]) holds: intact
+    /// above zero, broken below it (negative zero included), anything else
+    /// (zero, NaN) [`BondStatus::Unbonded`].
     #[inline(always)]
-    pub fn from_slot(v: f64) -> Self {
-        if v == 1.0 {
+    pub fn from_rest(v: f64) -> Self {
+        if v > 0.0 {
             BondStatus::Intact
-        } else if v == 2.0 {
+        } else if v <= 0.0 && v.is_sign_negative() {
             BondStatus::Broken
         } else {
             BondStatus::Unbonded
@@ -37,10 +39,10 @@ impl BondStatus {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct BondState {
-    /// [`BondStatus`] as a number.
-    pub status: f64,
-    /// Centre distance at creation.
-    pub r0: f64,
+    /// The centre distance at creation `r0`, signed by the bond's
+    /// [`BondStatus`]: `r0` while intact, `-r0` once broken, zero never
+    /// bonded (one slot for both: a rest length is positive).
+    pub rest: f64,
     /// `dmax`: the largest compression `delta` reached (m; eq. 4).
     pub delta_max: f64,
     /// `dmin`: the smallest `delta` reached, the largest stretch (m; eq. 4).
@@ -63,12 +65,11 @@ pub struct BondState {
 }
 
 /// The number of `f64` slots of [`BondState`].
-pub const BOND_STATE_LEN: usize = 19;
+pub const BOND_STATE_LEN: usize = 18;
 
 /// Names and swap rules of the slots of [`BondState`], in memory order.
 pub const BOND_SLOTS: [StateSlot; BOND_STATE_LEN] = [
-    slot("status", false),
-    slot("r0", false),
+    slot("rest", false),
     slot("delta_max", false),
     slot("delta_min", false),
     slot("shear_force_x", true),
@@ -100,15 +101,28 @@ pub(crate) use slot_of;
 
 impl BondState {
     /// The bond's [`BondStatus`].
+    #[inline(always)]
     pub fn status(&self) -> BondStatus {
-        BondStatus::from_slot(self.status)
+        BondStatus::from_rest(self.rest)
     }
 
-    /// A freshly created bond of rest length `r0`: no load history.
+    /// The centre distance at creation, whatever the status (zero never
+    /// bonded).
+    #[inline(always)]
+    pub fn r0(&self) -> f64 {
+        self.rest.abs()
+    }
+
+    /// Marks the bond broken; its rest length stays readable ([`Self::r0`]).
+    #[inline(always)]
+    pub fn mark_broken(&mut self) {
+        self.rest = -self.rest.abs();
+    }
+
+    /// A freshly created bond of rest length `r0` (> 0): no load history.
     pub fn created(r0: f64) -> Self {
         Self {
-            status: BondStatus::Intact as i32 as f64,
-            r0,
+            rest: r0,
             ..Self::default()
         }
     }

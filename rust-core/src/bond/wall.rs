@@ -102,7 +102,7 @@ impl BondModel {
         if created {
             state.partner = partner;
             if self.inl_wall() {
-                state.bond.r0 = (v3(sphere.x) - v3(contact_point)).norm();
+                state.bond.rest = (v3(sphere.x) - v3(contact_point)).norm();
             }
         }
         Ok(created)

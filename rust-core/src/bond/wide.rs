@@ -95,9 +95,9 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
 ) -> Option<P::Mask> {
     let (states, outs) = (&mut states[..], &mut outs[..N]);
     let kin = |lane: usize| kin.pair(first + lane);
-    let (status, r0): (P, P) = gather2(states, |s: &BondState| [s.status, s.r0]);
-    let intact = P::splat(BondStatus::Intact as i32 as f64);
-    if !P::all(status.ge(intact) & intact.ge(status)) {
+    // A positive rest length: intact (`BondState::rest`).
+    let r0: P = gather(states, |s: &BondState| s.rest);
+    if !P::all(r0.gt(P::splat(0.0))) {
         return None;
     }
     let on = |bits| S::of(laws).any(bits);
@@ -137,7 +137,7 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
         states,
         outs,
         live,
-        sum: intact + r0,
+        sum: r0,
         loads_sum: P::splat(0.0),
     };
     let loads = advance::<S, P, V3<P>, _>(laws, &relative, P::splat(dt), &mut history);
@@ -149,7 +149,6 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     let broken = loads.mode.gt(P::splat(0.0));
     let status = |s: BondStatus| P::splat(s as i32 as f64);
     let status = P::select(broken, status(BondStatus::Broken), status(BondStatus::Intact));
-    scatter(states, status, |s: &mut BondState, x| s.status = x);
     scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
     scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
     scatter2(
@@ -165,13 +164,14 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
         (outs[i].status, outs[i].break_mode) = (status, mode)
     });
 
-    // A bond that broke exerts nothing. Rare: a branch rather than a blend
-    // per number.
+    // A bond that broke exerts nothing, and its status says so. Rare: a
+    // branch rather than a blend per number.
     if P::any(broken) {
         loads.mode.for_each_lane(|i, mode| {
             if mode != 0.0 {
                 let o = &mut outs[i];
                 (o.force_i, o.torque_i, o.torque_j) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+                states[i].mark_broken();
             }
         });
     }

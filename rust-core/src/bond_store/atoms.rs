@@ -210,7 +210,7 @@ impl BondStore {
             }
             if leaving {
                 // gone from this rank without a count: the next link drops it
-                self.bonds[k].state.status = BondStatus::Unbonded as i32 as f64;
+                self.bonds[k].state.rest = 0.0;
             }
         }
         if leaving {

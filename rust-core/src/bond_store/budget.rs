@@ -266,7 +266,7 @@ impl Pair {
             .stored_energy(
                 state,
                 d.map(|c| c / r),
-                state.r0 - r,
+                state.r0() - r,
                 self.radius[0],
                 self.radius[1],
             )

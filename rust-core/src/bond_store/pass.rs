@@ -336,7 +336,7 @@ impl BondStore {
         let mut state = BondState::default();
         let pair = ordered(ids);
         if self.broken_pairs.binary_search(&pair).is_ok() {
-            state.status = BondStatus::Broken as i32 as f64;
+            state.mark_broken();
         }
         if !create(&mut state)? {
             return Ok(false);
@@ -482,7 +482,7 @@ impl BondStore {
         let axis = d.map(|c| c / r);
         Ok(Some(
             model
-                .stored_energy(state, axis, state.r0 - r, atoms.radius[i], atoms.radius[j])
+                .stored_energy(state, axis, state.r0() - r, atoms.radius[i], atoms.radius[j])
                 .total(),
         ))
     }

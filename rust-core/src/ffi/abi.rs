@@ -20,7 +20,7 @@ pub const GRANBOND_ABI_VERSION: u32 = 20;
 /// The meaning of the state slots (`granbond_state_slot`): bumped whenever a
 /// slot is added, removed or changes meaning, so that engines can refuse
 /// restart files written with another layout instead of misreading them.
-pub const GRANBOND_STATE_LAYOUT_VERSION: u32 = 3;
+pub const GRANBOND_STATE_LAYOUT_VERSION: u32 = 4;
 
 /// What the caller was compiled against: fill it with the header's version
 /// and `sizeof` of each struct, and pass it to `granbond_check_layout`.

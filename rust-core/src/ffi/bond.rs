@@ -133,7 +133,8 @@ pub unsafe extern "C" fn granbond_bond_try_create(
 
 /// Whether `granbond_bond_try_create` could create a bond at `step` for a
 /// pair whose state is `state` (`double[GRANBOND_BOND_STATE_LEN]`; only its
-/// status slot is read, not the distance): 1 or 0. For engines that apply
+/// first slot, the rest length whose sign is the status, is read, not the
+/// distance): 1 or 0. For engines that apply
 /// the creation rules to every pair every step: where this says 0 they need
 /// not gather the pair's kinematics for `granbond_bond_try_create`, which
 /// would create nothing. 0 for a null or misaligned `model` or `state`.
@@ -148,7 +149,7 @@ pub unsafe extern "C" fn granbond_bond_may_create(
     state: *const f64,
     step: i64,
 ) -> i32 {
-    status_and_step_allow(&model.params, BondStatus::from_slot(*state), step) as i32
+    status_and_step_allow(&model.params, BondStatus::from_rest(*state), step) as i32
 }
 
 /// Whether any pair could be bonded at `step` (`granbond_bond_try_create`

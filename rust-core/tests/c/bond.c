@@ -14,16 +14,15 @@ int test_bond_create_and_force(void)
     double state[GRANBOND_BOND_STATE_LEN], copy[GRANBOND_BOND_STATE_LEN];
     double n[3], expected[3], r, r0, delta, rb, area, fn;
     int32_t created = -1;
-    int c, i_status, i_r0, i_dmin, i_dmax;
+    int c, i_r0, i_dmin, i_dmax;
     const double stretch = 1.0e-5, squeeze = 1.0e-5;
 
     if (new_bond_model(&p, &m))
         return 1;
-    i_status = slot_index(GB_STATE_KIND_BOND, "status");
-    i_r0 = slot_index(GB_STATE_KIND_BOND, "r0");
+    i_r0 = slot_index(GB_STATE_KIND_BOND, "rest");
     i_dmin = slot_index(GB_STATE_KIND_BOND, "delta_min");
     i_dmax = slot_index(GB_STATE_KIND_BOND, "delta_max");
-    CHECK(i_status >= 0 && i_r0 >= 0 && i_dmin >= 0 && i_dmax >= 0, "slots status, r0, delta_min, delta_max found");
+    CHECK(i_r0 >= 0 && i_dmin >= 0 && i_dmax >= 0, "slots rest, delta_min, delta_max found");
 
     /* Creation rules. What granbond_bond_may_create says of a state and a
      * step: unbonded, only at create_step (create_always is off); intact
@@ -33,9 +32,10 @@ int test_bond_create_and_force(void)
     CHECK(granbond_bond_may_create(m, state, CREATE_STEP - 1) == 0 &&
               granbond_bond_may_create(m, state, CREATE_STEP + 1) == 0,
           "may_create: unbonded, not at create_step");
-    state[i_status] = GB_BOND_STATUS_INTACT;
+    /* the rest length's sign is the status: positive intact, negative broken */
+    state[i_r0] = R0_NOMINAL;
     CHECK(granbond_bond_may_create(m, state, CREATE_STEP) == 0, "may_create: intact");
-    state[i_status] = GB_BOND_STATUS_BROKEN;
+    state[i_r0] = -R0_NOMINAL;
     CHECK(granbond_bond_may_create(m, state, CREATE_STEP) == 0, "may_create: broken, create_always off");
     {
         GbBondParams always = p;
@@ -93,7 +93,6 @@ int test_bond_create_and_force(void)
             memset(&out, 0, sizeof out);
             pair_at(&kp, R0_NOMINAL, R_I, R_J);
             kp.v_i[1] = 1e-3;
-            st[i_status] = GB_BOND_STATUS_INTACT;
             st[i_r0] = R0_NOMINAL * (1.0 + 1e-6);
             EXPECT_OK(granbond_bond_setup_compute(m, &kp, 1e-8, st, &rec, &out), "setup_compute, default law");
             CHECK(rec == 0 && out.force_i[0] == 0.0, "setup_compute: the default law computes nothing");
@@ -162,19 +161,19 @@ int test_bond_create_and_force(void)
     EXPECT_OK(granbond_bond_try_create(m, &k, CREATE_STEP - 1, state, &created),
               "try_create within create_distance, not at create_step");
     CHECK(created == 0, "not created before create_step");
-    CHECK(state[i_status] == 0.0 && state[i_r0] == 0.0, "state still unbonded");
+    CHECK(state[i_r0] == 0.0 && !signbit(state[i_r0]), "state still unbonded");
     pair_at(&k, CREATE_DISTANCE * 1.05, R_I, R_J);
     created = -1;
     EXPECT_OK(granbond_bond_try_create(m, &k, CREATE_STEP, state, &created),
               "try_create at create_step, outside create_distance");
     CHECK(created == 0, "not created beyond create_distance");
-    CHECK(state[i_status] == 0.0, "state still unbonded");
+    CHECK(state[i_r0] == 0.0 && !signbit(state[i_r0]), "state still unbonded");
     pair_at(&k, R0_NOMINAL, R_I, R_J);
     created = -1;
     EXPECT_OK(granbond_bond_try_create(m, &k, CREATE_STEP, state, &created),
               "try_create at create_step, within create_distance");
     CHECK(created == 1, "created");
-    CHECK(state[i_status] == (double)GB_BOND_STATUS_INTACT, "status slot = GB_BOND_STATUS_INTACT");
+    CHECK(state[i_r0] > 0.0, "rest slot positive: intact");
     r = distance3(k.x_i, k.x_j);
     CHECK(close_to(state[i_r0], r, 1e-15), say("r0 slot = centre distance %.17g", r));
     memcpy(copy, state, sizeof state);
@@ -335,7 +334,7 @@ static int scattered_fixture(GbBondModel *m, GbPairKinematics *k, double *memory
         k[b].w_i[0] = 0.3 * b;
         k[b].w_j[2] = -0.5 * b;
     }
-    states[5][0] = GB_BOND_STATUS_BROKEN;
+    states[5][0] = -states[5][0]; /* the rest length negative: broken */
     pair_at(&k[7], 1.01 * MAX_DISTANCE, R_I, R_J);
     return 0;
 }
@@ -505,12 +504,12 @@ int test_bond_break(void)
     GbBondOutput out;
     double state[GRANBOND_BOND_STATE_LEN];
     static const double distances[6] = {1.85e-3, 1.95e-3, 1.85e-3, 1.95e-3, 1.8e-3, 2.5e-3};
-    int s, breaks = 0, i_status;
+    int s, breaks = 0, i_rest;
     int32_t created = -1;
 
     if (new_bond_model(&p, &m) || create_bond(m, state))
         return 1;
-    i_status = slot_index(GB_STATE_KIND_BOND, "status");
+    i_rest = slot_index(GB_STATE_KIND_BOND, "rest");
 
     /* Distance mode: breaks in the first step with r > max_distance, once. */
     for (s = 0; s < 6; s++) {
@@ -526,7 +525,7 @@ int test_bond_break(void)
         if (s == 1) {
             CHECK(out.break_mode == GB_BREAK_MODE_DISTANCE, "r > max_distance: break_mode = GB_BREAK_MODE_DISTANCE");
             CHECK(out.status == GB_BOND_STATUS_BROKEN, "status = GB_BOND_STATUS_BROKEN");
-            CHECK(state[i_status] == (double)GB_BOND_STATUS_BROKEN, "status slot = GB_BOND_STATUS_BROKEN");
+            CHECK(state[i_rest] < 0.0, "rest slot negative: broken");
         }
         if (s >= 1)
             CHECK(out.status == GB_BOND_STATUS_BROKEN && vec_zero(out.force_i) && vec_zero(out.torque_i) &&
@@ -540,14 +539,14 @@ int test_bond_break(void)
     /* A broken bond is re-created only under create_always. */
     pair_at(&k, R0_NOMINAL, R_I, R_J);
     EXPECT_OK(granbond_bond_try_create(m, &k, CREATE_STEP, state, &created), "try_create on a broken bond");
-    CHECK(created == 0 && state[i_status] == (double)GB_BOND_STATUS_BROKEN, "broken bond stays broken");
+    CHECK(created == 0 && state[i_rest] < 0.0, "broken bond stays broken");
     p.create_always = 1;
     if (new_bond_model(&p, &always))
         return 1;
     created = -1;
     EXPECT_OK(granbond_bond_try_create(always, &k, 12345, state, &created),
               "try_create on a broken bond, create_always on");
-    CHECK(created == 1 && state[i_status] == (double)GB_BOND_STATUS_INTACT, "re-created under create_always");
+    CHECK(created == 1 && state[i_rest] > 0.0, "re-created under create_always");
 
     /* Stress mode: tension breaks at sigma = k_fn2 |delta| >= max_sigma. */
     p = bond_fixture();
@@ -555,10 +554,10 @@ int test_bond_break(void)
     p.max_sigma = 1.0e5; /* Pa: k_fn2 * 1e-5 m */
     if (new_bond_model(&p, &stress) || create_bond(stress, state))
         return 1;
-    pair_at(&k, state[slot_index(GB_STATE_KIND_BOND, "r0")] + 0.5e-5, R_I, R_J);
+    pair_at(&k, state[slot_index(GB_STATE_KIND_BOND, "rest")] + 0.5e-5, R_I, R_J);
     EXPECT_OK(granbond_bond_compute(stress, &k, DT, state, &out), "stress mode, sigma below max_sigma");
     CHECK(out.status == GB_BOND_STATUS_INTACT && out.sigma < p.max_sigma, "intact below the limit");
-    pair_at(&k, state[slot_index(GB_STATE_KIND_BOND, "r0")] + 2.0e-5, R_I, R_J);
+    pair_at(&k, state[slot_index(GB_STATE_KIND_BOND, "rest")] + 2.0e-5, R_I, R_J);
     EXPECT_OK(granbond_bond_compute(stress, &k, DT, state, &out), "stress mode, sigma above max_sigma");
     CHECK(out.status == GB_BOND_STATUS_BROKEN && out.break_mode == GB_BREAK_MODE_TENSION && vec_zero(out.force_i),
           "breaks in tension: break_mode = GB_BREAK_MODE_TENSION, no force");

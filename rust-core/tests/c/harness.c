@@ -298,7 +298,7 @@ int create_bond(const GbBondModel *m, double *state)
         double fresh[GRANBOND_BOND_STATE_LEN] = {0};
         int32_t now = -1;
         EXPECT_OK(granbond_bond_create_now(m, &k, fresh, &now), "granbond_bond_create_now");
-        CHECK(now == 1 && fresh[0] == 1.0, "granbond_bond_create_now bonds at any step");
+        CHECK(now == 1 && fresh[0] > 0.0, "granbond_bond_create_now bonds at any step (a positive rest length)");
         EXPECT_OK(granbond_bond_create_now(m, &k, fresh, &now), "granbond_bond_create_now, intact");
         CHECK(now == 0, "granbond_bond_create_now keeps an intact bond");
     }

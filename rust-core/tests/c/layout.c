@@ -88,18 +88,17 @@ int test_state_layout(void)
     CHECK(granbond_state_len(4) == 0, "granbond_state_len(4) = 0 (unknown kind)");
     CHECK(granbond_state_len(-1) == 0, "granbond_state_len(-1) = 0 (unknown kind)");
 
-    if (expect_slot(GB_STATE_KIND_BOND, 0, "status", 0) || expect_slot(GB_STATE_KIND_BOND, 1, "r0", 0) ||
-        expect_slot(GB_STATE_KIND_BOND, 2, "delta_max", 0) || expect_slot(GB_STATE_KIND_BOND, 3, "delta_min", 0) ||
-        expect_slot(GB_STATE_KIND_BOND, 4, "shear_force_x", 1) ||
-        expect_slot(GB_STATE_KIND_BOND, 12, "bend_angle_z", 1) ||
-        expect_slot(GB_STATE_KIND_BOND, 13, "twist_max", 0) ||
-        expect_slot(GB_STATE_KIND_BOND, 14, "twist_min", 0) ||
-        expect_slot(GB_STATE_KIND_BOND, 15, "bend_history_x", 1) ||
-        expect_slot(GB_STATE_KIND_BOND, 17, "bend_history_z", 1) ||
-        expect_slot(GB_STATE_KIND_BOND, 18, "bend_opposite", 0) ||
-        expect_slot(GB_STATE_KIND_WALL_BOND, 0, "status", 0) ||
-        expect_slot(GB_STATE_KIND_WALL_BOND, 19, "partner_x", 0) ||
-        expect_slot(GB_STATE_KIND_WALL_BOND, 21, "partner_z", 0) ||
+    if (expect_slot(GB_STATE_KIND_BOND, 0, "rest", 0) || expect_slot(GB_STATE_KIND_BOND, 1, "delta_max", 0) ||
+        expect_slot(GB_STATE_KIND_BOND, 2, "delta_min", 0) || expect_slot(GB_STATE_KIND_BOND, 3, "shear_force_x", 1) ||
+        expect_slot(GB_STATE_KIND_BOND, 11, "bend_angle_z", 1) ||
+        expect_slot(GB_STATE_KIND_BOND, 12, "twist_max", 0) ||
+        expect_slot(GB_STATE_KIND_BOND, 13, "twist_min", 0) ||
+        expect_slot(GB_STATE_KIND_BOND, 14, "bend_history_x", 1) ||
+        expect_slot(GB_STATE_KIND_BOND, 16, "bend_history_z", 1) ||
+        expect_slot(GB_STATE_KIND_BOND, 17, "bend_opposite", 0) ||
+        expect_slot(GB_STATE_KIND_WALL_BOND, 0, "rest", 0) ||
+        expect_slot(GB_STATE_KIND_WALL_BOND, 18, "partner_x", 0) ||
+        expect_slot(GB_STATE_KIND_WALL_BOND, 20, "partner_z", 0) ||
         expect_slot(GB_STATE_KIND_CONTACT, 0, "tangential_spring_x", 1) ||
         expect_slot(GB_STATE_KIND_CONTACT, 5, "rolling_angle_z", 1) ||
         expect_slot(GB_STATE_KIND_BOND_OUTPUT, 0, "bond_force_x", 1) ||

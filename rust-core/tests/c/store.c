@@ -133,7 +133,7 @@ int test_bond_store(void)
     EXPECT_OK(granbond_bond_store_finish_pass(store), "granbond_bond_store_finish_pass");
     CHECK(granbond_bond_store_len(store) == 1 && granbond_bond_store_bytes(store) > 0, "one bond held");
     EXPECT_OK(granbond_bond_store_bond(store, 0, bond_ends, &partner, state), "granbond_bond_store_bond");
-    CHECK(partner == 11 && bond_ends[0] == 1 && state[0] == 1.0, "the bond: partner id 11, intact");
+    CHECK(partner == 11 && bond_ends[0] == 1 && state[0] > 0.0, "the bond: partner id 11, intact (a positive rest length)");
     {
         double energy = -1.0;
         EXPECT_OK(granbond_bond_store_stored_energy(store, models, 1, &arrays, &energy),

@@ -23,8 +23,8 @@ int test_wall_bond(void)
     if (new_bond_model(&p, &m))
         return 1;
     i_partner = slot_index(GB_STATE_KIND_WALL_BOND, "partner_x");
-    i_r0 = slot_index(GB_STATE_KIND_WALL_BOND, "r0");
-    CHECK(i_partner == GRANBOND_BOND_STATE_LEN && i_r0 >= 0, "wall bond slots partner_x, r0 found");
+    i_r0 = slot_index(GB_STATE_KIND_WALL_BOND, "rest");
+    CHECK(i_partner == GRANBOND_BOND_STATE_LEN && i_r0 >= 0, "wall bond slots partner_x, rest found");
     memset(state, 0, sizeof state);
     memset(&sphere, 0, sizeof sphere);
 
@@ -46,7 +46,7 @@ int test_wall_bond(void)
     EXPECT_OK(granbond_wall_bond_try_create(m, &sphere, contact, CREATE_STEP, state, &created),
               "granbond_wall_bond_try_create, touching, at create_step");
     CHECK(created == 1, "wall bond created");
-    CHECK(state[0] == (double)GB_BOND_STATUS_INTACT, "status slot = INTACT");
+    CHECK(state[0] > 0.0, "rest slot positive: intact");
     for (c = 0; c < 3; c++)
         partner[c] = state[i_partner + c];
     CHECK(fabs(partner[0] - contact[0]) < 1e-18 && fabs(partner[1] - contact[1]) < 1e-18 &&
