@@ -106,11 +106,11 @@ void PairGranbond::coeff(int narg, char **arg)
             }
         }
         // unless the deck says, the contact goes on under a bond whose law
-        // keeps its loads (the linear bond); a model the core refuses is
-        // reported by buildModel
+        // keeps some of its loads (LIGGGHTS-INL's linear bond and its code);
+        // a model the core refuses is reported by buildModel
         GbBondModel *m = nullptr;
         if (!underBondGiven && granbond_bond_model_new(&tp.bond, &m) == GB_STATUS_OK)
-            tp.contactUnderBond = granbond_bond_keeps_contact_loads(m);
+            tp.contactUnderBond = granbond_bond_keeps_contact_loads(m) || granbond_bond_keeps_contact_tangential(m);
         granbond_bond_model_free(m);
     }
 
@@ -143,6 +143,9 @@ void PairGranbond::buildModel(int i, int j)
         error->all(FLERR, command + kVoigt + ": " + coreReason());
     if (tp.hasBond && granbond_bond_model_new(&tp.bond, &bond_[k]) != GB_STATUS_OK)
         error->all(FLERR, command + (tp.bond.linear ? kLinear : kBond) + ": " + coreReason());
+    keepsLoads_[k] = bond_[k] && (granbond_bond_keeps_contact_loads(bond_[k]) ||
+                                  granbond_bond_keeps_contact_tangential(bond_[k]));
+    lawSaid_ = false;
 }
 
 }

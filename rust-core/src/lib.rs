@@ -28,4 +28,5 @@ pub mod stability;
 pub mod state_layout;
 pub mod sweep;
 pub mod timestep_check;
+pub mod under_bond;
 pub mod vector;
