@@ -86,7 +86,18 @@ void PairGranbond::coeff(int narg, char **arg)
         tp.hasBond = 1;
         // the law's own defaults (the linear bond's differ)
         granbond_bond_params_default_in_units(update->unit_style, law == kLinear, &tp.bond);
-        words::readBondClause(a, law, tp.bond);
+        const std::vector<std::string> given = words::readBondClause(a, law, tp.bond);
+        // unless the deck says, the contact goes on under a bond whose law
+        // keeps some of its loads (LIGGGHTS-INL's linear bond and its code);
+        // a model the core refuses is reported by buildModel
+        GbParameterInfo row;
+        bool underBondGiven = false;
+        for (size_t id = 0; id < given.size() && granbond_bond_parameter_info(id, &row) == GB_STATUS_OK; id++)
+            if (std::string(row.keyword) == "contact_under_bond") underBondGiven = !given[id].empty();
+        GbBondModel *m = nullptr;
+        if (!underBondGiven && granbond_bond_model_new(&tp.bond, &m) == GB_STATUS_OK)
+            tp.bond.contact_under_bond = granbond_bond_keeps_contact_loads(m) || granbond_bond_keeps_contact_tangential(m);
+        granbond_bond_model_free(m);
     }
 
     int count = 0;
@@ -118,6 +129,9 @@ void PairGranbond::buildModel(int i, int j)
         error->all(FLERR, command + kVoigt + ": " + coreReason());
     if (tp.hasBond && granbond_bond_model_new(&tp.bond, &bond_[k]) != GB_STATUS_OK)
         error->all(FLERR, command + (tp.bond.linear ? kLinear : kBond) + ": " + coreReason());
+    keepsLoads_[k] = bond_[k] && (granbond_bond_keeps_contact_loads(bond_[k]) ||
+                                  granbond_bond_keeps_contact_tangential(bond_[k]));
+    lawSaid_ = false;
 }
 
 }

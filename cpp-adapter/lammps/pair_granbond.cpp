@@ -128,6 +128,7 @@ void PairGranbond::allocate()
     pairs_.assign(m, TypePair());
     voigt_.assign(m, nullptr);
     bond_.assign(m, nullptr);
+    keepsLoads_.assign(m, 0);
     createsNow_.assign(m, 0);
 }
 
@@ -272,9 +273,12 @@ void PairGranbond::compute(int eflag, int vflag)
     const TypePair *const pairs = pairs_.data();
     const GbBondModel *const *const bonds = bond_.data();
     const char *const createsNow = createsNow_.data();
-    // whether a bonded pair's contact is stepped in this pass at all
+    // whether a bonded pair's contact is stepped in this pass at all: where
+    // the deck asks, or where the bond's law keeps some of its loads
+    const char *const keeps = keepsLoads_.data();
     bool underBond = false;
-    for (size_t tp = 0; tp < pairs_.size(); tp++) underBond = underBond || (advance && pairs[tp].bond.contact_under_bond);
+    for (size_t tp = 0; tp < pairs_.size(); tp++)
+        underBond = underBond || (advance && pairs[tp].bond.contact_under_bond) || keeps[tp];
     const double *const specialLj = force->special_lj;
     const int *const live = anyBond_ && !underBond && livePairs_.size() == static_cast<size_t>(inum) ? livePairs_.data() : nullptr;
     for (int ii = 0; ii < inum; ii++) {
@@ -303,8 +307,9 @@ void PairGranbond::compute(int eflag, int vflag)
             const size_t tp = itype <= jtype ? static_cast<size_t>(itype) * ntypes1 + jtype
                                              : static_cast<size_t>(jtype) * ntypes1 + itype;
             // a bond: stepped above. Its contact's state goes on under it
-            // only where the deck asks for it.
-            if (touch[jj] == kBondedMark && !(advance && pairs[tp].bond.contact_under_bond)) continue;
+            // only where the deck asks for it; its loads act where the
+            // bond's law keeps them.
+            if (touch[jj] == kBondedMark && !(advance && pairs[tp].bond.contact_under_bond) && !keeps[tp]) continue;
             const double *const xj = x0 + 3 * static_cast<size_t>(j);
             const double del[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
@@ -312,7 +317,9 @@ void PairGranbond::compute(int eflag, int vflag)
             const bool touching = rsq < radsum * radsum;
             double *history = &allhistory[size * jj];
             if (touch[jj] == kBondedMark) {
-                if (touching) {
+                if (touching && keeps[tp]) {
+                    stepContactOfBond(tp, i, j, history, advance, del, rsq);
+                } else if (touching) {
                     GbContactOutput unused;
                     voigtStep(reads, tp, i, j, del, rsq, history, unused);
                 } else {
@@ -338,7 +345,12 @@ void PairGranbond::compute(int eflag, int vflag)
                 apply(f0, t0, i, j, cout.force_i, cout.torque_i, cout.torque_j, del, nlocal, newtonPair);
                 continue;
             }
-            if (bondModel && createsNow[tp] && tryBond(tp, i, j, &touch[jj], history)) continue;
+            if (bondModel && createsNow[tp] && tryBond(tp, i, j, &touch[jj], history)) {
+                // formed on touching spheres: what its law keeps of the
+                // contact acts from this step on
+                if (touching && keeps[tp]) stepContactOfBond(tp, i, j, history, advance, del, rsq);
+                continue;
+            }
             contactOf(tp, i, j, &touch[jj], history, advance, touching, del, rsq);
         }
     }
@@ -385,6 +397,31 @@ void PairGranbond::contactOf(size_t tp, int i, int j, int *touch, double *histor
         voigtStep(contactReads(), tp, i, j, del, rsq, history, cout);
     else
         voigtEvaluate(tp, i, j, del, rsq, history, cout);
+    apply(atom->f[0], atom->torque[0], i, j, cout.force_i, cout.torque_i, cout.torque_j, del, atom->nlocal,
+          force->newton_pair);
+}
+
+// The contact of a touching bonded pair whose bond's law keeps some of its
+// loads: the core says which (all of them under LIGGGHTS-INL's linear bond,
+// the tangential and rolling ones under its code). A force pass steps the
+// contact's state, or, without contact_under_bond, a fresh contact's (the
+// state stays at zero, as when the bond holds it); a setup pass evaluates
+// the stored state.
+void PairGranbond::stepContactOfBond(size_t tp, int i, int j, double *history, bool advance, const double *del,
+                                    double rsq)
+{
+    GbContactOutput cout;
+    if (!advance) {
+        voigtEvaluate(tp, i, j, del, rsq, history, cout);
+    } else if (pairs_[tp].bond.contact_under_bond) {
+        voigtStep(contactReads(), tp, i, j, del, rsq, history, cout);
+    } else {
+        double fresh[GRANBOND_CONTACT_STATE_LEN] = {};
+        std::fill(history, history + sizeHistory_, 0.0);
+        voigtStep(contactReads(), tp, i, j, del, rsq, fresh, cout);
+    }
+    if (granbond_bond_contact_loads_under_bond(bond_[tp], del, rsq, &cout) != GB_STATUS_OK)
+        failPair(i, j, "the contact under the bond");
     apply(atom->f[0], atom->torque[0], i, j, cout.force_i, cout.torque_i, cout.torque_j, del, atom->nlocal,
           force->newton_pair);
 }

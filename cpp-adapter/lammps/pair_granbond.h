@@ -102,6 +102,7 @@ private:
                const double *del, int nlocal, int newton_pair);
     size_t at(int i, int j) const;
     void runChecks(const std::vector<GbTypeBodies> &bodies, bool runStart);
+    void sayLaw();
     bool bondsExist() const;
 
     // What the Voigt steps of a pass read, fetched once per pass: with a
@@ -119,6 +120,11 @@ private:
                        GbContactOutput &cout);
     void contactOf(size_t tp, int i, int j, int *touch, double *history, bool advance, bool touching,
                    const double *del, double rsq);
+    // A touching bonded pair whose bond's law keeps some of the contact's
+    // loads (keepsLoads_): the contact stepped (its state held at zero
+    // unless contact_under_bond), and the loads the core says act under
+    // the bond applied.
+    void stepContactOfBond(size_t tp, int i, int j, double *history, bool advance, const double *del, double rsq);
 
     // The bond pass (pair_bonds.cpp): the store linked after a
     // list build, the contact history's flags marked from it, its chunks
@@ -137,6 +143,7 @@ private:
     std::vector<GbVoigtModel *> voigt_;
     std::vector<GbBondModel *> bond_;
     std::vector<int32_t> kinds_;            // per type pair: its bond kind (its index), -1 without a bond
+    std::vector<char> keepsLoads_;          // per type pair: its bond's law keeps some of the contact's loads
     std::vector<char> createsNow_;          // per type pair, this pass (compute)
     std::vector<GbTypeBodies> bodies_;      // per type, over all ranks, at the latest run start
     std::vector<double> transferSign_;      // per history slot: +1 copy, -1 negate
@@ -156,6 +163,7 @@ private:
     bool stepped_;                          // a force pass has stepped the system
     TimestepWarning contactWarning_, bondWarning_;
     SaidOnce said_;
+    bool lawSaid_ = false;                  // the bonds' law told since the latest pair_coeff
     bool formedThisPass_ = false;          // bonds formed here in this pass
     double deckGhostReach_ = 0.0;           // comm_modify cutoff as the deck set it
     double ghostReachSet_ = -1.0;           // the ghost reach init_one set last

@@ -31,6 +31,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -170,11 +171,29 @@ void PairGranbond::runChecks(const std::vector<GbTypeBodies> &bodies, bool runSt
         error->all(FLERR, std::string(bond) + ": " + coreReason());
     if (bondWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
     if (!runStart) return;
+    if (!lawSaid_ && comm->me == 0) sayLaw();
+    lawSaid_ = true;
     if (granbond_bond_creation_check(bond_.data(), n, bodies.data(), firstStep_, bondsExist() ? 1 : 0, 0, 0, units,
                                      bond, &report) != GB_STATUS_OK)
         error->all(FLERR, std::string(bond) + ": " + coreReason());
     for (const std::string &line : said_.fresh(report))
         if (comm->me == 0) error->warning(FLERR, line);
+}
+
+// The run's opening lines say which law the bonds follow (the core's
+// words), each different line once, until a pair_coeff changes the models:
+// LIGGGHTS-INL's decks run with the write-up's law unless they ask for
+// INL's code.
+void PairGranbond::sayLaw()
+{
+    std::vector<std::string> said;
+    for (const GbBondModel *m : bond_) {
+        char line[512];
+        if (!m || granbond_bond_law_line(m, 0, line, sizeof line) != GB_STATUS_OK) continue;
+        if (std::find(said.begin(), said.end(), std::string(line)) != said.end()) continue;
+        said.push_back(line);
+        utils::logmesg(lmp, std::string("pair granbond: ") + line + "\n");
+    }
 }
 
 // The neighbour list reaches as far as two spheres of the types touch, or

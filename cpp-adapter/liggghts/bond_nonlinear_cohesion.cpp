@@ -115,6 +115,29 @@ bool BondNonlinearCohesion::keepsTangentialFor(int itype, int jtype) const
     return m && granbond_bond_keeps_contact_tangential(m) != 0;
 }
 
+void BondNonlinearCohesion::keepUnderBond(const SurfacesIntersectData &sidata, ForceData &i_forces,
+                                          ForceData &j_forces)
+{
+    GbContactOutput out;
+    std::memset(&out, 0, sizeof out);
+    for (int k = 0; k < 3; k++) {
+        out.force_i[k] = i_forces.delta_F[k];
+        out.torque_i[k] = i_forces.delta_torque[k];
+        out.torque_j[k] = j_forces.delta_torque[k];
+    }
+    out.normal_force = sidata.Fn;
+    out.touching = 1;
+    if (granbond_bond_contact_loads_under_bond(parameters_.model(sidata.itype, sidata.jtype), sidata.delta, sidata.rsq,
+                                               &out) != GB_STATUS_OK)
+        failed(sidata.i, sidata.j, "the contact under the bond");
+    for (int k = 0; k < 3; k++) {
+        i_forces.delta_F[k] = out.force_i[k];
+        j_forces.delta_F[k] = -out.force_i[k];
+        i_forces.delta_torque[k] = out.torque_i[k];
+        j_forces.delta_torque[k] = out.torque_j[k];
+    }
+}
+
 void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
 {
     parameters_.connectToProperties(registry);

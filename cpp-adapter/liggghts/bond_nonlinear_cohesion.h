@@ -122,10 +122,18 @@ private:
         }
         if (sidata.rsq == 0.0) coincident(sidata);
         if ((bondedFlag(sidata) || (mayForm_ && pairBonds(sidata))) && !keepsContactLoads(sidata.itype, sidata.jtype)) {
+            if (keepsTangential(sidata)) {
+                keepUnderBond(sidata, i_forces, j_forces);
+                return;
+            }
             i_forces.reset();
             j_forces.reset();
         }
     }
+    // Leaves of the loads added so far those the core keeps under the bond
+    // (granbond_bond_contact_loads_under_bond): a normal model's load goes,
+    // and so does only the normal part of a whole voigt contact's.
+    void keepUnderBond(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
     // Whether the bond of the type pair leaves the contact's loads on
     // overlapping spheres and adds its own (the core's
     // granbond_bond_keeps_contact_loads: LIGGGHTS-INL's linear bond).

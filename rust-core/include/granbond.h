@@ -748,6 +748,44 @@ typedef struct GbPairKinematics {
 } GbPairKinematics;
 
 /**
+ * What one contact step produced. `force_j = -force_i`.
+ */
+typedef struct GbContactOutput {
+  /**
+   * Force on `i` (N): normal and tangential.
+   */
+  double force_i[3];
+  /**
+   * Torque on `i` (N m): the tangential couple plus the rolling torque.
+   */
+  double torque_i[3];
+  /**
+   * Torque on `j` (N m): the tangential couple minus the rolling torque.
+   */
+  double torque_j[3];
+  /**
+   * Normal force (after the no-attraction clamp), positive = repulsive.
+   */
+  double normal_force;
+  /**
+   * Overlap `delta_n` (m): positive while the bodies touch.
+   */
+  double overlap;
+  /**
+   * 1 if the spheres touch this step.
+   */
+  int32_t touching;
+  /**
+   * 1 if the tangential force sits on the Coulomb cap.
+   */
+  int32_t sliding;
+  /**
+   * 1 if the rolling torque sits on its cap.
+   */
+  int32_t rolling_slip;
+} GbContactOutput;
+
+/**
  * What one bond step produced. `force_j = -force_i`.
  */
 typedef struct GbBondOutput {
@@ -948,44 +986,6 @@ typedef struct GbVoigtParams {
    */
   int32_t rolling;
 } GbVoigtParams;
-
-/**
- * What one contact step produced. `force_j = -force_i`.
- */
-typedef struct GbContactOutput {
-  /**
-   * Force on `i` (N): normal and tangential.
-   */
-  double force_i[3];
-  /**
-   * Torque on `i` (N m): the tangential couple plus the rolling torque.
-   */
-  double torque_i[3];
-  /**
-   * Torque on `j` (N m): the tangential couple minus the rolling torque.
-   */
-  double torque_j[3];
-  /**
-   * Normal force (after the no-attraction clamp), positive = repulsive.
-   */
-  double normal_force;
-  /**
-   * Overlap `delta_n` (m): positive while the bodies touch.
-   */
-  double overlap;
-  /**
-   * 1 if the spheres touch this step.
-   */
-  int32_t touching;
-  /**
-   * 1 if the tangential force sits on the Coulomb cap.
-   */
-  int32_t sliding;
-  /**
-   * 1 if the rolling torque sits on its cap.
-   */
-  int32_t rolling_slip;
-} GbContactOutput;
 
 /**
  * Where and how deep two bodies touch, how far from each centre the
@@ -1444,6 +1444,24 @@ int32_t granbond_bond_keeps_contact_tangential(const struct GbBondModel *model);
  * `model` must be null or from `granbond_bond_model_new`.
  */
 int32_t granbond_bond_keeps_contact_loads(const struct GbBondModel *model);
+
+/**
+ * Leaves in `out`, the output of a contact step between the spheres of an
+ * intact bond of `model`'s law, the loads that act under the bond: all of
+ * them (LIGGGHTS-INL's linear bond), the tangential and rolling ones, the
+ * normal force taken out (LIGGGHTS-INL's code), or none (the bond replaces
+ * the contact). `del = x_i - x_j` (3 doubles) and `rsq = |del|^2` are the
+ * separation the contact was stepped at. For an engine whose own loop
+ * steps the contact under the bond.
+ *
+ * # Safety
+ * Pointers must be null or valid (`model` from `granbond_bond_model_new`,
+ * `del` three doubles, `out` valid for reads and writes).
+ */
+enum GbStatus granbond_bond_contact_loads_under_bond(const struct GbBondModel *model,
+                                                     const double *del,
+                                                     double rsq,
+                                                     struct GbContactOutput *out);
 
 /**
  * The centre distance within which `granbond_bond_try_create` may create

@@ -26,4 +26,5 @@ pub mod simd;
 pub mod stability;
 pub mod state_layout;
 pub mod timestep_check;
+pub mod under_bond;
 pub mod vector;

@@ -310,3 +310,56 @@ fn step_into(
 ) {
     m.step(kin, DT, state, out).unwrap();
 }
+
+/// Under an intact bond of INL's code the contact keeps its tangential and
+/// rolling loads and loses its normal force (INL's cohesion model takes the
+/// normal model's place only); under the write-up's law the bond replaces
+/// every load; under INL's linear bond every load stays.
+#[test]
+fn inl_bond_leaves_the_contact_its_tangential_and_rolling_loads_only() {
+    use granbond::contact::ContactOutput;
+    use granbond::under_bond::contact_loads_under_bond;
+    let del = [1.2e-3, -0.9e-3, 2.0e-3];
+    let rsq: f64 = del.iter().map(|c| c * c).sum();
+    let n = del.map(|c| c / rsq.sqrt());
+    // a tangential force across n, and the normal force 3 N along it
+    let tangential = [0.9, 1.2, 0.0];
+    assert!((0..3).map(|k| tangential[k] * n[k]).sum::<f64>().abs() < 1e-12);
+    let fn_ = 3.0;
+    let given = ContactOutput {
+        force_i: [0, 1, 2].map(|k| fn_ * n[k] + tangential[k]),
+        torque_i: [1e-3, -2e-3, 5e-4],
+        torque_j: [2e-3, 1e-3, -5e-4],
+        normal_force: fn_,
+        overlap: 1e-6,
+        touching: 1,
+        ..ContactOutput::default()
+    };
+    let mut under = given;
+    contact_loads_under_bond(&model(inl(params())), del, rsq, &mut under);
+    for k in 0..3 {
+        assert!(
+            (under.force_i[k] - tangential[k]).abs() <= 1e-15 * fn_,
+            "INL's code: force {:?}, tangential part {tangential:?}",
+            under.force_i
+        );
+    }
+    assert_eq!((under.torque_i, under.torque_j), (given.torque_i, given.torque_j));
+    let mut under = given;
+    contact_loads_under_bond(&model(params()), del, rsq, &mut under);
+    assert_eq!(
+        (under.force_i, under.torque_i, under.torque_j),
+        ([0.0; 3], [0.0; 3], [0.0; 3])
+    );
+    let linear = BondParams {
+        linear: 1,
+        lambda: 0.8,
+        k_n: 1e12,
+        k_t: 4e11,
+        create_distance: 2.5 * RADIUS,
+        ..BondParams::default()
+    };
+    let mut under = given;
+    contact_loads_under_bond(&model(linear), del, rsq, &mut under);
+    assert_eq!(under, given, "INL's linear bond keeps every load of the contact");
+}

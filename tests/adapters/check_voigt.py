@@ -254,6 +254,27 @@ def combination_runs(args):
     print(f"{models}: {len(rows)} spheres, all finite, contacts acting on {acting}")
 
 
+def linear_bond_with_contact(args):
+    """voigt with LIGGGHTS-INL's linear bond (cohesion bond): the bond of
+    spheres 1 and 2 holds and acts (sphere 1, sent away at 0.05 m/s, is
+    pulled back), sphere 3, too far to bond, bounces off sphere 2 by the
+    Voigt contact, and the total momentum stays to round-off."""
+    rc, text = run(args, "voigt_linear_bond.in", {"out": "linear_bond.txt"}, "linear_bond")
+    errors = [l for l in text.splitlines() if "ERROR" in l]
+    expect(rc == 0 and not errors, f"exit {rc}, errors {errors}:\n{text[-2000:]}")
+    rows = read_table(os.path.join(args.workdir, "linear_bond.txt"))
+    expect(len(rows) == 40, f"{len(rows)} rows written, expected 40")
+    expect(all(r[1] == 1 for r in rows), f"bonds intact: {[r[1] for r in rows]}, expected 1 throughout")
+    pulled = max(abs(r[5] + 0.05) for r in rows if r[0] <= 2300)
+    expect(pulled > 0.01, f"sphere 1 kept {rows[0][5]} m/s: the bond does not act")
+    expect(rows[-1][6] > 0.0, f"sphere 3 ends at vx {rows[-1][6]}: it did not bounce off sphere 2")
+    mass3 = 2500 * 4 / 3 * math.pi * R**3
+    drift = max(abs(r[k] - rows[0][k]) for r in rows for k in (2, 3, 4)) / (mass3 * 0.5)
+    expect(drift <= 1e-12, f"the total momentum drifts by {drift:.3g} of sphere 3's")
+    print(f"bond intact, sphere 1 pulled by {pulled:.3g} m/s, sphere 3 back at {rows[-1][6]:.3g} m/s, "
+          f"momentum drift {drift:.3g} of sphere 3's")
+
+
 # Relative to the largest value of the column. The engine's sum of the
 # contact forces on a sphere runs in neighbour-list order, which depends on
 # the decomposition, so 1 and 2 ranks differ by round-off that grows slowly
@@ -286,7 +307,8 @@ def two_ranks_match_one(args):
 CHECKS = {f.__name__: f for f in (
     head_on_equals_hooke_stiffness, oblique_equals_hooke_stiffness_up_to_lever_arm,
     voigt_normal_feeds_stock_tangential, whole_contact_equals_parts, restitution_and_contact_time,
-    bad_values_are_named, wall_sliding_turns_to_rolling, combination_runs, two_ranks_match_one)}
+    bad_values_are_named, wall_sliding_turns_to_rolling, combination_runs, two_ranks_match_one,
+    linear_bond_with_contact)}
 
 
 def main():

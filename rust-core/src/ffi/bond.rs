@@ -15,9 +15,11 @@ use crate::bond::{
     BondModel, BondOutput, BondParams, BondState, BondStatus, WallBondState, BOND_STATE_LEN, PARAMETERS,
     WALL_BOND_STATE_LEN,
 };
+use crate::contact::ContactOutput;
 pub use crate::kinematics::SphereKinematics;
-use crate::kinematics::{bond_centre, PairKinematics};
+use crate::kinematics::{bond_centre, separated, KinematicsError, PairKinematics};
 use crate::pair_source::{AtomArrays, IndexedPairs};
+use crate::under_bond::contact_loads_under_bond;
 use std::ffi::{c_char, CStr};
 
 /// Fills `params` with the defaults (switches as in LIGGGHTS-INL, no
@@ -237,6 +239,32 @@ pub unsafe extern "C" fn granbond_bond_keeps_contact_tangential(model: *const Bo
 #[no_mangle]
 pub unsafe extern "C" fn granbond_bond_keeps_contact_loads(model: *const BondModel) -> i32 {
     model.keeps_contact_loads() as i32
+}
+
+/// Leaves in `out`, the output of a contact step between the spheres of an
+/// intact bond of `model`'s law, the loads that act under the bond: all of
+/// them (LIGGGHTS-INL's linear bond), the tangential and rolling ones, the
+/// normal force taken out (LIGGGHTS-INL's code), or none (the bond replaces
+/// the contact). `del = x_i - x_j` (3 doubles) and `rsq = |del|^2` are the
+/// separation the contact was stepped at. For an engine whose own loop
+/// steps the contact under the bond.
+///
+/// # Safety
+/// Pointers must be null or valid (`model` from `granbond_bond_model_new`,
+/// `del` three doubles, `out` valid for reads and writes).
+#[entry(model: reference, del: vector3, out: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_contact_loads_under_bond(
+    model: *const BondModel,
+    del: *const f64,
+    rsq: f64,
+    out: *mut ContactOutput,
+) -> Status {
+    if !separated(rsq) {
+        return Err(KinematicsError::CoincidentCentres.into());
+    }
+    contact_loads_under_bond(model, del, rsq, out);
+    Ok(())
 }
 
 /// The centre distance within which `granbond_bond_try_create` may create

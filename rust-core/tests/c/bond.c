@@ -62,6 +62,34 @@ int test_bond_create_and_force(void)
         CHECK(granbond_bond_keeps_contact_loads(m) == 0 && granbond_bond_keeps_contact_loads(mi) == 0 &&
                   granbond_bond_keeps_contact_loads(NULL) == 0,
               "keeps_contact_loads: not under bond/nonlinear");
+        /* granbond_bond_contact_loads_under_bond: the default law leaves
+         * none of a touching contact's loads, INL's code its tangential and
+         * rolling ones (the normal force along del taken out) */
+        {
+            const double del[3] = {3.0e-3, 0.0, 4.0e-3};
+            GbContactOutput c, under;
+            memset(&c, 0, sizeof c);
+            c.force_i[0] = 0.6 * 2.0 + 1.0;   /* normal 2 N along del/5e-3, tangential (1, 0.25, -0.75) */
+            c.force_i[1] = 0.25;
+            c.force_i[2] = 0.8 * 2.0 - 0.75;
+            c.torque_i[1] = 1.0e-3;
+            c.torque_j[1] = 2.0e-3;
+            c.normal_force = 2.0;
+            c.touching = 1;
+            under = c;
+            EXPECT_OK(granbond_bond_contact_loads_under_bond(mi, del, 25.0e-6, &under), "contact_loads_under_bond, INL");
+            CHECK(fabs(under.force_i[0] - 1.0) < 1e-12 && fabs(under.force_i[1] - 0.25) < 1e-12 &&
+                      fabs(under.force_i[2] + 0.75) < 1e-12 && under.torque_i[1] == 1.0e-3 &&
+                      under.torque_j[1] == 2.0e-3,
+                  "contact_loads_under_bond: INL's code keeps the tangential force and the torques");
+            under = c;
+            EXPECT_OK(granbond_bond_contact_loads_under_bond(m, del, 25.0e-6, &under), "contact_loads_under_bond");
+            CHECK(under.force_i[0] == 0.0 && under.force_i[2] == 0.0 && under.torque_i[1] == 0.0 &&
+                      under.torque_j[1] == 0.0,
+                  "contact_loads_under_bond: the default law keeps none");
+            CHECK(granbond_bond_contact_loads_under_bond(mi, del, 0.0, &under) != GB_STATUS_OK,
+                  "contact_loads_under_bond: coincident centres refused");
+        }
         {
             const char *name = NULL;
             CHECK(granbond_bond_parameter_liggghts_name(1, 0, &name) == GB_STATUS_OK && name &&

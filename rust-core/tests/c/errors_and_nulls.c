@@ -185,6 +185,12 @@ static GbStatus null_wall_bond_compute(struct world *c, int k)
                                       ARG(k, 3, c->wall_state), ARG(k, 4, &c->bond_out[0]));
 }
 
+static GbStatus null_bond_contact_loads_under_bond(struct world *c, int k)
+{
+    return granbond_bond_contact_loads_under_bond(ARG(k, 0, c->bond), ARG(k, 1, c->point), 1.0e-6,
+                                                  ARG(k, 2, &c->contact_out[0]));
+}
+
 static GbStatus null_bond_output_store(struct world *c, int k)
 {
     return granbond_bond_output_store(ARG(k, 0, &c->bond_out[0]), ARG(k, 1, c->output_slots));
@@ -366,6 +372,7 @@ static const struct null_entry NULL_ENTRIES[] = {
      null_wall_bond_try_create,
      {"model", "sphere", "contact_point", "state", "created"}},
     {"granbond_wall_bond_compute", null_wall_bond_compute, {"model", "sphere", "wall_velocity", "state", "out"}},
+    {"granbond_bond_contact_loads_under_bond", null_bond_contact_loads_under_bond, {"model", "del", "out"}},
     {"granbond_bond_output_store", null_bond_output_store, {"out", "slots"}},
     {"granbond_bond_output_load", null_bond_output_load, {"slots", "out"}},
     {"granbond_bond_centre", null_bond_centre, {"x_i", "x_j", "centre"}},

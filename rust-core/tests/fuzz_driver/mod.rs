@@ -58,7 +58,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 112] = [
+pub const ENTRY_POINTS: [&str; 113] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -79,6 +79,7 @@ pub const ENTRY_POINTS: [&str; 112] = [
     "granbond_wall_bond_setup_compute",
     "granbond_bond_keeps_contact_tangential",
     "granbond_bond_keeps_contact_loads",
+    "granbond_bond_contact_loads_under_bond",
     "granbond_bond_parameter_liggghts_name",
     "granbond_bond_law_line",
     "granbond_bond_output_store",
@@ -1365,6 +1366,34 @@ impl<'t> Session<'t> {
             "granbond_bond_keeps_contact_loads answered {keeps}"
         );
         self.answer_value("granbond_bond_keeps_contact_loads");
+        // a touching contact's loads under the bond, on fixed numbers so the
+        // corpus keeps its meaning: finite, and untouched where all are kept
+        let del = [1e-3, 2e-4, -3e-4];
+        let rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+        let given = ContactOutput {
+            force_i: [2.0, -1.0, 0.5],
+            torque_i: [1e-3, 2e-3, -1e-3],
+            torque_j: [-1e-3, 1e-3, 3e-3],
+            normal_force: 1.5,
+            overlap: 1e-6,
+            touching: 1,
+            ..ContactOutput::default()
+        };
+        let mut o = given;
+        // SAFETY: as above; `del` three doubles, `o` valid.
+        let status = unsafe { fb::granbond_bond_contact_loads_under_bond(m, del.as_ptr(), rsq, &mut o) };
+        if self.answer("granbond_bond_contact_loads_under_bond", status) {
+            assert!(
+                contact_output_numbers(&o).iter().all(|x| x.is_finite()),
+                "granbond_bond_contact_loads_under_bond: loads not finite"
+            );
+            if keeps == 1 {
+                assert!(
+                    o == given,
+                    "granbond_bond_contact_loads_under_bond changed loads it keeps"
+                );
+            }
+        }
         let mut line = [0 as c_char; 512];
         // SAFETY: `line` holds 512 bytes.
         let status = unsafe { fb::granbond_bond_law_line(m, 1, line.as_mut_ptr(), line.len()) };
