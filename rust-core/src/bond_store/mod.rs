@@ -19,6 +19,7 @@ mod link;
 mod listed;
 mod pass;
 mod view;
+mod wall;
 
 pub use atoms::{packed_len_in, UnpackError};
 pub use budget::{
@@ -30,6 +31,7 @@ pub use link::{LinkAtoms, LinkError, LinkReport, LossCause};
 pub use listed::{ListedAtoms, ListedBond};
 pub use pass::{creates_here, BrokenBond, StepFailure, StepFailureReason, CHUNK};
 pub use view::ViewError;
+pub use wall::{WallAct, WallContact, WallError, WallPass, WallStore, WallVisit, WALL_PACKED_PER_BOND};
 
 use crate::bond::{BondState, BondStatus, BOND_STATE_LEN};
 use budget::Budget;
