@@ -6,7 +6,9 @@
 use granbond_test_support as common;
 
 use granbond::bond::{BondModel, BondParams, BreakMode};
-use granbond::bond_store::{StoreCounts, WallAct, WallContact, WallPass, WallStore, WALL_PACKED_PER_BOND};
+use granbond::bond_store::{
+    Ids, StoreCounts, WallAct, WallContact, WallPass, WallStore, WALL_PACKED_PER_BOND,
+};
 use granbond::kinematics::SphereKinematics;
 
 const R: f64 = common::RADIUS;
@@ -132,7 +134,7 @@ fn a_bond_restarted_on_other_ranks_is_one_bond_with_the_same_loads() {
     // read back at another atom slot; both triangles report the sphere
     let mut read = store(3);
     assert_eq!(read.unpack(2, 7, 39, &buf), Ok(buf.len()));
-    read.link(&[1, 5, 7]);
+    read.link(Ids::Wide(&[1, 5, 7]));
     let mut after = Vec::new();
     for step in 40..80 {
         let mut acted = Vec::new();
@@ -214,7 +216,7 @@ fn a_new_atom_that_takes_a_deleted_spheres_id_does_not_take_its_bond() {
     // new atom created at slot 1 gets its id
     s.copy(1, 0);
     s.clear(1);
-    s.link(&[3, 7]);
+    s.link(Ids::Wide(&[3, 7]));
     let c = s.counts();
     assert_eq!((c.intact, c.lost_id_reused, c.lost_owner_gone), (0, 1, 0));
     assert!(balanced(&c));
@@ -225,7 +227,7 @@ fn a_sphere_that_left_the_system_loses_its_bond_counted() {
     let m = model();
     let mut s = store(1);
     run(&mut s, &m, 1..3, &[3]);
-    s.link(&[4]);
+    s.link(Ids::Wide(&[4]));
     let c = s.counts();
     assert_eq!((c.intact, c.lost_owner_gone), (0, 1));
     assert!(balanced(&c));

@@ -36,6 +36,7 @@ use crate::bond::wall::wall_kinematics;
 use crate::bond::{BondModel, BondOutput, BondStatus, WallBondState, WALL_BOND_STATE_LEN};
 use crate::kinematics::{KinematicsError, SphereKinematics};
 
+use super::id_map::Ids;
 use super::pass::count_break;
 use super::StoreCounts;
 
@@ -124,6 +125,20 @@ pub enum WallError {
     NonFinite,
     /// A packed row has another layout, or is cut short.
     Packed,
+}
+
+impl std::fmt::Display for WallError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            WallError::AtomOutOfRange => {
+                write!(f, "the atom index lies beyond the atoms the store was grown to")
+            }
+            WallError::UnknownPass => write!(f, "the pass kind is none of force (0), setup (1), output (2)"),
+            WallError::Kinematics(e) => write!(f, "the sphere's kinematics are unusable: {e:?}"),
+            WallError::NonFinite => write!(f, "the bond's force, torque, stress or state is not finite"),
+            WallError::Packed => write!(f, "the packed wall bonds have another layout or are cut short"),
+        }
+    }
 }
 
 impl From<KinematicsError> for WallError {
@@ -337,11 +352,11 @@ impl WallStore {
     /// is not one of them (deleted, or lost through a boundary), or whose
     /// id a new atom has taken over, leaves the store; intact, it is
     /// counted lost with that cause.
-    pub fn link(&mut self, ids: &[i64]) {
+    pub fn link(&mut self, ids: Ids<'_>) {
         if self.bonds.is_empty() {
             return;
         }
-        let at: BTreeMap<i64, usize> = ids.iter().enumerate().map(|(i, &id)| (id, i)).collect();
+        let at: BTreeMap<i64, usize> = (0..ids.len()).map(|i| (ids.get(i), i)).collect();
         let holds = &self.holds;
         let counts = &mut self.counts;
         self.bonds.retain(|&(id, _), b| {
@@ -361,7 +376,8 @@ impl WallStore {
                 }
             }
         });
-        for (i, &id) in ids.iter().enumerate() {
+        for i in 0..ids.len() {
+            let id = ids.get(i);
             if let Some(h) = self.holds.get_mut(i) {
                 *h = if self.bonds.range((id, 0)..=(id, u32::MAX)).next().is_some() {
                     id

@@ -22,6 +22,7 @@ pub mod parameters;
 pub mod results;
 pub mod store;
 pub mod sweep;
+pub mod wall_store;
 
 pub use error::Status;
 
