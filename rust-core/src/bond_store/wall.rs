@@ -28,7 +28,7 @@
 //! counts are a [`StoreCounts`]: there the wall is the partner, so a bond
 //! lost out of the wall's reach is one whose partner was not reached.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 use crate::bond::finite::bond_finite;
 use crate::bond::output_slots::{load_output, store_output, BOND_OUTPUT_LEN};
@@ -356,7 +356,16 @@ impl WallStore {
         if self.bonds.is_empty() {
             return;
         }
-        let at: BTreeMap<i64, usize> = (0..ids.len()).map(|i| (ids.get(i), i)).collect();
+        // the local index of each bonded sphere's id: a scan of the atoms
+        // against the few ids with bonds
+        let mut at: BTreeMap<i64, usize> = BTreeMap::new();
+        let wanted: BTreeSet<i64> = self.bonds.keys().map(|k| k.0).collect();
+        for i in 0..ids.len() {
+            let id = ids.get(i);
+            if wanted.contains(&id) {
+                at.insert(id, i);
+            }
+        }
         let holds = &self.holds;
         let counts = &mut self.counts;
         self.bonds.retain(|&(id, _), b| {
@@ -376,14 +385,11 @@ impl WallStore {
                 }
             }
         });
-        for i in 0..ids.len() {
-            let id = ids.get(i);
-            if let Some(h) = self.holds.get_mut(i) {
-                *h = if self.bonds.range((id, 0)..=(id, u32::MAX)).next().is_some() {
-                    id
-                } else {
-                    0
-                };
+        let n = ids.len().min(self.holds.len());
+        self.holds[..n].iter_mut().for_each(|h| *h = 0);
+        for &(id, _) in self.bonds.keys() {
+            if let Some(&i) = at.get(&id) {
+                self.holds[i] = id;
             }
         }
     }
