@@ -28,7 +28,8 @@
 //! counts are a [`StoreCounts`]: there the wall is the partner, so a bond
 //! lost out of the wall's reach is one whose partner was not reached.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::hash::{BuildHasherDefault, Hasher};
 
 use crate::bond::finite::bond_finite;
 use crate::bond::output_slots::{load_output, store_output, BOND_OUTPUT_LEN};
@@ -150,6 +151,29 @@ impl From<KinematicsError> for WallError {
 /// Doubles one packed bond takes: its wall, its state, its latest output.
 pub const WALL_PACKED_PER_BOND: usize = 1 + WALL_BOND_STATE_LEN + BOND_OUTPUT_LEN;
 
+/// The hash of a (sphere id, wall) key: one multiplication, as the keys
+/// are small integers the engine hands out (a look-up per contact must
+/// cost little next to the bond's step).
+#[derive(Default)]
+struct KeyHasher(u64);
+
+impl Hasher for KeyHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0.rotate_left(8) ^ u64::from(b)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        }
+    }
+    fn write_i64(&mut self, n: i64) {
+        self.0 = (self.0 ^ n as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+    fn write_u32(&mut self, n: u32) {
+        self.0 = (self.0.rotate_left(29) ^ u64::from(n)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+}
+
 /// One wall bond.
 #[derive(Clone, Copy, Debug)]
 struct WallBond {
@@ -173,10 +197,17 @@ impl WallBond {
 /// A rank's wall bonds.
 #[derive(Debug, Default)]
 pub struct WallStore {
-    bonds: BTreeMap<(i64, u32), WallBond>,
+    bonds: HashMap<(i64, u32), WallBond, BuildHasherDefault<KeyHasher>>,
+    /// The highest wall number held: a sphere's bonds are found by trying
+    /// each wall up to it.
+    walls: u32,
     /// Per atom slot: the id whose bonds the atom holds, 0 for none.
     holds: Vec<i64>,
     pass: i64,
+    /// The bonds the current pass has reached so far, and the step of that
+    /// pass; those of the previous force or setup pass.
+    reached: (usize, i64),
+    reached_before: (usize, i64),
     counts: StoreCounts,
 }
 
@@ -218,6 +249,7 @@ impl WallStore {
     /// engine took the counts).
     pub fn clear_all(&mut self) {
         self.bonds.clear();
+        self.walls = 0;
         self.holds.iter_mut().for_each(|h| *h = 0);
         self.counts = StoreCounts::default();
     }
@@ -244,7 +276,7 @@ impl WallStore {
     }
 
     fn range(&self, id: i64) -> impl Iterator<Item = (&(i64, u32), &WallBond)> {
-        self.bonds.range((id, 0)..=(id, u32::MAX))
+        (0..=self.walls).filter_map(move |w| self.bonds.get_key_value(&(id, w)))
     }
 
     /// Doubles [`Self::pack`] writes for sphere `id`.
@@ -254,13 +286,11 @@ impl WallStore {
 
     /// The most doubles one sphere's bonds take.
     pub fn most_packed_len(&self) -> usize {
-        let mut most = 0;
-        let mut run = (0i64, 0usize);
+        let mut per_sphere: HashMap<i64, usize, BuildHasherDefault<KeyHasher>> = HashMap::default();
         for &(id, _) in self.bonds.keys() {
-            run = if id == run.0 { (id, run.1 + 1) } else { (id, 1) };
-            most = most.max(run.1);
+            *per_sphere.entry(id).or_default() += 1;
         }
-        2 + most * WALL_PACKED_PER_BOND
+        2 + per_sphere.values().copied().max().unwrap_or(0) * WALL_PACKED_PER_BOND
     }
 
     /// Writes sphere `id`'s bonds to `buf` (their count, the doubles a bond
@@ -337,6 +367,7 @@ impl WallStore {
             if bond.intact() {
                 self.counts.intact += 1;
             }
+            self.walls = self.walls.max(row[0] as u32);
             if let Some(old) = self.bonds.insert((id, row[0] as u32), bond) {
                 if old.intact() {
                     self.counts.intact -= 1;
@@ -398,6 +429,11 @@ impl WallStore {
     /// previous one leave the store, the intact ones counted lost (their
     /// sphere left the wall's reach).
     fn begin_force_pass(&mut self, step: i64) {
+        // every bond held was reached in the pass before: nothing to look for
+        let (reached, at) = self.reached_before;
+        if reached == self.bonds.len() && at >= step - 1 {
+            return;
+        }
         // the atoms' marks are rebuilt at the next link; a stale one costs
         // a look-up
         let counts = &mut self.counts;
@@ -432,6 +468,8 @@ impl WallStore {
         let holds = *self.holds.get(c.atom).ok_or(WallError::AtomOutOfRange)?;
         if kind != WallPass::Output && c.pass != self.pass {
             self.pass = c.pass;
+            self.reached_before = self.reached;
+            self.reached = (0, c.step);
             if kind == WallPass::Force {
                 self.begin_force_pass(c.step);
             }
@@ -477,6 +515,7 @@ impl WallStore {
                 bond.pass = c.pass;
                 bond.element = c.element;
                 bond.reached = c.step;
+                self.reached.0 += 1;
                 let mut out = BondOutput::default();
                 let kin = wall_kinematics(&c.sphere, bond.state.partner, c.wall_velocity);
                 if model.setup_step(&kin, c.dt, &mut bond.state.bond, &mut out, true)? {
@@ -499,8 +538,11 @@ impl WallStore {
                 bond.pass = c.pass;
                 bond.element = c.element;
                 bond.reached = c.step;
+                self.reached.0 += 1;
                 if bond.intact() {
-                    self.step(model, c, false)
+                    let visit = step_bond(model, c, bond, false)?;
+                    count_visit(&mut self.counts, &visit);
+                    Ok(visit)
                 } else if may_create {
                     self.create(model, c)
                 } else {
@@ -528,7 +570,10 @@ impl WallStore {
         bond.pass = c.pass;
         bond.element = c.element;
         bond.reached = c.step;
-        self.bonds.insert(key, bond);
+        if self.bonds.insert(key, bond).is_none() {
+            self.reached.0 += 1;
+        }
+        self.walls = self.walls.max(c.wall);
         self.holds[c.atom] = c.id;
         self.counts.created += 1;
         self.counts.intact += 1;
@@ -541,29 +586,47 @@ impl WallStore {
             .bonds
             .get_mut(&(c.id, c.wall))
             .ok_or(WallError::AtomOutOfRange)?;
-        let mut out = BondOutput::default();
-        model.step_wall(&c.sphere, c.wall_velocity, c.dt, &mut bond.state, &mut out)?;
-        if !bond_finite(&bond.state.bond, &out) || !bond.state.partner.iter().all(|p| p.is_finite()) {
-            return Err(WallError::NonFinite);
-        }
-        let visit = |act: WallAct| WallVisit {
-            act: act as i32,
-            created: created as i32,
-            out,
-        };
-        if out.status == BondStatus::Intact as i32 {
-            bond.output = store_output(&out);
-            return Ok(visit(WallAct::Bond));
-        }
-        count_break(&mut self.counts, out.break_mode);
-        self.counts.intact -= 1;
-        Ok(visit(WallAct::Contact))
+        let visit = step_bond(model, c, bond, created)?;
+        count_visit(&mut self.counts, &visit);
+        Ok(visit)
     }
 
     /// The bytes the store holds on the heap (about: a tree node a bond).
     pub fn bytes(&self) -> usize {
-        self.bonds.len() * (std::mem::size_of::<WallBond>() + 2 * std::mem::size_of::<(i64, u32)>())
+        self.bonds.capacity() * (std::mem::size_of::<WallBond>() + std::mem::size_of::<(i64, u32)>() + 1)
             + self.holds.capacity() * std::mem::size_of::<i64>()
+    }
+}
+
+/// Advances `bond`, the intact bond of `c`; the loads of an intact bond
+/// are kept as its latest output.
+fn step_bond(
+    model: &BondModel,
+    c: &WallContact,
+    bond: &mut WallBond,
+    created: bool,
+) -> Result<WallVisit, WallError> {
+    let mut out = BondOutput::default();
+    model.step_wall(&c.sphere, c.wall_velocity, c.dt, &mut bond.state, &mut out)?;
+    if !bond_finite(&bond.state.bond, &out) || !bond.state.partner.iter().all(|p| p.is_finite()) {
+        return Err(WallError::NonFinite);
+    }
+    let intact = out.status == BondStatus::Intact as i32;
+    if intact {
+        bond.output = store_output(&out);
+    }
+    Ok(WallVisit {
+        act: if intact { WallAct::Bond } else { WallAct::Contact } as i32,
+        created: created as i32,
+        out,
+    })
+}
+
+/// A bond that broke in `visit` counted by its mode.
+fn count_visit(counts: &mut StoreCounts, visit: &WallVisit) {
+    if visit.out.status != BondStatus::Intact as i32 {
+        count_break(counts, visit.out.break_mode);
+        counts.intact -= 1;
     }
 }
 
