@@ -32,6 +32,16 @@ inline void countsRow(const GbStoreCounts &c, double row[8])
     for (int k = 0; k < 8; k++) row[k] = static_cast<double>(values[k]);
 }
 
+// Lost bonds' causes in words ("N because ...; ..."), each count with its
+// cause, those of 0 left out.
+inline std::string lostCauses(const long long all[4], const std::string why[4])
+{
+    std::string causes;
+    for (int c = 0; c < 4; c++)
+        if (all[c] > 0) causes += (causes.empty() ? "" : "; ") + std::to_string(all[c]) + " because " + why[c];
+    return causes;
+}
+
 // The bonds a link of a pair style's store lost, summed over the ranks
 // (collective): their number, and their causes in words in `causes` ("N
 // because ...; ..."), `noModel` adding what takes a type pair's bond model
@@ -47,9 +57,7 @@ inline long long lostBonds(const GbLinkReport &report, MPI_Comm world, const std
         "their partner was not among the atoms within the communication cutoff (deleted, lost, or moved "
         "farther than the bond's reach between runs)",
         "an atom's id was taken over by a new atom", "their atoms' types have no bond model any more" + noModel};
-    causes.clear();
-    for (int c = 0; c < 4; c++)
-        if (all[c] > 0) causes += (causes.empty() ? "" : "; ") + std::to_string(all[c]) + " because " + why[c];
+    causes = lostCauses(all, why);
     return all[0] + all[1] + all[2] + all[3];
 }
 

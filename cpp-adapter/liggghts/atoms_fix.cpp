@@ -50,6 +50,7 @@ protected:
     int globalState(double *values)
     {
         double local[BondBook::kTotals];
+        BondBook::of(lmp).refresh(false);
         BondBook::of(lmp).localTotals(local, update->ntimestep);
         MPI_Allreduce(local, values, BondBook::kTotals, MPI_DOUBLE, MPI_SUM, world);
         return BondBook::kTotals;

@@ -1,6 +1,7 @@
 #include "bond_book.h"
 #include "atoms_fix.h"
 #include "bonds_fix.h"
+#include "wall_bonds_fix.h"
 #include "bond_local.h"
 #include "bond_energy.h"
 #include "bond_nonlinear_cohesion.h"
@@ -8,6 +9,7 @@
 #include "fix_granbond_atoms.h"
 #include "combination_check.h"
 #include "deck_words.h"
+#include "engine_member.h"
 
 #include "compute.h"
 #include "fix.h"
@@ -65,6 +67,12 @@ std::string droppedMessage(long long dropped)
     return "cohesion bond/nonlinear: " + std::to_string(dropped) +
            " intact bonds were dropped with the model that held them (unfix of a fix wall/gran, or a "
            "replaced pair style), without breaking; compute bond/counter counts them as lost (columns 7-8)";
+}
+
+void BondBook::refresh(bool collective)
+{
+    for (BondTally *t : tallies_)
+        if (t->refresh) t->refresh(t->owner, collective);
 }
 
 void BondBook::localTotals(double out[kTotals], bigint step, bool restored) const
@@ -160,6 +168,7 @@ public:
         const int n = BondBook::kTotals;
         double local[n], total[n];
         BondBook &book = BondBook::of(lmp);
+        book.refresh(true);
         const long long dropped = book.takeDropped(world);
         if (dropped > 0 && comm->me == 0) error->warning(FLERR, droppedMessage(dropped).c_str());
         // events since the previous output: not those before a restart
@@ -237,29 +246,16 @@ LAMMPS_NS::Compute *createCounter(LAMMPS *lmp, int iarg, int narg, char **arg)
 
 LAMMPS_NS::Fix *createBreakLog(LAMMPS *lmp, int narg, char **arg) { return new FixBondBreakLog(lmp, narg, arg); }
 
-// Modify keeps its style tables private; this is the standard-conforming way
-// to name a private member (explicit instantiation may take its address).
+// Modify keeps its style tables private (engine_member.h).
 typedef LAMMPS_NS::Compute *(*ComputeCreator)(LAMMPS *, int, int, char **);
 typedef LAMMPS_NS::Fix *(*FixCreator)(LAMMPS *, int, char **);
 typedef std::map<std::string, ComputeCreator> *LAMMPS_NS::Modify::*ComputeMapMember;
 typedef std::map<std::string, FixCreator> *LAMMPS_NS::Modify::*FixMapMember;
 
-template<typename Tag, typename Tag::type Member>
-struct Expose {
-    friend typename Tag::type member(Tag) { return Member; }
-};
-struct ComputeMapTag {
-    typedef ComputeMapMember type;
-    friend type member(ComputeMapTag);
-};
-struct FixMapTag {
-    typedef FixMapMember type;
-    friend type member(FixMapTag);
-};
-template struct Expose<ComputeMapTag, &LAMMPS_NS::Modify::compute_map>;
-template struct Expose<FixMapTag, &LAMMPS_NS::Modify::fix_map>;
-
 }
+
+GRANBOND_ENGINE_MEMBER(ComputeMapTag, ComputeMapMember, &LAMMPS_NS::Modify::compute_map);
+GRANBOND_ENGINE_MEMBER(FixMapTag, FixMapMember, &LAMMPS_NS::Modify::fix_map);
 
 void registerBondStyles(LAMMPS_NS::LAMMPS *lmp)
 {
@@ -272,6 +268,7 @@ void registerBondStyles(LAMMPS_NS::LAMMPS *lmp)
     if (fixes) (*fixes)["bond/breaklog"] = &createBreakLog;
     if (fixes) (*fixes)[atomsFixStyle()] = &createAtomsFix;
     if (fixes) (*fixes)[bondsFixStyle()] = &createBondsFix;
+    if (fixes) (*fixes)[wallBondsFixStyle()] = &createWallBondsFix;
     // granbond's property lines are checked before the engine reads them
     if (fixes) checkPropertyLines(*fixes);
     // each LAMMPS constructor re-registers the engine's "gran" selector

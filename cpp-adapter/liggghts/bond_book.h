@@ -31,6 +31,11 @@ struct BondTally {
     long long intact = 0;      // intact bonds seen in the force pass `pass`
     long long pass = -1;       // 2*ntimestep + setupflag of that pass
     bigint passStep = -1;
+    // A model whose counts live in a store (wall bonds) takes them from it
+    // here before they are read; `collective`: every rank calls it, and
+    // losses are told.
+    void (*refresh)(void *owner, bool collective) = nullptr;
+    void *owner = nullptr;
 };
 
 class BondBook {
@@ -56,6 +61,10 @@ public:
         t.passStep = update->ntimestep;
         t.intact = 0;
     }
+
+    // Each model's counts taken from its store where it keeps them there
+    // (BondTally::refresh), before they are read.
+    void refresh(bool collective);
 
     // Sums over this rank's models: [pair created, broken, intact, wall created, broken, intact,
     // pair lost, wall lost]. Intact counts only of models whose latest pass is the current step.

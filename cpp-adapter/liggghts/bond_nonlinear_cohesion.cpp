@@ -3,6 +3,8 @@
 #include "core_message.h"
 #include "core_bridge.h"
 #include "fix_granbond_atoms.h"
+#include "wall_bonds_fix.h"
+#include "fix_wall_gran.h"
 
 #include "domain.h"
 #include "fix_property_atom.h"
@@ -22,31 +24,6 @@ using namespace LIGGGHTS::ContactModels;
 namespace granbond {
 namespace liggghts {
 
-namespace {
-
-void copy3(double *to, const double *from)
-{
-    to[0] = from[0];
-    to[1] = from[1];
-    to[2] = from[2];
-}
-
-// Position, velocity and angular velocity of local or ghost atom `i`.
-void readAtom(const LAMMPS_NS::Atom *atom, int i, double *x, double *v, double *w)
-{
-    copy3(x, atom->x[i]);
-    copy3(v, atom->v[i]);
-    copy3(w, atom->omega[i]);
-}
-
-// The wall point of a wall contact: `delta` runs from it to the centre `x`.
-void wallPoint(const double *x, const double *delta, double *point)
-{
-    for (int c = 0; c < 3; c++) point[c] = x[c] - delta[c];
-}
-
-}
-
 BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
                                              ContactModelBase *cmb) :
     CohesionModelBase(lmp, hsetup, cmb),
@@ -54,8 +31,6 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     keepsTangential_(false),
     isWall_(cmb->is_wall()),
     offset_(-1),
-    outputOffset_(-1),
-    status_(0),
     clumpIds_(0),
     atoms_(0),
     checkedNatoms_(-1),
@@ -72,23 +47,24 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     passStep_(-1),
     passAtoms_(-1),
     checkStore_(std::getenv("GRANBOND_CHECK_STORE") != 0),
-    warnedLost_(false)
+    warnedLost_(false),
+    wallFix_(cmb->is_wall() ? dynamic_cast<LAMMPS_NS::FixWallGran *>(hsetup) : 0),
+    wallBonds_(0),
+    wallLinkedAt_(-1),
+    wallPass_(-1),
+    wallRestart_(wallFix_ ? restartRows(lmp, wallBondsFixId(wallFix_->id)) : std::vector<double>()),
+    atomsRestart_(wallFix_ ? atomsRestartState(lmp) : std::vector<char>())
 {
+    std::memset(&wallLostTold_, 0, sizeof wallLostTold_);
     checkCoreLayout(error);
     if (isWall_) {
-        // the wall bond's state, then the loads of the latest force pass,
-        // so that `compute wall/gran/local ... history` can dump them and
-        // the per-contact output pass reports the applied forces
-        offset_ = registerStateSlots(hsetup, GB_STATE_KIND_WALL_BOND, error);
-        outputOffset_ = registerStateSlots(hsetup, GB_STATE_KIND_BOND_OUTPUT, error);
-        // the rest length, whose sign is the status: positive while intact
-        status_ = slotNamed(GB_STATE_KIND_WALL_BOND, "rest", error);
-        // the names LIGGGHTS-INL publishes, so per-contact tools can find the slots
-        cmb->add_history_offset("bondnonlinear_contactflag", offset_);
-        cmb->add_history_offset("bondnonlinear_output", outputOffset_);
-        // where contact models find whether the wall bond is intact
-        // (`model voigt ... contactUnderBond off`)
-        cmb->add_history_offset("bondnonlinear_status", offset_ + static_cast<int>(status_));
+        // the bond lives in its sphere's store; the contact keeps a flag,
+        // the bond's status as the store said at the contact's latest
+        // visit, where contact models find it (`model voigt ...
+        // contactUnderBond off`)
+        offset_ = registerStateSlots(hsetup, GB_STATE_KIND_WALL_BOND, error,
+                                     slotNamed(GB_STATE_KIND_WALL_BOND, "rest", error), 1, "bondnonlinear_");
+        cmb->add_history_offset("bondnonlinear_status", offset_);
     } else {
         // pair records hold nothing of the bond: the contact flag's bit
         // says where a bond is (`model voigt ... contactUnderBond off`)
@@ -103,8 +79,14 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
 
 BondNonlinearCohesion::~BondNonlinearCohesion()
 {
-    // pair bonds stay in their store with their counts: nothing retires
+    // pair bonds stay in their store with their counts: nothing retires;
+    // a wall's bonds go with it (`unfix`): the book counts them as lost
     if (!isWall_) tally_ = BondTally();
+    if (wallBonds_) {
+        syncWallTally();
+        const int ifix = modify ? modify->find_fix(wallBondsFixId(wallFix_->id).c_str()) : -1;
+        if (ifix >= 0 && modify->fix[ifix] == wallBonds_) granbond_wall_store_clear_all(wallBonds_->store());
+    }
     book_->remove(&tally_);
     if (book_->pairBonds == this) book_->pairBonds = nullptr;
 }
@@ -154,6 +136,7 @@ void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
     clumpIds_ = isWall_ ? 0
                         : static_cast<LAMMPS_NS::FixPropertyAtom *>(modify->find_fix_property(
                               "bond_random_id", "property/atom", "scalar", 0, 0, "cohesion bond/nonlinear", false));
+    if (isWall_) connectWall();
     if (!isWall_) {
         // the bond kind of each pair of types: its model's place in the table
         kinds_.assign(static_cast<size_t>(n + 1) * (n + 1), -1);
@@ -280,6 +263,7 @@ void BondNonlinearCohesion::runChecks(bool runStart)
     if (!runStart) return;
     if (!saidLaw_ && comm->me == 0) sayLaw(style);
     saidLaw_ = true;
+    if (isWall_) warnWallLosses();
     const long long dropped = book_->takeDropped(world);
     if (dropped > 0 && comm->me == 0) error->warning(FLERR, droppedMessage(dropped).c_str());
     if (granbond_bond_creation_check(parameters_.table(), ntypes, bodies.data(), firstStep_, 0, isWall_ ? 1 : 0, 1,
@@ -306,152 +290,6 @@ void BondNonlinearCohesion::sayLaw(const char *style)
             if (screen) fprintf(screen, "%s: %s\n", style, line);
             if (logfile) fprintf(logfile, "%s: %s\n", style, line);
         }
-}
-
-// ------------------------------------------------------------ wall bonds
-
-void BondNonlinearCohesion::account(const GbBondModel *model, int i, const double *wallDelta, const double *state,
-                                    bool created, const GbBondOutput &out)
-{
-    if (created) tally_.created++;
-    if (state[status_] > 0.0) tally_.intact++;
-    if (out.break_mode == GB_BREAK_MODE_NONE) return;
-    tally_.broken++;
-    BondBook &book = *book_;
-    if (!book.logging()) return;
-    // a wall plays sphere j, of radius 0 at the wall point
-    double wall[3];
-    if (wallDelta) wallPoint(atom->x[i], wallDelta, wall);
-    BreakEvent e;
-    if (makeBreakEvent(model, out, atom->x[i], wall, atom->radius[i], 0.0, static_cast<double>(atom->tag[i]), 0.0,
-                       static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
-        failed(i, 0, "the break log's event");
-    book.record(e);
-}
-
-void BondNonlinearCohesion::failed(int i, int j, const char *call)
-{
-    char where[160];
-    if (isWall_)
-        snprintf(where, sizeof where, "atom %ld and a wall", static_cast<long>(atom->tag[i]));
-    else
-        snprintf(where, sizeof where, "atoms %ld and %ld", static_cast<long>(atom->tag[i]),
-                 static_cast<long>(atom->tag[j]));
-    // a core entry's failure is told by the core's reason; the adapter's
-    // own, by what it was doing
-    const std::string step = " at step " + std::to_string(static_cast<long long>(update->ntimestep));
-    const std::string msg = std::strncmp(call, "granbond_", 9) == 0
-                                ? "cohesion bond/nonlinear: " + std::string(where) + step + ": " + coreReason()
-                                : "cohesion bond/nonlinear: " + std::string(call) + " failed for " + where + step;
-    endRunOnThisRank(lmp, FLERR, msg);
-}
-
-// A wall bond's step (or creation). Returns true and fills `out` if the
-// bond is intact after it: then its loads replace the contact models'.
-bool BondNonlinearCohesion::advance(SurfacesCloseData &d, GbBondOutput &out)
-{
-    const GbBondModel *model = parameters_.model(d.itype, d.jtype);
-    if (!model || !d.contact_history) {
-        failed(d.i, d.j, model ? "contact history lookup" : "model lookup (types not connected)");
-        return false;
-    }
-    double *const state = d.contact_history + offset_;
-    double *const outputSlots = d.contact_history + outputOffset_;
-    // Passes that must not advance the state: the setup pass of a run
-    // (computeflag, no shearupdate) and the per-contact output pass
-    // (compute wall/gran/local). Both report what the last force pass
-    // applied, so a run continued (or restarted) starts from the same
-    // forces as an uninterrupted one. A law that computes a setup pass's
-    // loads afresh (the core says which) does so in the setup pass only.
-    if (!d.computeflag || !d.shearupdate) {
-        if (!(state[status_] > 0.0)) return false;
-        if (!(d.computeflag && setupAfresh(d, model, state, out)) &&
-            granbond_bond_output_load(outputSlots, &out) != GB_STATUS_OK)
-            failed(d.i, d.j, "granbond_bond_output_load");
-        if (d.computeflag) {
-            book_->beginPassIfNew(tally_, update);
-            tally_.intact++;
-        }
-        return true;
-    }
-    book_->beginPassIfNew(tally_, update);
-    std::memset(&out, 0, sizeof out);
-    bool created = false;
-    const bool intact = advanceWall(d, model, state, out, created);
-    if (intact && granbond_bond_output_store(&out, outputSlots) != GB_STATUS_OK)
-        failed(d.i, d.j, "granbond_bond_output_store");
-    account(model, d.i, d.delta, state, created, out);
-    return intact;
-}
-
-bool BondNonlinearCohesion::setupAfresh(SurfacesCloseData &d, const GbBondModel *model, double *state,
-                                        GbBondOutput &out)
-{
-    int32_t recomputed = 0;
-    GbSphereKinematics s;
-    readAtom(atom, d.i, s.x, s.v, s.w);
-    s.radius = d.radi;
-    double wallVelocity[3] = {0.0, 0.0, 0.0};
-    if (d.v_j) copy3(wallVelocity, d.v_j);
-    if (granbond_wall_bond_setup_compute(model, &s, wallVelocity, update->dt, state, &recomputed, &out) !=
-        GB_STATUS_OK)
-        failed(d.i, d.j, "granbond_wall_bond_setup_compute");
-    return recomputed != 0;
-}
-
-bool BondNonlinearCohesion::advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state,
-                                        GbBondOutput &out, bool &created)
-{
-    GbSphereKinematics s;
-    readAtom(atom, d.i, s.x, s.v, s.w);
-    s.radius = d.radi;
-    double wallVelocity[3] = {0.0, 0.0, 0.0};
-    if (d.v_j) copy3(wallVelocity, d.v_j);
-
-    // an intact bond cannot be created again: skip the core's creation call
-    // (it would return at once, not created)
-    if (!(state[status_] > 0.0)) {
-        double contactPoint[3];
-        wallPoint(s.x, d.delta, contactPoint);
-        int32_t made = 0;
-        if (granbond_wall_bond_try_create(model, &s, contactPoint, update->ntimestep, state, &made) !=
-            GB_STATUS_OK)
-            failed(d.i, d.j, "granbond_wall_bond_try_create");
-        created = made != 0;
-    }
-    if (!(state[status_] > 0.0)) return false;
-    if (granbond_wall_bond_compute(model, &s, wallVelocity, update->dt, state, &out) != GB_STATUS_OK)
-        failed(d.i, d.j, "granbond_wall_bond_compute");
-    return out.status == GB_BOND_STATUS_INTACT;
-}
-
-void BondNonlinearCohesion::apply(const GbBondOutput &out, ForceData &i_forces, ForceData &)
-{
-    for (int c = 0; c < 3; c++) {
-        i_forces.delta_F[c] += out.force_i[c];
-        i_forces.delta_torque[c] += out.torque_i[c];
-    }
-}
-
-void BondNonlinearCohesion::intersecting(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
-{
-    GbBondOutput out;
-    if (!advance(sidata, out)) return;   // the contact model acts alone
-    // an intact bond replaces what normal, tangential and rolling models
-    // added, or adds to it (keepsContactLoads)
-    if (!keepsContactLoads(sidata.itype, sidata.jtype)) {
-        i_forces.reset();
-        j_forces.reset();
-    }
-    apply(out, i_forces, j_forces);
-}
-
-void BondNonlinearCohesion::close(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
-{
-    GbBondOutput out;
-    if (!advance(scdata, out)) return;
-    apply(out, i_forces, j_forces);
-    scdata.has_force_update = true;   // otherwise the engine drops the forces
 }
 
 }

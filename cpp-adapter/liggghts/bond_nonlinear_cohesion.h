@@ -9,7 +9,8 @@
 // loads to the atoms; the pair loop's callbacks only replace a bonded
 // pair's contact loads (a bit of the pair's contact flag caches the store)
 // and propose pairs for bonds at a creation step; endPass steps the bonds
-// formed in the loop. Wall bonds live in the wall's contact history.
+// formed in the loop. Wall bonds live in their spheres' store (fix
+// granbond/wallbonds, wall_bonds_fix.h; bond_nonlinear_walls.cpp).
 //
 // Compiled once (bond_nonlinear_cohesion.cpp); the CohesionModel<> template
 // specialisation in cohesion_model_bond_nonlinear.h only inherits from it.
@@ -27,12 +28,14 @@
 
 namespace LAMMPS_NS {
 class PairGran;
+class FixWallGran;
 }
 
 namespace granbond {
 class FixGranbondAtoms;
 class BondStoreFix;
 namespace liggghts {
+class WallBondsFix;
 
 using LIGGGHTS::ContactModels::ForceData;
 using LIGGGHTS::ContactModels::SurfacesCloseData;
@@ -112,6 +115,12 @@ public:
     // (granbond_bond_store_add_dissipated_shares).
     void addDissipatedShares();
 
+    // Walls: the counts taken from the store, relinked if atoms moved since
+    // (before the counts are read); and the bonds lost since the last
+    // warning told, with their causes, once (collective).
+    void refreshWall();
+    void warnWallLosses();
+
 private:
     static bool bondedFlag(const SurfacesCloseData &d) { return d.contact_flags && (*d.contact_flags & kBondedFlag); }
     void overlapping(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -165,19 +174,19 @@ private:
     void checkStore();
     void failPair(int i, int j, const char *what);
 
-    // ---- wall bonds, in the wall's contact history
-    bool advance(SurfacesCloseData &d, GbBondOutput &out);
-    bool setupAfresh(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out);
-    bool advanceWall(SurfacesCloseData &d, const GbBondModel *model, double *state, GbBondOutput &out,
-                     bool &created);
-    void apply(const GbBondOutput &out, ForceData &i_forces, ForceData &j_forces);
+    // ---- wall bonds, in their spheres' store (bond_nonlinear_walls.cpp)
+    void connectWall();
+    void linkWall();
+    void syncWallTally();
+    uint32_t wallNumber(const SurfacesCloseData &d) const;
+    int visitWall(SurfacesCloseData &d, GbBondOutput &out);
+    void apply(const GbBondOutput &out, ForceData &i_forces);
     void intersecting(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
     void close(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces);
     void failed(int i, int j, const char *call);
-    // Bookkeeping of one step of a wall bond (update passes): counters,
-    // break log. `wallDelta`: the vector from the wall point to the centre.
-    void account(const GbBondModel *model, int i, const double *wallDelta, const double *state, bool created,
-                 const GbBondOutput &out);
+    // A broken wall bond in the break log. `wallDelta`: the vector from the
+    // wall point to the centre.
+    void account(const GbBondModel *model, int i, const double *wallDelta, const GbBondOutput &out);
 
     // The core's checks of the time step (warned at a run's start, and when
     // the atom count changes if the limit moved) and, at a run's start, of
@@ -191,9 +200,7 @@ private:
     bool keepsTangential_;      // some type pair's model keeps the contact's tangential loads
     bool keepsLoads_ = false;   // ... keeps all the contact's loads (keepsContactLoads)
     const bool isWall_;
-    int offset_;        // walls: core state slots
-    int outputOffset_;  // walls: last output (GB_STATE_KIND_BOND_OUTPUT slots)
-    size_t status_;     // walls: the rest-length slot, positive while intact (the core's table)
+    int offset_;        // walls: the contact's flag (the bond's status as the store said)
     BondTally tally_;
     BondBook *book_;    // this instance's book (looked up once: std::map)
     // `fix particletemplate/multiplespheres ... bonded yes` (null if none)
@@ -223,6 +230,15 @@ private:
     bool warnedLost_;             // bonds lost without breaking were told (once)
     LAMMPS_NS::FixPropertyAtom *dissipated_ = nullptr;   // computeDissipatedEnergy's per-atom table, or null
     std::vector<double> shares_;  // this pass's shares, local then ghost atoms (6 doubles an atom)
+
+    // walls (bond_nonlinear_walls.cpp)
+    LAMMPS_NS::FixWallGran *wallFix_;   // the wall fix this model belongs to
+    WallBondsFix *wallBonds_;           // its bonds' home
+    bigint wallLinkedAt_;               // neighbor->ncalls at the latest link of its store
+    int64_t wallPass_;                  // the latest force or setup pass visited
+    GbStoreCounts wallLostTold_;        // the losses told so far (warnWallLosses)
+    std::vector<double> wallRestart_;   // its store's rows in a restart file read (restartRows)
+    std::vector<char> atomsRestart_;    // fix granbond/atoms's state there (atomsRestartState)
 };
 
 }

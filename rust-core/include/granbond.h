@@ -104,6 +104,11 @@
 #define CHUNK 64
 
 /**
+ * Doubles one packed bond takes: its wall, its state, its latest output.
+ */
+#define WALL_PACKED_PER_BOND ((1 + GRANBOND_WALL_BOND_STATE_LEN) + GRANBOND_BOND_OUTPUT_LEN)
+
+/**
  * The number of `f64` slots of [`ContactState`].
  */
 #define GRANBOND_CONTACT_STATE_LEN 6
@@ -348,6 +353,59 @@ typedef enum GbStatus {
 } GbStatus;
 
 /**
+ * What a contact does under the store's answer.
+ */
+enum GbWallAct
+#ifdef __cplusplus
+  : int32_t
+#endif // __cplusplus
+ {
+  /**
+   * No intact bond: the contact models act alone.
+   */
+  GB_WALL_ACT_CONTACT = 0,
+  /**
+   * The bond acts at this contact: its loads replace the contact's.
+   */
+  GB_WALL_ACT_BOND = 1,
+  /**
+   * The bond acted at another contact of this pass: the contact's loads
+   * are replaced by nothing.
+   */
+  GB_WALL_ACT_HELD = 2,
+};
+#ifndef __cplusplus
+typedef int32_t GbWallAct;
+#endif // __cplusplus
+
+/**
+ * What kind of pass a contact belongs to.
+ */
+enum GbWallPass
+#ifdef __cplusplus
+  : int32_t
+#endif // __cplusplus
+ {
+  /**
+   * A force pass: the bond is advanced (and may form or break).
+   */
+  GB_WALL_PASS_FORCE = 0,
+  /**
+   * A run's setup pass: the loads of the latest force pass (or those a
+   * law computes afresh), nothing advanced.
+   */
+  GB_WALL_PASS_SETUP = 1,
+  /**
+   * An engine's per-contact output pass: what the latest force pass
+   * applied, shown at the contact that applied it.
+   */
+  GB_WALL_PASS_OUTPUT = 2,
+};
+#ifndef __cplusplus
+typedef int32_t GbWallPass;
+#endif // __cplusplus
+
+/**
  * A bond type as engines use it (`GbBondModel` in the C ABI): its
  * [`BondLaws`], read through `Deref`, and the compiled steps chosen for
  * its switches on this CPU.
@@ -364,6 +422,11 @@ typedef struct GbBondStore GbBondStore;
  * `GbVoigtModel` in the C ABI.
  */
 typedef struct GbVoigtModel GbVoigtModel;
+
+/**
+ * A rank's wall bonds.
+ */
+typedef struct GbWallStore GbWallStore;
 
 /**
  * What the caller was compiled against: fill it with the header's version
@@ -1296,6 +1359,81 @@ typedef struct GbEnergySums {
    */
   double released;
 } GbEnergySums;
+
+/**
+ * One contact of a sphere with a wall, as the wall's loop reports it.
+ */
+typedef struct GbWallContact {
+  /**
+   * The sphere's local index.
+   */
+  size_t atom;
+  /**
+   * The sphere's id.
+   */
+  int64_t id;
+  /**
+   * The wall's number (the engine numbers its walls).
+   */
+  uint32_t wall;
+  /**
+   * A token of the wall element (triangle) the contact is with, the same
+   * for the same element within a step.
+   */
+  int64_t element;
+  /**
+   * A number of the pass, the same for every contact of one force or
+   * setup pass and different from the previous pass's.
+   */
+  int64_t pass;
+  /**
+   * [`WallPass`] as a number.
+   */
+  int32_t kind;
+  /**
+   * The time step number.
+   */
+  int64_t step;
+  /**
+   * The time step (s).
+   */
+  double dt;
+  /**
+   * Whether a bond may form in this pass (a creation step).
+   */
+  int32_t may_create;
+  /**
+   * The sphere.
+   */
+  struct GbSphereKinematics sphere;
+  /**
+   * The wall's velocity at the contact point (m/s).
+   */
+  double wall_velocity[3];
+  /**
+   * The contact point on the wall (m).
+   */
+  double contact_point[3];
+} GbWallContact;
+
+/**
+ * The store's answer for one contact.
+ */
+typedef struct GbWallVisit {
+  /**
+   * [`WallAct`] as a number.
+   */
+  int32_t act;
+  /**
+   * Whether the bond formed at this contact.
+   */
+  int32_t created;
+  /**
+   * The bond's output where it acts here ([`WallAct::Bond`]), or the
+   * step that broke it (its break mode set, no loads).
+   */
+  struct GbBondOutput out;
+} GbWallVisit;
 
 #ifdef __cplusplus
 extern "C" {
@@ -2771,6 +2909,172 @@ enum GbStatus granbond_bond_store_bond_energy(const struct GbBondStore *store,
                                               const struct GbAtomArrays *atoms,
                                               size_t k,
                                               double *energy);
+
+/**
+ * A new, empty store, written to `store`. Free it with
+ * `granbond_wall_store_free`.
+ *
+ * # Safety
+ * `store` must be null or valid for writes.
+ */
+enum GbStatus granbond_wall_store_new(struct GbWallStore **store);
+
+/**
+ * Frees a store from `granbond_wall_store_new` (null is ignored).
+ *
+ * # Safety
+ * `store` must come from `granbond_wall_store_new` and not be used again.
+ */
+void granbond_wall_store_free(struct GbWallStore *store);
+
+/**
+ * The engine's per-atom arrays hold `nmax` atoms now (`grow_arrays`).
+ *
+ * # Safety
+ * `store` must be null or from `granbond_wall_store_new`.
+ */
+enum GbStatus granbond_wall_store_grow(struct GbWallStore *store, size_t nmax);
+
+/**
+ * Atom `from` was copied over atom `to` (`copy_arrays`).
+ *
+ * # Safety
+ * `store` must be null or from `granbond_wall_store_new`.
+ */
+enum GbStatus granbond_wall_store_copy(struct GbWallStore *store, size_t from, size_t to);
+
+/**
+ * Atom `i` was created (`set_arrays`): it holds no wall bond, whatever
+ * id it is given.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_wall_store_new`.
+ */
+enum GbStatus granbond_wall_store_clear(struct GbWallStore *store, size_t i);
+
+/**
+ * Doubles `granbond_wall_store_pack` writes for the sphere of id `id`; 0
+ * for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_wall_store_new`.
+ */
+size_t granbond_wall_store_packed_len(const struct GbWallStore *store, int64_t id);
+
+/**
+ * The most doubles `granbond_wall_store_pack` writes for one sphere (a
+ * bound for exchange and restart buffers); 0 for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_wall_store_new`.
+ */
+size_t granbond_wall_store_most_packed_len(const struct GbWallStore *store);
+
+/**
+ * Packs the wall bonds of the sphere of id `id` (atom `i`) into `buf`
+ * (`capacity` doubles), writing the doubles used to `written`. With
+ * `leaving` non-zero (the sphere migrates) they leave this store;
+ * otherwise (a restart file) they stay.
+ *
+ * # Safety
+ * Pointers must be null or valid; `buf` for `capacity` doubles.
+ */
+enum GbStatus granbond_wall_store_pack(struct GbWallStore *store,
+                                       size_t i,
+                                       int64_t id,
+                                       int32_t leaving,
+                                       double *buf,
+                                       size_t capacity,
+                                       size_t *written);
+
+/**
+ * The doubles one sphere's wall bonds packed by `granbond_wall_store_pack`
+ * take, read from the head of `buf` (`head` doubles there, at least 2),
+ * written to `len`.
+ *
+ * # Safety
+ * Pointers must be null or valid; `buf` for `head` doubles.
+ */
+enum GbStatus granbond_wall_store_packed_len_in(const double *buf, size_t head, size_t *len);
+
+/**
+ * Unpacks into atom `i`, the sphere of id `id`, the wall bonds
+ * `granbond_wall_store_pack` wrote to `buf` (`len` doubles), reached at
+ * step `step` (the current one); writes the doubles read to `read`.
+ *
+ * # Safety
+ * Pointers must be null or valid; `buf` for `len` doubles.
+ */
+enum GbStatus granbond_wall_store_unpack(struct GbWallStore *store,
+                                         size_t i,
+                                         int64_t id,
+                                         int64_t step,
+                                         const double *buf,
+                                         size_t len,
+                                         size_t *read);
+
+/**
+ * Finds each bond's sphere among the local atoms (`ids`, `ids->count` of
+ * them) after atoms moved: a bond whose sphere left the system, or whose
+ * id a new atom took over, leaves the store, counted lost with that cause.
+ *
+ * # Safety
+ * Pointers must be null or valid; the ids for `ids->count` atoms.
+ */
+enum GbStatus granbond_wall_store_link(struct GbWallStore *store, const struct GbAtomIds *ids);
+
+/**
+ * One contact of a sphere with a wall (`contact`), the store's answer in
+ * `visit`: whether the bond of the sphere and the wall acts here (its
+ * loads in `visit->out`), holds the sphere here (the contact's loads
+ * replaced by nothing), or is absent or broke (its break mode in
+ * `visit->out`), and whether it formed here.
+ *
+ * # Safety
+ * Pointers must be null or valid (`model` from `granbond_bond_model_new`).
+ */
+enum GbStatus granbond_wall_store_visit(struct GbWallStore *store,
+                                        const struct GbBondModel *model,
+                                        const struct GbWallContact *contact,
+                                        struct GbWallVisit *visit);
+
+/**
+ * The store's counts on this rank (created, broken by mode, lost by
+ * cause: `lost_partner_unreached` counts the bonds whose sphere left the
+ * wall's reach; intact), written to `counts`.
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_wall_store_counts(const struct GbWallStore *store,
+                                         struct GbStoreCounts *counts);
+
+/**
+ * Restores counts read from a restart file (`intact` is ignored: the
+ * bonds held say it).
+ *
+ * # Safety
+ * Pointers must be null or valid.
+ */
+enum GbStatus granbond_wall_store_restore_counts(struct GbWallStore *store,
+                                                 const struct GbStoreCounts *counts);
+
+/**
+ * Drops every bond and zeroes the counts: the wall is gone, and its
+ * engine has taken the counts.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_wall_store_new`.
+ */
+enum GbStatus granbond_wall_store_clear_all(struct GbWallStore *store);
+
+/**
+ * The bytes the store holds on the heap; 0 for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_wall_store_new`.
+ */
+size_t granbond_wall_store_bytes(const struct GbWallStore *store);
 
 #ifdef __cplusplus
 }  // extern "C"

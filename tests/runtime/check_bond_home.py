@@ -62,6 +62,20 @@ per mode (LAMMPS unless said):
              created = broken + intact + lost and the bond is intact at
              the end, nothing is warned; the store recounted after every
              pass (GRANBOND_CHECK_STORE).
+  edge       LIGGGHTS: one sphere bonded to a mesh wall on the edge
+             shared by two triangles, the restart file written on 1 and
+             on 2 ranks and read on 1, 2 and 3 while the mesh is pulled
+             down (decks/bond_home/mesh_edge_restart.in): in every
+             combination one wall bond (created 1, intact 1, nothing
+             broken or lost at every output) and the same force on the
+             sphere, -8.19e-3 N at step 150 and the same table as the
+             restart written and read on one rank, to 1e-12 of the
+             largest force. Read on 1-3 ranks with the mesh pulled
+             fast, the bond breaks: created 1, broken 1, intact 0. The
+             bond dragging the sphere across the boundaries of 2 and 3
+             ranks stays one bond, with the same force on 1, 2 and 3
+             ranks. created = broken + intact + lost at every output;
+             the store recounted after every pass (GRANBOND_CHECK_STORE).
 
 usage: check_bond_home.py --mode MODE --kind lammps|liggghts --engine BIN
                           [--mpiexec MPIEXEC] --workdir DIR
@@ -233,6 +247,73 @@ def check_insert(a, workdir):
             raise Failure(f"{deck}, {n} ranks: a correct deck warned: {warned}")
         print(f"ok: {deck}, {n} ranks: the bond two-sided at every output (f1 = {f1[-1]:.4g} N), momentum within "
               f"{drift:.2g} of a sphere's, created {created[-1]:g} = intact {intact[-1]:g}")
+def check_edge(a, workdir):
+    writers = [1, 2] if a.mpiexec else [1]
+    readers = [1, 2, 3] if a.mpiexec else [1]
+    env = {"GRANBOND_CHECK_STORE": "1"}
+    reference = None
+    for w in writers:
+        restart = os.path.join(workdir, f"edge-np{w}.restart")
+        text = run(a, w, "mesh_edge_restart.in", os.path.join(workdir, f"write-np{w}"),
+                   {"px": w, "restart": restart}, env)
+        if "recounting the bonds after every pass" not in text:
+            raise Failure("mesh_edge_restart.in: the store check did not run")
+        if thermo_column(text, "c_bc[6]")[-1:] != [1]:
+            raise Failure(f"written on {w} ranks: {thermo_column(text, 'c_bc[6]')} intact wall bonds, want 1")
+        for r in readers:
+            d = os.path.join(workdir, f"write-np{w}-read-np{r}")
+            text = run(a, r, "mesh_edge_restart.in", d, {"phase": 2, "v": -0.2, "restart": restart}, env)
+            steps = thermo_column(text, "Step")
+            counts = [thermo_column(text, f"c_bc[{k}]") for k in (4, 5, 6, 8)]
+            fz = thermo_column(text, "fz")
+            label = f"written on {w} ranks, read on {r}"
+            if not steps or any(row != (1, 0, 1, 0) for row in zip(*counts)):
+                raise Failure(f"{label}: wall bonds created, broken, intact, lost {list(zip(*counts))[:4]}, "
+                              "want one bond (1, 0, 1, 0) at every output")
+            at150 = fz[steps.index(150)]
+            if abs(at150 - (-8.19e-3)) > 5e-6:
+                raise Failure(f"{label}: fz at step 150 is {at150:.6g} N, want -8.19e-3 N (one bond)")
+            table = list(zip(steps, fz))
+            if reference is None:
+                reference = table
+            scale = max(abs(f) for _, f in reference)
+            worst = max(abs(f - g) for (_, f), (_, g) in zip(table, reference))
+            if [s for s, _ in table] != [s for s, _ in reference] or worst > 1e-12 * scale:
+                raise Failure(f"{label}: fz differs from the run written and read on 1 rank by {worst:.3g} N")
+            warned = [w_ for w_ in warnings_in_log(d) if "different # of processors" not in w_
+                      and "is not after step" not in w_]
+            if warned:
+                raise Failure(f"{label}: a correct deck warned: {warned}")
+            print(f"ok: {label}: one wall bond at every output, fz {at150:.6g} N at step 150, "
+                  f"within {worst:.2g} N of the 1-rank table")
+    for r in readers:
+        d = os.path.join(workdir, f"break-read-np{r}")
+        text = run(a, r, "mesh_edge_restart.in", d, {"phase": 2, "v": -2.0, "restart": restart}, env)
+        rows = list(zip(*[thermo_column(text, f"c_bc[{k}]") for k in (4, 5, 6, 8)]))
+        if not rows or rows[-1] != (1, 1, 0, 0) or any(c != b + i + l for c, b, i, l in rows):
+            raise Failure(f"mesh pulled fast, read on {r} ranks: created, broken, intact, lost {rows}, "
+                          "want the bond broken (1, 1, 0, 0) and created = broken + intact + lost")
+        print(f"ok: mesh pulled fast, read on {r} ranks: the bond broke once, counts {rows[-1]}")
+    tables = {}
+    for n in readers:
+        d = os.path.join(workdir, f"drag-np{n}")
+        text = run(a, n, "mesh_edge_restart.in", d,
+                   {"px": n, "x0": 0.004, "vx": -1.0, "run1": 5000, "restart": os.path.join(d, "unused.restart")},
+                   env)
+        # from the bond's first output on (step 0 comes before it)
+        steps = thermo_column(text, "Step")
+        rows = [r for t, *r in zip(steps, *[thermo_column(text, f"c_bc[{k}]") for k in (4, 5, 6, 8)]) if t > 0]
+        x = thermo_column(text, "x")
+        if not rows or any(tuple(row) != (1, 0, 1, 0) for row in rows) or not x or x[-1] > -5e-4:
+            raise Failure(f"dragged on {n} ranks: counts {rows[:3]}..., x {x[-1:]}: want one bond at every "
+                          "output and the sphere dragged past x = 0")
+        tables[n] = list(zip(thermo_column(text, "Step"), thermo_column(text, "fz"), x))
+        if tables[n] != tables[readers[0]]:
+            raise Failure(f"dragged on {n} ranks: the table differs from 1 rank's")
+        print(f"ok: dragged across the ranks' boundaries on {n} ranks: one bond, x from 4 mm to "
+              f"{x[-1] * 1e3:.3g} mm, the same table as on 1 rank")
+
+
 def budget_drift(text):
     # LIGGGHTS heads a variable's column without the `v_`
     total = thermo_column(text, "v_total") or thermo_column(text, "total")
@@ -430,5 +511,5 @@ def check_budget(a, workdir):
 if __name__ == "__main__":
     run_modes(__doc__, {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
                          "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy,
-                         "insert": check_insert,
+                         "insert": check_insert, "edge": check_edge,
                          "budget": check_budget})

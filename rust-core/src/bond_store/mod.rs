@@ -20,6 +20,7 @@ mod listed;
 mod pass;
 mod shares;
 mod view;
+mod wall;
 
 pub use atoms::{packed_len_in, UnpackError};
 pub use budget::{
@@ -32,6 +33,7 @@ pub use listed::{ListedAtoms, ListedBond};
 pub use pass::{creates_here, BrokenBond, StepFailure, StepFailureReason, CHUNK};
 pub use shares::SharesError;
 pub use view::ViewError;
+pub use wall::{WallAct, WallContact, WallError, WallPass, WallStore, WallVisit, WALL_PACKED_PER_BOND};
 
 use crate::bond::{BondState, BondStatus, BOND_STATE_LEN};
 use budget::Budget;

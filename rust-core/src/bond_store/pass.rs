@@ -75,6 +75,16 @@ pub enum StepFailureReason {
     NonFinite,
 }
 
+/// Counts a break of `mode` in `c` (any mode not named otherwise is shear).
+pub(super) fn count_break(c: &mut super::StoreCounts, mode: i32) {
+    match mode {
+        m if m == BreakMode::Distance as i32 => c.broken_distance += 1,
+        m if m == BreakMode::Tension as i32 => c.broken_tension += 1,
+        m if m == BreakMode::Compression as i32 => c.broken_compression += 1,
+        _ => c.broken_shear += 1,
+    }
+}
+
 /// Which atom of a pair the engine has just found to bond owns the bond on
 /// this rank: `Some(false)` atom `i`, `Some(true)` atom `j`, `None` if
 /// another rank creates it. The owner is a local atom, the one with the
@@ -261,13 +271,7 @@ impl BondStore {
     }
 
     fn count_break(&mut self, mode: i32) {
-        let c = &mut self.counts;
-        match mode {
-            m if m == BreakMode::Distance as i32 => c.broken_distance += 1,
-            m if m == BreakMode::Tension as i32 => c.broken_tension += 1,
-            m if m == BreakMode::Compression as i32 => c.broken_compression += 1,
-            _ => c.broken_shear += 1,
-        }
+        count_break(&mut self.counts, mode);
     }
 
     /// The bonds broken so far in this pass.

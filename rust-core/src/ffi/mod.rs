@@ -21,6 +21,7 @@ pub mod layout;
 pub mod parameters;
 pub mod results;
 pub mod store;
+pub mod wall_store;
 
 pub use error::Status;
 

@@ -48,7 +48,7 @@ pub struct StoreAtoms {
     pub reach: f64,
 }
 
-unsafe fn ids<'a>(ids: &AtomIds) -> Result<Ids<'a>, Failure> {
+pub(super) unsafe fn ids<'a>(ids: &AtomIds) -> Result<Ids<'a>, Failure> {
     match (ids.narrow.is_null(), ids.wide.is_null()) {
         (false, true) => Ok(Ids::Narrow(slice(ids.narrow, ids.count, "ids->narrow")?)),
         (true, false) => Ok(Ids::Wide(slice(ids.wide, ids.count, "ids->wide")?)),

@@ -162,6 +162,9 @@ int test_bond_output_slots(void);
 int test_bond_centre(void);
 /* wall_bond.c */
 int test_wall_bond(void);
+
+/* wall_store.c */
+int test_wall_store(void);
 /* run_checks.c */
 int test_run_checks(void);
 /* voigt.c */

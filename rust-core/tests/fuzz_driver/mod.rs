@@ -29,7 +29,9 @@ use granbond::bond::output_slots::{store_output, BOND_OUTPUT_LEN};
 use granbond::bond::{
     BondModel, BondOutput, BondParams, BondState, BOND_STATE_LEN, PARAMETERS, WALL_BOND_STATE_LEN,
 };
-use granbond::bond_store::{BrokenBond, EnergySums, LinkReport, ListedBond, StoreCounts};
+use granbond::bond_store::{
+    BrokenBond, EnergySums, LinkReport, ListedBond, StoreCounts, WallContact, WallVisit,
+};
 use granbond::contact::{
     ContactFrame, ContactOutput, Plane, VoigtModel, VoigtParams, CONTACT_STATE_LEN, VOIGT_PARAMETERS,
 };
@@ -47,6 +49,7 @@ use granbond::ffi::fields::{
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::parameters::{self as fp, ParameterRow};
 use granbond::ffi::store::{self as fs, AtomIds, StoreAtoms, GRANBOND_BOND_STORE_CHUNK};
+use granbond::ffi::wall_store as fw;
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
 use granbond::timestep_check::TypeBodies;
@@ -58,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 113] = [
+pub const ENTRY_POINTS: [&str; 129] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -172,6 +175,22 @@ pub const ENTRY_POINTS: [&str; 113] = [
     "granbond_bond_store_bond_energy",
     "granbond_bond_store_add_dissipated_shares",
     "granbond_bond_store_packed_len_in",
+    "granbond_wall_store_new",
+    "granbond_wall_store_free",
+    "granbond_wall_store_grow",
+    "granbond_wall_store_copy",
+    "granbond_wall_store_clear",
+    "granbond_wall_store_packed_len",
+    "granbond_wall_store_most_packed_len",
+    "granbond_wall_store_pack",
+    "granbond_wall_store_packed_len_in",
+    "granbond_wall_store_unpack",
+    "granbond_wall_store_link",
+    "granbond_wall_store_visit",
+    "granbond_wall_store_counts",
+    "granbond_wall_store_restore_counts",
+    "granbond_wall_store_clear_all",
+    "granbond_wall_store_bytes",
 ];
 
 /// The set-by-name and need entries of one parameter table.
@@ -2141,6 +2160,104 @@ impl<'t> Session<'t> {
             let c = created.get();
             assert!(c == 0 || c == 1, "{function}: created = {c}");
             self.check_state_finite(function, i, WALL_BOND_STATE_LEN, &before);
+        }
+        // the same sphere, model and contact point through the wall-bond
+        // store (no input read: the corpus reads on as before)
+        self.wall_store(m, sphere, point.get(), step);
+    }
+
+    /// The wall-bond store: a sphere reported by two wall elements in a
+    /// force pass at `step`, packed into a second store, linked, shown by a
+    /// setup and an output pass, counted, cleared.
+    fn wall_store(&mut self, m: *const BondModel, sphere: SphereKinematics, point: [f64; 3], step: i64) {
+        let mut st = null_mut();
+        // SAFETY (every call below): valid pointers; `st` and `ot` live
+        // stores from granbond_wall_store_new until they are freed.
+        unsafe {
+            if !self.answer("granbond_wall_store_new", fw::granbond_wall_store_new(&mut st)) {
+                return;
+            }
+            let grown = fw::granbond_wall_store_grow(st, 2);
+            self.answer("granbond_wall_store_grow", grown);
+            let contact = |element: i64, kind: i32| WallContact {
+                atom: 0,
+                id: 7,
+                wall: 0,
+                element,
+                pass: step.wrapping_mul(2).wrapping_add(i64::from(kind == 1)),
+                kind,
+                step,
+                dt: 1e-6,
+                may_create: 1,
+                sphere,
+                wall_velocity: [0.0; 3],
+                contact_point: point,
+            };
+            let visit = |s: &mut Self, st: *mut granbond::bond_store::WallStore, c: WallContact| {
+                let mut v = WallVisit::default();
+                let status = fw::granbond_wall_store_visit(st, m, &c, &mut v);
+                if s.answer("granbond_wall_store_visit", status) {
+                    assert!((0..=2).contains(&v.act) && (v.created == 0 || v.created == 1));
+                    if v.act == 1 && c.kind == 0 {
+                        s.check_bond_output("granbond_wall_store_visit", &v.out);
+                    }
+                }
+            };
+            visit(self, st, contact(1, 0));
+            visit(self, st, contact(2, 0));
+            let mut counts = StoreCounts::default();
+            if self.answer(
+                "granbond_wall_store_counts",
+                fw::granbond_wall_store_counts(st, &mut counts),
+            ) {
+                assert_eq!(counts.created, counts.broken() + counts.intact + counts.lost());
+            }
+            let n = fw::granbond_wall_store_packed_len(st, 7);
+            self.answer_value("granbond_wall_store_packed_len");
+            assert!(n <= fw::granbond_wall_store_most_packed_len(st));
+            self.answer_value("granbond_wall_store_most_packed_len");
+            let mut buf = vec![0.0; n];
+            let mut written = 0;
+            let packed = fw::granbond_wall_store_pack(st, 0, 7, 0, buf.as_mut_ptr(), n, &mut written);
+            let mut len = 0;
+            if self.answer("granbond_wall_store_pack", packed) {
+                let head = fw::granbond_wall_store_packed_len_in(buf.as_ptr(), 2, &mut len);
+                if self.answer("granbond_wall_store_packed_len_in", head) {
+                    assert_eq!(len, written);
+                }
+            }
+            let mut ot = null_mut();
+            if self.answer("granbond_wall_store_new", fw::granbond_wall_store_new(&mut ot)) {
+                let grown = fw::granbond_wall_store_grow(ot, 1);
+                self.answer("granbond_wall_store_grow", grown);
+                let mut read = 0;
+                let unpacked = fw::granbond_wall_store_unpack(ot, 0, 7, step, buf.as_ptr(), len, &mut read);
+                self.answer("granbond_wall_store_unpack", unpacked);
+                let ids = [7i64];
+                let atoms = AtomIds {
+                    narrow: null(),
+                    wide: ids.as_ptr(),
+                    count: 1,
+                };
+                let linked = fw::granbond_wall_store_link(ot, &atoms);
+                self.answer("granbond_wall_store_link", linked);
+                visit(self, ot, contact(2, 1));
+                visit(self, ot, contact(1, 2));
+                let restored = fw::granbond_wall_store_restore_counts(ot, &counts);
+                self.answer("granbond_wall_store_restore_counts", restored);
+                fw::granbond_wall_store_free(ot);
+                self.answer_value("granbond_wall_store_free");
+            }
+            let copied = fw::granbond_wall_store_copy(st, 0, 1);
+            self.answer("granbond_wall_store_copy", copied);
+            let cleared = fw::granbond_wall_store_clear(st, 1);
+            self.answer("granbond_wall_store_clear", cleared);
+            let _ = fw::granbond_wall_store_bytes(st);
+            self.answer_value("granbond_wall_store_bytes");
+            let all = fw::granbond_wall_store_clear_all(st);
+            self.answer("granbond_wall_store_clear_all", all);
+            fw::granbond_wall_store_free(st);
+            self.answer_value("granbond_wall_store_free");
         }
     }
 
