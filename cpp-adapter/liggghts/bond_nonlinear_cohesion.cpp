@@ -62,8 +62,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
         // the bond's status as the store said at the contact's latest
         // visit, where contact models find it (`model voigt ...
         // contactUnderBond off`)
-        offset_ = registerStateSlots(hsetup, GB_STATE_KIND_WALL_BOND, error,
-                                     slotNamed(GB_STATE_KIND_WALL_BOND, "rest", error), 1, "bondnonlinear_");
+        offset_ = hsetup->add_history_value("bondnonlinear_status", "0");
         cmb->add_history_offset("bondnonlinear_status", offset_);
     } else {
         // pair records hold nothing of the bond: the contact flag's bit
