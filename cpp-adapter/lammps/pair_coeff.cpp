@@ -87,17 +87,13 @@ void PairGranbond::coeff(int narg, char **arg)
         // the law's own defaults (the linear bond's differ)
         granbond_bond_params_default_in_units(update->unit_style, law == kLinear, &tp.bond);
         const std::vector<std::string> given = words::readBondClause(a, law, tp.bond);
-        // unless the deck says, the contact goes on under a bond whose law
-        // keeps some of its loads (LIGGGHTS-INL's linear bond and its code);
-        // a model the core refuses is reported by buildModel
+        // unless the deck says, what the contact does under the bond is the
+        // law's (the core's rule)
         GbParameterInfo row;
         bool underBondGiven = false;
         for (size_t id = 0; id < given.size() && granbond_bond_parameter_info(id, &row) == GB_STATUS_OK; id++)
             if (std::string(row.keyword) == "contact_under_bond") underBondGiven = !given[id].empty();
-        GbBondModel *m = nullptr;
-        if (!underBondGiven && granbond_bond_model_new(&tp.bond, &m) == GB_STATUS_OK)
-            tp.bond.contact_under_bond = granbond_bond_keeps_contact_loads(m) || granbond_bond_keeps_contact_tangential(m);
-        granbond_bond_model_free(m);
+        if (!underBondGiven) granbond_bond_params_contact_under_bond_by_law(&tp.bond);
     }
 
     int count = 0;

@@ -3,6 +3,7 @@
 #include "core_message.h"
 #include "core_bridge.h"
 #include "fix_granbond_atoms.h"
+#include "voigt_deck.h"
 #include "wall_bonds_fix.h"
 #include "fix_wall_gran.h"
 
@@ -117,6 +118,12 @@ void BondNonlinearCohesion::keepUnderBond(const SurfacesIntersectData &sidata, F
         i_forces.delta_torque[k] = out.torque_i[k];
         j_forces.delta_torque[k] = out.torque_j[k];
     }
+}
+
+void BondNonlinearCohesion::postSettings(LIGGGHTS::IContactHistorySetup *, ContactModelBase *cmb)
+{
+    parameters_.readSwitches();
+    VoigtContactShare::bondSays(cmb, parameters_.contactGoesOnUnderBond());
 }
 
 void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)

@@ -53,7 +53,10 @@ public:
     ~BondNonlinearCohesion();
 
     void registerSettings(::Settings &settings) { parameters_.registerSettings(settings); }
-    void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *) {}
+    // Once the deck is read (and before the contact models connect), tells
+    // the voigt sub-models of the style what the contact does under the
+    // bond: the switch, or where the deck does not give it, the law's.
+    void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *cmb);
     void connectToProperties(::PropertyRegistry &registry);
     // Pairs only (walls have no pass hooks): the time-step check when the
     // number of atoms changed (insertion), a point every rank reaches; in

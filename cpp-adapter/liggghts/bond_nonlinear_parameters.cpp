@@ -78,8 +78,12 @@ bool BondNonlinearParameters::nextLinear_ = false;
 
 BondNonlinearParameters::BondNonlinearParameters(LAMMPS_NS::LAMMPS *lmp) :
     Pointers(lmp), linear_(nextLinear_), caller_(nextLinear_ ? "cohesion bond" : "cohesion bond/nonlinear"),
-    rows_(granbond_bond_parameter_count()), ntypes_(0)
+    rows_(granbond_bond_parameter_count()), underBondRow_(granbond_bond_parameter_count()), ntypes_(0)
 {
+    underBondProbe_[0] = false;
+    underBondProbe_[1] = true;
+    for (size_t k = 0; k < rows_; k++)
+        if (granbond_bond_parameter_sets_creation(k) == 2) underBondRow_ = k;
     nextLinear_ = false;
     if (rows_ > kMaxRows)
         error->all(FLERR, (std::string(caller_) + ": the core's parameter table has more rows than this adapter "
@@ -111,6 +115,23 @@ void BondNonlinearParameters::registerSettings(Settings &settings)
             granbond_bond_params_get(&switches_, k, &law) == GB_STATUS_OK)
             settings.registerOnOff(name(k), switchValues_[k], law != 0.0);
     }
+    if (underBondRow_ < rows_ && name(underBondRow_)) {
+        settings.registerOnOff(name(underBondRow_), underBondProbe_[0]);
+        settings.registerOnOff(name(underBondRow_), underBondProbe_[1]);
+        underBondProbe_[0] = false;
+        underBondProbe_[1] = true;
+    }
+}
+
+void BondNonlinearParameters::readSwitches()
+{
+    granbond_bond_params_default_in_units(update->unit_style, linear_, &switches_);
+    for (size_t k = 0; k < rows_; k++) {
+        const GbParameterInfo info = row(k);
+        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH && name(k))
+            set(switches_, k, switchValues_[k] ? 1.0 : 0.0, "");
+    }
+    if (underBondProbe_[0] != underBondProbe_[1]) granbond_bond_params_contact_under_bond_by_law(&switches_);
 }
 
 // Stores a deck value in `p`; the core refuses an unknown name or a value
@@ -124,12 +145,7 @@ void BondNonlinearParameters::set(GbBondParams &p, size_t id, double value, cons
 
 void BondNonlinearParameters::connectToProperties(PropertyRegistry &registry)
 {
-    granbond_bond_params_default_in_units(update->unit_style, linear_, &switches_);
-    for (size_t k = 0; k < rows_; k++) {
-        const GbParameterInfo info = row(k);
-        if (info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH && name(k))
-            set(switches_, k, switchValues_[k] ? 1.0 : 0.0, "");
-    }
+    readSwitches();
 
     // only what the model reads with these switches is asked of the deck;
     // the rest is ignored even when a deck defines it (LIGGGHTS-INL decks do)

@@ -28,6 +28,11 @@ public:
     static void nextServeLinearBond() { nextLinear_ = true; }
 
     void registerSettings(::Settings &settings);
+    // The deck's switches over the law's defaults, once the engine has read
+    // them, and what the contact does under the bond: as the deck says, or
+    // where it does not, as the law says (the core's rule).
+    void readSwitches();
+    bool contactGoesOnUnderBond() const { return switches_.contact_under_bond != 0; }
 
     // Connects the properties the switches ask for, builds the models (any
     // core validation error ends the run naming the property) and registers
@@ -73,6 +78,12 @@ private:
     std::vector<double> scalars_;          // connected scalar properties
     std::vector<bool> connectedScalar_;
     GbBondParams switches_;                // the defaults with the deck's switches
+    // The engine's Settings write a switch's value into every variable
+    // registered under its name only when the deck gives the switch, so two
+    // such variables left unequal after registering stay unequal unless the
+    // deck gives contactUnderBond.
+    size_t underBondRow_;
+    bool underBondProbe_[2];
 
     int ntypes_;
     std::vector<GbBondModel *> models_;

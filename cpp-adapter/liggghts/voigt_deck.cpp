@@ -198,8 +198,9 @@ void VoigtContactShare::registerSettings(::Settings &settings)
     if (settingRegistered_) return;
     settingRegistered_ = true;
     // the bond table's switch of what the contact does under a bond, under
-    // its LIGGGHTS name; a cohesion model of the style registers it too, and
-    // the engine sets both from the one word
+    // its LIGGGHTS name; a cohesion model of the style registers it too, the
+    // engine sets both from the one word, and that model has the last word
+    // once the deck is read (bondSays)
     GbParameterInfo info;
     for (size_t k = 0; granbond_bond_parameter_info(k, &info) == GB_STATUS_OK; k++)
         if (granbond_bond_parameter_sets_creation(k) == 2)
@@ -210,6 +211,12 @@ void VoigtContactShare::findBond(LIGGGHTS::ContactModels::ContactModelBase *cmb)
 {
     bondStatus_ = cmb->get_history_offset("bondnonlinear_status");
     bondedFlag_ = cmb->get_history_offset("bondnonlinear_bonded_flag");
+}
+
+void VoigtContactShare::bondSays(const void *owner, bool goesOnUnderBond)
+{
+    std::map<const void *, VoigtContactShare *>::iterator it = shares().find(owner);
+    if (it != shares().end()) it->second->goesOnUnderBond_ = goesOnUnderBond;
 }
 
 VoigtContactShare *VoigtContactShare::attach(const void *owner, bool *first)

@@ -102,6 +102,11 @@ public:
     // (granbond_bond_parameter_sets_creation 2), registered by whichever
     // voigt sub-model the engine asks for its settings first.
     void registerSettings(::Settings &settings);
+    // What the contact does under a bond of the style of ContactModel
+    // `owner`, as its bond model says once the deck is read: the switch, or
+    // the law's where the deck does not give it. Nothing without a voigt
+    // sub-model.
+    static void bondSays(const void *owner, bool goesOnUnderBond);
     // Finds where a `cohesion bond/nonlinear` of the same style says a bond
     // is, if there is one (all sub-models are constructed by then): a bit of
     // a pair's contact flag, or a wall bond's status slot.

@@ -116,7 +116,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 20
+#define GRANBOND_ABI_VERSION 21
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -1476,6 +1476,18 @@ enum GbStatus granbond_bond_params_default(struct GbBondParams *params);
 enum GbStatus granbond_bond_params_default_in_units(const char *units,
                                                     int32_t linear,
                                                     struct GbBondParams *params);
+
+/**
+ * Sets `params->contact_under_bond` for a deck that does not give it: on
+ * where the law `params` name keeps some of the contact's loads under an
+ * intact bond (`linear`, `inl_compatible`), off where the bond replaces the
+ * contact (`BondParams::contact_under_bond_by_law`). Call it once the
+ * deck's switches are in `params`.
+ *
+ * # Safety
+ * `params` must be null or valid for reads and writes.
+ */
+enum GbStatus granbond_bond_params_contact_under_bond_by_law(struct GbBondParams *params);
 
 /**
  * Validates `params` and builds a model. On `InvalidParameter` the message

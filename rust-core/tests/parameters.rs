@@ -506,6 +506,35 @@ fn smoothing_velocities_default_to_the_same_physical_quantities_in_every_unit_st
     assert!(BondModel::new(given).is_ok());
 }
 
+/// Where a deck does not give `contact_under_bond`, the contact goes on
+/// under the bond exactly where the law keeps some of its loads there
+/// (INL's code, the linear bond), whatever the row held before.
+#[test]
+fn contact_under_bond_by_the_law_goes_on_where_the_law_keeps_contact_loads() {
+    // (the linear bond refuses inl_compatible)
+    for (linear, inl) in [(0, 0), (0, 1), (1, 0)] {
+        for before in [0, 1] {
+            let mut p = BondParams {
+                inl_compatible: inl,
+                contact_under_bond: before,
+                ..if linear == 1 {
+                    BondParams::linear_default_in_units("si")
+                } else {
+                    BondParams::default_in_units("si")
+                }
+            };
+            p.contact_under_bond_by_law();
+            let m = BondModel::new(p).expect("a valid law");
+            assert_eq!(
+                m.contact_goes_on_under_bond(),
+                m.keeps_contact_loads() || m.keeps_contact_tangential(),
+                "linear {linear}, inl_compatible {inl}, before {before}"
+            );
+            assert_eq!(p.contact_under_bond, i32::from(linear == 1 || inl == 1));
+        }
+    }
+}
+
 /// What the contact does under a bond is a row of the bond table, set by
 /// either engine's name: off for `bond/nonlinear` (the contact held at
 /// zero under the bond, afresh at the break), on for the linear bond, whose

@@ -141,14 +141,14 @@ impl BondLaws {
     /// bond takes the place of the contact's normal load alone
     /// (`inl_compatible`); otherwise the bond replaces every contact load.
     pub fn keeps_contact_tangential(&self) -> bool {
-        self.inl
+        self.params.keeps_contact_tangential()
     }
 
     /// Whether every load of the contact (normal, tangential, rolling) acts
     /// on an overlapping pair while its bond is intact, the bond's loads
     /// added to them, as under LIGGGHTS-INL's linear bond (`linear`).
     pub fn keeps_contact_loads(&self) -> bool {
-        self.linear
+        self.params.keeps_contact_loads()
     }
 
     /// Whether the contact's state goes on under an intact bond and acts

@@ -501,6 +501,29 @@ impl BondParams {
         }
     }
 
+    /// Whether the law keeps every load of the contact on an overlapping
+    /// pair under an intact bond, the bond's added to them (LIGGGHTS-INL's
+    /// linear bond, `linear`).
+    pub fn keeps_contact_loads(&self) -> bool {
+        Self::switch(self.linear)
+    }
+
+    /// Whether the law keeps the contact's tangential and rolling loads
+    /// under an intact bond, the bond taking the place of the normal load
+    /// alone (LIGGGHTS-INL's code, `inl_compatible`).
+    pub fn keeps_contact_tangential(&self) -> bool {
+        Self::switch(self.inl_compatible)
+    }
+
+    /// Sets `contact_under_bond` for a deck that does not give it: on where
+    /// the law keeps some of the contact's loads under the bond, so the
+    /// loads kept come from the contact's state as it goes on (as in
+    /// LIGGGHTS-INL), off where the bond replaces the contact. Both engines
+    /// call this once the deck's other switches are read.
+    pub fn contact_under_bond_by_law(&mut self) {
+        self.contact_under_bond = i32::from(self.keeps_contact_loads() || self.keeps_contact_tangential());
+    }
+
     /// Smooth damping is a kind of damping: either switch turns it on.
     pub fn damping_on(&self) -> bool {
         Self::switch(self.damping) || Self::switch(self.damping_smooth)

@@ -62,6 +62,21 @@ pub unsafe extern "C" fn granbond_bond_params_default_in_units(
     Ok(())
 }
 
+/// Sets `params->contact_under_bond` for a deck that does not give it: on
+/// where the law `params` name keeps some of the contact's loads under an
+/// intact bond (`linear`, `inl_compatible`), off where the bond replaces the
+/// contact (`BondParams::contact_under_bond_by_law`). Call it once the
+/// deck's switches are in `params`.
+///
+/// # Safety
+/// `params` must be null or valid for reads and writes.
+#[entry(params: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_params_contact_under_bond_by_law(params: *mut BondParams) -> Status {
+    params.contact_under_bond_by_law();
+    Ok(())
+}
+
 /// Validates `params` and builds a model. On `InvalidParameter` the message
 /// names the parameter (LAMMPS keyword and LIGGGHTS name) and its range, and
 /// `granbond_last_error_parameter` gives its id.

@@ -113,6 +113,11 @@ static GbStatus null_bond_params_default_in_units(struct world *c, int k)
     return granbond_bond_params_default_in_units(ARG(k, 0, "si"), 0, ARG(k, 1, &c->bond_params));
 }
 
+static GbStatus null_bond_params_contact_under_bond_by_law(struct world *c, int k)
+{
+    return granbond_bond_params_contact_under_bond_by_law(ARG(k, 0, &c->bond_params));
+}
+
 static GbStatus null_bond_model_new(struct world *c, int k)
 {
     return granbond_bond_model_new(ARG(k, 0, &c->bond_params), ARG(k, 1, &c->made_bond));
@@ -357,6 +362,7 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_state_slot", null_state_slot, {"name", "flips_on_swap"}},
     {"granbond_bond_params_default", null_bond_params_default, {"params"}},
     {"granbond_bond_params_default_in_units", null_bond_params_default_in_units, {"units", "params"}},
+    {"granbond_bond_params_contact_under_bond_by_law", null_bond_params_contact_under_bond_by_law, {"params"}},
     {"granbond_bond_model_new", null_bond_model_new, {"params", "model"}},
     {"granbond_bond_parameter_info", null_bond_parameter_info, {"info"}},
     {"granbond_bond_params_set", null_bond_params_set, {"params", "name"}},

@@ -299,6 +299,20 @@ int test_bond_params(void)
     CHECK(p.linear == 0 && p.contact_under_bond == 0, "bond/nonlinear: the contact held under the bond");
     EXPECT(granbond_bond_params_default_in_units(NULL, 0, &p), GB_STATUS_NULL_POINTER,
            "granbond_bond_params_default_in_units(NULL units)");
+    /* Where the deck does not give contact_under_bond, the law says: on
+       under a law that keeps some of the contact's loads (INL's code, the
+       linear bond), off where the bond replaces the contact. */
+    p.contact_under_bond = 1;
+    EXPECT_OK(granbond_bond_params_contact_under_bond_by_law(&p), "granbond_bond_params_contact_under_bond_by_law");
+    CHECK(p.contact_under_bond == 0, "bond/nonlinear by the law: the contact held under the bond");
+    p.inl_compatible = 1;
+    EXPECT_OK(granbond_bond_params_contact_under_bond_by_law(&p), "granbond_bond_params_contact_under_bond_by_law(inl)");
+    CHECK(p.contact_under_bond == 1, "inl_compatible by the law: the contact goes on under the bond");
+    p.inl_compatible = 0;
+    p.linear = 1;
+    p.contact_under_bond = 0;
+    EXPECT_OK(granbond_bond_params_contact_under_bond_by_law(&p), "granbond_bond_params_contact_under_bond_by_law(linear)");
+    CHECK(p.contact_under_bond == 1, "the linear bond by the law: the contact goes on under the bond");
     EXPECT_OK(granbond_bond_params_default(&p), "granbond_bond_params_default");
 
     /* The parameter table: one row per field, in field order. */

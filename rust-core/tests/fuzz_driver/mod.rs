@@ -61,11 +61,12 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 129] = [
+pub const ENTRY_POINTS: [&str; 130] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
     "granbond_bond_params_default_in_units",
+    "granbond_bond_params_contact_under_bond_by_law",
     "granbond_bond_model_new",
     "granbond_bond_model_free",
     "granbond_bond_parameter_count",
@@ -1038,6 +1039,17 @@ impl<'t> Session<'t> {
                 want.smooth_angular_velocity.to_bits()
             );
             assert_eq!(got.lambda, want.lambda);
+        }
+        // contact_under_bond by the law of those defaults, through the same
+        // kind of pointer (no byte more drawn)
+        // SAFETY: the params pointer null, misaligned or valid.
+        let status = unsafe { fb::granbond_bond_params_contact_under_bond_by_law(p.ptr(how)) };
+        if self.answer("granbond_bond_params_contact_under_bond_by_law", status) {
+            // the defaults written above, or those of the first call where
+            // this style had none
+            let got = p.get();
+            let keeps = got.linear != 0 || got.inl_compatible != 0;
+            assert_eq!(got.contact_under_bond, i32::from(keeps));
         }
     }
 
