@@ -116,7 +116,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 20
+#define GRANBOND_ABI_VERSION 21
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -3012,6 +3012,20 @@ enum GbStatus granbond_wall_store_unpack(struct GbWallStore *store,
                                          const double *buf,
                                          size_t len,
                                          size_t *read);
+
+/**
+ * Renumbers the walls (`map`, `len` entries): a bond on wall `w` moves to
+ * wall `map[w]`, as when a restart deck lists the engine's walls in
+ * another order. A bond on a wall without a place (`w` beyond `len`, or
+ * `map[w]` negative), or two walls given one number, is refused with
+ * nothing changed.
+ *
+ * # Safety
+ * Pointers must be null or valid; `map` for `len` entries.
+ */
+enum GbStatus granbond_wall_store_renumber(struct GbWallStore *store,
+                                           const int64_t *map,
+                                           size_t len);
 
 /**
  * Finds each bond's sphere among the local atoms (`ids`, `ids->count` of

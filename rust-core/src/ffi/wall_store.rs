@@ -169,6 +169,26 @@ pub unsafe extern "C" fn granbond_wall_store_unpack(
     Ok(())
 }
 
+/// Renumbers the walls (`map`, `len` entries): a bond on wall `w` moves to
+/// wall `map[w]`, as when a restart deck lists the engine's walls in
+/// another order. A bond on a wall without a place (`w` beyond `len`, or
+/// `map[w]` negative), or two walls given one number, is refused with
+/// nothing changed.
+///
+/// # Safety
+/// Pointers must be null or valid; `map` for `len` entries.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_wall_store_renumber(
+    store: *mut WallStore,
+    map: *const i64,
+    len: usize,
+) -> Status {
+    let map = slice(map, len, "map")?;
+    store.renumber(map).map_err(|e| failure(e, "map"))?;
+    Ok(())
+}
+
 /// Finds each bond's sphere among the local atoms (`ids`, `ids->count` of
 /// them) after atoms moved: a bond whose sphere left the system, or whose
 /// id a new atom took over, leaves the store, counted lost with that cause.

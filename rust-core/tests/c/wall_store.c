@@ -82,6 +82,20 @@ int test_wall_store(void)
     CHECK(v.act == GB_WALL_ACT_BOND, "the bond acts on the other rank");
     EXPECT_OK(granbond_wall_store_counts(store, &counts), "granbond_wall_store_counts");
     CHECK(counts.intact == 0 && counts.created == 1, "the first store holds no bond, and counted its creation");
+
+    /* A restart deck lists the walls the other way round: the bond moves
+       from wall 0 to wall 1; a numbering without its wall is refused. */
+    {
+        const int64_t swapped[2] = {1, 0}, gone[2] = {-1, 0};
+        EXPECT_OK(granbond_wall_store_renumber(other, swapped, 2), "granbond_wall_store_renumber");
+        c = wall_contact(3, step + 1, GB_WALL_PASS_FORCE);
+        c.wall = 1;
+        EXPECT_OK(granbond_wall_store_visit(other, m, &c, &v), "granbond_wall_store_visit, renumbered wall");
+        CHECK(v.act == GB_WALL_ACT_BOND, "the bond acts on its wall's new number");
+        EXPECT(granbond_wall_store_renumber(other, gone, 1), GB_STATUS_INVALID_ARGUMENT,
+               "granbond_wall_store_renumber, the bond's wall without a place");
+        EXPECT_NULL_ARG(granbond_wall_store_renumber(other, NULL, 2), "granbond_wall_store_renumber", "map");
+    }
     EXPECT_OK(granbond_wall_store_restore_counts(other, &counts), "granbond_wall_store_restore_counts");
 
     /* Atoms sorted (the sphere moves to slot 1), then the sphere gone. */
