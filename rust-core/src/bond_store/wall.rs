@@ -412,6 +412,12 @@ impl WallStore {
         Ok(())
     }
 
+    /// Each bond held, as (sphere id, wall), in no particular order (for
+    /// the engines' recount of the store).
+    pub fn keys(&self) -> impl Iterator<Item = (i64, u32)> + '_ {
+        self.bonds.keys().copied()
+    }
+
     /// After atoms moved (a neighbour-list build, a run's start): finds each
     /// bond's sphere among the `ids` of the local atoms. A bond whose sphere
     /// is not one of them (deleted, or lost through a boundary), or whose

@@ -95,6 +95,16 @@ int test_wall_store(void)
         EXPECT(granbond_wall_store_renumber(other, gone, 1), GB_STATUS_INVALID_ARGUMENT,
                "granbond_wall_store_renumber, the bond's wall without a place");
         EXPECT_NULL_ARG(granbond_wall_store_renumber(other, NULL, 2), "granbond_wall_store_renumber", "map");
+        /* the recount's listing: the one bond, by sphere and wall */
+        int64_t key_ids[2] = {0, 0};
+        uint32_t key_walls[2] = {0, 0};
+        size_t keys = 0;
+        CHECK(granbond_wall_store_len(other) == 1 && granbond_wall_store_len(NULL) == 0, "granbond_wall_store_len");
+        EXPECT_OK(granbond_wall_store_keys(other, key_ids, key_walls, 2, &keys), "granbond_wall_store_keys");
+        CHECK(keys == 1 && key_ids[0] == 42 && key_walls[0] == 1, "the bond listed as sphere 42 on wall 1");
+        EXPECT(granbond_wall_store_keys(other, key_ids, key_walls, 0, &keys), GB_STATUS_INVALID_ARGUMENT,
+               "granbond_wall_store_keys, no room");
+        EXPECT_NULL_ARG(granbond_wall_store_keys(other, NULL, key_walls, 2, &keys), "granbond_wall_store_keys", "ids");
     }
     EXPECT_OK(granbond_wall_store_restore_counts(other, &counts), "granbond_wall_store_restore_counts");
 
