@@ -21,6 +21,24 @@
 
 namespace granbond {
 
+// The pairs of values `mine` (two a pair) of all ranks, sorted, so that a
+// pair held twice lies next to itself. Collective.
+inline std::vector<std::pair<double, double>> gatheredPairs(const std::vector<double> &mine, MPI_Comm world)
+{
+    int nprocs = 1;
+    MPI_Comm_size(world, &nprocs);
+    int count = static_cast<int>(mine.size());
+    std::vector<int> counts(nprocs), offsets(nprocs + 1, 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+    for (int r = 0; r < nprocs; r++) offsets[r + 1] = offsets[r] + counts[r];
+    std::vector<double> all(static_cast<size_t>(offsets[nprocs]));
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
+    std::vector<std::pair<double, double>> pairs;
+    for (size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
 // What is wrong with the bonds of `store` on this rank (empty: nothing).
 // `tag` are the ids of the rank's atoms (local, then ghost). Collective.
 template <class Tag>
@@ -44,17 +62,7 @@ std::string checkStoredBonds(const GbBondStore *store, const Tag *tag, int nloca
         }
     }
     // every bond once: the pairs of all ranks, gathered
-    int nprocs = 1;
-    MPI_Comm_size(world, &nprocs);
-    int count = static_cast<int>(mine.size());
-    std::vector<int> counts(nprocs), offsets(nprocs + 1, 0);
-    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-    for (int r = 0; r < nprocs; r++) offsets[r + 1] = offsets[r] + counts[r];
-    std::vector<double> all(static_cast<size_t>(offsets[nprocs]));
-    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
-    std::vector<std::pair<double, double>> pairs;
-    for (size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
-    std::sort(pairs.begin(), pairs.end());
+    const std::vector<std::pair<double, double>> pairs = gatheredPairs(mine, world);
     for (size_t k = 1; k < pairs.size() && wrong.empty(); k++)
         if (pairs[k] == pairs[k - 1])
             wrong = "the bond of atoms " + std::to_string(static_cast<long long>(pairs[k].first)) + " and " +
@@ -96,17 +104,7 @@ std::string checkWallBonds(const GbWallStore *store, long long restored, const T
         mine.push_back(static_cast<double>(ids[k]));
         mine.push_back(static_cast<double>(walls[k]));
     }
-    int nprocs = 1;
-    MPI_Comm_size(world, &nprocs);
-    int count = static_cast<int>(mine.size());
-    std::vector<int> counts(nprocs), offsets(nprocs + 1, 0);
-    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-    for (int r = 0; r < nprocs; r++) offsets[r + 1] = offsets[r] + counts[r];
-    std::vector<double> all(static_cast<size_t>(offsets[nprocs]));
-    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
-    std::vector<std::pair<double, double>> keys;
-    for (size_t k = 0; k + 1 < all.size(); k += 2) keys.emplace_back(all[k], all[k + 1]);
-    std::sort(keys.begin(), keys.end());
+    const std::vector<std::pair<double, double>> keys = gatheredPairs(mine, world);
     for (size_t k = 1; k < keys.size() && wrong.empty(); k++)
         if (keys[k] == keys[k - 1])
             wrong = "the bond of sphere " + std::to_string(static_cast<long long>(keys[k].first)) + " and wall " +

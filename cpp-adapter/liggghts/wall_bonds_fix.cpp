@@ -215,9 +215,13 @@ void WallBondsFix::unpack_restart(int nlocal, int nth)
     for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
     const size_t n = static_cast<size_t>(extra[nlocal][m]) - 1;
     size_t read = 0;
+    GbStoreCounts before = {}, after = {};
+    granbond_wall_store_counts(store_, &before);
     if (granbond_wall_store_unpack(store_, static_cast<size_t>(nlocal), idOf(atom, nlocal), update->ntimestep,
                                    &extra[nlocal][m + 1], n, &read) != GB_STATUS_OK)
         fail("reading a sphere's wall bonds from the restart file");
+    granbond_wall_store_counts(store_, &after);
+    restored_ += after.intact - before.intact;
 }
 
 int WallBondsFix::size_restart(int i)
