@@ -4,6 +4,7 @@
 // each bond is stored once over all ranks; created = broken + intact +
 // lost over all ranks. The adapters add what their lists say (every listed
 // pair flagged bonded exactly when the store or its view holds its bond).
+// checkWallBonds does the same for a wall fix's bonds.
 #ifndef GRANBOND_STORE_CHECK_H
 #define GRANBOND_STORE_CHECK_H
 
@@ -19,6 +20,24 @@
 #include <vector>
 
 namespace granbond {
+
+// The pairs of values `mine` (two a pair) of all ranks, sorted, so that a
+// pair held twice lies next to itself. Collective.
+inline std::vector<std::pair<double, double>> gatheredPairs(const std::vector<double> &mine, MPI_Comm world)
+{
+    int nprocs = 1;
+    MPI_Comm_size(world, &nprocs);
+    int count = static_cast<int>(mine.size());
+    std::vector<int> counts(nprocs), offsets(nprocs + 1, 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+    for (int r = 0; r < nprocs; r++) offsets[r + 1] = offsets[r] + counts[r];
+    std::vector<double> all(static_cast<size_t>(offsets[nprocs]));
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
+    std::vector<std::pair<double, double>> pairs;
+    for (size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
 
 // What is wrong with the bonds of `store` on this rank (empty: nothing).
 // `tag` are the ids of the rank's atoms (local, then ghost). Collective.
@@ -43,17 +62,7 @@ std::string checkStoredBonds(const GbBondStore *store, const Tag *tag, int nloca
         }
     }
     // every bond once: the pairs of all ranks, gathered
-    int nprocs = 1;
-    MPI_Comm_size(world, &nprocs);
-    int count = static_cast<int>(mine.size());
-    std::vector<int> counts(nprocs), offsets(nprocs + 1, 0);
-    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-    for (int r = 0; r < nprocs; r++) offsets[r + 1] = offsets[r] + counts[r];
-    std::vector<double> all(static_cast<size_t>(offsets[nprocs]));
-    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
-    std::vector<std::pair<double, double>> pairs;
-    for (size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
-    std::sort(pairs.begin(), pairs.end());
+    const std::vector<std::pair<double, double>> pairs = gatheredPairs(mine, world);
     for (size_t k = 1; k < pairs.size() && wrong.empty(); k++)
         if (pairs[k] == pairs[k - 1])
             wrong = "the bond of atoms " + std::to_string(static_cast<long long>(pairs[k].first)) + " and " +
@@ -65,6 +74,48 @@ std::string checkStoredBonds(const GbBondStore *store, const Tag *tag, int nloca
     MPI_Allreduce(local, sums, 4, MPI_LONG_LONG, MPI_SUM, world);
     if (wrong.empty() && sums[0] != sums[1] + sums[2] + sums[3])
         wrong = std::to_string(sums[0]) + " bonds created, " + std::to_string(sums[1]) + " broken, " +
+                std::to_string(sums[2]) + " intact, " + std::to_string(sums[3]) + " lost";
+    return wrong;
+}
+
+// The same for the wall bonds of `store` on this rank: each held by the
+// rank owning its sphere (one of the `nlocal` local atoms, ids `tag`),
+// each (sphere, wall) held once over all ranks, created + restored =
+// broken + intact + lost over all ranks, where `restored` are the intact
+// bonds this rank's store took from a restart file (their counts stayed
+// with the file's totals). Collective.
+template <class Tag>
+std::string checkWallBonds(const GbWallStore *store, long long restored, const Tag *tag, int nlocal, MPI_Comm world)
+{
+    std::string wrong;
+    const size_t n = granbond_wall_store_len(store);
+    std::vector<int64_t> ids(n);
+    std::vector<uint32_t> walls(n);
+    size_t written = 0;
+    if (granbond_wall_store_keys(store, ids.data(), walls.data(), n, &written) != GB_STATUS_OK)
+        wrong = "listing the wall bonds: " + coreReason();
+    std::vector<int64_t> local(tag, tag + nlocal);
+    std::sort(local.begin(), local.end());
+    std::vector<double> mine;
+    for (size_t k = 0; k < written && wrong.empty(); k++) {
+        if (!std::binary_search(local.begin(), local.end(), ids[k]))
+            wrong = "the bond of sphere " + std::to_string(static_cast<long long>(ids[k])) + " and wall " +
+                    std::to_string(walls[k]) + " is held by a rank without the sphere";
+        mine.push_back(static_cast<double>(ids[k]));
+        mine.push_back(static_cast<double>(walls[k]));
+    }
+    const std::vector<std::pair<double, double>> keys = gatheredPairs(mine, world);
+    for (size_t k = 1; k < keys.size() && wrong.empty(); k++)
+        if (keys[k] == keys[k - 1])
+            wrong = "the bond of sphere " + std::to_string(static_cast<long long>(keys[k].first)) + " and wall " +
+                    std::to_string(static_cast<long long>(keys[k].second)) + " is held twice";
+    GbStoreCounts c = {};
+    granbond_wall_store_counts(store, &c);
+    const long long sumsOf[4] = {c.created + restored, brokenCount(c), c.intact, lostCount(c)};
+    long long sums[4];
+    MPI_Allreduce(sumsOf, sums, 4, MPI_LONG_LONG, MPI_SUM, world);
+    if (wrong.empty() && sums[0] != sums[1] + sums[2] + sums[3])
+        wrong = std::to_string(sums[0]) + " wall bonds created or restored, " + std::to_string(sums[1]) + " broken, " +
                 std::to_string(sums[2]) + " intact, " + std::to_string(sums[3]) + " lost";
     return wrong;
 }

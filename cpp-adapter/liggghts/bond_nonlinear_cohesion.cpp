@@ -54,6 +54,7 @@ BondNonlinearCohesion::BondNonlinearCohesion(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::I
     wallLinkedAt_(-1),
     wallPass_(-1),
     wallRestart_(wallFix_ ? restartRows(lmp, wallBondsFixId(wallFix_->id)) : std::vector<double>()),
+    wallRestartMeshes_(wallFix_ ? restartMeshes(lmp, wallBondsFixId(wallFix_->id)) : std::vector<std::string>()),
     atomsRestart_(wallFix_ ? atomsRestartState(lmp) : std::vector<char>())
 {
     std::memset(&wallLostTold_, 0, sizeof wallLostTold_);

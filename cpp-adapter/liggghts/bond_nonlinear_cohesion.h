@@ -123,6 +123,7 @@ public:
     // warning told, with their causes, once (collective).
     void refreshWall();
     void warnWallLosses();
+    void checkWallStore();   // GRANBOND_CHECK_STORE (collective)
 
 private:
     static bool bondedFlag(const SurfacesCloseData &d) { return d.contact_flags && (*d.contact_flags & kBondedFlag); }
@@ -241,6 +242,7 @@ private:
     int64_t wallPass_;                  // the latest force or setup pass visited
     GbStoreCounts wallLostTold_;        // the losses told so far (warnWallLosses)
     std::vector<double> wallRestart_;   // its store's rows in a restart file read (restartRows)
+    std::vector<std::string> wallRestartMeshes_;   // the meshes that numbered their walls (restartMeshes)
     std::vector<char> atomsRestart_;    // fix granbond/atoms's state there (atomsRestartState)
 };
 

@@ -11,6 +11,7 @@
 #include "core_message.h"
 #include "fix_granbond_atoms.h"
 #include "fix_granbond_bonds.h"
+#include "store_check.h"
 #include "store_pass.h"
 #include "wall_bonds_fix.h"
 
@@ -56,9 +57,15 @@ void BondNonlinearCohesion::connectWall()
     const bool made = modify->find_fix(id.c_str()) < 0;
     wallBonds_ = dynamic_cast<WallBondsFix *>(fixOrNew(lmp, id.c_str(), wallBondsFixStyle()));
     if (!wallBonds_) endRun(error, FLERR, "cohesion bond/nonlinear: fix " + id + " was deleted or replaced");
+    // the wall numbers are the meshes' places in the wall fix
+    std::vector<std::string> meshes;
+    LAMMPS_NS::FixMeshSurface **list = wallFix_->mesh_list();
+    for (int k = 0; list && k < wallFix_->n_meshes(); k++) meshes.push_back(list[k]->id);
+    wallBonds_->setMeshes(meshes);
     // a restart file's wall bonds, read before this first run
-    if (made) wallBonds_->takeRestart(wallRestart_);
+    if (made) wallBonds_->takeRestart(wallRestart_, wallRestartMeshes_);
     wallRestart_ = std::vector<double>();
+    wallRestartMeshes_ = std::vector<std::string>();
     // the bond counters' totals go into restart files with this fix; made
     // here (no pair model made it before), it takes the file's totals
     const bool atomsMade = modify->find_fix(atomsFixId()) < 0;
@@ -68,6 +75,13 @@ void BondNonlinearCohesion::connectWall()
     tally_.refresh = &refreshWallTally;
     tally_.owner = this;
     wallBonds_->roomForExchange();
+    if (checkStore_ && comm->me == 0) {
+        const std::string said = "cohesion bond/nonlinear (wall " + std::string(wallFix_->id) +
+                                 "): recounting the wall bonds at every count of compute bond/counter "
+                                 "(GRANBOND_CHECK_STORE)\n";
+        if (screen) fputs(said.c_str(), screen);
+        if (logfile) fputs(said.c_str(), logfile);
+    }
     wallLinkedAt_ = -1;
     wallPass_ = -1;
 }
@@ -78,6 +92,7 @@ void BondNonlinearCohesion::warnWallLosses()
 {
     if (!wallBonds_) return;
     refreshWall();
+    if (checkStore_) checkWallStore();
     GbStoreCounts c;
     std::memset(&c, 0, sizeof c);
     granbond_wall_store_counts(wallBonds_->store(), &c);
@@ -97,6 +112,21 @@ void BondNonlinearCohesion::warnWallLosses()
                            std::to_string(static_cast<long long>(update->ntimestep)) + " without breaking: " +
                            lostCauses(all, why) + "; they are counted as lost in compute bond/counter (column 8)")
                               .c_str());
+}
+
+// GRANBOND_CHECK_STORE, where the counts are read over all ranks (compute
+// bond/counter): the wall bonds recounted against the engine's atoms
+// (checkWallBonds). A mismatch ends the run.
+void BondNonlinearCohesion::checkWallStore()
+{
+    const std::string wrong = checkWallBonds(wallBonds_->store(), wallBonds_->restored(), atom->tag, atom->nlocal, world);
+    int bad = !wrong.empty(), anyBad = 0;
+    MPI_Allreduce(&bad, &anyBad, 1, MPI_INT, MPI_MAX, world);
+    if (bad)
+        endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear (wall " + std::string(wallFix_->id) +
+                                         "): store check at step " +
+                                         std::to_string(static_cast<long long>(update->ntimestep)) + ": " + wrong);
+    if (anyBad) endRun(error, FLERR, "cohesion bond/nonlinear: wall store check failed on another rank");
 }
 
 // Before the counts are read (compute bond/counter, restart files): the

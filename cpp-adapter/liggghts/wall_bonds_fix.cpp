@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <sstream>
 #include <string>
 
 namespace granbond {
@@ -28,6 +29,16 @@ namespace {
 const int kGrow = 0, kRestart = 1;
 
 int64_t idOf(const LAMMPS_NS::Atom *atom, int i) { return static_cast<int64_t>(atom->tag[i]); }
+
+// The mesh list's head in a restart file, then the ids, one space apart.
+const char kMeshesHead[] = "granbond wall meshes:";
+
+std::string listed(const std::vector<std::string> &meshes)
+{
+    std::string s;
+    for (size_t k = 0; k < meshes.size(); k++) s += (k ? ", " : "") + std::to_string(k) + " " + meshes[k];
+    return meshes.empty() ? "none (a primitive wall)" : s;
+}
 
 
 }
@@ -55,6 +66,22 @@ std::vector<double> restartRows(LAMMPS_NS::LAMMPS *lmp, const std::string &id)
     return rows;
 }
 
+std::vector<std::string> restartMeshes(LAMMPS_NS::LAMMPS *lmp, const std::string &id)
+{
+    LAMMPS_NS::Modify *modify = lmp->modify;
+    char **ids = modify->*member(GlobalIds()), **styles = modify->*member(GlobalStyles());
+    char **states = modify->*member(GlobalStates());
+    std::vector<std::string> meshes;
+    for (int k = 0; k < modify->nfix_restart_global; k++) {
+        if (id != ids[k] || std::string(wallBondsFixStyle()) != styles[k]) continue;
+        const std::string state(states[k]);
+        if (state.compare(0, sizeof kMeshesHead - 1, kMeshesHead) != 0) continue;
+        std::istringstream words(state.substr(sizeof kMeshesHead - 1));
+        for (std::string w; words >> w;) meshes.push_back(w);
+    }
+    return meshes;
+}
+
 std::vector<char> atomsRestartState(LAMMPS_NS::LAMMPS *lmp)
 {
     LAMMPS_NS::Modify *modify = lmp->modify;
@@ -71,7 +98,7 @@ std::vector<char> atomsRestartState(LAMMPS_NS::LAMMPS *lmp)
     return std::vector<char>();
 }
 
-void WallBondsFix::takeRestart(const std::vector<double> &rows)
+void WallBondsFix::takeRestart(const std::vector<double> &rows, const std::vector<std::string> &fileMeshes)
 {
     std::map<int64_t, int> local;
     for (int i = 0; i < atom->nlocal; i++) local[idOf(atom, i)] = i;
@@ -86,11 +113,27 @@ void WallBondsFix::takeRestart(const std::vector<double> &rows)
             fail("reading a sphere's wall bonds from the restart file");
         k += 2 + n;
     }
+    GbStoreCounts c = {};
+    granbond_wall_store_counts(store_, &c);
+    restored_ = c.intact;
+    // the file's wall k is the mesh of its id here (a file without mesh
+    // ids, or of a primitive wall, numbers its walls as this one does)
+    if (fileMeshes.empty()) return;
+    std::vector<int64_t> map(fileMeshes.size(), -1);
+    for (size_t k = 0; k < fileMeshes.size(); k++)
+        for (size_t j = 0; j < meshes_.size(); j++)
+            if (fileMeshes[k] == meshes_[j]) map[k] = static_cast<int64_t>(j);
+    if (granbond_wall_store_renumber(store_, map.data(), map.size()) != GB_STATUS_OK)
+        endRunOnThisRank(lmp, FLERR,
+                         "fix " + std::string(id) + ": the restart file's wall bonds lie on the meshes (by wall number) " +
+                             listed(fileMeshes) + "; the wall fix now lists " + listed(meshes_) +
+                             ": a mesh with bonds is gone (" + coreReason() + ")");
 }
 
 WallBondsFix::WallBondsFix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), store_(nullptr)
 {
     if (granbond_wall_store_new(&store_) != GB_STATUS_OK) fail("making the store");
+    restart_global = 1;
     restart_peratom = 1;
     create_attribute = 1;
     grow_arrays(atom->nmax);
@@ -172,9 +215,13 @@ void WallBondsFix::unpack_restart(int nlocal, int nth)
     for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
     const size_t n = static_cast<size_t>(extra[nlocal][m]) - 1;
     size_t read = 0;
+    GbStoreCounts before = {}, after = {};
+    granbond_wall_store_counts(store_, &before);
     if (granbond_wall_store_unpack(store_, static_cast<size_t>(nlocal), idOf(atom, nlocal), update->ntimestep,
                                    &extra[nlocal][m + 1], n, &read) != GB_STATUS_OK)
         fail("reading a sphere's wall bonds from the restart file");
+    granbond_wall_store_counts(store_, &after);
+    restored_ += after.intact - before.intact;
 }
 
 int WallBondsFix::size_restart(int i)
@@ -188,6 +235,16 @@ int WallBondsFix::maxsize_restart()
     int mine = static_cast<int>(granbond_wall_store_most_packed_len(store_)) + 1, all = 0;
     MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
     return all;
+}
+
+void WallBondsFix::write_restart(FILE *fp)
+{
+    if (comm->me != 0) return;
+    std::string state = kMeshesHead;
+    for (const std::string &m : meshes_) state += " " + m;
+    const int size = static_cast<int>(state.size() + 1);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(state.c_str(), 1, static_cast<size_t>(size), fp);
 }
 
 double WallBondsFix::memory_usage() { return static_cast<double>(granbond_wall_store_bytes(store_)); }

@@ -3,7 +3,10 @@
 // store of this rank and hands it the engine's per-atom events, so a wall
 // bond moves with its sphere: arrays grown, atoms copied (sort, deletion,
 // migration) and created, a sphere's bonds packed for another rank or a
-// restart file and unpacked there under the sphere's id. Made by
+// restart file and unpacked there under the sphere's id; the restart file
+// also names the wall fix's meshes in the order that numbers the walls,
+// so a deck that lists them in another order finds each bond's mesh.
+// Made by
 // cohesion bond/nonlinear of a fix wall/gran, one per wall fix, named after
 // it (wallBondsFixId). Translation only: every rule is the core's.
 #ifndef GRANBOND_LIGGGHTS_WALL_BONDS_FIX_H
@@ -44,11 +47,20 @@ public:
     int size_restart(int i);
     int maxsize_restart();
     double memory_usage();
+    void write_restart(FILE *fp);
+
+    // The ids of the wall fix's meshes, in the order that numbers the walls
+    // (none for a primitive wall); written with restart files.
+    void setMeshes(const std::vector<std::string> &meshes) { meshes_ = meshes; }
+    // The intact bonds takeRestart took from the restart file on this rank.
+    long long restored() const { return restored_; }
 
     GbWallStore *store() const { return store_; }
     // Takes the spheres' bonds kept from a restart file (restartRows) into
-    // the store, each at its sphere's present local index.
-    void takeRestart(const std::vector<double> &rows);
+    // the store, each at its sphere's present local index, and renumbers
+    // their walls from the file's meshes (`fileMeshes`, restartMeshes) to
+    // the present ones (setMeshes): the run ends if a bond's mesh is gone.
+    void takeRestart(const std::vector<double> &rows, const std::vector<std::string> &fileMeshes);
     // Raises the engine's room for one atom's data in the exchange buffers
     // to what a sphere's wall bonds take here (after bonds formed).
     void roomForExchange();
@@ -56,6 +68,8 @@ public:
 private:
     void fail(const char *what);
     GbWallStore *store_;
+    std::vector<std::string> meshes_;
+    long long restored_ = 0;
 };
 
 // The per-atom rows of fix `id` (style granbond/wallbonds) in the restart
@@ -65,6 +79,11 @@ private:
 // makes its store; so the model takes them when it is constructed (the fix
 // wall/gran command) and hands them over itself (takeRestart).
 std::vector<double> restartRows(LAMMPS_NS::LAMMPS *lmp, const std::string &id);
+
+// The mesh ids fix `id` (style granbond/wallbonds) wrote to the restart file
+// read, in the order that numbered the walls there; empty if the file has
+// none (a primitive wall).
+std::vector<std::string> restartMeshes(LAMMPS_NS::LAMMPS *lmp, const std::string &id);
 
 // The same for the global state of fix granbond/atoms (the bond counters'
 // totals), which a wall model makes at the first run's start where no pair

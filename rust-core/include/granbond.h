@@ -3026,6 +3026,43 @@ enum GbStatus granbond_wall_store_unpack(struct GbWallStore *store,
                                          size_t *read);
 
 /**
+ * Renumbers the walls (`map`, `len` entries): a bond on wall `w` moves to
+ * wall `map[w]`, as when a restart deck lists the engine's walls in
+ * another order. A bond on a wall without a place (`w` beyond `len`, or
+ * `map[w]` negative), or two walls given one number, is refused with
+ * nothing changed.
+ *
+ * # Safety
+ * Pointers must be null or valid; `map` for `len` entries.
+ */
+enum GbStatus granbond_wall_store_renumber(struct GbWallStore *store,
+                                           const int64_t *map,
+                                           size_t len);
+
+/**
+ * Writes each bond held, its sphere's id to `ids` and its wall to `walls`
+ * (`capacity` entries each; `granbond_wall_store_len` of them are held),
+ * and the bonds written to `written`: the engines' recount of the store
+ * (GRANBOND_CHECK_STORE).
+ *
+ * # Safety
+ * Pointers must be null or valid; `ids` and `walls` for `capacity` entries.
+ */
+enum GbStatus granbond_wall_store_keys(const struct GbWallStore *store,
+                                       int64_t *ids,
+                                       uint32_t *walls,
+                                       size_t capacity,
+                                       size_t *written);
+
+/**
+ * The wall bonds held, intact or broken; 0 for a null store.
+ *
+ * # Safety
+ * `store` must be null or from `granbond_wall_store_new`.
+ */
+size_t granbond_wall_store_len(const struct GbWallStore *store);
+
+/**
  * Finds each bond's sphere among the local atoms (`ids`, `ids->count` of
  * them) after atoms moved: a bond whose sphere left the system, or whose
  * id a new atom took over, leaves the store, counted lost with that cause.

@@ -301,3 +301,51 @@ fn packed_rows_of_another_layout_are_refused() {
     assert!(s.unpack(0, 7, 0, &row[..row.len() - 1]).is_err());
     assert!(s.is_empty());
 }
+
+#[test]
+fn renumbered_walls_keep_each_bond_on_its_wall() {
+    let m = model();
+    let mut s = store(1);
+    // bonds on walls 0 and 1; the engine lists the walls the other way round
+    for wall in [0, 1] {
+        let mut c = contact(0, 3, 1, WallPass::Force);
+        c.wall = wall;
+        assert_eq!(s.visit(&m, &c).unwrap().created, 1);
+    }
+    assert_eq!(s.renumber(&[1, 0]), Ok(()));
+    assert_eq!(s.len(), 2);
+    assert!(s.bonded(0, 7, 0) && s.bonded(0, 7, 1));
+    // a third wall listed first: the bonds move up by one
+    assert_eq!(s.renumber(&[1, 2]), Ok(()));
+    assert!(!s.bonded(0, 7, 0) && s.bonded(0, 7, 1) && s.bonded(0, 7, 2));
+    let c = s.counts();
+    assert_eq!((c.created, c.intact, c.lost()), (2, 2, 0));
+}
+
+#[test]
+fn a_renumbering_without_a_place_for_a_bonds_wall_is_refused_and_changes_nothing() {
+    let m = model();
+    let mut s = store(1);
+    let mut c = contact(0, 3, 1, WallPass::Force);
+    c.wall = 1;
+    assert_eq!(s.visit(&m, &c).unwrap().created, 1);
+    assert_eq!(
+        s.renumber(&[0, -1]),
+        Err(granbond::bond_store::WallError::WallGone(1))
+    );
+    assert_eq!(
+        s.renumber(&[0]),
+        Err(granbond::bond_store::WallError::WallGone(1))
+    );
+    assert_eq!(
+        s.renumber(&[0, 0]),
+        Err(granbond::bond_store::WallError::WallTwice(0))
+    );
+    assert!(
+        s.bonded(0, 7, 1),
+        "the refused renumbering left the bond where it was"
+    );
+    // a wall without bonds may be gone
+    assert_eq!(s.renumber(&[-1, 0]), Ok(()));
+    assert!(s.bonded(0, 7, 0));
+}

@@ -75,7 +75,13 @@ per mode (LAMMPS unless said):
              bond dragging the sphere across the boundaries of 2 and 3
              ranks stays one bond, with the same force on 1, 2 and 3
              ranks. created = broken + intact + lost at every output;
-             the store recounted after every pass (GRANBOND_CHECK_STORE).
+             the store recounted after every pass, the wall bonds' store at
+             every output (GRANBOND_CHECK_STORE).
+             With a second mesh (out of reach) listed after the bonded one
+             when the file is written and before it when it is read (1-3
+             ranks), the bond stays on its mesh: the same counts and table;
+             the bonded mesh left out of the wall fix is an ERROR naming
+             the meshes of the file and of the deck.
 
 usage: check_bond_home.py --mode MODE --kind lammps|liggghts --engine BIN
                           [--mpiexec MPIEXEC] --workdir DIR
@@ -256,8 +262,8 @@ def check_edge(a, workdir):
         restart = os.path.join(workdir, f"edge-np{w}.restart")
         text = run(a, w, "mesh_edge_restart.in", os.path.join(workdir, f"write-np{w}"),
                    {"px": w, "restart": restart}, env)
-        if "recounting the bonds after every pass" not in text:
-            raise Failure("mesh_edge_restart.in: the store check did not run")
+        if "recounting the bonds after every pass" not in text or "recounting the wall bonds" not in text:
+            raise Failure("mesh_edge_restart.in: the store check (pairs and walls) did not run")
         if thermo_column(text, "c_bc[6]")[-1:] != [1]:
             raise Failure(f"written on {w} ranks: {thermo_column(text, 'c_bc[6]')} intact wall bonds, want 1")
         for r in readers:
@@ -286,6 +292,35 @@ def check_edge(a, workdir):
                 raise Failure(f"{label}: a correct deck warned: {warned}")
             print(f"ok: {label}: one wall bond at every output, fz {at150:.6g} N at step 150, "
                   f"within {worst:.2g} N of the 1-rank table")
+    # two meshes, the bonded one listed first; read back with the other first
+    restart = os.path.join(workdir, "two-meshes.restart")
+    two = {"second": 1, "nmeshes": 2}
+    run(a, 1, "mesh_edge_restart.in", os.path.join(workdir, "two-write"),
+        dict(two, meshes="plane plane2", restart=restart), env)
+    for r in readers:
+        d = os.path.join(workdir, f"two-swapped-read-np{r}")
+        text = run(a, r, "mesh_edge_restart.in", d,
+                   dict(two, meshes="plane2 plane", phase=2, v=-0.2, restart=restart), env)
+        rows = list(zip(*[thermo_column(text, f"c_bc[{k}]") for k in (4, 5, 6, 8)]))
+        table = list(zip(thermo_column(text, "Step"), thermo_column(text, "fz")))
+        scale = max(abs(f) for _, f in reference)
+        worst = max((abs(f - g) for (_, f), (_, g) in zip(table, reference)), default=math.inf)
+        if not rows or any(row != (1, 0, 1, 0) for row in rows) or len(table) != len(reference) \
+                or worst > 1e-12 * scale:
+            raise Failure(f"meshes listed the other way round, read on {r} ranks: wall bonds created, broken, "
+                          f"intact, lost {rows[:4]}, fz off the one-mesh table by {worst:.3g} N: want the bond on "
+                          "its mesh, (1, 0, 1, 0) at every output and the one-mesh table")
+        print(f"ok: meshes listed the other way round, read on {r} ranks: the bond stays on its mesh, "
+              f"the one-mesh table within {worst:.2g} N")
+    d = os.path.join(workdir, "two-gone")
+    rc, text = deck_runner.run_deck(launcher(a, 1), "mesh_edge_restart.in", d,
+                                    dict(BASE, second=1, nmeshes=1, meshes="plane2", phase=2, v=-0.2,
+                                         restart=restart), env)
+    said = [line for line in text.splitlines() if line.startswith("ERROR")]
+    if rc == 0 or not said or "0 plane, 1 plane2" not in said[0] or "now lists 0 plane2" not in said[0]:
+        raise Failure(f"the bonded mesh left out of the wall fix: exit {rc}, {said[:1]}: want an ERROR naming "
+                      "the meshes of the file and of the deck")
+    print(f"ok: the bonded mesh left out of the wall fix: {said[0][:160]}")
     for r in readers:
         d = os.path.join(workdir, f"break-read-np{r}")
         text = run(a, r, "mesh_edge_restart.in", d, {"phase": 2, "v": -2.0, "restart": restart}, env)

@@ -126,6 +126,11 @@ pub enum WallError {
     NonFinite,
     /// A packed row has another layout, or is cut short.
     Packed,
+    /// A bond lies on a wall the new numbering has no place for (the wall
+    /// of that number in the old numbering).
+    WallGone(u32),
+    /// A renumbering gives two walls the same number.
+    WallTwice(i64),
 }
 
 impl std::fmt::Display for WallError {
@@ -138,6 +143,11 @@ impl std::fmt::Display for WallError {
             WallError::Kinematics(e) => write!(f, "the sphere's kinematics are unusable: {e:?}"),
             WallError::NonFinite => write!(f, "the bond's force, torque, stress or state is not finite"),
             WallError::Packed => write!(f, "the packed wall bonds have another layout or are cut short"),
+            WallError::WallTwice(w) => write!(f, "the new numbering gives wall {w} to two walls"),
+            WallError::WallGone(w) => write!(
+                f,
+                "bonds lie on wall {w}, which has no place in the new numbering"
+            ),
         }
     }
 }
@@ -376,6 +386,36 @@ impl WallStore {
         }
         self.holds[i] = if count > 0 { id } else { 0 };
         Ok(n)
+    }
+
+    /// Renumbers the walls: a bond on wall `w` moves to wall `map[w]` (the
+    /// engine's walls listed in another order, as a restart deck may).
+    /// A bond on a wall the map has no place for (`w` beyond it, or
+    /// `map[w]` negative) is refused, and nothing changes: the engine
+    /// says which wall is gone.
+    pub fn renumber(&mut self, map: &[i64]) -> Result<(), WallError> {
+        let place = |w: u32| map.get(w as usize).and_then(|&m| u32::try_from(m).ok());
+        let mut taken = BTreeSet::new();
+        if let Some(&m) = map.iter().find(|&&m| m >= 0 && !taken.insert(m)) {
+            return Err(WallError::WallTwice(m));
+        }
+        if let Some(&(_, w)) = self.bonds.keys().find(|k| place(k.1).is_none()) {
+            return Err(WallError::WallGone(w));
+        }
+        let old = std::mem::take(&mut self.bonds);
+        self.walls = 0;
+        for ((id, w), b) in old {
+            let to = place(w).ok_or(WallError::WallGone(w))?;
+            self.walls = self.walls.max(to);
+            self.bonds.insert((id, to), b);
+        }
+        Ok(())
+    }
+
+    /// Each bond held, as (sphere id, wall), in no particular order (for
+    /// the engines' recount of the store).
+    pub fn keys(&self) -> impl Iterator<Item = (i64, u32)> + '_ {
+        self.bonds.keys().copied()
     }
 
     /// After atoms moved (a neighbour-list build, a run's start): finds each

@@ -169,6 +169,71 @@ pub unsafe extern "C" fn granbond_wall_store_unpack(
     Ok(())
 }
 
+/// Renumbers the walls (`map`, `len` entries): a bond on wall `w` moves to
+/// wall `map[w]`, as when a restart deck lists the engine's walls in
+/// another order. A bond on a wall without a place (`w` beyond `len`, or
+/// `map[w]` negative), or two walls given one number, is refused with
+/// nothing changed.
+///
+/// # Safety
+/// Pointers must be null or valid; `map` for `len` entries.
+#[entry(store: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_wall_store_renumber(
+    store: *mut WallStore,
+    map: *const i64,
+    len: usize,
+) -> Status {
+    let map = slice(map, len, "map")?;
+    store.renumber(map).map_err(|e| failure(e, "map"))?;
+    Ok(())
+}
+
+/// Writes each bond held, its sphere's id to `ids` and its wall to `walls`
+/// (`capacity` entries each; `granbond_wall_store_len` of them are held),
+/// and the bonds written to `written`: the engines' recount of the store
+/// (GRANBOND_CHECK_STORE).
+///
+/// # Safety
+/// Pointers must be null or valid; `ids` and `walls` for `capacity` entries.
+#[entry(store: reference, written: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_wall_store_keys(
+    store: *const WallStore,
+    ids: *mut i64,
+    walls: *mut u32,
+    capacity: usize,
+    written: *mut usize,
+) -> Status {
+    let ids = slice_mut(ids, capacity, "ids")?;
+    let walls = slice_mut(walls, capacity, "walls")?;
+    if store.len() > capacity {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "capacity: the store holds {} bonds, capacity is {capacity}",
+                store.len()
+            ),
+        ));
+    }
+    for (k, (id, wall)) in store.keys().enumerate() {
+        ids[k] = id;
+        walls[k] = wall;
+    }
+    *written = store.len();
+    Ok(())
+}
+
+/// The wall bonds held, intact or broken; 0 for a null store.
+///
+/// # Safety
+/// `store` must be null or from `granbond_wall_store_new`.
+#[entry(or = 0, store: reference)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_wall_store_len(store: *const WallStore) -> usize {
+    store.len()
+}
+
 /// Finds each bond's sphere among the local atoms (`ids`, `ids->count` of
 /// them) after atoms moved: a bond whose sphere left the system, or whose
 /// id a new atom took over, leaves the store, counted lost with that cause.

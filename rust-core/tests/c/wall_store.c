@@ -82,6 +82,30 @@ int test_wall_store(void)
     CHECK(v.act == GB_WALL_ACT_BOND, "the bond acts on the other rank");
     EXPECT_OK(granbond_wall_store_counts(store, &counts), "granbond_wall_store_counts");
     CHECK(counts.intact == 0 && counts.created == 1, "the first store holds no bond, and counted its creation");
+
+    /* A restart deck lists the walls the other way round: the bond moves
+       from wall 0 to wall 1; a numbering without its wall is refused. */
+    {
+        const int64_t swapped[2] = {1, 0}, gone[2] = {-1, 0};
+        EXPECT_OK(granbond_wall_store_renumber(other, swapped, 2), "granbond_wall_store_renumber");
+        c = wall_contact(3, step + 1, GB_WALL_PASS_FORCE);
+        c.wall = 1;
+        EXPECT_OK(granbond_wall_store_visit(other, m, &c, &v), "granbond_wall_store_visit, renumbered wall");
+        CHECK(v.act == GB_WALL_ACT_BOND, "the bond acts on its wall's new number");
+        EXPECT(granbond_wall_store_renumber(other, gone, 1), GB_STATUS_INVALID_ARGUMENT,
+               "granbond_wall_store_renumber, the bond's wall without a place");
+        EXPECT_NULL_ARG(granbond_wall_store_renumber(other, NULL, 2), "granbond_wall_store_renumber", "map");
+        /* the recount's listing: the one bond, by sphere and wall */
+        int64_t key_ids[2] = {0, 0};
+        uint32_t key_walls[2] = {0, 0};
+        size_t keys = 0;
+        CHECK(granbond_wall_store_len(other) == 1 && granbond_wall_store_len(NULL) == 0, "granbond_wall_store_len");
+        EXPECT_OK(granbond_wall_store_keys(other, key_ids, key_walls, 2, &keys), "granbond_wall_store_keys");
+        CHECK(keys == 1 && key_ids[0] == 42 && key_walls[0] == 1, "the bond listed as sphere 42 on wall 1");
+        EXPECT(granbond_wall_store_keys(other, key_ids, key_walls, 0, &keys), GB_STATUS_INVALID_ARGUMENT,
+               "granbond_wall_store_keys, no room");
+        EXPECT_NULL_ARG(granbond_wall_store_keys(other, NULL, key_walls, 2, &keys), "granbond_wall_store_keys", "ids");
+    }
     EXPECT_OK(granbond_wall_store_restore_counts(other, &counts), "granbond_wall_store_restore_counts");
 
     /* Atoms sorted (the sphere moves to slot 1), then the sphere gone. */

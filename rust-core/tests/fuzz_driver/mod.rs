@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 130] = [
+pub const ENTRY_POINTS: [&str; 133] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -187,6 +187,9 @@ pub const ENTRY_POINTS: [&str; 130] = [
     "granbond_wall_store_packed_len_in",
     "granbond_wall_store_unpack",
     "granbond_wall_store_link",
+    "granbond_wall_store_renumber",
+    "granbond_wall_store_keys",
+    "granbond_wall_store_len",
     "granbond_wall_store_visit",
     "granbond_wall_store_counts",
     "granbond_wall_store_restore_counts",
@@ -2253,6 +2256,22 @@ impl<'t> Session<'t> {
                 };
                 let linked = fw::granbond_wall_store_link(ot, &atoms);
                 self.answer("granbond_wall_store_link", linked);
+                let map = [1i64, 0];
+                let renumbered = fw::granbond_wall_store_renumber(ot, map.as_ptr(), map.len());
+                self.answer("granbond_wall_store_renumber", renumbered);
+                let back = fw::granbond_wall_store_renumber(ot, map.as_ptr(), map.len());
+                self.answer("granbond_wall_store_renumber", back);
+                let (mut key_ids, mut key_walls, mut keys) = ([0i64; 4], [0u32; 4], 0usize);
+                let listed = fw::granbond_wall_store_keys(
+                    ot,
+                    key_ids.as_mut_ptr(),
+                    key_walls.as_mut_ptr(),
+                    4,
+                    &mut keys,
+                );
+                self.answer("granbond_wall_store_keys", listed);
+                let _ = fw::granbond_wall_store_len(ot);
+                self.answer_value("granbond_wall_store_len");
                 visit(self, ot, contact(2, 1));
                 visit(self, ot, contact(1, 2));
                 let restored = fw::granbond_wall_store_restore_counts(ot, &counts);
