@@ -90,10 +90,9 @@ void BondStoreFix::finishPass(bool formedHere, bool newtonOff, std::vector<GbBon
     sizeExchange();
 }
 
-void BondStoreFix::grow_arrays(int nmax)
-{
-    if (granbond_bond_store_grow(store_, static_cast<size_t>(nmax)) != GB_STATUS_OK) fail("growing");
-}
+// The store's rows follow the atoms it is told of, not the engine's room
+// (granbond_bond_store_grow): nothing to grow here.
+void BondStoreFix::grow_arrays(int) {}
 
 void BondStoreFix::copy_arrays(int i, int j, int)
 {

@@ -13,31 +13,26 @@ namespace liggghts {
 
 namespace {
 
-// LIGGGHTS moves a pair's history from the neighbour list into the atoms'
-// partner arrays (keyed by atom ID) at the setup of the next run, from the
-// list of the previous one. Atoms created or deleted in between have moved
-// the ghosts' places, so the history of a pair with a ghost would be filed
-// under the ID of the atom now in the ghost's place: a contact's history lost, or handed
-// to another pair. This fix files the history at the end of each run,
-// while the list still matches the atoms, as LAMMPS's fix neigh/history
-// does (the setup then has nothing newer to file).
+// A run's end files nothing: LIGGGHTS files the contacts' records into the
+// atoms' partner arrays at each neighbour-list build and at the next run's
+// setup (or a write_restart between runs), as it does without granbond. The
+// bonds live in the bond store, and a pair's bond bit is a cache the next
+// run's setup pass sets again for every listed pair; filing every bonded
+// pair's record at each run's end would cost a partner entry and a history
+// record a bond in the engine's pages (46 bytes a bond at 1e5 bonds).
 class AtomsFix : public FixGranbondAtoms {
 public:
     AtomsFix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) : FixGranbondAtoms(lmp, narg, arg) {}
-
-    int setmask() { return LAMMPS_NS::FixConst::POST_RUN; }
 
     // LIGGGHTS's setup gives every atom a just-created fix's start value
     // after the setup pass, which has already marked the atoms seen; the
     // values are right without it (0 from the constructor, or restart data).
     void init() { just_created = 0; }
 
-    void post_run() { fileRecords(); }
-
     // Restart files written during a run (`restart N`) take the history
     // from the partner arrays, which LIGGGHTS fills only at neighbour-list
-    // builds: filed now, while the list matches the atoms. Between runs
-    // post_run has filed it, and atoms may have changed since.
+    // builds: filed now, while the list matches the atoms. Between runs the
+    // engine files it itself before writing.
     void write_restart(FILE *fp)
     {
         if (update->whichflag != 0) fileRecords();

@@ -2426,7 +2426,9 @@ enum GbStatus granbond_bond_store_new(struct GbBondStore **store);
 void granbond_bond_store_free(struct GbBondStore *store);
 
 /**
- * The engine's per-atom arrays hold `nmax` atoms now (`grow_arrays`).
+ * Rows for atoms `0..nmax` at least. The store's rows follow the atoms it
+ * is told of (links, unpacked atoms, seen ids), so an engine need not call
+ * it when its per-atom arrays grow.
  *
  * # Safety
  * `store` must be null or from `granbond_bond_store_new`.

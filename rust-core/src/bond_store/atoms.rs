@@ -98,11 +98,16 @@ pub fn packed_len_in(buf: &[f64]) -> Result<usize, UnpackError> {
 }
 
 impl BondStore {
-    /// The engine's per-atom arrays hold `nmax` atoms now.
-    pub fn grow(&mut self, nmax: usize) {
-        if nmax > self.head.len() {
-            self.head.resize(nmax, NONE);
-            self.seen.resize(nmax, 0);
+    /// Rows for atoms `0..n` at least. The store's per-atom rows follow the
+    /// atoms it is told of (a link's local and ghost atoms, an unpacked
+    /// atom, a ghost's seen id), not the room of the engine's per-atom
+    /// arrays, which runs ahead of the atoms by up to 16,384 in LAMMPS: an
+    /// engine need not call it when its arrays grow. A row beyond them
+    /// reads as an atom that owns no bond and that no link has seen.
+    pub fn grow(&mut self, n: usize) {
+        if n > self.head.len() {
+            self.head.resize(n, NONE);
+            self.seen.resize(n, 0);
         }
     }
 
@@ -110,10 +115,14 @@ impl BondStore {
     /// `copy_arrays`): `to` now owns `from`'s bonds. Bonds that `to` owned
     /// are no atom's now, and the next link counts them lost.
     pub fn copy(&mut self, from: usize, to: usize) {
-        if from < self.head.len() && to < self.head.len() {
-            self.head[to] = self.head[from];
-            self.seen[to] = self.seen[from];
+        let head = self.head.get(from).copied().unwrap_or(NONE);
+        let seen = self.seen(from);
+        if to >= self.head.len() && head == NONE && seen == 0 {
+            return; // a row beyond the store's reads so already
         }
+        self.grow(to + 1);
+        self.head[to] = head;
+        self.seen[to] = seen;
     }
 
     /// Atom `i` was created: it owns no bond, and no pass has seen it.
@@ -132,9 +141,11 @@ impl BondStore {
 
     /// The seen id of a ghost image `i`, as its owner rank sent it.
     pub fn set_seen(&mut self, i: usize, id: i64) {
-        if i < self.seen.len() {
-            self.seen[i] = id;
+        if i >= self.seen.len() && id == 0 {
+            return;
         }
+        self.grow(i + 1);
+        self.seen[i] = id;
     }
 
     pub(super) fn owned(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
@@ -214,7 +225,9 @@ impl BondStore {
             }
         }
         if leaving {
-            self.head[i] = NONE;
+            if let Some(head) = self.head.get_mut(i) {
+                *head = NONE;
+            }
             self.linked = false;
         }
         Some(at)

@@ -269,14 +269,16 @@ impl BondStore {
     pub(super) fn rebuild_lists(&mut self) {
         self.next.clear();
         self.next.resize(self.bonds.len(), NONE);
-        let mut owned = vec![0u32; self.head.len()];
         for k in (0..self.bonds.len()).rev() {
             let i = self.ends[k][0] as usize;
             self.next[k] = self.head[i];
             self.head[i] = k as u32;
-            owned[i] += 1;
         }
-        self.most_owned = owned.iter().copied().max().unwrap_or(0) as usize;
+        // counted along the lists: a per-atom count would cost a row an atom
+        self.most_owned = (0..self.head.len())
+            .map(|i| self.owned(i).count())
+            .max()
+            .unwrap_or(0);
     }
 }
 

@@ -56,6 +56,12 @@ impl BondStore {
                 "the atoms' arrays are shorter than {nall} atoms ({nlocal} local)"
             )));
         }
+        if listed.len() >= NONE as usize {
+            return Err(LinkError(format!(
+                "{} listed bonds: a rank holds fewer than {NONE}",
+                listed.len()
+            )));
+        }
         for (n, l) in listed.iter().enumerate() {
             let owner_ok = usize::try_from(l.owner).is_ok_and(|o| o < nlocal);
             let partner_ok = usize::try_from(l.partner).is_ok_and(|p| p < nall && p != l.owner as usize);
@@ -84,14 +90,17 @@ impl BondStore {
                 k = self.next[b];
             }
         }
-        let mut order: Vec<usize> = (0..listed.len()).collect();
-        order.sort_by_key(|&n| (listed[n].kind, listed[n].owner));
+        // 4 bytes a bond, sorted without a buffer (the index breaks ties, so
+        // the order is the stable one)
+        let mut order: Vec<u32> = (0..listed.len() as u32).collect();
+        order.sort_unstable_by_key(|&n| (listed[n as usize].kind, listed[n as usize].owner, n));
         let mut taken = vec![false; count];
         let mut bonds = Vec::with_capacity(listed.len());
         let mut ends = Vec::with_capacity(listed.len());
         let mut kinds = Vec::with_capacity(listed.len());
         let mut created = 0;
         for n in order {
+            let n = n as usize;
             let l = listed[n];
             let (o, p) = (l.owner as usize, l.partner as usize);
             let partner = atoms.ids.get(p);
