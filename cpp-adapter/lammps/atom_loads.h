@@ -32,7 +32,9 @@ void stepChunks(LAMMPS_NS::Atom *atom, GbBondStore *store, const std::vector<GbB
     const int nlocal = atom->nlocal;
     stepStoreChunks(
         store, models.data(), models.size(), atom, atomIdsOf(atom), keep,
-        [&](int i, int j, const GbBondOutput &o) {
+        // (by value: the pointers and switches stay in registers through
+        // the stores to the atoms)
+        [=](int i, int j, const GbBondOutput &o) mutable {
             add3(f0 + 3 * static_cast<size_t>(i), o.force_i);
             add3(t0 + 3 * static_cast<size_t>(i), o.torque_i);
             if (j < nlocal || engineSums) {

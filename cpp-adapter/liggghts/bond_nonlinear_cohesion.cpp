@@ -138,6 +138,7 @@ void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
             const GbBondModel *m = parameters_.model(a, b);
             if (m && granbond_bond_keeps_contact_loads(m)) keepsLoads_ = true;
         }
+    setMayForm(mayForm_);
     // `bonded yes` stores a clump id per atom under this name (LIGGGHTS-INL
     // looks for "bondnonlinear_random_id", which no fix creates)
     clumpIds_ = isWall_ ? 0
@@ -210,7 +211,7 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
     // nothing, and its bonded pairs show no contact loads
     passing_ = sidata.computeflag != 0;
     advance_ = passing_ && sidata.shearupdate;
-    mayForm_ = false;
+    setMayForm(false);
     if (!passing_) return;
     if (update->setupflag || linkedAt_ != neighbor->ncalls) linkBonds();
     GbBondStore *store = bonds_->store();
@@ -237,7 +238,7 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
             reach > 0.0)
             remember = true;
     }
-    mayForm_ = advance_ && (creates || clumpIds_);
+    setMayForm(advance_ && (creates || clumpIds_));
     if (granbond_bond_store_begin_pass(store, update->dt, advance_ ? 1 : 0, remember ? 1 : 0) != GB_STATUS_OK)
         endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: " + coreReason());
     ghostLoads_ = force->newton_pair ? 0 : bonds_->ghostLoads();
@@ -250,7 +251,8 @@ void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceD
 {
     if (isWall_ || !passing_) return;
     finishPairPass();
-    passing_ = advance_ = mayForm_ = false;
+    passing_ = advance_ = false;
+    setMayForm(false);
 }
 
 void BondNonlinearCohesion::runChecks(bool runStart)

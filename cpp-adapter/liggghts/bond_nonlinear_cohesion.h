@@ -26,6 +26,14 @@
 #include <string>
 #include <vector>
 
+// The pair callbacks are inline in the engine's loop whatever the
+// compiler's estimate of their size.
+#if defined(__GNUC__)
+#define GRANBOND_INLINE inline __attribute__((always_inline))
+#else
+#define GRANBOND_INLINE inline
+#endif
+
 namespace LAMMPS_NS {
 class PairGran;
 class FixWallGran;
@@ -72,21 +80,37 @@ public:
     // core's granbond_bond_keeps_contact_tangential) acts here instead,
     // between the normal model and the tangential one, and so replaces the
     // normal load alone.
-    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    //
+    // The engine's loop calls these for every listed pair, so they are kept
+    // inline (the compiler would call them otherwise): in the common case,
+    // pairs of a pass in which no bond forms (`plain_`), a bonded pair's
+    // loads are cleared and the rest is left alone, and spheres apart are
+    // not touched at all.
+    GRANBOND_INLINE void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
     {
         if (keepsTangential(sidata)) overlapping(sidata, i_forces, j_forces);
     }
-    void endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    GRANBOND_INLINE void endSurfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
+                                              ForceData &j_forces)
     {
+        if (plain_) {
+            if (sidata.rsq == 0.0) coincident(sidata);
+            if (bondedFlag(sidata)) {
+                i_forces.reset();
+                j_forces.reset();
+            }
+            return;
+        }
         if (!keepsTangential(sidata)) overlapping(sidata, i_forces, j_forces);
     }
-    void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
+    GRANBOND_INLINE void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
     {
+        if (!closeActs_) return;
         if (isWall_) {
             close(scdata, i_forces, j_forces);
             return;
         }
-        if (!bondedFlag(scdata) && mayForm_) pairBonds(scdata);
+        if (!bondedFlag(scdata)) pairBonds(scdata);
     }
 
     // What per-bond output reads (bond_local.cpp): the store and each type
@@ -224,6 +248,18 @@ private:
     bool passing_;                // a force or setup pass of pairs is under way
     bool advance_;                // ... a force pass
     bool mayForm_;                // ... in which a bond may form
+    // Set with mayForm_ (setMayForm): the pair callbacks' common case, a
+    // pair of a pass in which no bond forms, of a model that replaces all
+    // the contact's loads (`plain_`); whether surfacesClose has anything to
+    // do (`closeActs_`: walls, or a bond may form).
+    bool plain_ = false;
+    bool closeActs_ = true;
+    void setMayForm(bool mayForm)
+    {
+        mayForm_ = mayForm;
+        plain_ = !isWall_ && !keepsTangential_ && !keepsLoads_ && !mayForm_;
+        closeActs_ = isWall_ || mayForm_;
+    }
     bool formedThisPass_;         // bonds formed here in this pass
     bigint linkedAt_;             // neighbor->ncalls at the latest link
     double *ghostLoads_;          // this pass's loads on ghost atoms (newton off)

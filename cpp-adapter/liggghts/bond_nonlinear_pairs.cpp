@@ -149,7 +149,9 @@ void BondNonlinearCohesion::stepBonds(bool advance)
     stepStoreChunks(
         bonds_->store(), parameters_.table(), kinds_.size(), atom, atomIdsOf(atom),
         bondOutputUsers > 0 && advance ? &outputs_ : nullptr,
-        [&](int i, int j, const GbBondOutput &o) {
+        // (by value: the pointers and switches stay in registers through
+        // the stores to the atoms)
+        [=](int i, int j, const GbBondOutput &o) {
             const double relaxI = pair->relax(i), relaxJ = pair->relax(j);
             addScaled3(f0 + 3 * static_cast<size_t>(i), relaxI, o.force_i);
             addScaled3(t0 + 3 * static_cast<size_t>(i), relaxI, o.torque_i);

@@ -82,6 +82,15 @@ impl<'a> IndexedPairs<'a> {
     /// [`AtomArrays::count`]; the error names the first out of range.
     pub fn new(atoms: AtomArrays<'a>, pairs: &'a [[i32; 2]]) -> Result<Self, IndexOutOfRange> {
         let count = atoms.count();
+        // All in range, as a negative index read as unsigned is beyond any
+        // count below 2^31: one pass without a branch, before the search
+        // for the first out of range.
+        let largest = pairs
+            .iter()
+            .fold(0u32, |m, p| m.max(p[0] as u32).max(p[1] as u32));
+        if count <= i32::MAX as usize && (largest as usize) < count {
+            return Ok(Self { atoms, pairs });
+        }
         for (bond, p) in pairs.iter().enumerate() {
             for &index in p {
                 if usize::try_from(index).map_or(true, |i| i >= count) {

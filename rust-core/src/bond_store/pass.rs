@@ -149,10 +149,7 @@ impl BondStore {
             return Err(fail(first, [-1, -1], StepFailureReason::NotLinked));
         }
         let kind = self.kinds[first];
-        let mut last = first + 1;
-        while last < self.bonds.len() && last - first < CHUNK && self.kinds[last] == kind {
-            last += 1;
-        }
+        let last = first + same_kind_run(&self.kinds[first..self.bonds.len().min(first + CHUNK)], kind);
         let n = last - first;
         let model = models
             .get(usize::from(kind))
@@ -248,6 +245,12 @@ impl BondStore {
             }
         }
         self.cursor.next = last;
+        // Breaks are rare: one pass over the statuses without a branch says
+        // whether the chunk has any.
+        let intact = BondStatus::Intact as i32;
+        if !self.cursor.advance || outs.iter().fold(0, |any, o| any | (o.status ^ intact)) == 0 {
+            return Ok(n);
+        }
         for (k, out) in outs.iter_mut().enumerate() {
             // a bond that is not intact carries no load (the step's rule);
             // one that broke in a force pass is counted and reported
@@ -424,6 +427,16 @@ fn setup_afresh(
     Some(Ok(None))
 }
 
+/// How many of `kinds`, from the first, are `kind`. Stores mostly hold one
+/// kind: a pass without a branch over them says so, before a search.
+fn same_kind_run(kinds: &[u16], kind: u16) -> usize {
+    if kinds.iter().fold(0, |other, &k| other | (k ^ kind)) == 0 {
+        kinds.len()
+    } else {
+        kinds.iter().position(|&k| k != kind).unwrap_or(kinds.len())
+    }
+}
+
 fn ordered(ids: [i64; 2]) -> [i64; 2] {
     [ids[0].min(ids[1]), ids[0].max(ids[1])]
 }
@@ -489,5 +502,19 @@ impl BondStore {
                 .stored_energy(state, axis, state.r0() - r, atoms.radius[i], atoms.radius[j])
                 .total(),
         ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::same_kind_run;
+
+    #[test]
+    fn a_run_of_one_kind_ends_at_the_first_bond_of_another() {
+        assert_eq!(same_kind_run(&[3, 3, 3], 3), 3);
+        assert_eq!(same_kind_run(&[3], 3), 1);
+        assert_eq!(same_kind_run(&[3, 3, 1, 3], 3), 2);
+        assert_eq!(same_kind_run(&[3, 0x8003, 3], 3), 1);
+        assert_eq!(same_kind_run(&[3; 64], 3), 64);
     }
 }
