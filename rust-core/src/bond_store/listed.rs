@@ -159,9 +159,13 @@ impl BondStore {
             });
         }
         drop(owner_of);
-        // the new bonds after the stored ones, each at its place
+        // the new bonds after the stored ones, each at its place; a store
+        // that held none takes them in order, in place already
+        let relaid = count > 0;
         self.bonds.reserve_exact(created);
-        place.reserve_exact(created);
+        if relaid {
+            place.reserve_exact(created);
+        }
         for (at, &slot) in order.iter().enumerate() {
             if slot & MATCHED != 0 {
                 continue;
@@ -175,14 +179,18 @@ impl BondStore {
             if let Some(budget) = &mut self.budget {
                 budget.push();
             }
-            place.push(at as u32);
+            if relaid {
+                place.push(at as u32);
+            }
         }
         let all = self.bonds.len();
         self.ends.clear();
         self.ends.resize(all, [-1, -1]);
         self.kinds.clear();
         self.kinds.resize(all, 0);
-        self.permute(&mut place);
+        if relaid {
+            self.permute(&mut place);
+        }
         drop(place);
         self.bonds.truncate(listed.len());
         self.ends.truncate(listed.len());
