@@ -249,7 +249,7 @@ impl BondStore {
 
     /// Moves bond `b` (with its ends and kind) to `place[b]`, in place:
     /// `place` is a permutation, and is left as the identity.
-    fn permute(&mut self, place: &mut [u32]) {
+    pub(super) fn permute(&mut self, place: &mut [u32]) {
         for b in 0..place.len() {
             while place[b] as usize != b {
                 let to = place[b] as usize;

@@ -56,9 +56,9 @@ impl BondStore {
                 "the atoms' arrays are shorter than {nall} atoms ({nlocal} local)"
             )));
         }
-        if listed.len() >= NONE as usize {
+        if listed.len() >= 1 << 31 {
             return Err(LinkError(format!(
-                "{} listed bonds: a rank holds fewer than {NONE}",
+                "{} listed bonds: a rank holds fewer than 2^31",
                 listed.len()
             )));
         }
@@ -94,53 +94,63 @@ impl BondStore {
         // the order is the stable one)
         let mut order: Vec<u32> = (0..listed.len() as u32).collect();
         order.sort_unstable_by_key(|&n| (listed[n as usize].kind, listed[n as usize].owner, n));
-        let mut taken = vec![false; count];
-        let mut bonds = Vec::with_capacity(listed.len());
-        let mut ends = Vec::with_capacity(listed.len());
-        let mut kinds = Vec::with_capacity(listed.len());
+        // the bonds are laid out again in place, as a link does: a second
+        // copy of the store at every list build would double its memory
+        // there. place[b]: where stored bond b goes, NONE for none yet;
+        // order[p] carries MATCHED where place p takes a stored bond
+        const MATCHED: u32 = 1 << 31;
+        let length = |n: usize| {
+            let (o, p) = (listed[n].owner as usize, listed[n].partner as usize);
+            let r = (0..3)
+                .map(|c| (atoms.x[3 * o + c] - atoms.x[3 * p + c]).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            if r > 0.0 && r.is_finite() {
+                Ok(r)
+            } else {
+                Err(LinkError(format!(
+                    "listed bond {n}: its atoms' centres are {r} apart (a bond needs a length)"
+                )))
+            }
+        };
+        let mut place = vec![NONE; count];
         let mut created = 0;
-        for n in order {
-            let n = n as usize;
+        for (at, slot) in order.iter_mut().enumerate() {
+            let n = *slot as usize;
             let l = listed[n];
-            let (o, p) = (l.owner as usize, l.partner as usize);
-            let partner = atoms.ids.get(p);
-            let mut k = self.head[o];
+            let partner = atoms.ids.get(l.partner as usize);
+            let mut k = self.head[l.owner as usize];
             let mut found = None;
             while (k as usize) < count {
                 let b = k as usize;
-                if !taken[b] && owner_of[b] == l.owner && self.bonds[b].partner == partner {
+                if place[b] == NONE && owner_of[b] == l.owner && self.bonds[b].partner == partner {
                     found = Some(b);
                     break;
                 }
                 k = self.next[b];
             }
-            let state = match found {
+            match found {
                 Some(b) => {
-                    taken[b] = true;
-                    self.bonds[b].state
+                    place[b] = at as u32;
+                    *slot |= MATCHED;
                 }
                 None => {
-                    let r = (0..3)
-                        .map(|c| (atoms.x[3 * o + c] - atoms.x[3 * p + c]).powi(2))
-                        .sum::<f64>()
-                        .sqrt();
-                    if !(r > 0.0 && r.is_finite()) {
-                        return Err(LinkError(format!(
-                            "listed bond {n}: its atoms' centres are {r} apart (a bond needs a length)"
-                        )));
-                    }
+                    length(n)?;
                     created += 1;
-                    BondState::created(r)
                 }
-            };
-            bonds.push(StoredBond { partner, state });
-            ends.push([l.owner, l.partner]);
-            kinds.push(l.kind as u16);
+            }
         }
         let mut report = LinkReport::default();
+        let mut rest = listed.len() as u32;
         for b in 0..count {
-            if taken[b] || self.status(b) != BondStatus::Intact {
-                continue; // kept, or packed away to another rank
+            if place[b] != NONE {
+                continue;
+            }
+            // dropped: laid after the listed bonds, then cut off
+            place[b] = rest;
+            rest += 1;
+            if self.status(b) != BondStatus::Intact {
+                continue; // packed away to another rank
             }
             report.count(match owner_of[b] {
                 -1 => LossCause::OwnerGone,
@@ -148,14 +158,57 @@ impl BondStore {
                 _ => LossCause::NoModel,
             });
         }
-        self.bonds = bonds;
-        self.ends = ends;
-        self.kinds = kinds;
+        drop(owner_of);
+        // the new bonds after the stored ones, each at its place; a store
+        // that held none takes them in order, in place already
+        let relaid = count > 0;
+        self.bonds.reserve_exact(created);
+        if relaid {
+            place.reserve_exact(created);
+        }
+        for (at, &slot) in order.iter().enumerate() {
+            if slot & MATCHED != 0 {
+                continue;
+            }
+            let n = slot as usize;
+            let partner = atoms.ids.get(listed[n].partner as usize);
+            self.bonds.push(StoredBond {
+                partner,
+                state: BondState::created(length(n)?),
+            });
+            if let Some(budget) = &mut self.budget {
+                budget.push();
+            }
+            if relaid {
+                place.push(at as u32);
+            }
+        }
+        let all = self.bonds.len();
+        self.ends.clear();
+        self.ends.resize(all, [-1, -1]);
+        self.kinds.clear();
+        self.kinds.resize(all, 0);
+        if relaid {
+            self.permute(&mut place);
+        }
+        drop(place);
+        self.bonds.truncate(listed.len());
+        self.ends.truncate(listed.len());
+        self.kinds.truncate(listed.len());
+        if let Some(budget) = &mut self.budget {
+            budget.truncate(listed.len());
+        }
+        for (at, &slot) in order.iter().enumerate() {
+            let l = listed[(slot & !MATCHED) as usize];
+            self.ends[at] = [l.owner, l.partner];
+            self.kinds[at] = l.kind as u16;
+        }
+        drop(order);
         self.next.clear();
         self.head.fill(NONE);
         self.rebuild_lists();
         self.map.build(atoms.ids);
-        self.counts.created += created;
+        self.counts.created += created as i64;
         Ok(self.finish_link(report, atoms.ids, nlocal))
     }
 }
