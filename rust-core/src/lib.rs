@@ -15,6 +15,7 @@
 
 pub mod bond;
 pub mod bond_store;
+pub mod coeff;
 pub mod contact;
 pub mod ffi;
 pub mod integrate;
@@ -22,6 +23,7 @@ pub mod kinematics;
 pub mod pair_source;
 pub mod parameters;
 pub mod real;
+pub mod restart_rows;
 pub mod simd;
 pub mod stability;
 pub mod state_layout;
