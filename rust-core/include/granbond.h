@@ -2258,6 +2258,40 @@ enum GbStatus granbond_bond_coeff_read(const char *command,
                                        struct GbBondParams *bond);
 
 /**
+ * Checks a LIGGGHTS `fix ID group property/global NAME ...` line (`count`
+ * words after `fix`) where NAME is a granbond property: its style, its
+ * number of atom types and its values, each refusal
+ * (`GB_STATUS_INVALID_ARGUMENT`) naming the fix, the property and the
+ * word. `ours` 1 for a granbond property, 0 for a line left to the engine;
+ * `infinite[k]` 1 where word k is an infinity the property takes, which
+ * the engine's number reader takes only as `1e999`, else 0.
+ *
+ * # Safety
+ * `words` null or `count` pointers, each null or a NUL-terminated string;
+ * `infinite` null or `count` writable `int32_t`; `ours` null or valid for
+ * writes.
+ */
+enum GbStatus granbond_liggghts_property_line_check(const char *const *words,
+                                                    size_t count,
+                                                    int32_t *infinite,
+                                                    int32_t *ours);
+
+/**
+ * Checks the settings words (`count` words) of a LIGGGHTS `command`
+ * (`pair_style gran`, `fix ID group wall/gran`): a name left without a
+ * value at the end of the line, or a switch given twice with different
+ * values, is `GB_STATUS_INVALID_ARGUMENT`, the message naming `command`
+ * and the word.
+ *
+ * # Safety
+ * `command` null or a NUL-terminated string; `words` as in
+ * `granbond_liggghts_property_line_check`.
+ */
+enum GbStatus granbond_liggghts_settings_check(const char *command,
+                                               const char *const *words,
+                                               size_t count);
+
+/**
  * Message of the last failed call on this thread ("" after a success).
  * Valid until the next granbond call on the same thread.
  */

@@ -63,7 +63,7 @@ impl<'a> Words<'a> {
 /// `s` read whole by the C library as an integer or a number (`strtoll`,
 /// `strtod`: the spellings every LAMMPS reader takes), and whether it is
 /// within a double's range; `None` for anything else.
-fn c_read(s: &str, integer: bool) -> Option<(f64, bool)> {
+pub(crate) fn c_read(s: &str, integer: bool) -> Option<(f64, bool)> {
     let c = CString::new(s).ok()?;
     let mut end: *mut libc::c_char = std::ptr::null_mut();
     // SAFETY: `c` is a NUL-terminated string that outlives the calls; `end`

@@ -4,14 +4,16 @@
 //! `voigt`), and the part of the Voigt contact each parameter belongs to
 //! (LIGGGHTS composes the contact from one sub-model per part), so the
 //! engines translate words to table rows without rules of their own; and
-//! LAMMPS's `pair_coeff` and `bond_coeff` lines read whole (`coeff`).
+//! LAMMPS's `pair_coeff` and `bond_coeff` lines read whole (`coeff`), and
+//! LIGGGHTS's settings and property lines checked (`liggghts_words`).
 
 use super::entry;
 use super::error::{Failure, Status};
-use super::guard::{reference, reference_mut, slice};
+use super::guard::{reference, reference_mut, slice, slice_mut};
 use crate::bond::{BondParams, PHRASES};
 use crate::coeff;
 use crate::contact::{ContactPart, VoigtParams, VOIGT_PARTS, VOIGT_PHRASES};
+use crate::liggghts_words;
 use crate::parameters::Phrase;
 use std::ffi::{c_char, CStr, CString};
 use std::sync::OnceLock;
@@ -191,4 +193,56 @@ pub unsafe extern "C" fn granbond_bond_coeff_read(
     *bond = coeff::read_bond_coeff(text(command, "command")?, &line)
         .map_err(|message| Failure::new(Status::InvalidArgument, message))?;
     Ok(())
+}
+
+/// Checks a LIGGGHTS `fix ID group property/global NAME ...` line (`count`
+/// words after `fix`) where NAME is a granbond property: its style, its
+/// number of atom types and its values, each refusal
+/// (`GB_STATUS_INVALID_ARGUMENT`) naming the fix, the property and the
+/// word. `ours` 1 for a granbond property, 0 for a line left to the engine;
+/// `infinite[k]` 1 where word k is an infinity the property takes, which
+/// the engine's number reader takes only as `1e999`, else 0.
+///
+/// # Safety
+/// `words` null or `count` pointers, each null or a NUL-terminated string;
+/// `infinite` null or `count` writable `int32_t`; `ours` null or valid for
+/// writes.
+#[entry(words: slice(count), infinite: slice_mut(count), ours: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_liggghts_property_line_check(
+    words: *const *const c_char,
+    count: usize,
+    infinite: *mut i32,
+    ours: *mut i32,
+) -> Status {
+    let line = word_list(words)?;
+    let mut flags = vec![false; line.len()];
+    let checked = liggghts_words::check_property_line(&line, &mut flags)
+        .map_err(|message| Failure::new(Status::InvalidArgument, message))?;
+    for (out, flag) in infinite.iter_mut().zip(flags) {
+        *out = i32::from(flag);
+    }
+    *ours = i32::from(checked);
+    Ok(())
+}
+
+/// Checks the settings words (`count` words) of a LIGGGHTS `command`
+/// (`pair_style gran`, `fix ID group wall/gran`): a name left without a
+/// value at the end of the line, or a switch given twice with different
+/// values, is `GB_STATUS_INVALID_ARGUMENT`, the message naming `command`
+/// and the word.
+///
+/// # Safety
+/// `command` null or a NUL-terminated string; `words` as in
+/// `granbond_liggghts_property_line_check`.
+#[entry(command: reference, words: slice(count))]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_liggghts_settings_check(
+    command: *const c_char,
+    words: *const *const c_char,
+    count: usize,
+) -> Status {
+    let line = word_list(words)?;
+    liggghts_words::check_settings(text(command, "command")?, &line)
+        .map_err(|message| Failure::new(Status::InvalidArgument, message))
 }

@@ -132,6 +132,20 @@ static GbStatus null_bond_coeff_read(struct world *c, int k)
                                     ARG(k, 2, &c->bond_params));
 }
 
+static const char *const PROPERTY_LINE[] = {"p", "all", "property/global", "k_n", "peratomtypepair", "1", "1e5"};
+
+static GbStatus null_liggghts_property_line_check(struct world *c, int k)
+{
+    int32_t infinite[7];
+    return granbond_liggghts_property_line_check(ARG(k, 0, PROPERTY_LINE), 7, ARG(k, 1, infinite), ARG(k, 2, &c->flag));
+}
+
+static GbStatus null_liggghts_settings_check(struct world *c, int k)
+{
+    (void)c;
+    return granbond_liggghts_settings_check(ARG(k, 0, "pair_style gran"), ARG(k, 1, PROPERTY_LINE + 5), 2);
+}
+
 /* Restart rows of the world's parameters, valid for the `_from_rows` calls. */
 static uint8_t ROWS[4096];
 
@@ -404,6 +418,8 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_bond_params_contact_under_bond_by_law", null_bond_params_contact_under_bond_by_law, {"params"}},
     {"granbond_pair_coeff_read", null_pair_coeff_read, {"command", "words", "units", "voigt", "bond", "has_bond"}},
     {"granbond_bond_coeff_read", null_bond_coeff_read, {"command", "words", "bond"}},
+    {"granbond_liggghts_property_line_check", null_liggghts_property_line_check, {"words", "infinite", "ours"}},
+    {"granbond_liggghts_settings_check", null_liggghts_settings_check, {"command", "words"}},
     {"granbond_bond_params_rows", null_bond_params_rows, {"params", "buf", "len"}},
     {"granbond_bond_params_from_rows", null_bond_params_from_rows, {"rows", "what", "params"}},
     {"granbond_voigt_params_rows", null_voigt_params_rows, {"params", "buf", "len"}},

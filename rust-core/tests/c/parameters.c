@@ -634,3 +634,22 @@ int test_restart_rows(void)
           say("the message names what is missing and where: %s", granbond_last_error_message()));
     return 0;
 }
+
+int test_liggghts_lines(void)
+{
+    const char *line[] = {"p", "all", "property/global", "maxSigmaBondnonlinear", "peratomtypepair", "2", "1e6", "inf", "1e6", "1e6"};
+    const char *settings[] = {"contactUnderBond", "on", "contactUnderBond", "off"};
+    int32_t infinite[10], ours = -1;
+    EXPECT_OK(granbond_liggghts_property_line_check(line, 10, infinite, &ours), "a property line");
+    CHECK(ours == 1 && infinite[7] == 1 && infinite[6] == 0, "a granbond property, its infinity flagged");
+    EXPECT(granbond_liggghts_property_line_check(line, 9, infinite, &ours), GB_STATUS_INVALID_ARGUMENT,
+           "a value missing");
+    CHECK(strstr(granbond_last_error_message(), "peratomtypepair 2 needs 4 values, got 3") != NULL,
+          say("the message counts the values: %s", granbond_last_error_message()));
+    EXPECT_OK(granbond_liggghts_settings_check("pair_style gran", settings, 2), "a switch");
+    EXPECT(granbond_liggghts_settings_check("pair_style gran", settings, 4), GB_STATUS_INVALID_ARGUMENT,
+           "a switch given twice");
+    EXPECT(granbond_liggghts_settings_check("pair_style gran", settings, 3), GB_STATUS_INVALID_ARGUMENT,
+           "a switch without a value");
+    return 0;
+}

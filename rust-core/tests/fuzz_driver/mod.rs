@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 139] = [
+pub const ENTRY_POINTS: [&str; 141] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -128,6 +128,8 @@ pub const ENTRY_POINTS: [&str; 139] = [
     "granbond_pair_coeff_read",
     "granbond_bond_coeff_read",
     "granbond_bond_params_rows",
+    "granbond_liggghts_property_line_check",
+    "granbond_liggghts_settings_check",
     "granbond_voigt_params_rows",
     "granbond_bond_params_from_rows",
     "granbond_voigt_params_from_rows",
@@ -1270,6 +1272,7 @@ impl<'t> Session<'t> {
             assert!(voigt.get().validate().is_ok());
         }
         self.restart_rows(id, h, bond, &params.get(), &voigt.get());
+        self.liggghts_lines(id, h, bond);
         if bond {
             // SAFETY: as above.
             let status = unsafe {
@@ -1281,6 +1284,55 @@ impl<'t> Session<'t> {
                 );
             }
         }
+    }
+
+    /// A LIGGGHTS property line of row `id`'s name and a settings line,
+    /// the outputs through pointer `h`.
+    fn liggghts_lines(&mut self, id: usize, h: Pointer, bond: bool) {
+        let name = if bond {
+            PARAMETERS.get(id).map(|r| r.liggghts_name)
+        } else {
+            VOIGT_PARAMETERS.get(id).map(|r| r.liggghts_name)
+        };
+        let line = [
+            "p",
+            "all",
+            "property/global",
+            name.unwrap_or("k_n"),
+            "peratomtypepair",
+            "1",
+            "inf",
+        ];
+        let strings: Vec<std::ffi::CString> =
+            line.iter().map(|w| std::ffi::CString::new(*w).unwrap()).collect();
+        let words: Vec<*const c_char> = strings.iter().map(|w| w.as_ptr()).collect();
+        let mut infinite = Place::new([0i32; 7]);
+        let mut ours = Place::new(-1i32);
+        // SAFETY: valid words; null, misaligned or valid outputs of 7.
+        let status = unsafe {
+            fd::granbond_liggghts_property_line_check(
+                words.as_ptr(),
+                7,
+                infinite.ptr(h) as *mut i32,
+                ours.ptr(h),
+            )
+        };
+        if self.answer("granbond_liggghts_property_line_check", status) {
+            assert!(
+                ours.get() == 0 || infinite.get()[6] == 1,
+                "an infinity accepted is flagged"
+            );
+        }
+        let settings = if bond { &words[3..] } else { &words[2..] };
+        // SAFETY: valid words and command.
+        let status = unsafe {
+            fd::granbond_liggghts_settings_check(
+                c"pair_style gran".as_ptr(),
+                settings.as_ptr(),
+                settings.len(),
+            )
+        };
+        self.answer("granbond_liggghts_settings_check", status);
     }
 
     /// The parameters as restart rows and back through pointer `h`, the
