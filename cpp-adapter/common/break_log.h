@@ -17,6 +17,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
 #include <vector>
 
 namespace granbond {
@@ -111,6 +114,57 @@ inline void writeBreakEvents(std::vector<BreakEvent> &mine, FILE *file, MPI_Comm
                 e.x[1], e.x[2], breakModeName(e.mode), e.sigma, e.tau, e.sigmaMax, e.tauMax);
     fflush(file);
 }
+
+// The words of `fix ID group bond/breaklog FILE [every N]` and the file
+// they name, the same in both engines' fix: rank 0 opens the file and
+// writes the header, and every rank's events go to it.
+class BreakLogFile {
+public:
+    BreakLogFile() = default;
+    BreakLogFile(const BreakLogFile &) = delete;
+    BreakLogFile &operator=(const BreakLogFile &) = delete;
+    ~BreakLogFile()
+    {
+        if (file_) std::fclose(file_);
+    }
+
+    // Reads the words after the style (arg[3] on); `every`: how many steps
+    // apart the log is written (100 unless given). Returns what is wrong,
+    // naming the word, or an empty string.
+    static std::string words(int narg, char **arg, int &every)
+    {
+        if (narg < 4) return "expected fix ID group bond/breaklog FILE [every N]";
+        every = 100;
+        for (int iarg = 4; iarg < narg; iarg += 2) {
+            if (std::strcmp(arg[iarg], "every") != 0 || iarg + 1 >= narg)
+                return std::string("unknown keyword '") + arg[iarg] + "' (the only one is: every N)";
+            char *end = nullptr;
+            const long n = std::strtol(arg[iarg + 1], &end, 10);
+            if (end == arg[iarg + 1] || *end != '\0' || n < 1 || n > 1000000000)
+                return std::string("every must be an integer >= 1, got '") + arg[iarg + 1] + "'";
+            every = static_cast<int>(n);
+        }
+        return std::string();
+    }
+
+    // Opens `path` and writes the header on rank `me` 0; returns what went
+    // wrong on this rank, or an empty string.
+    std::string open(const char *path, int me)
+    {
+        if (me != 0) return std::string();
+        file_ = std::fopen(path, "w");
+        if (!file_) return std::string("cannot open ") + path;
+        std::fputs(breakLogHeader(), file_);
+        std::fflush(file_);
+        return std::string();
+    }
+
+    // Gathers every rank's `mine` (and clears it) and writes them. Collective.
+    void write(std::vector<BreakEvent> &mine, MPI_Comm world) { writeBreakEvents(mine, file_, world); }
+
+private:
+    FILE *file_ = nullptr;
+};
 
 }
 

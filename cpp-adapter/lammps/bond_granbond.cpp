@@ -6,7 +6,6 @@
 #include "bond_granbond.h"
 #include "bond_ledger.h"
 #include "bond_store_fix.h"
-#include "coeff_words.h"
 #include "core_message.h"
 #include "restart_rows.h"
 #include "atom_loads.h"
@@ -34,7 +33,6 @@ namespace granbond {
 namespace lammps {
 
 namespace {
-const char *const kModel = "bond/nonlinear";
 
 std::string shortNumber(double v)
 {
@@ -86,20 +84,11 @@ void BondGranbond::coeff(int narg, char **arg)
     if (narg < 1) error->all(FLERR, "bond_coeff: bond_style granbond expects N <bond/nonlinear keywords>");
     int lo, hi;
     utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, lo, hi, error);
-    words::Args a(narg, arg, error, 1, std::string("bond_coeff ") + arg[0]);
+    // the core reads the words, and refuses those of bonds a pair style forms
     GbBondParams p;
-    granbond_bond_params_default(&p);
-    const std::vector<std::string> given = words::readBondClause(a, kModel, p);
-    for (size_t id = 0; id < given.size(); id++) {
-        const int32_t pairOnly = granbond_bond_parameter_sets_creation(id);
-        if (pairOnly <= 0 || given[id].empty()) continue;
-        if (pairOnly == 1)
-            a.fail("'" + given[id] + "' says when bonds form; under bond_style granbond the topology names the "
-                   "bonds (create_bonds, a data file's Bonds section, molecule templates), each at rest at its "
-                   "length when first seen");
-        a.fail("'" + given[id] + "' says what pair_style granbond's contact does under its bonds; under "
-               "bond_style granbond special_bonds says whether a bonded pair's contact acts");
-    }
+    const std::string command = std::string("bond_coeff ") + arg[0];
+    if (granbond_bond_coeff_read(command.c_str(), arg + 1, static_cast<size_t>(narg - 1), &p) != GB_STATUS_OK)
+        error->all(FLERR, coreReason());
     for (int t = lo; t <= hi; t++) {
         granbond_bond_model_free(models_[t]);
         models_[t] = nullptr;

@@ -3,6 +3,7 @@
 #include "bond_store_fix.h"
 #include "pair_granbond.h"
 #include "bond_columns.h"
+#include "local_rows.h"
 #include "core_message.h"
 #include "run_checks.h"
 
@@ -160,7 +161,7 @@ private:
 // keyword (bond_columns.h).
 class ComputeGranbondLocal : public Compute {
 public:
-    ComputeGranbondLocal(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg), rows_(0), data_(nullptr)
+    ComputeGranbondLocal(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
     {
         const std::string wrong = columns_.parse(narg - 3, arg + 3);
         if (!wrong.empty()) error->all(FLERR, "compute granbond/local: " + wrong);
@@ -171,8 +172,6 @@ public:
     ~ComputeGranbondLocal() override
     {
         listen(nullptr);
-        std::free(data_);
-        std::free(pointers_);
     }
 
     void init() override { listen(sourceOf(lmp, "compute granbond/local")); }
@@ -183,7 +182,7 @@ public:
         BondSource *pair = sourceOf(lmp, "compute granbond/local");
         const int *mask = atom->mask;
         const size_t ncols = columns_.size();
-        std::vector<double> &rows = buffer_;
+        std::vector<double> &rows = rows_.values;
         rows.clear();
         std::vector<double> row(ncols);
         double record[GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN];
@@ -211,21 +210,10 @@ public:
                                       coreReason());
             rows.insert(rows.end(), row.begin(), row.end());
         });
-        rows_ = static_cast<int>(rows.size() / ncols);
-        size_local_rows = rows_;
-        // dump local reads vector_local, or array_local as row pointers
-        data_ = static_cast<double *>(std::realloc(data_, sizeof(double) * (rows.size() + 1)));
-        std::copy(rows.begin(), rows.end(), data_);
-        if (size_local_cols == 0) {
-            vector_local = data_;
-        } else {
-            pointers_ = static_cast<double **>(std::realloc(pointers_, sizeof(double *) * (rows_ + 1)));
-            for (int r = 0; r < rows_; r++) pointers_[r] = data_ + static_cast<size_t>(r) * ncols;
-            array_local = pointers_;
-        }
+        rows_.publish(size_local_cols, size_local_rows, vector_local, array_local);
     }
 
-    double memory_usage() override { return static_cast<double>(buffer_.capacity()) * 2 * sizeof(double); }
+    double memory_usage() override { return rows_.bytes(); }
 
 private:
     // Follows `pair` from now on (null: none); the pair keeps its bonds'
@@ -248,10 +236,7 @@ private:
     BondSource *pair_ = nullptr;
 
     BondColumns columns_{true};
-    std::vector<double> buffer_;
-    int rows_;
-    double *data_;
-    double **pointers_ = nullptr;
+    LocalRows rows_;
 };
 
 // ------------------------------------------------------------ break log
@@ -259,31 +244,14 @@ private:
 // (break_log.h) for pair granbond. The group is ignored, as there.
 class FixBondBreakLog : public Fix {
 public:
-    FixBondBreakLog(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), file_(nullptr), pair_(nullptr)
+    FixBondBreakLog(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), pair_(nullptr)
     {
-        if (narg < 4) error->all(FLERR, "fix bond/breaklog: expected fix ID group bond/breaklog FILE [every N]");
-        nevery = 100;
-        for (int iarg = 4; iarg < narg; iarg += 2) {
-            if (std::strcmp(arg[iarg], "every") == 0 && iarg + 1 < narg) {
-                nevery = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-                if (nevery < 1) error->all(FLERR, "fix bond/breaklog: every must be >= 1");
-            } else {
-                error->all(FLERR, std::string("fix bond/breaklog: unknown keyword '") + arg[iarg] +
-                                      "' (the only one is: every N)");
-            }
-        }
-        if (comm->me == 0) {
-            file_ = std::fopen(arg[3], "w");
-            if (!file_) error->one(FLERR, std::string("fix bond/breaklog: cannot open ") + arg[3]);
-            std::fputs(breakLogHeader(), file_);
-            std::fflush(file_);
-        }
+        std::string wrong = BreakLogFile::words(narg, arg, nevery);
+        if (!wrong.empty()) error->all(FLERR, "fix bond/breaklog: " + wrong);
+        wrong = file_.open(arg[3], comm->me);
+        if (!wrong.empty()) error->one(FLERR, "fix bond/breaklog: " + wrong);
     }
-    ~FixBondBreakLog() override
-    {
-        listen(nullptr);
-        if (file_) std::fclose(file_);
-    }
+    ~FixBondBreakLog() override { listen(nullptr); }
 
     int setmask() override { return FixConst::END_OF_STEP | FixConst::POST_RUN; }
 
@@ -293,12 +261,12 @@ public:
     void end_of_step() override
     {
         take();
-        if (update->ntimestep % nevery == 0) writeBreakEvents(events_, file_, world);
+        if (update->ntimestep % nevery == 0) file_.write(events_, world);
     }
     void post_run() override
     {
         take();
-        writeBreakEvents(events_, file_, world);
+        file_.write(events_, world);
     }
 
 private:
@@ -320,7 +288,7 @@ private:
         if (pair_->breakLogUsers <= 1) e.clear();
     }
 
-    FILE *file_;
+    BreakLogFile file_;
     BondSource *pair_;
     std::vector<BreakEvent> events_;
 };

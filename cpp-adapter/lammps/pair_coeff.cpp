@@ -7,9 +7,8 @@
 //
 // `bond/linear` is LIGGGHTS-INL's linear bond: the bond table's row
 // `linear` on, the same keywords (the core refuses those of the other law).
-// The words are read by coeff_words.h, shared with bond_coeff.
+// The core reads the words (granbond_pair_coeff_read).
 #include "pair_granbond.h"
-#include "coeff_words.h"
 #include "core_message.h"
 
 #include "atom.h"
@@ -34,9 +33,6 @@ const char *const kBond = "bond/nonlinear";
 const char *const kLinear = "bond/linear";
 
 }
-
-using words::Args;
-using words::Clause;
 
 // pair_style granbond [energy yes|no]: the models are per type pair; the
 // one setting is whether the bonds' energy budget is kept (compute pair
@@ -65,36 +61,14 @@ void PairGranbond::coeff(int narg, char **arg)
     utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
     utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
-    Args a(narg, arg, error, 2, std::string("pair_coeff ") + arg[0] + " " + arg[1]);
+    // the core reads the words: the tables' rows and phrases, the bond law's
+    // defaults, what the contact does under the bond where the line does not say
     TypePair tp;
     std::memset(&tp, 0, sizeof tp);
-    granbond_voigt_params_default(&tp.voigt);
-    granbond_bond_params_default_in_units(update->unit_style, 0, &tp.bond);
-    tp.hasBond = 0;
-
-    const std::string model = a.word("model (" + std::string(kVoigt) + ")");
-    if (model != kVoigt) a.fail("unknown model '" + model + "' (expected " + kVoigt + ")");
-    Clause<GbVoigtParams> voigt(a, kVoigt, &granbond_voigt_parameter_info, &granbond_voigt_phrase_info,
-                                &granbond_voigt_params_set, tp.voigt);
-    voigt.head();
-    while (!a.done() && a.peek() != kBond && a.peek() != kLinear)
-        if (!voigt.next())
-            a.fail("unknown keyword '" + a.peek() + "' (known: " + voigt.known() + ", then " + kBond + " or " +
-                   kLinear + ")");
-    if (!a.done()) {
-        const char *const law = a.word(kBond) == kLinear ? kLinear : kBond;
-        tp.hasBond = 1;
-        // the law's own defaults (the linear bond's differ)
-        granbond_bond_params_default_in_units(update->unit_style, law == kLinear, &tp.bond);
-        const std::vector<std::string> given = words::readBondClause(a, law, tp.bond);
-        // unless the deck says, what the contact does under the bond is the
-        // law's (the core's rule)
-        GbParameterInfo row;
-        bool underBondGiven = false;
-        for (size_t id = 0; id < given.size() && granbond_bond_parameter_info(id, &row) == GB_STATUS_OK; id++)
-            if (std::string(row.keyword) == "contact_under_bond") underBondGiven = !given[id].empty();
-        if (!underBondGiven) granbond_bond_params_contact_under_bond_by_law(&tp.bond);
-    }
+    const std::string command = std::string("pair_coeff ") + arg[0] + " " + arg[1];
+    if (granbond_pair_coeff_read(command.c_str(), arg + 2, static_cast<size_t>(narg - 2), update->unit_style,
+                                 &tp.voigt, &tp.bond, &tp.hasBond) != GB_STATUS_OK)
+        error->all(FLERR, coreReason());
 
     int count = 0;
     for (int ti = ilo; ti <= ihi; ti++)

@@ -14,6 +14,7 @@
 #include "utils.h"
 
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -29,101 +30,52 @@ namespace {
 const int kRawMagic = 0x67626e64;      // "gbnd"
 const int kByNameMagic = 0x67626e32;   // "gbn2"
 
-// One table's rows, read from the core, written and read as (length, name,
-// value).
-struct Table {
-    const char *model;
-    size_t count;
-    GbStatus (*info)(size_t, GbParameterInfo *);
-    GbStatus (*get)(const void *, size_t, double *);
-    GbStatus (*set)(void *, const char *, double);
-};
-
-GbStatus bondGet(const void *p, size_t id, double *v) { return granbond_bond_params_get(static_cast<const GbBondParams *>(p), id, v); }
-GbStatus bondSet(void *p, const char *name, double v) { return granbond_bond_params_set(static_cast<GbBondParams *>(p), name, v); }
-GbStatus voigtGet(const void *p, size_t id, double *v) { return granbond_voigt_params_get(static_cast<const GbVoigtParams *>(p), id, v); }
-GbStatus voigtSet(void *p, const char *name, double v) { return granbond_voigt_params_set(static_cast<GbVoigtParams *>(p), name, v); }
-
-Table bondTable() { return {"bond/nonlinear", granbond_bond_parameter_count(), granbond_bond_parameter_info, bondGet, bondSet}; }
-Table voigtTable() { return {"voigt", granbond_voigt_parameter_count(), granbond_voigt_parameter_info, voigtGet, voigtSet}; }
-
-void writeRows(FILE *fp, const Table &t, const void *params, Error *error)
+// A table's rows as the core writes them (granbond_*_params_rows).
+template<class P>
+void writeRows(FILE *fp, GbStatus (*rows)(const P *, uint8_t *, size_t, size_t *), const P &params, Error *error)
 {
-    const int count = static_cast<int>(t.count);
-    fwrite(&count, sizeof(int), 1, fp);
-    for (size_t id = 0; id < t.count; id++) {
-        GbParameterInfo info;
-        double value = 0.0;
-        if (t.info(id, &info) != GB_STATUS_OK || t.get(params, id, &value) != GB_STATUS_OK)
-            error->one(FLERR, std::string("pair_style granbond: writing the restart file: ") + coreReason());
-        const std::string name = info.keyword;
-        const int length = static_cast<int>(name.size());
-        fwrite(&length, sizeof(int), 1, fp);
-        fwrite(name.data(), 1, name.size(), fp);
-        fwrite(&value, sizeof(double), 1, fp);
-    }
+    size_t len = 0;
+    std::vector<uint8_t> buf;
+    if (rows(&params, nullptr, 0, &len) == GB_STATUS_OK) buf.resize(len);
+    if (buf.empty() || rows(&params, buf.data(), buf.size(), &len) != GB_STATUS_OK)
+        error->one(FLERR, std::string("pair_style granbond: writing the restart file: ") + coreReason());
+    fwrite(buf.data(), 1, buf.size(), fp);
 }
 
-// Rank 0 reads; every rank gets the rows.
-struct Row {
-    std::string name;
-    double value;
-};
-
-std::vector<Row> readRows(FILE *fp, int me, MPI_Comm world, Error *error)
+// Rank 0 reads one table's rows as written, every rank gets them; a count
+// or a name length out of bounds stops the reading there, and the core
+// says the file is damaged.
+std::vector<uint8_t> readRows(FILE *fp, int me, MPI_Comm world, Error *error)
 {
-    int count = 0;
-    if (me == 0) utils::sfread(FLERR, &count, sizeof(int), 1, fp, nullptr, error);
-    MPI_Bcast(&count, 1, MPI_INT, 0, world);
-    if (count < 0 || count > 10000)
-        error->all(FLERR, "granbond: the restart file is damaged (a table of " + std::to_string(count) +
-                              " parameters)");
-    std::vector<Row> rows(count);
-    for (Row &r : rows) {
-        int length = 0;
-        if (me == 0) utils::sfread(FLERR, &length, sizeof(int), 1, fp, nullptr, error);
-        MPI_Bcast(&length, 1, MPI_INT, 0, world);
-        if (length <= 0 || length > 200)
-            error->all(FLERR, "granbond: the restart file is damaged (a parameter name of " +
-                                  std::to_string(length) + " characters)");
-        std::vector<char> name(length);
-        if (me == 0) utils::sfread(FLERR, name.data(), 1, length, fp, nullptr, error);
-        MPI_Bcast(name.data(), length, MPI_CHAR, 0, world);
-        if (me == 0) utils::sfread(FLERR, &r.value, sizeof(double), 1, fp, nullptr, error);
-        MPI_Bcast(&r.value, 1, MPI_DOUBLE, 0, world);
-        r.name.assign(name.begin(), name.end());
+    std::vector<uint8_t> rows;
+    auto read = [&](size_t n) {
+        rows.resize(rows.size() + n);
+        utils::sfread(FLERR, rows.data() + rows.size() - n, 1, n, fp, nullptr, error);
+    };
+    if (me == 0) {
+        int count = 0, length = 0;
+        read(sizeof(int));
+        std::memcpy(&count, rows.data(), sizeof(int));
+        for (int k = 0; k < count && k < static_cast<int>(GRANBOND_RESTART_MAX_ROWS); k++) {
+            read(sizeof(int));
+            std::memcpy(&length, rows.data() + rows.size() - sizeof(int), sizeof(int));
+            if (length <= 0 || length > static_cast<int>(GRANBOND_RESTART_MAX_KEYWORD)) break;
+            read(static_cast<size_t>(length) + sizeof(double));
+        }
     }
+    unsigned long long size = rows.size();
+    MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, world);
+    rows.resize(size);
+    MPI_Bcast(rows.data(), static_cast<int>(size), MPI_BYTE, 0, world);
     return rows;
 }
 
-// The rows set on defaults: every keyword of the table once, no other.
-void setRows(const Table &t, const std::vector<Row> &rows, void *params, const std::string &types, Error *error)
+// The parameters the rows set (the core refuses a file of another table).
+template<class P>
+void setRows(GbStatus (*fromRows)(const uint8_t *, size_t, const char *, P *), const std::vector<uint8_t> &rows,
+             P &params, const std::string &what, Error *error)
 {
-    std::vector<char> seen(t.count, 0);
-    for (const Row &r : rows) {
-        size_t id = t.count;
-        for (size_t k = 0; k < t.count && id == t.count; k++) {
-            GbParameterInfo info;
-            if (t.info(k, &info) == GB_STATUS_OK && r.name == info.keyword) id = k;
-        }
-        if (id == t.count)
-            error->all(FLERR, "granbond: the restart file sets '" + r.name + "' for " + types + " (" +
-                                  t.model + "), a keyword this granbond does not know; write the restart file "
-                                  "again with this granbond");
-        seen[id] = 1;
-        if (t.set(params, r.name.c_str(), r.value) != GB_STATUS_OK)
-            error->all(FLERR, "granbond: the restart file's " + types + " (" + t.model +
-                                  "): " + coreReason());
-    }
-    std::string missing;
-    for (size_t k = 0; k < t.count; k++) {
-        GbParameterInfo info;
-        if (!seen[k] && t.info(k, &info) == GB_STATUS_OK) missing += std::string(missing.empty() ? "" : " ") + info.keyword;
-    }
-    if (!missing.empty())
-        error->all(FLERR, "granbond: the restart file does not set " + missing + " for " + types + " (" +
-                              t.model + "), which this granbond reads; write the restart file again with this "
-                              "granbond");
+    if (fromRows(rows.data(), rows.size(), what.c_str(), &params) != GB_STATUS_OK) error->all(FLERR, coreReason());
 }
 
 }
@@ -142,8 +94,8 @@ void PairGranbond::write_restart(FILE *fp)
             // bond's rows restore
             const int flags[2] = {tp.hasBond, tp.bond.contact_under_bond};
             fwrite(flags, sizeof(int), 2, fp);
-            writeRows(fp, voigtTable(), &tp.voigt, error);
-            writeRows(fp, bondTable(), &tp.bond, error);
+            writeRows(fp, &granbond_voigt_params_rows, tp.voigt, error);
+            writeRows(fp, &granbond_bond_params_rows, tp.bond, error);
         }
 }
 
@@ -180,11 +132,9 @@ void PairGranbond::read_restart(FILE *fp)
             MPI_Bcast(flags, 2, MPI_INT, 0, world);
             TypePair tp;
             tp.hasBond = flags[0];
-            granbond_voigt_params_default(&tp.voigt);
-            granbond_bond_params_default(&tp.bond);
             const std::string types = "atom types " + std::to_string(i) + " " + std::to_string(j);
-            setRows(voigtTable(), readRows(fp, me, world, error), &tp.voigt, types, error);
-            setRows(bondTable(), readRows(fp, me, world, error), &tp.bond, types, error);
+            setRows(&granbond_voigt_params_from_rows, readRows(fp, me, world, error), tp.voigt, types, error);
+            setRows(&granbond_bond_params_from_rows, readRows(fp, me, world, error), tp.bond, types, error);
             pairs_[at(i, j)] = tp;
             pairs_[at(j, i)] = tp;
             setflag[j][i] = 1;
@@ -193,12 +143,14 @@ void PairGranbond::read_restart(FILE *fp)
 }
 
 // bond_style granbond's rows of a bond type (restart_rows.h).
-void writeBondRows(FILE *fp, const GbBondParams &params, Error *error) { writeRows(fp, bondTable(), &params, error); }
+void writeBondRows(FILE *fp, const GbBondParams &params, Error *error)
+{
+    writeRows(fp, &granbond_bond_params_rows, params, error);
+}
 
 void readBondRows(FILE *fp, GbBondParams &params, const std::string &what, int me, MPI_Comm world, Error *error)
 {
-    granbond_bond_params_default(&params);
-    setRows(bondTable(), readRows(fp, me, world, error), &params, what, error);
+    setRows(&granbond_bond_params_from_rows, readRows(fp, me, world, error), params, what, error);
 }
 
 }

@@ -201,42 +201,25 @@ private:
 // at the end of each run.
 class FixBondBreakLog : public LAMMPS_NS::Fix {
 public:
-    FixBondBreakLog(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), file_(0)
+    FixBondBreakLog(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
     {
-        if (narg < 4) error->all(FLERR, "Illegal fix bond/breaklog command: fix ID group bond/breaklog FILE [every N]");
-        nevery = 100;
-        for (int iarg = 4; iarg < narg; iarg += 2) {
-            if (strcmp(arg[iarg], "every") == 0 && iarg + 1 < narg) {
-                nevery = atoi(arg[iarg + 1]);
-                if (nevery < 1) error->all(FLERR, "fix bond/breaklog: every must be >= 1");
-            } else {
-                endRun(error, FLERR, std::string("fix bond/breaklog: unknown keyword '") + arg[iarg] +
-                                         "' (the only one is: every N)");
-            }
-        }
-        if (comm->me == 0) {
-            file_ = fopen(arg[3], "w");
-            if (!file_) endRunOnThisRank(lmp, FLERR, std::string("fix bond/breaklog: cannot open ") + arg[3]);
-            fputs(breakLogHeader(), file_);
-            fflush(file_);
-        }
+        std::string wrong = BreakLogFile::words(narg, arg, nevery);
+        if (!wrong.empty()) endRun(error, FLERR, "fix bond/breaklog: " + wrong);
+        wrong = file_.open(arg[3], comm->me);
+        if (!wrong.empty()) endRunOnThisRank(lmp, FLERR, "fix bond/breaklog: " + wrong);
         BondBook::of(lmp).addLogUser();
     }
 
-    ~FixBondBreakLog()
-    {
-        BondBook::of(lmp).removeLogUser();
-        if (file_) fclose(file_);
-    }
+    ~FixBondBreakLog() { BondBook::of(lmp).removeLogUser(); }
 
     int setmask() { return LAMMPS_NS::FixConst::END_OF_STEP | LAMMPS_NS::FixConst::POST_RUN; }
     void end_of_step() { flush(); }
     void post_run() { flush(); }
 
 private:
-    void flush() { writeBreakEvents(BondBook::of(lmp).events(), file_, world); }
+    void flush() { file_.write(BondBook::of(lmp).events(), world); }
 
-    FILE *file_;
+    BreakLogFile file_;
 };
 
 LAMMPS_NS::Compute *createCounter(LAMMPS *lmp, int iarg, int narg, char **arg)

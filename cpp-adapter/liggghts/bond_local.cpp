@@ -2,6 +2,7 @@
 #include "core_message.h"
 #include "bond_book.h"
 #include "bond_columns.h"
+#include "local_rows.h"
 #include "bond_nonlinear_cohesion.h"
 #include "core_bridge.h"
 #include "run_checks.h"
@@ -25,7 +26,7 @@ using LAMMPS_NS::LAMMPS;
 class ComputePairGranLocalBond : public LAMMPS_NS::Compute {
 public:
     ComputePairGranLocalBond(LAMMPS *lmp, int &iarg, int narg, char **arg) :
-        Compute(lmp, iarg, narg, arg), inl_(narg == iarg), data_(0), pointers_(0)
+        Compute(lmp, iarg, narg, arg), inl_(narg == iarg)
     {
         // Without keywords, LIGGGHTS-INL's layout: both centres, both ids
         // and the periodic flag, the loads (inlLayout), then the bond's
@@ -42,8 +43,6 @@ public:
     {
         use_.follow(lmp, 0);
         energyUse_.follow(lmp, 0);
-        std::free(data_);
-        std::free(pointers_);
     }
 
     void init()
@@ -61,7 +60,7 @@ public:
             endRun(error, FLERR, "compute pair/gran/local/bond: cohesion bond/nonlinear has no force pass at step " +
                                      std::to_string(static_cast<long long>(update->ntimestep)) +
                                      " for the present atoms (use it in a run's output, not between runs)");
-        rows_.clear();
+        rows_.values.clear();
         const size_t n = store ? granbond_bond_store_len(store) : 0;
         const int *mask = atom->mask;
         const size_t head = inl_ ? kInlHead : 0, tail = inl_ ? static_cast<size_t>(GRANBOND_BOND_STATE_LEN) : 0;
@@ -94,23 +93,12 @@ public:
                                      std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
                                      std::to_string(static_cast<long long>(atom->tag[j])) + ": " +
                                      (m ? coreReason() : std::string("no bond model for their types")));
-            rows_.insert(rows_.end(), row.begin(), row.end());
+            rows_.values.insert(rows_.values.end(), row.begin(), row.end());
         }
-        const size_t ncols = static_cast<size_t>(size_local_cols > 0 ? size_local_cols : 1);
-        size_local_rows = static_cast<int>(rows_.size() / ncols);
-        // dump local reads vector_local, or array_local as row pointers
-        data_ = static_cast<double *>(std::realloc(data_, sizeof(double) * (rows_.size() + 1)));
-        std::copy(rows_.begin(), rows_.end(), data_);
-        if (size_local_cols == 0) {
-            vector_local = data_;
-            return;
-        }
-        pointers_ = static_cast<double **>(std::realloc(pointers_, sizeof(double *) * (size_local_rows + 1)));
-        for (int r = 0; r < size_local_rows; r++) pointers_[r] = data_ + static_cast<size_t>(r) * ncols;
-        array_local = pointers_;
+        rows_.publish(size_local_cols, size_local_rows, vector_local, array_local);
     }
 
-    double memory_usage() { return static_cast<double>(rows_.capacity()) * 2 * sizeof(double); }
+    double memory_usage() { return rows_.bytes(); }
 
 private:
     // LIGGGHTS-INL's first 9 columns: both centres (in the box), both ids,
@@ -139,9 +127,7 @@ private:
     PairBondsUse energyUse_{&BondNonlinearCohesion::energyOutputUsers};
     const bool inl_;   // no keywords: LIGGGHTS-INL's layout
     BondColumns columns_{true};
-    std::vector<double> rows_;
-    double *data_;
-    double **pointers_;
+    LocalRows rows_;
 };
 
 }

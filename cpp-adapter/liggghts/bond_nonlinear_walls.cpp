@@ -155,8 +155,8 @@ void BondNonlinearCohesion::syncWallTally()
     std::memset(&c, 0, sizeof c);
     granbond_wall_store_counts(wallBonds_->store(), &c);
     tally_.created = c.created;
-    tally_.broken = c.broken_distance + c.broken_tension + c.broken_compression + c.broken_shear;
-    tally_.lost = c.lost_owner_gone + c.lost_partner_unreached + c.lost_id_reused + c.lost_no_model;
+    tally_.broken = brokenCount(c);
+    tally_.lost = lostCount(c);
     tally_.intact = c.intact;
     tally_.passStep = update->ntimestep;
 }

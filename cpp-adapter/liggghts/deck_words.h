@@ -3,7 +3,9 @@
 // `pair_style gran` and `fix wall/gran` (the engine's settings parser reads
 // past the end of the line after a switch without a value, and lets a
 // repeated switch win silently), and the values of granbond's
-// `fix property/global` lines (the engine's reader names no property).
+// `fix property/global` lines (the engine's reader names no property). The
+// core checks the words (granbond_liggghts_settings_check,
+// granbond_liggghts_property_line_check); this hooks the checks in.
 #ifndef GRANBOND_LIGGGHTS_DECK_WORDS_H
 #define GRANBOND_LIGGGHTS_DECK_WORDS_H
 

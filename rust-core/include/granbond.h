@@ -116,7 +116,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 21
+#define GRANBOND_ABI_VERSION 22
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -131,10 +131,32 @@
 #define GRANBOND_CHECK_MESSAGE_LEN 2048
 
 /**
+ * The most rows a restart file's table may hold; a reader stops there (the
+ * file is damaged) rather than read on.
+ */
+#define GRANBOND_RESTART_MAX_ROWS 10000
+
+/**
+ * The longest keyword a restart file's row may hold.
+ */
+#define GRANBOND_RESTART_MAX_KEYWORD 200
+
+/**
  * Bonds one `granbond_bond_store_step_next` steps at most: the length of
  * its `ends` and `outs` arrays.
  */
 #define GRANBOND_BOND_STORE_CHUNK CHUNK
+
+/**
+ * A keyword longer than this marks a damaged file (the tables' longest is
+ * far shorter).
+ */
+#define MAX_KEYWORD 200
+
+/**
+ * More rows than this mark a damaged file.
+ */
+#define MAX_ROWS 10000
 
 /**
  * The recommended step as a fraction of the critical step, for bonds and
@@ -2197,6 +2219,79 @@ enum GbStatus granbond_voigt_phrase_info(size_t id, struct GbPhrase *phrase);
 enum GbStatus granbond_voigt_parameter_part(size_t id, enum GbContactPart *part);
 
 /**
+ * Reads the words of a `pair_coeff` line of `pair_style granbond` after
+ * its type pair (`count` words: `voigt <values> [keyword ...]
+ * [bond/nonlinear | bond/linear keyword ...]`) into `voigt` and `bond`;
+ * `has_bond` 1 where the line has a bond clause (else `bond` holds the
+ * bond law's defaults in `units`, the engine's units style). Where the
+ * line does not give `contact_under_bond`, it follows the bond's law.
+ * A line that does not read is `GB_STATUS_INVALID_ARGUMENT`, the message
+ * naming `command` (the command as the deck wrote it, "pair_coeff 1 2"),
+ * the clause and the word.
+ *
+ * # Safety
+ * `command` and `units` must be null or NUL-terminated strings; `words`
+ * null or `count` pointers, each null or a NUL-terminated string; `voigt`,
+ * `bond` and `has_bond` null or valid for writes.
+ */
+enum GbStatus granbond_pair_coeff_read(const char *command,
+                                       const char *const *words,
+                                       size_t count,
+                                       const char *units,
+                                       struct GbVoigtParams *voigt,
+                                       struct GbBondParams *bond,
+                                       int32_t *has_bond);
+
+/**
+ * Reads the words of a `bond_coeff` line of `bond_style granbond` after
+ * its bond type (`count` words, the bond/nonlinear keywords) into `bond`,
+ * from the defaults. The rows of bonds a pair style forms (when bonds
+ * form, the contact under them) are refused: the topology names these
+ * bonds. Errors as `granbond_pair_coeff_read`'s ("bond_coeff 1").
+ *
+ * # Safety
+ * As `granbond_pair_coeff_read`.
+ */
+enum GbStatus granbond_bond_coeff_read(const char *command,
+                                       const char *const *words,
+                                       size_t count,
+                                       struct GbBondParams *bond);
+
+/**
+ * Checks a LIGGGHTS `fix ID group property/global NAME ...` line (`count`
+ * words after `fix`) where NAME is a granbond property: its style, its
+ * number of atom types and its values, each refusal
+ * (`GB_STATUS_INVALID_ARGUMENT`) naming the fix, the property and the
+ * word. `ours` 1 for a granbond property, 0 for a line left to the engine;
+ * `infinite[k]` 1 where word k is an infinity the property takes, which
+ * the engine's number reader takes only as `1e999`, else 0.
+ *
+ * # Safety
+ * `words` null or `count` pointers, each null or a NUL-terminated string;
+ * `infinite` null or `count` writable `int32_t`; `ours` null or valid for
+ * writes.
+ */
+enum GbStatus granbond_liggghts_property_line_check(const char *const *words,
+                                                    size_t count,
+                                                    int32_t *infinite,
+                                                    int32_t *ours);
+
+/**
+ * Checks the settings words (`count` words) of a LIGGGHTS `command`
+ * (`pair_style gran`, `fix ID group wall/gran`): a name left without a
+ * value at the end of the line, or a switch given twice with different
+ * values, is `GB_STATUS_INVALID_ARGUMENT`, the message naming `command`
+ * and the word.
+ *
+ * # Safety
+ * `command` null or a NUL-terminated string; `words` as in
+ * `granbond_liggghts_property_line_check`.
+ */
+enum GbStatus granbond_liggghts_settings_check(const char *command,
+                                               const char *const *words,
+                                               size_t count);
+
+/**
  * Message of the last failed call on this thread ("" after a success).
  * Valid until the next granbond call on the same thread.
  */
@@ -2407,6 +2502,60 @@ enum GbStatus granbond_voigt_parameter_needed(const struct GbVoigtParams *params
  * those rows. -1 for an `id` beyond the table.
  */
 int32_t granbond_bond_parameter_sets_creation(size_t id);
+
+/**
+ * The bond parameters `params` as a restart file's rows by keyword
+ * (`restart_rows`: the row count, then each row's keyword length, keyword
+ * and value, `int32_t`, bytes and `double` in the machine's byte order),
+ * written to `buf` when `capacity` holds them; their length in bytes to
+ * `len` either way (a `capacity` of 0 asks the length alone).
+ *
+ * # Safety
+ * `params` null or a `GbBondParams`; `buf` null or `capacity` writable
+ * bytes; `len` null or valid for writes.
+ */
+enum GbStatus granbond_bond_params_rows(const struct GbBondParams *params,
+                                        uint8_t *buf,
+                                        size_t capacity,
+                                        size_t *len);
+
+/**
+ * `granbond_bond_params_rows` for the Voigt contact.
+ *
+ * # Safety
+ * As `granbond_bond_params_rows`, with a `GbVoigtParams`.
+ */
+enum GbStatus granbond_voigt_params_rows(const struct GbVoigtParams *params,
+                                         uint8_t *buf,
+                                         size_t capacity,
+                                         size_t *len);
+
+/**
+ * The bond parameters a restart file's rows (`len` bytes at `rows`, as
+ * `granbond_bond_params_rows` wrote them) set, into `params`. Every
+ * keyword of the table once and no other, each value in its range: a
+ * file of another table is `GB_STATUS_INVALID_ARGUMENT`, its message
+ * naming the keywords, `what` (the type pair or bond type) and what to do.
+ *
+ * # Safety
+ * `rows` null or `len` readable bytes; `what` null or a NUL-terminated
+ * string; `params` null or valid for writes.
+ */
+enum GbStatus granbond_bond_params_from_rows(const uint8_t *rows,
+                                             size_t len,
+                                             const char *what,
+                                             struct GbBondParams *params);
+
+/**
+ * `granbond_bond_params_from_rows` for the Voigt contact.
+ *
+ * # Safety
+ * As `granbond_bond_params_from_rows`, with a `GbVoigtParams`.
+ */
+enum GbStatus granbond_voigt_params_from_rows(const uint8_t *rows,
+                                              size_t len,
+                                              const char *what,
+                                              struct GbVoigtParams *params);
 
 /**
  * A new, empty store, written to `store`. Free it with

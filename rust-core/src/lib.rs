@@ -15,13 +15,16 @@
 
 pub mod bond;
 pub mod bond_store;
+pub mod coeff;
 pub mod contact;
 pub mod ffi;
 pub mod integrate;
 pub mod kinematics;
+pub mod liggghts_words;
 pub mod pair_source;
 pub mod parameters;
 pub mod real;
+pub mod restart_rows;
 pub mod simd;
 pub mod stability;
 pub mod state_layout;

@@ -227,6 +227,17 @@ pub struct ParameterError {
     pub message: String,
 }
 
+impl ParameterError {
+    /// What the parameter must be, as the message says it (between "must
+    /// be" and the value given), for a message that names the value as a
+    /// deck wrote it.
+    pub fn requirement(&self) -> Option<&str> {
+        let from = self.message.find(" must be ")? + " must be ".len();
+        let to = self.message.rfind("; got ")?;
+        (to > from).then(|| &self.message[from..to])
+    }
+}
+
 impl std::fmt::Display for ParameterError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&self.message)

@@ -23,31 +23,15 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
-from deck_runner import Failure, main, run_deck  # noqa: E402
+from deck_runner import Failure, main, run_deck, thermo_rows  # noqa: E402
 
 FOLDER = os.path.join(HERE, "decks", "bad_input")
 MUTATION = os.path.join(HERE, "decks", "mutation")
 
 
-def thermo_rows(text, first):
-    """The numeric rows of the thermo table whose header starts with `first`."""
-    rows, inside = [], False
-    for line in text.splitlines():
-        words = line.split()
-        if words[:1] == [first]:
-            inside = True
-            continue
-        if inside:
-            try:
-                rows.append([float(w) for w in words])
-            except ValueError:
-                inside = False
-    return rows
-
-
 def apart(text):
     """The spheres never pass through each other: r = x2 - x1 stays > 0."""
-    rows = thermo_rows(text, "Step")
+    rows = thermo_rows(text)
     if not rows:
         return "no thermo rows"
     if any(r[1] <= 0.0 for r in rows):
@@ -60,7 +44,7 @@ def quiet_and_bonded(text):
     warnings = [l for l in text.splitlines() if l.startswith("WARNING")]
     if warnings:
         return f"warned about a deck whose radii are set before its run: {warnings}"
-    rows = thermo_rows(text, "Step")
+    rows = thermo_rows(text)
     if not rows or rows[-1][1] != 1.0:
         return f"no bond formed: {rows}"
     return None

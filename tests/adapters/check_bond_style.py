@@ -78,7 +78,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
 import deck_runner  # noqa: E402
-from deck_runner import Failure, main, run_deck  # noqa: E402
+from deck_runner import Failure, main, run_deck, thermo_rows  # noqa: E402
 
 DECKS = os.path.join(HERE, "decks", "bond_style")
 
@@ -106,20 +106,6 @@ def printed(text, tag):
         if line.startswith(tag + " "):
             return [float(w) for w in re.findall(r"-?[0-9][0-9.eE+-]*", line[len(tag):])]
     raise Failure(f"no line {tag!r} in the output:\n{text[-2000:]}")
-
-
-def thermo_rows(text, first):
-    """Rows of the thermo blocks whose header starts with `first`."""
-    rows, on = [], False
-    for line in text.splitlines():
-        words = line.split()
-        if words[:1] == ["Step"]:
-            on = words[:len(first)] == first
-        elif line.startswith("Loop time"):
-            on = False
-        elif on and words and words[0].isdigit():
-            rows.append([float(w) for w in words])
-    return rows
 
 
 def same_momentum(label, p0, p1):

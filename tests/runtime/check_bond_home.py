@@ -97,8 +97,8 @@ sys.path.insert(0, HERE)
 
 import deck_runner  # noqa: E402
 from check_bond_index import launcher  # noqa: E402
-from check_runtime import thermo_column, warnings_in_log  # noqa: E402
-from deck_runner import Failure, run_modes, run_ok  # noqa: E402
+from check_runtime import warnings_in_log  # noqa: E402
+from deck_runner import Failure, run_modes, run_ok, thermo_column  # noqa: E402
 
 DECKS = os.path.join(HERE, "decks", "bond_home")
 BASE = {"base": os.path.join(DECKS, "base")}

@@ -83,17 +83,8 @@ def launcher(a, n):
 
 def thermo_rows(workdir):
     """The rows of every thermo block of the run's log, as numbers."""
-    rows, header = [], None
     with open(os.path.join(workdir, "log.lammps"), encoding="utf-8", errors="replace") as f:
-        for line in f:
-            words = line.split()
-            if words[:1] == ["Step"]:
-                header = words
-            elif line.startswith("Loop time"):
-                header = None
-            elif header and len(words) == len(header) and words[0].isdigit():
-                rows.append([float(w) for w in words])
-    return rows
+        return [row for _, rows in deck_runner.thermo_blocks(f.read()) for _, row in rows]
 
 
 def counts(workdir):

@@ -83,18 +83,8 @@ def broken_column(kind):
 
 def rows_with_lines(log, column):
     """(line number, value of `column`) of every thermo row."""
-    lines = log.splitlines()
-    out, col = [], None
-    for k, line in enumerate(lines):
-        words = line.split()
-        if words[:1] == ["Step"] and column in words:
-            col = words.index(column)
-            continue
-        if col is not None:
-            if words and all(re.fullmatch(r"-?[0-9.]+(e[-+]?[0-9]+)?", w) for w in words) and len(words) > col:
-                out.append((k, float(words[col])))
-            elif line.startswith("Loop time"):
-                col = None
+    out = [(k, row[header.index(column)]) for header, rows in deck_runner.thermo_blocks(log) if column in header
+           for k, row in rows]
     if not out:
         raise Failure(f"no thermo rows with {column}")
     return out

@@ -53,7 +53,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
 import deck_runner  # noqa: E402
-from deck_runner import Failure, main, run_deck  # noqa: E402
+from deck_runner import Failure, main, run_deck, thermo_column  # noqa: E402
 
 deck_runner.DECKS = os.path.join(HERE, "decks")
 
@@ -261,23 +261,6 @@ def check_creation(a, workdir):
 
 
 # ------------------------------------------------------------ renumber
-
-def thermo_column(text, name):
-    """Values of thermo column `name` in every block that has it (LIGGGHTS
-    heads compute columns without the `c_`)."""
-    names = {name, name[2:] if name.startswith("c_") else name}
-    values, header, column = [], None, None
-    for line in text.splitlines():
-        words = line.split()
-        if words[:1] == ["Step"]:
-            found = [k for k, w in enumerate(words) if w in names]
-            header, column = (words, found[0]) if found else (None, None)
-        elif line.startswith("Loop time"):
-            header = None
-        elif header and len(words) == len(header) and words[0].isdigit():
-            values.append(float(words[column]))
-    return values
-
 
 def check_renumber(a, workdir):
     deck = f"renumber_{a.kind}.in"

@@ -37,7 +37,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
 import deck_runner  # noqa: E402
-from deck_runner import Failure, run_deck, run_modes, run_ok  # noqa: E402
+from deck_runner import Failure, run_deck, run_modes, run_ok, thermo_blocks  # noqa: E402
 
 deck_runner.DECKS = os.path.join(HERE, "decks", "workflows")
 
@@ -69,19 +69,14 @@ def check_pour(a, workdir):
     print(f"ok: poured into an empty box: {count} spheres, closest centres {best:.3f} diameters apart")
 
 
+def thermo_of(text, columns):
+    """The rows of the thermo blocks of `columns` columns."""
+    return [row for header, rows in thermo_blocks(text) if len(header) == columns for _, row in rows]
+
+
 def last_thermo(text, columns):
-    """The last thermo row whose first column is a step, as `columns`
-    floats (LAMMPS and LIGGGHTS print the header line `Step ...`)."""
-    rows, inside = [], False
-    for line in text.splitlines():
-        words = line.split()
-        if words[:1] == ["Step"]:
-            inside = True
-            continue
-        if inside and len(words) == columns and words[0].isdigit():
-            rows.append([float(w) for w in words])
-        elif inside and words[:1] == ["Loop"]:
-            inside = False
+    """The last thermo row of `columns` columns, as floats."""
+    rows = thermo_of(text, columns)
     if not rows:
         raise Failure(f"no thermo rows of {columns} columns in:\n{text[-2000:]}")
     return rows[-1]
@@ -89,10 +84,9 @@ def last_thermo(text, columns):
 
 def thermo_at(text, columns, step):
     """The first thermo row of `columns` columns at `step`."""
-    for line in text.splitlines():
-        words = line.split()
-        if len(words) == columns and words[0] == str(step):
-            return [float(w) for w in words]
+    for row in thermo_of(text, columns):
+        if row[0] == step:
+            return row
     raise Failure(f"no thermo row at step {step}")
 
 

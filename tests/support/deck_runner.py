@@ -85,6 +85,43 @@ def read_table(path):
     return rows
 
 
+def thermo_blocks(text):
+    """The thermo blocks of an engine's output, in order, as (header, rows):
+    the words of the block's `Step ...` line, and each row of the block as
+    (line number, numbers), a row being a line of as many numbers as the
+    header has words. LAMMPS and LIGGGHTS both end a block with `Loop time`."""
+    blocks = []
+    for k, line in enumerate(text.splitlines()):
+        words = line.split()
+        if words[:1] == ["Step"]:
+            blocks.append((words, []))
+        elif line.startswith("Loop time"):
+            blocks.append((None, []))
+        elif blocks and blocks[-1][0] and len(words) == len(blocks[-1][0]):
+            try:
+                blocks[-1][1].append((k, [float(w) for w in words]))
+            except ValueError:
+                pass
+    return [b for b in blocks if b[0]]
+
+
+def thermo_rows(text, first=("Step",)):
+    """The rows of the thermo blocks whose header starts with the words
+    `first`, as numbers."""
+    return [row for header, rows in thermo_blocks(text) if header[:len(first)] == list(first) for _, row in rows]
+
+
+def thermo_column(text, name):
+    """Values of thermo column `name` in every block that has it (LIGGGHTS
+    heads compute columns without the `c_`)."""
+    names = {name, name[2:] if name.startswith("c_") else name}
+    values = []
+    for header, rows in thermo_blocks(text):
+        found = [k for k, w in enumerate(header) if w in names]
+        values += [row[found[0]] for _, row in rows] if found else []
+    return values
+
+
 def main(check):
     """Runs `check()`, printing the failure and exiting non-zero on Failure."""
     try:

@@ -58,17 +58,7 @@ def run_tetra(a, workdir, name, dt, tend, variables):
         raise Failure(f"{name}: exit {rc}:\n{text[-2000:]}")
     warnings = [line for line in text.splitlines() if line.startswith("WARNING") and "bond/nonlinear" in line]
     # thermo rows: the last column is the kinetic energy (translational + rotational)
-    energy = []
-    table = False
-    for line in text.splitlines():
-        fields = line.split()
-        if fields[:1] == ["Step"]:
-            table = True
-            continue
-        if table and fields and fields[0].isdigit() and len(fields) == 5:
-            energy.append(float(fields[-1]))
-        elif table and fields[:1] == ["Loop"]:
-            table = False
+    energy = [row[-1] for header, rows in deck_runner.thermo_blocks(text) if len(header) == 5 for _, row in rows]
     if not energy or not energy[0] > 0:
         raise Failure(f"{name}: no kinetic energy in the thermo output:\n{text[-2000:]}")
     return max(energy) / energy[0], warnings

@@ -3,15 +3,19 @@
 //! row's keyword and one value (`break stress ...`, the values after
 //! `voigt`), and the part of the Voigt contact each parameter belongs to
 //! (LIGGGHTS composes the contact from one sub-model per part), so the
-//! engines translate words to table rows without rules of their own.
+//! engines translate words to table rows without rules of their own; and
+//! LAMMPS's `pair_coeff` and `bond_coeff` lines read whole (`coeff`), and
+//! LIGGGHTS's settings and property lines checked (`liggghts_words`).
 
 use super::entry;
 use super::error::{Failure, Status};
-use super::guard::reference_mut;
-use crate::bond::PHRASES;
-use crate::contact::{ContactPart, VOIGT_PARTS, VOIGT_PHRASES};
+use super::guard::{reference, reference_mut, slice, slice_mut};
+use crate::bond::{BondParams, PHRASES};
+use crate::coeff;
+use crate::contact::{ContactPart, VoigtParams, VOIGT_PARTS, VOIGT_PHRASES};
+use crate::liggghts_words;
 use crate::parameters::Phrase;
-use std::ffi::{c_char, CString};
+use std::ffi::{c_char, CStr, CString};
 use std::sync::OnceLock;
 
 /// One phrase (strings in static storage).
@@ -108,4 +112,137 @@ pub unsafe extern "C" fn granbond_voigt_parameter_part(id: usize, part: *mut Con
         .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?
         .1;
     Ok(())
+}
+
+/// A C string argument as UTF-8; `what` names it in the error.
+///
+/// # Safety
+/// `s` must point to a NUL-terminated string.
+unsafe fn text<'a>(s: *const c_char, what: &str) -> Result<&'a str, Failure> {
+    if s.is_null() {
+        return Err(Failure::new(Status::NullPointer, format!("{what} is null")));
+    }
+    CStr::from_ptr(s)
+        .to_str()
+        .map_err(|_| Failure::new(Status::InvalidArgument, format!("{what} is not UTF-8")))
+}
+
+/// The words of a command, as `coeff` reads them.
+///
+/// # Safety
+/// Each pointer of `words` must be null or a NUL-terminated string.
+unsafe fn word_list<'a>(words: &[*const c_char]) -> Result<Vec<&'a str>, Failure> {
+    words
+        .iter()
+        .enumerate()
+        .map(|(k, &w)| text(w, &format!("word {k}")))
+        .collect()
+}
+
+/// Reads the words of a `pair_coeff` line of `pair_style granbond` after
+/// its type pair (`count` words: `voigt <values> [keyword ...]
+/// [bond/nonlinear | bond/linear keyword ...]`) into `voigt` and `bond`;
+/// `has_bond` 1 where the line has a bond clause (else `bond` holds the
+/// bond law's defaults in `units`, the engine's units style). Where the
+/// line does not give `contact_under_bond`, it follows the bond's law.
+/// A line that does not read is `GB_STATUS_INVALID_ARGUMENT`, the message
+/// naming `command` (the command as the deck wrote it, "pair_coeff 1 2"),
+/// the clause and the word.
+///
+/// # Safety
+/// `command` and `units` must be null or NUL-terminated strings; `words`
+/// null or `count` pointers, each null or a NUL-terminated string; `voigt`,
+/// `bond` and `has_bond` null or valid for writes.
+#[entry(command: reference, words: slice(count), units: reference, voigt: reference_mut, bond: reference_mut, has_bond: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_pair_coeff_read(
+    command: *const c_char,
+    words: *const *const c_char,
+    count: usize,
+    units: *const c_char,
+    voigt: *mut VoigtParams,
+    bond: *mut BondParams,
+    has_bond: *mut i32,
+) -> Status {
+    let line = word_list(words)?;
+    let read = coeff::read_pair_coeff(text(command, "command")?, &line, text(units, "units")?)
+        .map_err(|message| Failure::new(Status::InvalidArgument, message))?;
+    *voigt = read.voigt;
+    *bond = read.bond;
+    *has_bond = i32::from(read.has_bond);
+    Ok(())
+}
+
+/// Reads the words of a `bond_coeff` line of `bond_style granbond` after
+/// its bond type (`count` words, the bond/nonlinear keywords) into `bond`,
+/// from the defaults. The rows of bonds a pair style forms (when bonds
+/// form, the contact under them) are refused: the topology names these
+/// bonds. Errors as `granbond_pair_coeff_read`'s ("bond_coeff 1").
+///
+/// # Safety
+/// As `granbond_pair_coeff_read`.
+#[entry(command: reference, words: slice(count), bond: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_coeff_read(
+    command: *const c_char,
+    words: *const *const c_char,
+    count: usize,
+    bond: *mut BondParams,
+) -> Status {
+    let line = word_list(words)?;
+    *bond = coeff::read_bond_coeff(text(command, "command")?, &line)
+        .map_err(|message| Failure::new(Status::InvalidArgument, message))?;
+    Ok(())
+}
+
+/// Checks a LIGGGHTS `fix ID group property/global NAME ...` line (`count`
+/// words after `fix`) where NAME is a granbond property: its style, its
+/// number of atom types and its values, each refusal
+/// (`GB_STATUS_INVALID_ARGUMENT`) naming the fix, the property and the
+/// word. `ours` 1 for a granbond property, 0 for a line left to the engine;
+/// `infinite[k]` 1 where word k is an infinity the property takes, which
+/// the engine's number reader takes only as `1e999`, else 0.
+///
+/// # Safety
+/// `words` null or `count` pointers, each null or a NUL-terminated string;
+/// `infinite` null or `count` writable `int32_t`; `ours` null or valid for
+/// writes.
+#[entry(words: slice(count), infinite: slice_mut(count), ours: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_liggghts_property_line_check(
+    words: *const *const c_char,
+    count: usize,
+    infinite: *mut i32,
+    ours: *mut i32,
+) -> Status {
+    let line = word_list(words)?;
+    let mut flags = vec![false; line.len()];
+    let checked = liggghts_words::check_property_line(&line, &mut flags)
+        .map_err(|message| Failure::new(Status::InvalidArgument, message))?;
+    for (out, flag) in infinite.iter_mut().zip(flags) {
+        *out = i32::from(flag);
+    }
+    *ours = i32::from(checked);
+    Ok(())
+}
+
+/// Checks the settings words (`count` words) of a LIGGGHTS `command`
+/// (`pair_style gran`, `fix ID group wall/gran`): a name left without a
+/// value at the end of the line, or a switch given twice with different
+/// values, is `GB_STATUS_INVALID_ARGUMENT`, the message naming `command`
+/// and the word.
+///
+/// # Safety
+/// `command` null or a NUL-terminated string; `words` as in
+/// `granbond_liggghts_property_line_check`.
+#[entry(command: reference, words: slice(count))]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_liggghts_settings_check(
+    command: *const c_char,
+    words: *const *const c_char,
+    count: usize,
+) -> Status {
+    let line = word_list(words)?;
+    liggghts_words::check_settings(text(command, "command")?, &line)
+        .map_err(|message| Failure::new(Status::InvalidArgument, message))
 }

@@ -4,11 +4,12 @@
 
 use super::entry;
 use super::error::{Failure, Status};
-use super::guard::{reference, reference_mut};
+use super::guard::{reference, reference_mut, slice, slice_mut};
 use crate::bond::{liggghts_name, BondParams, CREATION_ROWS, PAIR_BOND_ROWS, PARAMETERS};
 use crate::contact::{VoigtParams, VOIGT_PARAMETERS};
 use crate::parameters::{set_by_name, ParameterInfo, SetError};
 pub use crate::parameters::{LiggghtsSource, ParameterKind};
+use crate::restart_rows;
 use std::ffi::{c_char, CStr, CString};
 use std::sync::OnceLock;
 
@@ -294,4 +295,126 @@ pub extern "C" fn granbond_bond_parameter_sets_creation(id: usize) -> i32 {
         Some(_) => 0,
         None => -1,
     }
+}
+
+/// The most rows a restart file's table may hold; a reader stops there (the
+/// file is damaged) rather than read on.
+pub const GRANBOND_RESTART_MAX_ROWS: usize = 10_000;
+
+/// The longest keyword a restart file's row may hold.
+pub const GRANBOND_RESTART_MAX_KEYWORD: usize = 200;
+
+const _: () = assert!(
+    GRANBOND_RESTART_MAX_ROWS == restart_rows::MAX_ROWS
+        && GRANBOND_RESTART_MAX_KEYWORD == restart_rows::MAX_KEYWORD
+);
+
+/// `rows` into `buf` when it holds them, their length to `len` either way.
+fn rows_out(rows: Vec<u8>, buf: &mut [u8], len: &mut usize) -> Result<(), Failure> {
+    *len = rows.len();
+    if buf.is_empty() {
+        return Ok(());
+    }
+    let capacity = buf.len();
+    buf.get_mut(..rows.len())
+        .ok_or_else(|| {
+            Failure::new(
+                Status::InvalidArgument,
+                format!(
+                    "capacity {capacity} is less than the {} bytes of the rows",
+                    rows.len()
+                ),
+            )
+        })?
+        .copy_from_slice(&rows);
+    Ok(())
+}
+
+/// Reads restart rows with `read`, naming `what` (NUL-terminated).
+unsafe fn rows_in<T>(
+    read: impl FnOnce(&str) -> Result<T, String>,
+    what: &c_char,
+    params: &mut T,
+) -> Result<(), Failure> {
+    let what = CStr::from_ptr(what).to_string_lossy();
+    *params = read(&what).map_err(|m| Failure::new(Status::InvalidArgument, m))?;
+    Ok(())
+}
+
+/// The bond parameters `params` as a restart file's rows by keyword
+/// (`restart_rows`: the row count, then each row's keyword length, keyword
+/// and value, `int32_t`, bytes and `double` in the machine's byte order),
+/// written to `buf` when `capacity` holds them; their length in bytes to
+/// `len` either way (a `capacity` of 0 asks the length alone).
+///
+/// # Safety
+/// `params` null or a `GbBondParams`; `buf` null or `capacity` writable
+/// bytes; `len` null or valid for writes.
+#[entry(params: reference, buf: slice_mut(capacity), len: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_params_rows(
+    params: *const BondParams,
+    buf: *mut u8,
+    capacity: usize,
+    len: *mut usize,
+) -> Status {
+    rows_out(restart_rows::write(PARAMETERS, params), buf, len)
+}
+
+/// `granbond_bond_params_rows` for the Voigt contact.
+///
+/// # Safety
+/// As `granbond_bond_params_rows`, with a `GbVoigtParams`.
+#[entry(params: reference, buf: slice_mut(capacity), len: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_params_rows(
+    params: *const VoigtParams,
+    buf: *mut u8,
+    capacity: usize,
+    len: *mut usize,
+) -> Status {
+    rows_out(restart_rows::write(VOIGT_PARAMETERS, params), buf, len)
+}
+
+/// The bond parameters a restart file's rows (`len` bytes at `rows`, as
+/// `granbond_bond_params_rows` wrote them) set, into `params`. Every
+/// keyword of the table once and no other, each value in its range: a
+/// file of another table is `GB_STATUS_INVALID_ARGUMENT`, its message
+/// naming the keywords, `what` (the type pair or bond type) and what to do.
+///
+/// # Safety
+/// `rows` null or `len` readable bytes; `what` null or a NUL-terminated
+/// string; `params` null or valid for writes.
+#[entry(rows: slice(len), what: reference, params: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_params_from_rows(
+    rows: *const u8,
+    len: usize,
+    what: *const c_char,
+    params: *mut BondParams,
+) -> Status {
+    rows_in(
+        |w| restart_rows::read("bond/nonlinear", PARAMETERS, rows, w),
+        what,
+        params,
+    )
+}
+
+/// `granbond_bond_params_from_rows` for the Voigt contact.
+///
+/// # Safety
+/// As `granbond_bond_params_from_rows`, with a `GbVoigtParams`.
+#[entry(rows: slice(len), what: reference, params: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_params_from_rows(
+    rows: *const u8,
+    len: usize,
+    what: *const c_char,
+    params: *mut VoigtParams,
+) -> Status {
+    rows_in(
+        |w| restart_rows::read("voigt", VOIGT_PARAMETERS, rows, w),
+        what,
+        params,
+    )
 }

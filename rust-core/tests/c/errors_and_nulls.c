@@ -118,6 +118,59 @@ static GbStatus null_bond_params_contact_under_bond_by_law(struct world *c, int 
     return granbond_bond_params_contact_under_bond_by_law(ARG(k, 0, &c->bond_params));
 }
 
+static const char *const COEFF_WORDS[] = {"voigt", "1e5", "0", "1e5", "0", "0.5", "bond/nonlinear", "k_fn1", "1e3"};
+
+static GbStatus null_pair_coeff_read(struct world *c, int k)
+{
+    return granbond_pair_coeff_read(ARG(k, 0, "pair_coeff 1 1"), ARG(k, 1, COEFF_WORDS), 9, ARG(k, 2, "si"),
+                                    ARG(k, 3, &c->voigt_params), ARG(k, 4, &c->bond_params), ARG(k, 5, &c->flag));
+}
+
+static GbStatus null_bond_coeff_read(struct world *c, int k)
+{
+    return granbond_bond_coeff_read(ARG(k, 0, "bond_coeff 1"), ARG(k, 1, COEFF_WORDS + 7), 2,
+                                    ARG(k, 2, &c->bond_params));
+}
+
+static const char *const PROPERTY_LINE[] = {"p", "all", "property/global", "k_n", "peratomtypepair", "1", "1e5"};
+
+static GbStatus null_liggghts_property_line_check(struct world *c, int k)
+{
+    int32_t infinite[7];
+    return granbond_liggghts_property_line_check(ARG(k, 0, PROPERTY_LINE), 7, ARG(k, 1, infinite), ARG(k, 2, &c->flag));
+}
+
+static GbStatus null_liggghts_settings_check(struct world *c, int k)
+{
+    (void)c;
+    return granbond_liggghts_settings_check(ARG(k, 0, "pair_style gran"), ARG(k, 1, PROPERTY_LINE + 5), 2);
+}
+
+/* Restart rows of the world's parameters, valid for the `_from_rows` calls. */
+static uint8_t ROWS[4096];
+
+static GbStatus null_bond_params_rows(struct world *c, int k)
+{
+    return granbond_bond_params_rows(ARG(k, 0, &c->bond_params), ARG(k, 1, ROWS), sizeof ROWS, ARG(k, 2, &c->index));
+}
+
+static GbStatus null_bond_params_from_rows(struct world *c, int k)
+{
+    granbond_bond_params_rows(&c->bond_params, ROWS, sizeof ROWS, &c->index);
+    return granbond_bond_params_from_rows(ARG(k, 0, ROWS), c->index, ARG(k, 1, "bond type 1"), ARG(k, 2, &c->bond_params));
+}
+
+static GbStatus null_voigt_params_rows(struct world *c, int k)
+{
+    return granbond_voigt_params_rows(ARG(k, 0, &c->voigt_params), ARG(k, 1, ROWS), sizeof ROWS, ARG(k, 2, &c->index));
+}
+
+static GbStatus null_voigt_params_from_rows(struct world *c, int k)
+{
+    granbond_voigt_params_rows(&c->voigt_params, ROWS, sizeof ROWS, &c->index);
+    return granbond_voigt_params_from_rows(ARG(k, 0, ROWS), c->index, ARG(k, 1, "types 1 1"), ARG(k, 2, &c->voigt_params));
+}
+
 static GbStatus null_bond_model_new(struct world *c, int k)
 {
     return granbond_bond_model_new(ARG(k, 0, &c->bond_params), ARG(k, 1, &c->made_bond));
@@ -363,6 +416,14 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_bond_params_default", null_bond_params_default, {"params"}},
     {"granbond_bond_params_default_in_units", null_bond_params_default_in_units, {"units", "params"}},
     {"granbond_bond_params_contact_under_bond_by_law", null_bond_params_contact_under_bond_by_law, {"params"}},
+    {"granbond_pair_coeff_read", null_pair_coeff_read, {"command", "words", "units", "voigt", "bond", "has_bond"}},
+    {"granbond_bond_coeff_read", null_bond_coeff_read, {"command", "words", "bond"}},
+    {"granbond_liggghts_property_line_check", null_liggghts_property_line_check, {"words", "infinite", "ours"}},
+    {"granbond_liggghts_settings_check", null_liggghts_settings_check, {"command", "words"}},
+    {"granbond_bond_params_rows", null_bond_params_rows, {"params", "buf", "len"}},
+    {"granbond_bond_params_from_rows", null_bond_params_from_rows, {"rows", "what", "params"}},
+    {"granbond_voigt_params_rows", null_voigt_params_rows, {"params", "buf", "len"}},
+    {"granbond_voigt_params_from_rows", null_voigt_params_from_rows, {"rows", "what", "params"}},
     {"granbond_bond_model_new", null_bond_model_new, {"params", "model"}},
     {"granbond_bond_parameter_info", null_bond_parameter_info, {"info"}},
     {"granbond_bond_params_set", null_bond_params_set, {"params", "name"}},

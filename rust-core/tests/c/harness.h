@@ -150,6 +150,9 @@ int test_parameter_tables(void);
 int test_bond_params(void);
 int test_voigt_params(void);
 int test_deck_phrases(void);
+int test_coeff_lines(void);
+int test_restart_rows(void);
+int test_liggghts_lines(void);
 /* bond.c */
 int test_bond_create_and_force(void);
 int test_bond_errors(void);

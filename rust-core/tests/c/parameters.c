@@ -568,3 +568,88 @@ int test_deck_phrases(void)
     EXPECT(granbond_voigt_parameter_part(N_VOIGT_FIELDS, &part), GB_STATUS_INVALID_ARGUMENT, "part past the last row");
     return 0;
 }
+
+int test_coeff_lines(void)
+{
+    const char *pair[] = {"voigt", "1e5", "0.1", "2e4", "0", "0.5", "rolling", "1", "0", "0.2", "0",
+                          "bond/nonlinear", "break", "stress", "1e6", "2e6", "k_fn1", "3e4"};
+    const char *twice[] = {"voigt", "1e5", "0.1", "2e4", "0", "0.5", "k_n", "2e5"};
+    const char *creation[] = {"k_fn1", "3e4", "create_step", "5"};
+    GbVoigtParams v;
+    GbBondParams b;
+    int32_t has_bond = -1;
+    EXPECT_OK(granbond_pair_coeff_read("pair_coeff 1 2", pair, 18, "si", &v, &b, &has_bond), "a pair_coeff line");
+    CHECK(has_bond == 1 && v.k_n == 1e5 && v.gamma_n == 0.1 && v.rolling == 1 && v.mu_r == 0.2,
+          "the contact's values, rolling on");
+    CHECK(b.stress_break == 1 && b.max_sigma == 1e6 && b.max_tau == 2e6 && b.k_fn1 == 3e4,
+          "break stress sets the stress switch and both limits");
+    EXPECT_OK(granbond_pair_coeff_read("pair_coeff 1 2", pair, 11, "si", &v, &b, &has_bond), "a contact alone");
+    CHECK(has_bond == 0, "no bond clause");
+    EXPECT(granbond_pair_coeff_read("pair_coeff 1 2", twice, 8, "si", &v, &b, &has_bond), GB_STATUS_INVALID_ARGUMENT,
+           "k_n given twice");
+    CHECK(strstr(granbond_last_error_message(), "pair_coeff 1 2 voigt: 'k_n 2e5' conflicts with 'voigt'") != NULL,
+          say("the message names the command, the clause and both words: %s", granbond_last_error_message()));
+    EXPECT_OK(granbond_bond_coeff_read("bond_coeff 3", creation, 2, &b), "a bond_coeff line");
+    CHECK(b.k_fn1 == 3e4, "k_fn1 read");
+    EXPECT(granbond_bond_coeff_read("bond_coeff 3", creation, 4, &b), GB_STATUS_INVALID_ARGUMENT,
+           "bond_coeff refuses when bonds form");
+    CHECK(strstr(granbond_last_error_message(), "bond_coeff 3 bond/nonlinear: 'create_step' says when bonds form") !=
+              NULL,
+          say("the message names the phrase: %s", granbond_last_error_message()));
+    return 0;
+}
+
+int test_restart_rows(void)
+{
+    uint8_t rows[4096];
+    size_t len = 0, need = 0;
+    GbBondParams b, back;
+    int32_t count = 0;
+    granbond_bond_params_default(&b);
+    b.k_fn1 = 1234.5;
+    EXPECT_OK(granbond_bond_params_rows(&b, NULL, 0, &need), "the rows' length");
+    EXPECT_OK(granbond_bond_params_rows(&b, rows, sizeof rows, &len), "the bond's rows");
+    memcpy(&count, rows, sizeof count);
+    CHECK(len == need && count == (int32_t)granbond_bond_parameter_count(), "one row a parameter");
+    EXPECT(granbond_bond_params_rows(&b, rows, 8, &len), GB_STATUS_INVALID_ARGUMENT, "rows beyond the capacity");
+    EXPECT_OK(granbond_bond_params_rows(&b, rows, sizeof rows, &len), "the bond's rows again");
+    EXPECT_OK(granbond_bond_params_from_rows(rows, len, "bond type 2", &back), "rows read back");
+    {
+        size_t id, same = 0;
+        for (id = 0; id < granbond_bond_parameter_count(); id++) {
+            double x = 0.0, y = 1.0;
+            granbond_bond_params_get(&b, id, &x);
+            granbond_bond_params_get(&back, id, &y);
+            same += x == y || (x != x && y != y);
+        }
+        CHECK(back.k_fn1 == 1234.5 && same == granbond_bond_parameter_count(), "the same parameters");
+    }
+    /* the last row left out: the file of another table */
+    count -= 1;
+    memcpy(rows, &count, sizeof count);
+    EXPECT(granbond_bond_params_from_rows(rows, len, "bond type 2", &back), GB_STATUS_INVALID_ARGUMENT,
+           "a row missing");
+    CHECK(strstr(granbond_last_error_message(), "does not set") != NULL &&
+              strstr(granbond_last_error_message(), "bond type 2") != NULL,
+          say("the message names what is missing and where: %s", granbond_last_error_message()));
+    return 0;
+}
+
+int test_liggghts_lines(void)
+{
+    const char *line[] = {"p", "all", "property/global", "maxSigmaBondnonlinear", "peratomtypepair", "2", "1e6", "inf", "1e6", "1e6"};
+    const char *settings[] = {"contactUnderBond", "on", "contactUnderBond", "off"};
+    int32_t infinite[10], ours = -1;
+    EXPECT_OK(granbond_liggghts_property_line_check(line, 10, infinite, &ours), "a property line");
+    CHECK(ours == 1 && infinite[7] == 1 && infinite[6] == 0, "a granbond property, its infinity flagged");
+    EXPECT(granbond_liggghts_property_line_check(line, 9, infinite, &ours), GB_STATUS_INVALID_ARGUMENT,
+           "a value missing");
+    CHECK(strstr(granbond_last_error_message(), "peratomtypepair 2 needs 4 values, got 3") != NULL,
+          say("the message counts the values: %s", granbond_last_error_message()));
+    EXPECT_OK(granbond_liggghts_settings_check("pair_style gran", settings, 2), "a switch");
+    EXPECT(granbond_liggghts_settings_check("pair_style gran", settings, 4), GB_STATUS_INVALID_ARGUMENT,
+           "a switch given twice");
+    EXPECT(granbond_liggghts_settings_check("pair_style gran", settings, 3), GB_STATUS_INVALID_ARGUMENT,
+           "a switch without a value");
+    return 0;
+}

@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 133] = [
+pub const ENTRY_POINTS: [&str; 141] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -125,6 +125,14 @@ pub const ENTRY_POINTS: [&str; 133] = [
     "granbond_bond_phrase_info",
     "granbond_voigt_phrase_info",
     "granbond_voigt_parameter_part",
+    "granbond_pair_coeff_read",
+    "granbond_bond_coeff_read",
+    "granbond_bond_params_rows",
+    "granbond_liggghts_property_line_check",
+    "granbond_liggghts_settings_check",
+    "granbond_voigt_params_rows",
+    "granbond_bond_params_from_rows",
+    "granbond_voigt_params_from_rows",
     "granbond_last_error_message",
     "granbond_last_error_parameter",
     "granbond_state_len",
@@ -1210,12 +1218,181 @@ impl<'t> Session<'t> {
             assert!((-1..=2).contains(&creation), "sets_creation {creation}");
             self.answer_value("granbond_bond_parameter_sets_creation");
         }
+        self.coeff_lines(id, h, bond);
         if !bond {
             let mut part = Place::new(granbond::contact::ContactPart::Rolling);
             // SAFETY: null, misaligned or valid pointer.
             let status = unsafe { fd::granbond_voigt_parameter_part(id, part.ptr(h)) };
             if self.answer("granbond_voigt_parameter_part", status) {
                 assert!(id < VOIGT_PARAMETERS.len());
+            }
+        }
+    }
+
+    /// A `pair_coeff` line setting row `id` of the table after the contact's
+    /// values, and (bond) a `bond_coeff` line setting it, read whole with
+    /// the results through the same pointer: no input of its own either.
+    fn coeff_lines(&mut self, id: usize, h: Pointer, bond: bool) {
+        let row = if bond {
+            PARAMETERS.get(id).map(|r| (r.name, r.kind()))
+        } else {
+            VOIGT_PARAMETERS.get(id).map(|r| (r.name, r.kind()))
+        };
+        let (keyword, kind) = row.unwrap_or(("no_such_keyword", granbond::parameters::ParameterKind::Real));
+        let value = if kind == granbond::parameters::ParameterKind::Switch {
+            "on"
+        } else {
+            "1"
+        };
+        let mut line: Vec<&str> = vec!["voigt", "1e5", "0", "1e5", "0", "0.5"];
+        if bond {
+            line.push("bond/nonlinear");
+        }
+        line.extend([keyword, value]);
+        let strings: Vec<std::ffi::CString> =
+            line.iter().map(|w| std::ffi::CString::new(*w).unwrap()).collect();
+        let words: Vec<*const c_char> = strings.iter().map(|w| w.as_ptr()).collect();
+        let mut voigt = Place::new(VoigtParams::default());
+        let mut params = Place::new(BondParams::default());
+        let mut has_bond = Place::new(-1i32);
+        // SAFETY: valid words; null, misaligned or valid outputs.
+        let status = unsafe {
+            fd::granbond_pair_coeff_read(
+                c"pair_coeff 1 1".as_ptr(),
+                words.as_ptr(),
+                words.len(),
+                c"si".as_ptr(),
+                voigt.ptr(h),
+                params.ptr(h),
+                has_bond.ptr(h),
+            )
+        };
+        if self.answer("granbond_pair_coeff_read", status) {
+            assert_eq!(has_bond.get(), i32::from(bond));
+            assert!(voigt.get().validate().is_ok());
+        }
+        self.restart_rows(id, h, bond, &params.get(), &voigt.get());
+        self.liggghts_lines(id, h, bond);
+        if bond {
+            // SAFETY: as above.
+            let status = unsafe {
+                fd::granbond_bond_coeff_read(c"bond_coeff 1".as_ptr(), words[7..].as_ptr(), 2, params.ptr(h))
+            };
+            if self.answer("granbond_bond_coeff_read", status) {
+                assert!(
+                    granbond::parameters::check_ranges("bond/nonlinear", PARAMETERS, &params.get()).is_ok()
+                );
+            }
+        }
+    }
+
+    /// A LIGGGHTS property line of row `id`'s name and a settings line,
+    /// the outputs through pointer `h`.
+    fn liggghts_lines(&mut self, id: usize, h: Pointer, bond: bool) {
+        let name = if bond {
+            PARAMETERS.get(id).map(|r| r.liggghts_name)
+        } else {
+            VOIGT_PARAMETERS.get(id).map(|r| r.liggghts_name)
+        };
+        let line = [
+            "p",
+            "all",
+            "property/global",
+            name.unwrap_or("k_n"),
+            "peratomtypepair",
+            "1",
+            "inf",
+        ];
+        let strings: Vec<std::ffi::CString> =
+            line.iter().map(|w| std::ffi::CString::new(*w).unwrap()).collect();
+        let words: Vec<*const c_char> = strings.iter().map(|w| w.as_ptr()).collect();
+        let mut infinite = Place::new([0i32; 7]);
+        let mut ours = Place::new(-1i32);
+        // SAFETY: valid words; null, misaligned or valid outputs of 7.
+        let status = unsafe {
+            fd::granbond_liggghts_property_line_check(
+                words.as_ptr(),
+                7,
+                infinite.ptr(h) as *mut i32,
+                ours.ptr(h),
+            )
+        };
+        if self.answer("granbond_liggghts_property_line_check", status) {
+            assert!(
+                ours.get() == 0 || infinite.get()[6] == 1,
+                "an infinity accepted is flagged"
+            );
+        }
+        let settings = if bond { &words[3..] } else { &words[2..] };
+        // SAFETY: valid words and command.
+        let status = unsafe {
+            fd::granbond_liggghts_settings_check(
+                c"pair_style gran".as_ptr(),
+                settings.as_ptr(),
+                settings.len(),
+            )
+        };
+        self.answer("granbond_liggghts_settings_check", status);
+    }
+
+    /// The parameters as restart rows and back through pointer `h`, the
+    /// rows cut at `id` bytes where `id` is shorter (a damaged file).
+    fn restart_rows(&mut self, id: usize, h: Pointer, bond: bool, b: &BondParams, v: &VoigtParams) {
+        let mut len = Place::new(0usize);
+        let mut buf = vec![0u8; 4096];
+        // SAFETY: valid parameters and buffer; null, misaligned or valid `len`.
+        let status = unsafe {
+            if bond {
+                fp::granbond_bond_params_rows(b, buf.as_mut_ptr(), buf.len(), len.ptr(h))
+            } else {
+                fp::granbond_voigt_params_rows(v, buf.as_mut_ptr(), buf.len(), len.ptr(h))
+            }
+        };
+        let name = if bond {
+            "granbond_bond_params_rows"
+        } else {
+            "granbond_voigt_params_rows"
+        };
+        if !self.answer(name, status) {
+            return;
+        }
+        let n = len.get().min(if id > 0 { id } else { usize::MAX });
+        let mut back_b = Place::new(BondParams::default());
+        let mut back_v = Place::new(VoigtParams::default());
+        // SAFETY: `n` readable bytes; null, misaligned or valid outputs.
+        let (name, status) = unsafe {
+            if bond {
+                let s = fp::granbond_bond_params_from_rows(
+                    buf.as_ptr(),
+                    n,
+                    c"atom types 1 1".as_ptr(),
+                    back_b.ptr(h),
+                );
+                ("granbond_bond_params_from_rows", s)
+            } else {
+                let s = fp::granbond_voigt_params_from_rows(
+                    buf.as_ptr(),
+                    n,
+                    c"atom types 1 1".as_ptr(),
+                    back_v.ptr(h),
+                );
+                ("granbond_voigt_params_from_rows", s)
+            }
+        };
+        if self.answer(name, status) {
+            assert_eq!(n, len.get(), "{name}: OK from rows cut short");
+            if bond {
+                assert_eq!(
+                    format!("{:?}", back_b.get()),
+                    format!("{b:?}"),
+                    "the bond's rows read back"
+                );
+            } else {
+                assert_eq!(
+                    format!("{:?}", back_v.get()),
+                    format!("{v:?}"),
+                    "the contact's rows read back"
+                );
             }
         }
     }
