@@ -13,7 +13,10 @@
 #             + bond/nonlinear, against Hertz alone); with INL=<lmp binary of
 #             LIGGGHTS-INL>, the same deck in INL's own bond/nonlinear
 #             (`-var inl 1`: INL's compute bond/counter takes no keyword;
-#             INL's bond/nonlinear does not feed it, its bond columns read 0)
+#             INL's bond/nonlinear does not feed it, its bond columns read 0).
+#             INL's optimized build lists the deck's two combinations in
+#             src/style_contact_model_user.whitelist before `make`
+#             (docs/performance.md, "Against LIGGGHTS-INL's optimized build")
 #
 #   bench/memory.sh [SIZES]     SIZES: block sides, default "15 32 69"
 #                               (about 1e4, 1e5 and 1e6 bonds)
