@@ -12,9 +12,15 @@
 #   LIGGGHTS  bench/liggghts_block.in in build/bin/liggghts-granbond (Hertz
 #             + bond/nonlinear, against Hertz alone); with INL=<lmp binary of
 #             LIGGGHTS-INL>, the same deck in INL's own bond/nonlinear
+#             (`-var inl 1`: INL's compute bond/counter takes no keyword;
+#             INL's bond/nonlinear does not feed it, its bond columns read 0).
+#             INL's optimized build lists the deck's two combinations in
+#             src/style_contact_model_user.whitelist before `make`
+#             (docs/performance.md, "Against LIGGGHTS-INL's optimized build")
 #
 #   bench/memory.sh [SIZES]     SIZES: block sides, default "15 32 69"
 #                               (about 1e4, 1e5 and 1e6 bonds)
+#   ENGINES="lammps liggghts"   the engines to run (default both)
 #
 # Prints one row per engine, model and size: bonds, bytes a bond, loop time
 # and the ratio of the reference's loop time to the row's (LAMMPS: BPM's;
@@ -154,6 +160,7 @@ for n in $sizes; do
     bonds=$((3 * n * n * n))
     declare -A per loop
     for model in granbond bpm topology; do
+        [[ " ${ENGINES:-lammps liggghts} " == *" lammps "* ]] || continue
         read -r with t < <(LD_LIBRARY_PATH="$libpath${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
             measure "lmp_${model}_$n" "$out" "$lmp" -in "$here/lammps/bpm.in" -var model "$model" -var cells "$n" \
             -var nrun "$nrun" -var plugin "$plugin" -var bonds 1)
@@ -164,6 +171,7 @@ for n in $sizes; do
         loop[$model]=$t
     done
     for model in granbond bpm topology; do
+        [ -n "${loop[$model]:-}" ] || continue
         printf "%-9s %-22s %10d %12s %10s %8s\n" lammps "$model" "$bonds" "${per[$model]}" "${loop[$model]}" \
             "$(awk -v a="${loop[bpm]}" -v b="${loop[$model]}" 'BEGIN {printf "%.2f", a / b}')"
     done
@@ -171,15 +179,20 @@ for n in $sizes; do
     box=$(awk -v n="$n" 'BEGIN {print 0.002 * n + 0.004}')
     boxz=$(awk -v n="$n" 'BEGIN {print 0.002 * n + 0.01}')
     for engine in granbond ${INL:+inl}; do
+        [[ " ${ENGINES:-lammps liggghts} " == *" liggghts "* ]] || continue
         binary="$liggghts"; [ "$engine" = inl ] && binary="$INL"
-        common=(-in "$root/bench/liggghts_block.in" -var n "$n" -var nrun "$nrun" -var speed 0 -var L "$box" -var Lz "$boxz")
+        common=(-in "$root/bench/liggghts_block.in" -var n "$n" -var nrun "$nrun" -var speed 0 -var L "$box" -var Lz "$boxz"
+            -var inl "$( [ "$engine" = inl ] && echo 1 || echo 0)")
         read -r with t < <(measure "lig_${engine}_$n" "$out" "$binary" "${common[@]}" -var bonds 1)
         read -r without _ < <(measure "lig_${engine}_${n}_nobond" "$out" "$binary" "${common[@]}" -var bonds 0)
         lbonds=$((3 * n * n * (n - 1)))   # the block is not periodic
         per[$engine]=$(awk -v a="$with" -v b="$without" -v n="$lbonds" 'BEGIN {printf "%.0f", (a - b) * 1024 / n}')
         loop[$engine]=$t
-        printf "%-9s %-22s %10d %12s %10s %8s\n" liggghts "$engine" "$lbonds" "${per[$engine]}" "$t" \
-            "$( [ -n "${INL:-}" ] && [ -n "${loop[inl]:-}" ] && awk -v a="${loop[inl]}" -v b="$t" 'BEGIN {printf "%.2f", a / b}' || echo -)"
+    done
+    for engine in granbond ${INL:+inl}; do
+        [ -n "${loop[$engine]:-}" ] || continue
+        printf "%-9s %-22s %10d %12s %10s %8s\n" liggghts "$engine" "$lbonds" "${per[$engine]}" "${loop[$engine]}" \
+            "$( [ -n "${INL:-}" ] && awk -v a="${loop[inl]}" -v b="${loop[$engine]}" 'BEGIN {printf "%.2f", a / b}' || echo -)"
     done
     unset per loop
 done

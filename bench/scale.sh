@@ -25,6 +25,13 @@
 #   [ROUNDS=1] [BOND_STEPS=5e7] [SIZES="7 10 15 22 32 47 70"] bench/scale.sh [CSV]
 #       CSV defaults to docs/figures/data/perf_scale.csv; then
 #       python3 bench/plot_scale.py draws docs/figures/perf_scale.png.
+#   ENGINES="liggghts lammps" RANKS="1 2": a part of the study only (its
+#       rows alone in CSV; the speed-up needs rank 1)
+#   CPU=1: also each run's twin with `nrun 0` (setup alone; the bonds form
+#       in step 1 of the loop), and ns per bond-step from CPU time: (CPU
+#       time of the run less its twin's, bonded - without) / (bonds x
+#       steps), 1 rank (user + system, /usr/bin/time), minimum over the
+#       rounds; on a shared host this moves less than the wall clock
 # Takes minutes per round on 2 cores, and the 1e6-bond runs hold over 1 GiB
 # each (docs/performance.md gives the measured figures).
 # Needs the build (cmake -S . -B build && cmake --build build -j2), mpirun
@@ -46,7 +53,7 @@ mpi=(mpirun -np 2 --oversubscribe)
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-# one ENGINE RANKS BONDS N STEPS: one run; prints "loop pair maxrss_kb last_bond_count"
+# one ENGINE RANKS BONDS N STEPS: one run; prints "loop pair maxrss_kb last_bond_count cpu_s"
 one() {
     local engine=$1 ranks=$2 bonds=$3 n=$4 steps=$5
     local cmd=() deck
@@ -64,12 +71,14 @@ one() {
     fi
     local rss
     rss=$(awk -F: '/Maximum resident set size/ {gsub(/ /, "", $2); print $2}' "$work/time.txt")
-    awk -v rss="$rss" -v steps="$steps" -v bonded="$bonds" -v engine="$engine" '
+    local cpu
+    cpu=$(awk -F: '/User time|System time/ {t += $2} END {print t}' "$work/time.txt")
+    awk -v rss="$rss" -v cpu="$cpu" -v steps="$steps" -v bonded="$bonds" -v engine="$engine" '
         /^Loop time of/ {loop = $4}
         /^Pair +\|/ {split($0, f, "|"); gsub(/ /, "", f[3]); pair = f[3]}        # LAMMPS
         /^Pair +time \(%\) =/ {pair = $5}                                        # LIGGGHTS
         engine == "liggghts" && bonded == 1 && $1 == steps {count = $4}         # thermo: c_bc[3]
-        END {if (loop == "") exit 1; print loop, (pair == "" ? "nan" : pair), rss, (count == "" ? "-" : count)}
+        END {if (loop == "") exit 1; print loop, (pair == "" ? "nan" : pair), rss, (count == "" ? "-" : count), cpu}
     ' "$work/run.out" || { echo "scale.sh: no loop time: ${cmd[*]}" >&2; tail -20 "$work/run.out" >&2; exit 1; }
 }
 minimum() { awk -v a="$1" -v b="$2" 'BEGIN {print (b == "" || a + 0 < b + 0) ? a : b}'; }
@@ -79,19 +88,19 @@ start=$(date +%s)
 echo "scale.sh: sizes n = $sizes, $rounds round(s), $bond_steps bond-steps per run, $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
 {
     echo "# bench/scale.sh, $(date -u +%Y-%m-%d), ROUNDS=$rounds BOND_STEPS=$bond_steps, $(nproc) cores, load before $(cut -d' ' -f1-3 /proc/loadavg)"
-    echo "engine,ranks,n,bonds,atoms,steps,loop_bonds_s,loop_nobonds_s,pair_bonds_s,pair_nobonds_s,ns_per_bond_step,maxrss_bonds_kb,maxrss_nobonds_kb,bytes_per_bond,speedup_vs_1rank"
+    echo "engine,ranks,n,bonds,atoms,steps,loop_bonds_s,loop_nobonds_s,pair_bonds_s,pair_nobonds_s,ns_per_bond_step,maxrss_bonds_kb,maxrss_nobonds_kb,bytes_per_bond,speedup_vs_1rank,cpu_ns_per_bond_step"
 } > "$work/csv"
 for n in $sizes; do
     bonds=$((3 * n * n * (n - 1)))
     atoms=$((n * n * n))
     steps=$(awk -v b="$bonds" -v t="$bond_steps" 'BEGIN {s = int(t / b + 0.5); if (s < 100) s = 100; if (s > 20000) s = 20000; print s}')
-    declare -A loop=() pair=() rss=()
+    declare -A loop=() pair=() rss=() cpu=()
     for _ in $(seq "$rounds"); do
-        for ranks in 1 2; do
-            for engine in liggghts lammps; do
+        for ranks in ${RANKS:-1 2}; do
+            for engine in ${ENGINES:-liggghts lammps}; do
                 for b in 1 0; do
                     res=$(one "$engine" "$ranks" "$b" "$n" "$steps")
-                    read -r l p r c <<< "$res"
+                    read -r l p r c u <<< "$res"
                     if [ "$engine" = liggghts ] && [ "$b" = 1 ] && [ "$c" != "$bonds" ]; then
                         echo "scale.sh: LIGGGHTS n = $n: $c bonds at the end, expected $bonds" >&2; exit 1
                     fi
@@ -100,26 +109,33 @@ for n in $sizes; do
                         loop[$k]=$l; pair[$k]=$p
                     fi
                     rss[$k]=$r
+                    if [ -n "${CPU:-}" ] && [ "$ranks" = 1 ]; then
+                        read -r _ _ _ _ u0 <<< "$(one "$engine" "$ranks" "$b" "$n" 0)"
+                        u=$(awk -v a="$u" -v b="$u0" 'BEGIN {print a - b}')
+                        cpu[$k]=$(minimum "$u" "${cpu[$k]:-}")
+                    fi
                 done
             done
         done
     done
-    for engine in liggghts lammps; do
-        for ranks in 1 2; do
+    for engine in ${ENGINES:-liggghts lammps}; do
+        for ranks in ${RANKS:-1 2}; do
             awk -v OFS=, -v e="$engine" -v r="$ranks" -v n="$n" -v b="$bonds" -v a="$atoms" -v s="$steps" \
                 -v lb="${loop[$engine.$ranks.1]}" -v ln="${loop[$engine.$ranks.0]}" \
                 -v pb="${pair[$engine.$ranks.1]}" -v pn="${pair[$engine.$ranks.0]}" \
                 -v rb="${rss[$engine.$ranks.1]}" -v rn="${rss[$engine.$ranks.0]}" \
-                -v l1="${loop[$engine.1.1]}" 'BEGIN {
+                -v l1="${loop[$engine.1.1]}" -v cb="${cpu[$engine.$ranks.1]:-}" -v cn="${cpu[$engine.$ranks.0]:-}" 'BEGIN {
                 ns = (lb - ln) / (b * s) * 1e9
                 bpb = (r == 1) ? sprintf("%.1f", (rb - rn) * 1024 / b) : ""
-                print e, r, n, b, a, s, lb, ln, pb, pn, sprintf("%.2f", ns), rb, rn, bpb, sprintf("%.3f", l1 / lb) }' \
+                cns = (cb == "") ? "" : sprintf("%.2f", (cb - cn) / (b * s) * 1e9)
+                print e, r, n, b, a, s, lb, ln, pb, pn, sprintf("%.2f", ns), rb, rn, bpb, sprintf("%.3f", l1 / lb), cns }' \
                 >> "$work/csv"
         done
     done
-    tail -4 "$work/csv" | awk -F, '{printf "  %-8s %d rank(s) %9d bonds %6d steps: loop %8.3f s (no bonds %7.3f s), %6.1f ns/bond-step, %s bytes/bond, speed-up %s\n",
-        $1, $2, $4, $6, $7, $8, $11, ($14 == "" ? "-" : $14), $15}'
-    unset loop pair rss
+    rows=0; for _ in ${ENGINES:-liggghts lammps}; do for _ in ${RANKS:-1 2}; do rows=$((rows + 1)); done; done
+    tail -"$rows" "$work/csv" | awk -F, '{printf "  %-8s %d rank(s) %9d bonds %6d steps: loop %8.3f s (no bonds %7.3f s), %6.1f ns/bond-step%s, %s bytes/bond, speed-up %s\n",
+        $1, $2, $4, $6, $7, $8, $11, ($16 == "" ? "" : " (CPU " $16 ")"), ($14 == "" ? "-" : $14), $15}'
+    unset loop pair rss cpu
 done
 echo "# load after $(cut -d' ' -f1-3 /proc/loadavg), $(( $(date +%s) - start )) s" >> "$work/csv"
 cp "$work/csv" "$csv"
