@@ -235,11 +235,16 @@ int BondStoreFix::pack_forward_comm(int n, int *list, double *buf, int, int *) {
 void BondStoreFix::unpack_forward_comm(int n, int first, double *buf) { unpackView(n, first, buf); }
 #endif
 
+// The reverse communication clears each ghost's row as it sends it (every
+// ghost is sent once), so the buffer is cleared here only when a pass left
+// it unsent: clearing every ghost's row every pass cost more than the
+// bonds' loads on the few ghosts they touch.
 double *BondStoreFix::ghostLoads()
 {
     const size_t n = 6 * static_cast<size_t>(atom->nghost);
     if (ghostLoads_.size() < n) ghostLoads_.resize(n);
-    std::fill(ghostLoads_.begin(), ghostLoads_.begin() + n, 0.0);
+    if (!ghostsClear_) std::fill(ghostLoads_.begin(), ghostLoads_.end(), 0.0);
+    ghostsClear_ = false;
     return ghostLoads_.data();
 }
 
@@ -252,6 +257,7 @@ void BondStoreFix::returnGhostLoads()
 #else
     comm->reverse_comm_fix(this, 6);
 #endif
+    ghostsClear_ = true;
 }
 
 void BondStoreFix::returnGhostShares(double *table, int width, int column)
@@ -267,8 +273,9 @@ int BondStoreFix::pack_reverse_comm(int n, int first, double *buf)
 {
     const int nlocal = atom->nlocal;
     for (int k = 0; k < n; k++) {
-        const double *g = ghostLoads_.data() + 6 * static_cast<size_t>(first + k - nlocal);
+        double *g = ghostLoads_.data() + 6 * static_cast<size_t>(first + k - nlocal);
         std::copy(g, g + 6, buf + 6 * k);
+        std::fill(g, g + 6, 0.0);
     }
 #ifdef GRANBOND_ENGINE_LIGGGHTS
     return 6;   // LIGGGHTS: doubles per atom
