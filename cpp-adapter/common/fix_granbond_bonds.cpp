@@ -3,6 +3,7 @@
 #endif
 #include "fix_granbond_bonds.h"
 #include "core_message.h"
+#include "vector_adds.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -235,10 +236,10 @@ int BondStoreFix::pack_forward_comm(int n, int *list, double *buf, int, int *) {
 void BondStoreFix::unpack_forward_comm(int n, int first, double *buf) { unpackView(n, first, buf); }
 #endif
 
-// The reverse communication clears each ghost's row as it sends it (every
-// ghost is sent once), so the buffer is cleared here only when a pass left
-// it unsent: clearing every ghost's row every pass cost more than the
-// bonds' loads on the few ghosts they touch.
+// The reverse communication reads every ghost's row once and clears it as
+// it sends it, so a pass starts on cleared rows; a second sweep over all
+// ghosts here would cost, per pass, about as much as the communication.
+// Rows a pass left unsent are cleared here in full.
 double *BondStoreFix::ghostLoads()
 {
     const size_t n = 6 * static_cast<size_t>(atom->nghost);
@@ -284,25 +285,35 @@ int BondStoreFix::pack_reverse_comm(int n, int first, double *buf)
 #endif
 }
 
+// Every ghost comes back each pass, most without a load: the returned
+// shares have their own loop, and the forces and torques are the engine's
+// contiguous rows of 3.
 void BondStoreFix::unpack_reverse_comm(int n, int *list, double *buf)
 {
-    double **f = atom->f, **torque = atom->torque;
+    if (n <= 0) return;
     const int nlocal = atom->nlocal;
+    double *const ghosts = ghostLoads_.data();
+    if (sharesTable_) {
+        for (int k = 0; k < n; k++) {
+            const int i = list[k];
+            double *row = i < nlocal ? sharesTable_ + static_cast<size_t>(i) * sharesWidth_ + sharesColumn_
+                                     : ghosts + 6 * static_cast<size_t>(i - nlocal);
+            for (int c = 0; c < 6; c++) row[c] += buf[6 * k + c];
+        }
+        return;
+    }
+    double *const f0 = atom->f[0], *const t0 = atom->torque[0];
     for (int k = 0; k < n; k++) {
         const int i = list[k];
-        const double *b = buf + 6 * k;
-        if (i < nlocal && sharesTable_) {
-            double *row = sharesTable_ + static_cast<size_t>(i) * sharesWidth_ + sharesColumn_;
-            for (int c = 0; c < 6; c++) row[c] += b[c];
-        } else if (i < nlocal) {
-            for (int c = 0; c < 3; c++) {
-                f[i][c] += b[c];
-                torque[i][c] += b[3 + c];
-            }
+        const double *b = buf + 6 * static_cast<size_t>(k);
+        if (i < nlocal) {
+            add3(f0 + 3 * static_cast<size_t>(i), b);
+            add3(t0 + 3 * static_cast<size_t>(i), b + 3);
         } else {
             // a ghost that is an image of another ghost's atom on this rank
-            double *g = ghostLoads_.data() + 6 * static_cast<size_t>(i - nlocal);
-            for (int c = 0; c < 6; c++) g[c] += b[c];
+            double *g = ghosts + 6 * static_cast<size_t>(i - nlocal);
+            add3(g, b);
+            add3(g + 3, b + 3);
         }
     }
 }
