@@ -3,6 +3,7 @@
 #endif
 #include "fix_granbond_bonds.h"
 #include "core_message.h"
+#include "vector_adds.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -235,11 +236,16 @@ int BondStoreFix::pack_forward_comm(int n, int *list, double *buf, int, int *) {
 void BondStoreFix::unpack_forward_comm(int n, int first, double *buf) { unpackView(n, first, buf); }
 #endif
 
+// The reverse communication reads every ghost's row once and clears it as
+// it sends it, so a pass starts on cleared rows; a second sweep over all
+// ghosts here would cost, per pass, about as much as the communication.
+// Rows a pass left unsent are cleared here in full.
 double *BondStoreFix::ghostLoads()
 {
     const size_t n = 6 * static_cast<size_t>(atom->nghost);
     if (ghostLoads_.size() < n) ghostLoads_.resize(n);
-    std::fill(ghostLoads_.begin(), ghostLoads_.begin() + n, 0.0);
+    if (!ghostsClear_) std::fill(ghostLoads_.begin(), ghostLoads_.end(), 0.0);
+    ghostsClear_ = false;
     return ghostLoads_.data();
 }
 
@@ -252,6 +258,7 @@ void BondStoreFix::returnGhostLoads()
 #else
     comm->reverse_comm_fix(this, 6);
 #endif
+    ghostsClear_ = true;
 }
 
 void BondStoreFix::returnGhostShares(double *table, int width, int column)
@@ -267,8 +274,9 @@ int BondStoreFix::pack_reverse_comm(int n, int first, double *buf)
 {
     const int nlocal = atom->nlocal;
     for (int k = 0; k < n; k++) {
-        const double *g = ghostLoads_.data() + 6 * static_cast<size_t>(first + k - nlocal);
+        double *g = ghostLoads_.data() + 6 * static_cast<size_t>(first + k - nlocal);
         std::copy(g, g + 6, buf + 6 * k);
+        std::fill(g, g + 6, 0.0);
     }
 #ifdef GRANBOND_ENGINE_LIGGGHTS
     return 6;   // LIGGGHTS: doubles per atom
@@ -277,25 +285,35 @@ int BondStoreFix::pack_reverse_comm(int n, int first, double *buf)
 #endif
 }
 
+// Every ghost comes back each pass, most without a load: the returned
+// shares have their own loop, and the forces and torques are the engine's
+// contiguous rows of 3.
 void BondStoreFix::unpack_reverse_comm(int n, int *list, double *buf)
 {
-    double **f = atom->f, **torque = atom->torque;
+    if (n <= 0) return;
     const int nlocal = atom->nlocal;
+    double *const ghosts = ghostLoads_.data();
+    if (sharesTable_) {
+        for (int k = 0; k < n; k++) {
+            const int i = list[k];
+            double *row = i < nlocal ? sharesTable_ + static_cast<size_t>(i) * sharesWidth_ + sharesColumn_
+                                     : ghosts + 6 * static_cast<size_t>(i - nlocal);
+            for (int c = 0; c < 6; c++) row[c] += buf[6 * k + c];
+        }
+        return;
+    }
+    double *const f0 = atom->f[0], *const t0 = atom->torque[0];
     for (int k = 0; k < n; k++) {
         const int i = list[k];
-        const double *b = buf + 6 * k;
-        if (i < nlocal && sharesTable_) {
-            double *row = sharesTable_ + static_cast<size_t>(i) * sharesWidth_ + sharesColumn_;
-            for (int c = 0; c < 6; c++) row[c] += b[c];
-        } else if (i < nlocal) {
-            for (int c = 0; c < 3; c++) {
-                f[i][c] += b[c];
-                torque[i][c] += b[3 + c];
-            }
+        const double *b = buf + 6 * static_cast<size_t>(k);
+        if (i < nlocal) {
+            add3(f0 + 3 * static_cast<size_t>(i), b);
+            add3(t0 + 3 * static_cast<size_t>(i), b + 3);
         } else {
             // a ghost that is an image of another ghost's atom on this rank
-            double *g = ghostLoads_.data() + 6 * static_cast<size_t>(i - nlocal);
-            for (int c = 0; c < 6; c++) g[c] += b[c];
+            double *g = ghosts + 6 * static_cast<size_t>(i - nlocal);
+            add3(g, b);
+            add3(g + 3, b + 3);
         }
     }
 }

@@ -116,6 +116,7 @@ private:
 
     GbBondStore *store_;
     std::vector<double> ghostLoads_;
+    bool ghostsClear_ = false;   // every row of ghostLoads_ zero (the last pass's sent)
     double *sharesTable_ = nullptr;   // returnGhostShares' table while it runs
     int sharesWidth_ = 0, sharesColumn_ = 0;
     std::vector<double> row_;   // one atom's whole view row, while paged

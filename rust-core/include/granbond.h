@@ -99,9 +99,13 @@
 #define DISSIPATED_BYTES_PER_BOND (2 * 8)
 
 /**
- * Bonds one [`BondStore::step_next`] steps at most.
+ * Bonds one [`BondStore::step_next`] steps at most. Each call pays the
+ * entry's checks, the run and index passes and the kernel's set-up once:
+ * 128 bonds spread that over twice as many bonds as 64, and their outputs
+ * (about 15 KB) still sit in the first-level cache while the engine adds
+ * them to its atoms.
  */
-#define CHUNK 64
+#define CHUNK 128
 
 /**
  * Doubles one packed bond takes: its wall, its state, its latest output.
@@ -116,7 +120,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 22
+#define GRANBOND_ABI_VERSION 23
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
