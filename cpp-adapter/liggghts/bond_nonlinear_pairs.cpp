@@ -143,37 +143,51 @@ void BondNonlinearCohesion::stepBonds(bool advance)
     const double *const x0 = atom->x[0];
     const int nlocal = atom->nlocal;
     const int newton = force->newton_pair;
-    const bool virial = pair_->evflag != 0;
     double *const ghosts = ghostLoads_;
     LAMMPS_NS::PairGran *const pair = pair_;
-    stepStoreChunks(
-        bonds_->store(), parameters_.table(), kinds_.size(), atom, atomIdsOf(atom),
-        bondOutputUsers > 0 && advance ? &outputs_ : nullptr,
-        // (by value: the pointers and switches stay in registers through
-        // the stores to the atoms)
-        [=](int i, int j, const GbBondOutput &o) {
-            const double relaxI = pair->relax(i), relaxJ = pair->relax(j);
-            addScaled3(f0 + 3 * static_cast<size_t>(i), relaxI, o.force_i);
-            addScaled3(t0 + 3 * static_cast<size_t>(i), relaxI, o.torque_i);
-            if (j < nlocal || newton) {
-                subtractScaled3(f0 + 3 * static_cast<size_t>(j), relaxJ, o.force_i);
-                addScaled3(t0 + 3 * static_cast<size_t>(j), relaxJ, o.torque_j);
-            } else {
-                double *g = ghosts + 6 * static_cast<size_t>(j - nlocal);
-                subtractScaled3(g, relaxJ, o.force_i);
-                addScaled3(g + 3, relaxJ, o.torque_j);
-            }
-            if (virial) {
-                const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
-                // each bond is stepped on one rank: its whole virial here
-                pair->ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, o.force_i[0], o.force_i[1], o.force_i[2],
-                                   xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
-            }
-        },
-        [&](int i, int j, const std::string &why) {
-            if (i >= 0) failPair(i, j, "the bond");
-            endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: the bonds: " + why);
-        });
+    // (by value: the pointers and switches stay in registers through the
+    // stores to the atoms; the output read whole before the first store,
+    // which the compiler cannot tell apart from it)
+    const auto add = [=](int i, int j, const GbBondOutput &o) {
+        const double relaxI = pair->relax(i), relaxJ = pair->relax(j);
+        GbBondOutput out;
+        for (int c = 0; c < 3; c++) {
+            out.force_i[c] = o.force_i[c];
+            out.torque_i[c] = o.torque_i[c];
+            out.torque_j[c] = o.torque_j[c];
+        }
+        const size_t a = 3 * static_cast<size_t>(i);
+        addScaled3(f0 + a, relaxI, out.force_i);
+        addScaled3(t0 + a, relaxI, out.torque_i);
+        if (j < nlocal || newton) {
+            const size_t b = 3 * static_cast<size_t>(j);
+            subtractScaled3(f0 + b, relaxJ, out.force_i);
+            addScaled3(t0 + b, relaxJ, out.torque_j);
+        } else {
+            double *g = ghosts + 6 * static_cast<size_t>(j - nlocal);
+            subtractScaled3(g, relaxJ, out.force_i);
+            addScaled3(g + 3, relaxJ, out.torque_j);
+        }
+    };
+    const auto failed = [&](int i, int j, const std::string &why) {
+        if (i >= 0) failPair(i, j, "the bond");
+        endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: the bonds: " + why);
+    };
+    std::vector<GbBondOutput> *const kept = bondOutputUsers > 0 && advance ? &outputs_ : nullptr;
+    // the virial's switch taken once a pass, not once a bond
+    if (pair_->evflag == 0) {
+        stepStoreChunks(bonds_->store(), parameters_.table(), kinds_.size(), atom, atomIdsOf(atom), kept, add, failed);
+        return;
+    }
+    stepStoreChunks(bonds_->store(), parameters_.table(), kinds_.size(), atom, atomIdsOf(atom), kept,
+                    [=](int i, int j, const GbBondOutput &o) {
+                        add(i, j, o);
+                        const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+                        // each bond is stepped on one rank: its whole virial here
+                        pair->ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, o.force_i[0], o.force_i[1], o.force_i[2],
+                                           xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
+                    },
+                    failed);
 }
 
 // The bonds that broke in the pass so far: their pairs leave the bonded
