@@ -420,9 +420,10 @@ def check_wall_insert(a, workdir):
         table = list(zip(steps, rows, fx, fz))
         if reference is None:
             reference = table
-        # the layer's spheres touch nothing but the plane, so 2 ranks step
-        # the same bonds; only fcm's sum over ranks is taken in another
-        # order (round-off of the sum)
+        # LIGGGHTS places and numbers inserted spheres by rank, so only the
+        # layer is compared: its spheres touch nothing but the plane, so 2
+        # ranks step the same bonds; only fcm's sum over ranks is taken in
+        # another order (round-off of the sum)
         ref_scale = max(max(abs(x), abs(z)) for _, _, x, z in reference)
         worst = max((max(abs(x - u), abs(z - w)) for (_, _, x, z), (_, _, u, w) in zip(table, reference)),
                     default=math.inf)
