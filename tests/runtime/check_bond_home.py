@@ -82,6 +82,19 @@ per mode (LAMMPS unless said):
              ranks), the bond stays on its mesh: the same counts and table;
              the bonded mesh left out of the wall fix is an ERROR naming
              the meshes of the file and of the deck.
+  wallinsert LIGGGHTS: a layer of four spheres bonded to a mesh plane at
+             step 1, the plane sliding and sinking so that the bonds carry
+             shear and tension and drag one sphere across the boundary of 2
+             ranks, while fix insert/rate/region throws 24 spheres at the
+             plane elsewhere (decks/bond_home/wall_bonds_insert.in), on 1
+             and 2 ranks: at every output the wall bonds number created 4,
+             intact 4, nothing broken or lost, created = broken + intact +
+             lost; every inserted sphere that touches the plane does so
+             unbonded (its contacts' bond flag 0, compute wall/gran/local)
+             while the layer's contacts hold theirs; 2 ranks give the 1-rank
+             counts and the layer's force to 1e-12 of its largest value;
+             the store recounted after every pass, the wall bonds' store at
+             every output (GRANBOND_CHECK_STORE).
 
 usage: check_bond_home.py --mode MODE --kind lammps|liggghts --engine BIN
                           [--mpiexec MPIEXEC] --workdir DIR
@@ -349,6 +362,78 @@ def check_edge(a, workdir):
               f"{x[-1] * 1e3:.3g} mm, the same table as on 1 rank")
 
 
+def wall_contacts(path):
+    """The rows (step, atom id, bond flag) of a dump of compute
+    wall/gran/local id history (columns: mesh, triangle, atom id, flag)."""
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().splitlines()
+    rows, step = [], None
+    for k, line in enumerate(lines):
+        if line.startswith("ITEM: TIMESTEP"):
+            step = int(lines[k + 1])
+        elif not line.startswith("ITEM") and step is not None and len(line.split()) == 4:
+            _, _, atom, flag = (float(v) for v in line.split())
+            rows.append((step, int(atom), flag))
+    return rows
+
+
+def check_wall_insert(a, workdir):
+    ranks = [1, 2] if a.mpiexec else [1]
+    env = {"GRANBOND_CHECK_STORE": "1"}
+    layer = 4
+    reference = None
+    for n in ranks:
+        d = os.path.join(workdir, f"np{n}")
+        text = run(a, n, "wall_bonds_insert.in", d, {"px": n}, env)
+        if "recounting the bonds after every pass" not in text or "recounting the wall bonds" not in text:
+            raise Failure("wall_bonds_insert.in: the store check (pairs and walls) did not run")
+        steps, atoms = thermo_column(text, "Step"), thermo_column(text, "Atoms")
+        rows = list(zip(*[thermo_column(text, f"c_bc[{k}]") for k in (4, 5, 6, 8)]))
+        # LIGGGHTS heads variable columns without the `v_`
+        fx, fz, x3 = (thermo_column(text, c) for c in ("fx", "fz", "x3"))
+        label = f"{n} rank{'s' if n > 1 else ''}"
+        if not atoms or atoms[-1] != layer + 24:
+            raise Failure(f"{label}: {atoms[-1:]} atoms at the end, want the layer and 24 inserted spheres")
+        bad = [(t, r) for t, r in zip(steps, rows) if t > 0 and r != (layer, 0, layer, 0)
+               or r[0] != r[1] + r[2] + r[3]]
+        if not rows or bad:
+            raise Failure(f"{label}: wall bonds (step, (created, broken, intact, lost)) {bad[:4]}: want the "
+                          f"layer's {layer} bonds, (4, 0, 4, 0), at every output after step 0")
+        # the third sphere starts at x = 1 mm, on rank 1 of 2: dragged past
+        # x = 0, its bond migrated
+        if x3[-1] > -5e-4:
+            raise Failure(f"{label}: the dragged sphere ends at x = {x3[-1]:.3g} m, want it past x = 0")
+        scale = max(abs(f) for f in fx + fz)
+        if scale < 1e-3:
+            raise Failure(f"{label}: the layer's force is at most {scale:.3g} N: the bonds carry no load")
+        contacts = wall_contacts(os.path.join(d, "wall.dump"))
+        inserted = [(t, i, f) for t, i, f in contacts if i > layer]
+        held = [(t, i, f) for t, i, f in inserted if f != 0]
+        loose = [(t, i, f) for t, i, f in contacts if i <= layer and t > 0 and f != 1]
+        if not inserted or held or loose:
+            raise Failure(f"{label}: {len(inserted)} contacts of inserted spheres with the plane, bonded ones "
+                          f"(step, id, flag) {held[:4]}; layer contacts without their bond {loose[:4]}: want "
+                          "inserted spheres on the plane unbonded and the layer bonded")
+        warned = warnings_in_log(d)
+        if warned:
+            raise Failure(f"{label}: a correct deck warned: {warned}")
+        table = list(zip(steps, rows, fx, fz))
+        if reference is None:
+            reference = table
+        # LIGGGHTS places and numbers inserted spheres by rank, so only the
+        # layer is compared: its spheres touch nothing but the plane, so 2
+        # ranks step the same bonds; only fcm's sum over ranks is taken in
+        # another order (round-off of the sum)
+        ref_scale = max(max(abs(x), abs(z)) for _, _, x, z in reference)
+        worst = max((max(abs(x - u), abs(z - w)) for (_, _, x, z), (_, _, u, w) in zip(table, reference)),
+                    default=math.inf)
+        if [t[:2] for t in table] != [t[:2] for t in reference] or worst > 1e-12 * ref_scale:
+            raise Failure(f"{label}: the counts or the layer's force differ from 1 rank's (force by {worst:.3g} N)")
+        print(f"ok: {label}: wall bonds (4, 0, 4, 0) at every output with {atoms[-1]:g} atoms, "
+              f"{len(inserted)} contacts of inserted spheres all unbonded, layer force up to {scale:.3g} N "
+              f"within {worst:.2g} N of 1 rank's, sphere 3 dragged to x = {x3[-1] * 1e3:.3g} mm")
+
+
 def budget_drift(text):
     # LIGGGHTS heads a variable's column without the `v_`
     total = thermo_column(text, "v_total") or thermo_column(text, "total")
@@ -546,5 +631,5 @@ def check_budget(a, workdir):
 if __name__ == "__main__":
     run_modes(__doc__, {"newton": check_newton, "switch": check_switch, "settype": check_settype, "data": check_data,
                          "rerun": check_rerun, "momentum": check_momentum, "energy": check_energy,
-                         "insert": check_insert, "edge": check_edge,
+                         "insert": check_insert, "edge": check_edge, "wallinsert": check_wall_insert,
                          "budget": check_budget})
