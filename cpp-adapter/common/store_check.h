@@ -15,6 +15,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +38,26 @@ inline std::vector<std::pair<double, double>> gatheredPairs(const std::vector<do
     for (size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
     std::sort(pairs.begin(), pairs.end());
     return pairs;
+}
+
+// The first pair of the sorted `pairs` that is held twice, or null.
+inline const std::pair<double, double> *repeatedPair(const std::vector<std::pair<double, double>> &pairs)
+{
+    for (size_t k = 1; k < pairs.size(); k++)
+        if (pairs[k] == pairs[k - 1]) return &pairs[k];
+    return nullptr;
+}
+
+// What is wrong with the counts of all ranks (empty: nothing): `local` is
+// this rank's (created, broken, intact, lost), `created` the words for the
+// first. Collective, so every rank calls it whatever else it found.
+inline std::string unbalancedCounts(const std::array<long long, 4> &local, const char *created, MPI_Comm world)
+{
+    std::array<long long, 4> sums = {};
+    MPI_Allreduce(local.data(), sums.data(), 4, MPI_LONG_LONG, MPI_SUM, world);
+    if (sums[0] == sums[1] + sums[2] + sums[3]) return std::string();
+    return std::to_string(sums[0]) + " " + created + ", " + std::to_string(sums[1]) + " broken, " +
+           std::to_string(sums[2]) + " intact, " + std::to_string(sums[3]) + " lost";
 }
 
 // What is wrong with the bonds of `store` on this rank (empty: nothing).
@@ -63,19 +84,14 @@ std::string checkStoredBonds(const GbBondStore *store, const Tag *tag, int nloca
     }
     // every bond once: the pairs of all ranks, gathered
     const std::vector<std::pair<double, double>> pairs = gatheredPairs(mine, world);
-    for (size_t k = 1; k < pairs.size() && wrong.empty(); k++)
-        if (pairs[k] == pairs[k - 1])
-            wrong = "the bond of atoms " + std::to_string(static_cast<long long>(pairs[k].first)) + " and " +
-                    std::to_string(static_cast<long long>(pairs[k].second)) + " is stored twice";
+    const std::pair<double, double> *twice = repeatedPair(pairs);
+    if (wrong.empty() && twice)
+        wrong = "the bond of atoms " + std::to_string(static_cast<long long>(twice->first)) + " and " +
+                std::to_string(static_cast<long long>(twice->second)) + " is stored twice";
     GbStoreCounts c = {};
     granbond_bond_store_counts(store, &c);
-    const long long local[4] = {c.created, brokenCount(c), c.intact, lostCount(c)};
-    long long sums[4];
-    MPI_Allreduce(local, sums, 4, MPI_LONG_LONG, MPI_SUM, world);
-    if (wrong.empty() && sums[0] != sums[1] + sums[2] + sums[3])
-        wrong = std::to_string(sums[0]) + " bonds created, " + std::to_string(sums[1]) + " broken, " +
-                std::to_string(sums[2]) + " intact, " + std::to_string(sums[3]) + " lost";
-    return wrong;
+    const std::string counts = unbalancedCounts({c.created, brokenCount(c), c.intact, lostCount(c)}, "bonds created", world);
+    return wrong.empty() ? counts : wrong;
 }
 
 // The same for the wall bonds of `store` on this rank: each held by the
@@ -105,19 +121,15 @@ std::string checkWallBonds(const GbWallStore *store, long long restored, const T
         mine.push_back(static_cast<double>(walls[k]));
     }
     const std::vector<std::pair<double, double>> keys = gatheredPairs(mine, world);
-    for (size_t k = 1; k < keys.size() && wrong.empty(); k++)
-        if (keys[k] == keys[k - 1])
-            wrong = "the bond of sphere " + std::to_string(static_cast<long long>(keys[k].first)) + " and wall " +
-                    std::to_string(static_cast<long long>(keys[k].second)) + " is held twice";
+    const std::pair<double, double> *twice = repeatedPair(keys);
+    if (wrong.empty() && twice)
+        wrong = "the bond of sphere " + std::to_string(static_cast<long long>(twice->first)) + " and wall " +
+                std::to_string(static_cast<long long>(twice->second)) + " is held twice";
     GbStoreCounts c = {};
     granbond_wall_store_counts(store, &c);
-    const long long sumsOf[4] = {c.created + restored, brokenCount(c), c.intact, lostCount(c)};
-    long long sums[4];
-    MPI_Allreduce(sumsOf, sums, 4, MPI_LONG_LONG, MPI_SUM, world);
-    if (wrong.empty() && sums[0] != sums[1] + sums[2] + sums[3])
-        wrong = std::to_string(sums[0]) + " wall bonds created or restored, " + std::to_string(sums[1]) + " broken, " +
-                std::to_string(sums[2]) + " intact, " + std::to_string(sums[3]) + " lost";
-    return wrong;
+    const std::string counts = unbalancedCounts({c.created + restored, brokenCount(c), c.intact, lostCount(c)},
+                                                "wall bonds created or restored", world);
+    return wrong.empty() ? counts : wrong;
 }
 
 }
