@@ -129,7 +129,9 @@ void BondNonlinearCohesion::postSettings(LIGGGHTS::IContactHistorySetup *, Conta
 
 void BondNonlinearCohesion::connectToProperties(PropertyRegistry &registry)
 {
+    const double before = neighbor->contactDistanceFactor;
     parameters_.connectToProperties(registry);
+    noteReach(before);
     keepsTangential_ = keepsLoads_ = false;
     const int n = parameters_.ntypes();
     for (int a = 1; a <= n; a++)
@@ -249,6 +251,7 @@ void BondNonlinearCohesion::beginPass(SurfacesIntersectData &sidata, ForceData &
 
 void BondNonlinearCohesion::endPass(SurfacesIntersectData &, ForceData &, ForceData &)
 {
+    widenReach();
     if (isWall_ || !passing_) return;
     finishPairPass();
     passing_ = advance_ = false;

@@ -149,6 +149,14 @@ public:
     void warnWallLosses();
     void checkWallStore();   // GRANBOND_CHECK_STORE (collective)
 
+    // Pairs: the contact distance factor of a force pass in which no bond
+    // can form lowered to what the rest of the deck registered (from fix
+    // granbond/reach's pre_force), and put back (at the pair loop's end,
+    // and in its post_force) before anything else reads it
+    // (contact_reach.cpp).
+    void narrowReach();
+    void widenReach();
+
 private:
     static bool bondedFlag(const SurfacesCloseData &d) { return d.contact_flags && (*d.contact_flags & kBondedFlag); }
     void overlapping(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -220,6 +228,8 @@ private:
     // the atom count changes if the limit moved) and, at a run's start, of
     // the creation rules (each finding once).
     void runChecks(bool runStart);
+    // The factor before this model registered its reach, at connect.
+    void noteReach(double before);
     void sayLaw(const char *style);
     void checkRenumbering();
     void forgetRecordsOfNewborn();
@@ -280,6 +290,12 @@ private:
     std::vector<double> wallRestart_;   // its store's rows in a restart file read (restartRows)
     std::vector<std::string> wallRestartMeshes_;   // the meshes that numbered their walls (restartMeshes)
     std::vector<char> atomsRestart_;    // fix granbond/atoms's state there (atomsRestartState)
+
+    // the contact distance factor (contact_reach.cpp)
+    double baseReach_ = -1.0;        // what the rest of the deck registered
+    double registeredReach_ = -1.0;  // the factor once this model registered its reach
+    double fullReach_ = 0.0;         // the factor put back after a lowered pass
+    bool narrowed_ = false;          // the factor is lowered for this pass
 };
 
 }
