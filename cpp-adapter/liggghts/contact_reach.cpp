@@ -22,6 +22,7 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include <cstring>
 #include <map>
 #include <string>
 
@@ -81,16 +82,33 @@ void BondNonlinearCohesion::noteReach(double before)
     ensureReachFix(lmp);
 }
 
+namespace {
+
+// Whether a mesh wall's lists (fix neighlist/mesh, built in its pre_force
+// at a step that built the neighbour lists) come after fix granbond/reach's
+// pre_force: the engine calls the fixes' pre_force in the order of its fix
+// list.
+bool meshListsBuiltAfterReach(LAMMPS_NS::Modify *modify)
+{
+    const int reach = modify->find_fix(reachFixId());
+    if (reach < 0) return true;
+    for (int i = reach + 1; i < modify->nfix; i++)
+        if (std::strcmp(modify->fix[i]->style, "neighlist/mesh") == 0) return true;
+    return false;
+}
+
+}
+
 // A force pass lowers the factor where no bond can form in it: its step is
 // no creation step of any type pair (the core's rule), no `bonded yes`
 // clump waits for its bonds, and the bond takes all the contact's loads (a
 // model that keeps the contact's tangential loads under the bond leaves the
-// engine's close visits as they were). A step that built the lists keeps
-// the factor: the mesh walls build theirs in their pre_force, which may
-// come after this one.
+// engine's visits as they were). A step that built the lists keeps the
+// factor where a mesh wall builds its own lists after this point.
 void BondNonlinearCohesion::narrowReach()
 {
-    if (isWall_ || narrowed_ || !bonds_ || update->setupflag || neighbor->ago == 0) return;
+    if (isWall_ || narrowed_ || !bonds_ || update->setupflag) return;
+    if (neighbor->ago == 0 && meshListsBuiltAfterReach(modify)) return;
     if (keepsTangential_ || keepsLoads_ || clumpIds_) return;
     if (!(baseReach_ < neighbor->contactDistanceFactor)) return;
     const GbBondModel *const *table = parameters_.table();
