@@ -119,12 +119,21 @@ public:
         share_->findBond(cmb);
     }
     void connectToProperties(::PropertyRegistry &registry);
-    // inline: in voigt x voigt the normal model goes straight to the one
-    // core call, and the others cost only the flag and the test
-    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    // The engine's surfacesIntersect of part `Part`: its bit of the contact
+    // flag and the part, or in voigt x voigt the whole contact from the
+    // normal model and nothing from the others. Always inline, flag and
+    // part constants: the engine's wall loop would call it, and in voigt x
+    // voigt the tangential and rolling models then cost only the flag and
+    // the test.
+    template<GbContactPart Part>
+    inline __attribute__((always_inline)) void intersect(SurfacesIntersectData &sidata, ForceData &i_forces,
+                                                         ForceData &j_forces)
     {
-        if (sidata.contact_flags) *sidata.contact_flags |= contactFlag_;
-        if (whole_)
+        if (sidata.contact_flags)
+            *sidata.contact_flags |= Part == GB_CONTACT_PART_NORMAL       ? LIGGGHTS::ContactModels::CONTACT_NORMAL_MODEL
+                                   : Part == GB_CONTACT_PART_TANGENTIAL ? LIGGGHTS::ContactModels::CONTACT_TANGENTIAL_MODEL
+                                                                          : LIGGGHTS::ContactModels::CONTACT_ROLLING_MODEL;
+        if (Part == GB_CONTACT_PART_NORMAL && whole_)
             wholeContact(sidata, i_forces, j_forces);
         else if (!skip_)
             partOnly(sidata, i_forces, j_forces);

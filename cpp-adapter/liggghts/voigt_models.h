@@ -27,6 +27,11 @@ static const int ROLLING_VOIGT = 40;
         Slot(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *cmb) :                         \
             VoigtSubModel(lmp, hsetup, cmb, part)                                                              \
         {}                                                                                                     \
+        __attribute__((always_inline)) void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, \
+                                                              ForceData &j_forces)                             \
+        {                                                                                                      \
+            intersect<part>(sidata, i_forces, j_forces);                                                       \
+        }                                                                                                      \
         extra                                                                                                  \
     };
 
