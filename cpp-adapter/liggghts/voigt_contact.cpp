@@ -5,6 +5,7 @@
 #include "core_message.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 using namespace LIGGGHTS::ContactModels;
@@ -99,18 +100,27 @@ void voigtFailed(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const c
 
 namespace {
 
-// The deck's word for each part, its first slot of the contact state, the
-// name its history offset goes by and its bit of a pair's contact flag; in
-// the order of GbContactPart.
-struct PartWords {
-    const char *caller, *firstSlot, *offsetName;
+// Each part's first slot of the contact state, the name its history offset
+// goes by and its bit of a pair's contact flag; in the order of
+// GbContactPart.
+struct PartSlots {
+    const char *firstSlot, *offsetName;
     int flag;
 };
-const PartWords kParts[3] = {
-    {"model voigt", 0, 0, CONTACT_NORMAL_MODEL},
-    {"tangential voigt", "tangential_spring_x", "voigt_tangential_spring", CONTACT_TANGENTIAL_MODEL},
-    {"rolling_friction voigt", "rolling_angle_x", "voigt_rolling_angle", CONTACT_ROLLING_MODEL},
+const PartSlots kParts[3] = {
+    {0, 0, CONTACT_NORMAL_MODEL},
+    {"tangential_spring_x", "voigt_tangential_spring", CONTACT_TANGENTIAL_MODEL},
+    {"rolling_angle_x", "voigt_rolling_angle", CONTACT_ROLLING_MODEL},
 };
+
+// What the deck calls the sub-model of `part` and the parts it reads: the
+// core's (part < 3, read).
+GbSubModel subModel(GbContactPart part)
+{
+    GbSubModel sub;
+    if (granbond_voigt_sub_model(part, &sub) != GB_STATUS_OK) std::abort();
+    return sub;
+}
 
 }
 
@@ -118,7 +128,7 @@ VoigtSubModel::VoigtSubModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySe
                              GbContactPart part) :
     Pointers(lmp),
     part_(part),
-    caller_(kParts[part].caller),
+    sub_(subModel(part)),
     contactFlag_(kParts[part].flag),
     owner_(cmb),
     whole_(false),
@@ -151,11 +161,10 @@ VoigtSubModel::~VoigtSubModel() { VoigtContactShare::detach(owner_); }
 void VoigtSubModel::connectToProperties(::PropertyRegistry &registry)
 {
     const unsigned own = partBit(part_);
-    const unsigned reads = part_ == GB_CONTACT_PART_NORMAL ? own | partBit(GB_CONTACT_PART_TANGENTIAL) : own;
-    share_->connect(registry, caller_, reads);
+    share_->connect(registry, sub_.words, sub_.reads);
     const int ntypes = registry.max_type();
-    models_.build(error, caller_, ntypes, share_->params(error, caller_, ntypes, own, own));
-    share_->contribute(error, caller_, ntypes, reads);
+    models_.build(error, sub_.words, ntypes, share_->params(error, sub_.words, ntypes, own, own));
+    share_->contribute(error, sub_.words, ntypes, sub_.reads);
     // every sub-model exists by now
     whole_ = part_ == GB_CONTACT_PART_NORMAL && share_->fused();
     fusedRolling_ = share_->fusedRolling();
@@ -179,9 +188,9 @@ void VoigtSubModel::checkTimestep()
         gatherTypeBodies(ntypes, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
     GbCheckReport report;
     if (granbond_voigt_timestep_check(table.data(), ntypes, bodies.data(), update->dt, update->unit_style,
-                                      "model voigt", &report) !=
+                                      sub_.words, &report) !=
         GB_STATUS_OK)
-        endRun(error, FLERR, std::string("model voigt: ") + coreReason());
+        endRun(error, FLERR, std::string(sub_.words) + ": " + coreReason());
     if (timestepWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
 }
 
@@ -204,7 +213,7 @@ inline void VoigtSubModel::stepFused(SurfacesIntersectData &sidata, double *stat
     if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
                                                 c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt, state,
                                                 &out) != GB_STATUS_OK)
-        voigtFailed(lmp, sidata, "model voigt");
+        voigtFailed(lmp, sidata, sub_.words);
     sidata.Fn = fresh(out.normal_force);
 }
 
@@ -265,7 +274,7 @@ void VoigtSubModel::wholeContactAside(SurfacesIntersectData &sidata, ForceData &
         engineFrame(lmp, sidata, frame);
         if (granbond_voigt_evaluate_frame(share_->fusedModel(sidata.itype, sidata.jtype), &frame, scratch, &out) !=
             GB_STATUS_OK)
-            voigtFailed(lmp, sidata, "model voigt");
+            voigtFailed(lmp, sidata, sub_.words);
         sidata.Fn = out.normal_force;
         addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
         return;
@@ -318,7 +327,7 @@ void VoigtSubModel::partOnly(SurfacesIntersectData &sidata, ForceData &i_forces,
         GbContactFrame &frame = share_->frame;
         engineFrame(lmp, sidata, frame);
         double fn = 0.0;
-        if (granbond_voigt_normal_force(model, &frame, &fn) != GB_STATUS_OK) voigtFailed(lmp, sidata, caller_);
+        if (granbond_voigt_normal_force(model, &frame, &fn) != GB_STATUS_OK) voigtFailed(lmp, sidata, sub_.words);
         sidata.Fn = fn;
         const double force_i[3] = {fn * frame.n[0], fn * frame.n[1], fn * frame.n[2]};
         addLoads(sidata, i_forces, j_forces, force_i, none, none);
@@ -332,7 +341,7 @@ void VoigtSubModel::partOnly(SurfacesIntersectData &sidata, ForceData &i_forces,
         const GbStatus status =
             !advance ? granbond_voigt_tangential_evaluate(model, &share_->frame, sidata.Fn, spring, &out)
                      : granbond_voigt_tangential(model, &share_->frame, sidata.Fn, update->dt, spring, &out);
-        if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, caller_);
+        if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, sub_.words);
         addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
         return;
     }
@@ -343,7 +352,7 @@ void VoigtSubModel::partOnly(SurfacesIntersectData &sidata, ForceData &i_forces,
     const GbStatus status =
         !advance ? granbond_voigt_rolling_evaluate(model, &share_->frame, sidata.Fn, angle, torque_i, &slip)
                  : granbond_voigt_rolling(model, &share_->frame, sidata.Fn, update->dt, angle, torque_i, &slip);
-    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, caller_);
+    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, sub_.words);
     const double torque_j[3] = {-torque_i[0], -torque_i[1], -torque_i[2]};
     addLoads(sidata, i_forces, j_forces, none, torque_i, torque_j);
 }

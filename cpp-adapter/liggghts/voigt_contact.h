@@ -169,7 +169,7 @@ public:
                                                     sidata.r, sidata.radi, sidata.radj, sidata.v_i, sidata.v_j,
                                                     sidata.omega_i, sidata.omega_j, pairDt_,
                                                     &sidata.contact_history[pairState_], &out) != GB_STATUS_OK)
-            voigtFailed(lmp, sidata, "model voigt");
+            voigtFailed(lmp, sidata, sub_.words);
         sidata.Fn = fresh(out.normal_force);
         addPairLoads(i_forces, j_forces, out);
     }
@@ -203,7 +203,7 @@ private:
                                                      ForceData &j_forces);
 
     const GbContactPart part_;
-    const char *const caller_;    // the sub-model as the deck names it
+    const GbSubModel sub_;        // what the deck calls it and the parts it reads (the core's)
     const int contactFlag_;       // its bit of a pair's contact flag
     const void *owner_;
     VoigtContactShare *share_;
