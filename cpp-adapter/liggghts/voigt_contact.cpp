@@ -249,56 +249,50 @@ void VoigtSubModel::wholeContactAside(SurfacesIntersectData &sidata, ForceData &
     if (!fusedRolling_) handOn(sidata);
     double *const stored = &sidata.contact_history[share_->tangential_offset];
     double scratch[GRANBOND_CONTACT_STATE_LEN];
-    GbContactOutput out;
-    // the history moves on only in a real force step (not at setup or for a
-    // per-contact output pass)
-    const bool force = sidata.computeflag && sidata.shearupdate;
-    if (force && share_->heldByBond(sidata)) {
-        // the loads of a fresh contact, in case the bond breaks in this
-        // step's pair callback; the history stays at zero
-        const int own = fusedRolling_ ? GRANBOND_CONTACT_STATE_LEN : 3;
-        for (int k = 0; k < GRANBOND_CONTACT_STATE_LEN; k++)
-            scratch[k] = 0.0;
-        for (int k = 0; k < own; k++)
-            stored[k] = 0.0;
-        stepFused(sidata, scratch, out);
-        addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
-        return;
-    }
+    bool writeBack;
     // the core writes 6 slots; without rolling voigt only 3 are ours
-    for (int k = 0; k < GRANBOND_CONTACT_STATE_LEN; k++)
-        scratch[k] = (fusedRolling_ || k < 3) ? stored[k] : 0.0;
-    if (!force) {
-        // setup or output pass: the loads of the stored state, not advanced
+    double *const state =
+        slots(sidata, stored, fusedRolling_ ? GRANBOND_CONTACT_STATE_LEN : 3, GRANBOND_CONTACT_STATE_LEN, scratch,
+              &writeBack);
+    GbContactOutput out;
+    if (sidata.computeflag && sidata.shearupdate) {
+        stepFused(sidata, state, out);
+        for (int k = 0; writeBack && k < 3; k++)
+            stored[k] = scratch[k];
+    } else {
         GbContactFrame frame;
         engineFrame(lmp, sidata, frame);
-        if (granbond_voigt_evaluate_frame(share_->fusedModel(sidata.itype, sidata.jtype), &frame, scratch, &out) !=
+        if (granbond_voigt_evaluate_frame(share_->fusedModel(sidata.itype, sidata.jtype), &frame, state, &out) !=
             GB_STATUS_OK)
             voigtFailed(lmp, sidata, sub_.words);
         sidata.Fn = out.normal_force;
-        addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
-        return;
     }
-    // a force step without rolling voigt: the tangential spring moves on
-    stepFused(sidata, scratch, out);
-    for (int k = 0; k < 3; k++)
-        stored[k] = scratch[k];
     addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
+}
+
+double *VoigtSubModel::slots(const SurfacesIntersectData &sidata, double *stored, int own, int len, double *scratch,
+                             bool *writeBack)
+{
+    // the history moves on only in a real force step (not at setup or for
+    // a per-contact output pass); under a bond that holds the contact, the
+    // loads are a fresh contact's, in case the bond breaks in this step's
+    // pair callback, and the history stays at zero
+    const bool force = sidata.computeflag && sidata.shearupdate;
+    const bool held = force && share_->heldByBond(sidata);
+    *writeBack = force && !held && own < len;
+    if (force && !held && own == len) return stored;
+    for (int k = 0; k < len; k++)
+        scratch[k] = !held && k < own ? stored[k] : 0.0;
+    for (int k = 0; held && k < own; k++)
+        stored[k] = 0.0;
+    return scratch;
 }
 
 double *VoigtSubModel::begin(const SurfacesIntersectData &sidata, bool always, double *scratch)
 {
     if (computesFrame_ || always) engineFrame(lmp, sidata, share_->frame);
-    double *const stored = &sidata.contact_history[offset_];
-    if (sidata.computeflag && sidata.shearupdate) {
-        if (!share_->heldByBond(sidata)) return stored;
-        for (int k = 0; k < 3; k++)
-            stored[k] = scratch[k] = 0.0;
-        return scratch;
-    }
-    for (int k = 0; k < 3; k++)
-        scratch[k] = stored[k];
-    return scratch;
+    bool writeBack;
+    return slots(sidata, &sidata.contact_history[offset_], 3, 3, scratch, &writeBack);
 }
 
 void VoigtSubModel::surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)

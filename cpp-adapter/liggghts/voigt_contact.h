@@ -185,11 +185,17 @@ private:
     // The part alone, on the frame: the normal force, or the tangential or
     // rolling step on the contact's slots.
     void partOnly(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    // The slots a step or an evaluation reads, of the `len` the core
+    // writes from `stored` on, `own` of them this model's: the stored ones
+    // in a real force step, else a copy in `scratch` (setup pass,
+    // per-contact output; the slots not ours zero), to be written back
+    // after a force step (`*writeBack`) when not all are ours; under a bond
+    // that holds the contact (heldByBond), zeroed stored slots and a zero
+    // `scratch`.
+    double *slots(const SurfacesIntersectData &sidata, double *stored, int own, int len, double *scratch,
+                  bool *writeBack);
     // Fills share_->frame if this model computes it (`always`: also when
-    // another voigt model would have), and returns the three slots to
-    // advance: the stored ones in a real force step, else a copy in
-    // `scratch` (setup pass, per-contact output); under a bond that holds
-    // the contact (heldByBond), zeroed stored slots and a zero `scratch`.
+    // another voigt model would have), and returns the part's three slots.
     double *begin(const SurfacesIntersectData &sidata, bool always, double *scratch);
     // what the stock tangential, rolling and cohesion models read: kn, kt,
     // gamman, gammat of the type pair
