@@ -5,6 +5,7 @@
 #include "core_message.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 using namespace LIGGGHTS::ContactModels;
@@ -88,23 +89,52 @@ void voigtFailed(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const c
                          std::to_string(static_cast<long long>(lmp->update->ntimestep)) + ": " + coreReason());
 }
 
-// ------------------------------------------------------------ model voigt
+// ------------------------------------------------------------ the sub-models
 //
-//   pair_style gran model voigt [switches of the normal part] tangential ...
+//   pair_style gran model voigt [switches of the normal part] tangential voigt rolling_friction voigt ...
 //
-// The normal part of the core's Voigt table (docs/reference/voigt.md): its
-// per-type-pair properties and switches. The tangential part's spring and
-// dashpot are read as well, to be handed to whichever tangential or rolling
-// model follows through sidata, so stock `tangential history` works after
-// it.
+// Each part reads the rows of its part of the core's Voigt table
+// (docs/reference/voigt.md); `model voigt` reads the tangential part's as
+// well, to be handed to whichever tangential or rolling model follows
+// through sidata, so stock `tangential history` works after it.
 
-VoigtNormal::VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup, ContactModelBase *cmb) :
-    NormalModelBase(lmp, hsetup, cmb),
+namespace {
+
+// Each part's first slot of the contact state, the name its history offset
+// goes by and its bit of a pair's contact flag; in the order of
+// GbContactPart.
+struct PartSlots {
+    const char *firstSlot, *offsetName;
+    int flag;
+};
+const PartSlots kParts[3] = {
+    {0, 0, CONTACT_NORMAL_MODEL},
+    {"tangential_spring_x", "voigt_tangential_spring", CONTACT_TANGENTIAL_MODEL},
+    {"rolling_angle_x", "voigt_rolling_angle", CONTACT_ROLLING_MODEL},
+};
+
+// What the deck calls the sub-model of `part` and the parts it reads: the
+// core's (part < 3, read).
+GbSubModel subModel(GbContactPart part)
+{
+    GbSubModel sub;
+    if (granbond_voigt_sub_model(part, &sub) != GB_STATUS_OK) std::abort();
+    return sub;
+}
+
+}
+
+VoigtSubModel::VoigtSubModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup, ContactModelBase *cmb,
+                             GbContactPart part) :
+    Pointers(lmp),
+    part_(part),
+    sub_(subModel(part)),
+    contactFlag_(kParts[part].flag),
     owner_(cmb),
-    deck_(partBit(GB_CONTACT_PART_NORMAL), partBit(GB_CONTACT_PART_TANGENTIAL)),
-    stride_(0),
-    fused_(false),
+    whole_(false),
+    skip_(false),
     fusedRolling_(false),
+    offset_(-1),
     pairInPlace_(false),
     passInPlace_(false),
     pairState_(0),
@@ -115,89 +145,75 @@ VoigtNormal::VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup 
     checkPending_(true),
     checkedNatoms_(-1)
 {
-    bool first;
-    share_ = VoigtContactShare::attach(owner_, &first);
-    share_->normal = true;
+    share_ = VoigtContactShare::attach(owner_, &computesFrame_);
+    if (part == GB_CONTACT_PART_NORMAL) {
+        share_->normal = true;
+        return;
+    }
+    offset_ = registerStateSlots(hsetup, GB_STATE_KIND_CONTACT, error,
+                                 slotNamed(GB_STATE_KIND_CONTACT, kParts[part].firstSlot, error), 3, "voigt_");
+    cmb->add_history_offset(kParts[part].offsetName, offset_);
+    (part == GB_CONTACT_PART_TANGENTIAL ? share_->tangential_offset : share_->rolling_offset) = offset_;
 }
 
-VoigtNormal::~VoigtNormal() { VoigtContactShare::detach(owner_); }
+VoigtSubModel::~VoigtSubModel() { VoigtContactShare::detach(owner_); }
 
-void VoigtNormal::registerSettings(::Settings &settings)
+void VoigtSubModel::connectToProperties(::PropertyRegistry &registry)
 {
-    deck_.registerSettings(settings);
-    share_->registerSettings(settings);
-}
-
-void VoigtNormal::connectToProperties(::PropertyRegistry &registry)
-{
-    const char *caller = "model voigt";
-    deck_.connect(registry, caller);
+    const unsigned own = partBit(part_);
+    share_->connect(registry, sub_.words, sub_.reads);
     const int ntypes = registry.max_type();
-    stride_ = ntypes + 1;
-    const unsigned own = deck_.owns();
-    models_.build(error, caller, ntypes, deck_.all(error, caller, ntypes, own, own));
-    // the tangential part is only handed on (sidata)
-    handed_ = deck_.all(error, caller, ntypes, own | partBit(GB_CONTACT_PART_TANGENTIAL), 0);
-    share_->contribute(error, caller, ntypes, deck_);
-    fused_ = share_->fused();   // every sub-model exists by now
+    models_.build(error, sub_.words, ntypes, share_->params(error, sub_.words, ntypes, own, own));
+    share_->contribute(error, sub_.words, ntypes, sub_.reads);
+    // every sub-model exists by now
+    whole_ = part_ == GB_CONTACT_PART_NORMAL && share_->fused();
     fusedRolling_ = share_->fusedRolling();
-    pairInPlace_ = fusedRolling_ && !wall_ && !share_->bondMayHold();
+    skip_ = part_ == GB_CONTACT_PART_TANGENTIAL ? share_->fused()
+          : part_ == GB_CONTACT_PART_ROLLING    ? fusedRolling_
+                                                : false;
+    pairInPlace_ = whole_ && fusedRolling_ && !wall_ && !share_->bondMayHold();
     passInPlace_ = false;
     pairState_ = share_->tangential_offset;
     checkPending_ = true;
 }
 
-void VoigtNormal::checkTimestep()
+void VoigtSubModel::checkTimestep()
 {
     const bool runStart = checkPending_;
     checkPending_ = false;
     checkedNatoms_ = atom->natoms;
-    const VoigtModelTable &table = fused_ ? share_->fusedTable() : models_;
+    const VoigtModelTable &table = whole_ ? share_->fusedTable() : models_;
     const int ntypes = table.ntypes();
     const std::vector<GbTypeBodies> bodies =
         gatherTypeBodies(ntypes, atom->nlocal, atom->type, atom->radius, atom->rmass, world);
     GbCheckReport report;
     if (granbond_voigt_timestep_check(table.data(), ntypes, bodies.data(), update->dt, update->unit_style,
-                                      "model voigt", &report) !=
+                                      sub_.words, &report) !=
         GB_STATUS_OK)
-        endRun(error, FLERR, std::string("model voigt: ") + coreReason());
+        endRun(error, FLERR, std::string(sub_.words) + ": " + coreReason());
     if (timestepWarning_.due(report, runStart) && comm->me == 0) error->warning(FLERR, report.message);
 }
 
-void VoigtNormal::handOn(SurfacesIntersectData &sidata)
+void VoigtSubModel::handOn(SurfacesIntersectData &sidata)
 {
-    const GbVoigtParams &p = handed_[sidata.itype * stride_ + sidata.jtype];
+    const GbVoigtParams &p = share_->whole(sidata.itype, sidata.jtype);
     sidata.kn = p.k_n;
     sidata.kt = p.k_t;
     sidata.gamman = p.gamma_n;
     sidata.gammat = p.gamma_t;
 }
 
-void VoigtNormal::normalPart(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
-{
-    handOn(sidata);
-    GbContactFrame &frame = share_->frame;
-    engineFrame(lmp, sidata, frame);
-    double fn = 0.0;
-    if (granbond_voigt_normal_force(models_.at(sidata.itype, sidata.jtype), &frame, &fn) != GB_STATUS_OK)
-        voigtFailed(lmp, sidata, "model voigt");
-    sidata.Fn = fn;
-    const double force_i[3] = {fn * frame.n[0], fn * frame.n[1], fn * frame.n[2]};
-    const double none[3] = {0.0, 0.0, 0.0};
-    addLoads(sidata, i_forces, j_forces, force_i, none, none);
-}
-
 // One step of the fused contact on `state` with the frame's fields straight
 // from the engine's data and the core's unchecked entry (the models were
 // validated when built, dt by the engine; a non-finite result is still
 // caught); sets the engine's normal force.
-inline void VoigtNormal::stepFused(SurfacesIntersectData &sidata, double *state, GbContactOutput &out)
+inline void VoigtSubModel::stepFused(SurfacesIntersectData &sidata, double *state, GbContactOutput &out)
 {
     const EngineContact c = engineContact(sidata);
     if (granbond_voigt_compute_normal_unchecked(share_->fusedModel(sidata.itype, sidata.jtype), c.n, c.distance,
                                                 c.radius_i, c.radius_j, c.v_i, c.v_j, c.w_i, c.w_j, update->dt, state,
                                                 &out) != GB_STATUS_OK)
-        voigtFailed(lmp, sidata, "model voigt");
+        voigtFailed(lmp, sidata, sub_.words);
     sidata.Fn = fresh(out.normal_force);
 }
 
@@ -209,7 +225,7 @@ inline void VoigtNormal::stepFused(SurfacesIntersectData &sidata, double *state,
 // the contact) steps the stored state in place; every other case is
 // wholeContactAside's, out of line, so this path copies nothing and keeps
 // few registers.
-void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+void VoigtSubModel::wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
     if (!fusedRolling_ || !(sidata.computeflag && sidata.shearupdate) || share_->heldByBond(sidata)) {
         wholeContactAside(sidata, i_forces, j_forces);
@@ -227,101 +243,61 @@ void VoigtNormal::wholeContact(SurfacesIntersectData &sidata, ForceData &i_force
 }
 
 // Every case here steps or evaluates a copy of the stored state.
-void VoigtNormal::wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+void VoigtSubModel::wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
     // stock rolling models after voigt x voigt read kn, kt, ... (epsd2: kt)
     if (!fusedRolling_) handOn(sidata);
     double *const stored = &sidata.contact_history[share_->tangential_offset];
     double scratch[GRANBOND_CONTACT_STATE_LEN];
-    GbContactOutput out;
-    // the history moves on only in a real force step (not at setup or for a
-    // per-contact output pass)
-    const bool force = sidata.computeflag && sidata.shearupdate;
-    if (force && share_->heldByBond(sidata)) {
-        // the loads of a fresh contact, in case the bond breaks in this
-        // step's pair callback; the history stays at zero
-        const int own = fusedRolling_ ? GRANBOND_CONTACT_STATE_LEN : 3;
-        for (int k = 0; k < GRANBOND_CONTACT_STATE_LEN; k++)
-            scratch[k] = 0.0;
-        for (int k = 0; k < own; k++)
-            stored[k] = 0.0;
-        stepFused(sidata, scratch, out);
-        addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
-        return;
-    }
+    bool writeBack;
     // the core writes 6 slots; without rolling voigt only 3 are ours
-    for (int k = 0; k < GRANBOND_CONTACT_STATE_LEN; k++)
-        scratch[k] = (fusedRolling_ || k < 3) ? stored[k] : 0.0;
-    if (!force) {
-        // setup or output pass: the loads of the stored state, not advanced
+    double *const state =
+        slots(sidata, stored, fusedRolling_ ? GRANBOND_CONTACT_STATE_LEN : 3, GRANBOND_CONTACT_STATE_LEN, scratch,
+              &writeBack);
+    GbContactOutput out;
+    if (sidata.computeflag && sidata.shearupdate) {
+        stepFused(sidata, state, out);
+        for (int k = 0; writeBack && k < 3; k++)
+            stored[k] = scratch[k];
+    } else {
         GbContactFrame frame;
         engineFrame(lmp, sidata, frame);
-        if (granbond_voigt_evaluate_frame(share_->fusedModel(sidata.itype, sidata.jtype), &frame, scratch, &out) !=
+        if (granbond_voigt_evaluate_frame(share_->fusedModel(sidata.itype, sidata.jtype), &frame, state, &out) !=
             GB_STATUS_OK)
-            voigtFailed(lmp, sidata, "model voigt");
+            voigtFailed(lmp, sidata, sub_.words);
         sidata.Fn = out.normal_force;
-        addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
-        return;
     }
-    // a force step without rolling voigt: the tangential spring moves on
-    stepFused(sidata, scratch, out);
-    for (int k = 0; k < 3; k++)
-        stored[k] = scratch[k];
     addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
 }
 
-// ------------------------------------------------------------ tangential and rolling
-
-template<class EngineBase>
-VoigtHistoryModel<EngineBase>::VoigtHistoryModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
-                                                 ContactModelBase *cmb, GbContactPart part, const char *caller,
-                                                 size_t firstSlot, const char *offsetName, int contactFlag) :
-    EngineBase(lmp, hsetup, cmb), part_(part), caller_(caller), owner_(cmb), skip_(false),
-    contactFlag_(contactFlag), deck_(partBit(part), 0)
+double *VoigtSubModel::slots(const SurfacesIntersectData &sidata, double *stored, int own, int len, double *scratch,
+                             bool *writeBack)
 {
-    share_ = VoigtContactShare::attach(owner_, &computesFrame_);
-    offset_ = registerStateSlots(hsetup, GB_STATE_KIND_CONTACT, lmp->error, firstSlot, 3, "voigt_");
-    cmb->add_history_offset(offsetName, offset_);
-    (part == GB_CONTACT_PART_TANGENTIAL ? share_->tangential_offset : share_->rolling_offset) = offset_;
-}
-
-template<class EngineBase>
-void VoigtHistoryModel<EngineBase>::connectToProperties(::PropertyRegistry &registry)
-{
-    LAMMPS_NS::Error *const error = this->error;
-    deck_.connect(registry, caller_);
-    const int ntypes = registry.max_type();
-    models_.build(error, caller_, ntypes, deck_.all(error, caller_, ntypes, deck_.owns(), deck_.owns()));
-    share_->contribute(error, caller_, ntypes, deck_);
-    // every sub-model exists by now
-    skip_ = part_ == GB_CONTACT_PART_TANGENTIAL ? share_->fused() : share_->fusedRolling();
-}
-
-template<class EngineBase>
-VoigtHistoryModel<EngineBase>::~VoigtHistoryModel()
-{
-    VoigtContactShare::detach(owner_);
-}
-
-template<class EngineBase>
-double *VoigtHistoryModel<EngineBase>::begin(const SurfacesIntersectData &sidata, bool always, double *scratch)
-{
-    if (computesFrame_ || always) engineFrame(this->lmp, sidata, share_->frame);
-    double *const stored = &sidata.contact_history[offset_];
-    if (sidata.computeflag && sidata.shearupdate) {
-        if (!share_->heldByBond(sidata)) return stored;
-        for (int k = 0; k < 3; k++)
-            stored[k] = scratch[k] = 0.0;
-        return scratch;
-    }
-    for (int k = 0; k < 3; k++)
-        scratch[k] = stored[k];
+    // the history moves on only in a real force step (not at setup or for
+    // a per-contact output pass); under a bond that holds the contact, the
+    // loads are a fresh contact's, in case the bond breaks in this step's
+    // pair callback, and the history stays at zero
+    const bool force = sidata.computeflag && sidata.shearupdate;
+    const bool held = force && share_->heldByBond(sidata);
+    *writeBack = force && !held && own < len;
+    if (force && !held && own == len) return stored;
+    for (int k = 0; k < len; k++)
+        scratch[k] = !held && k < own ? stored[k] : 0.0;
+    for (int k = 0; held && k < own; k++)
+        stored[k] = 0.0;
     return scratch;
 }
 
-template<class EngineBase>
-void VoigtHistoryModel<EngineBase>::surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
+double *VoigtSubModel::begin(const SurfacesIntersectData &sidata, bool always, double *scratch)
 {
+    if (computesFrame_ || always) engineFrame(lmp, sidata, share_->frame);
+    bool writeBack;
+    return slots(sidata, &sidata.contact_history[offset_], 3, 3, scratch, &writeBack);
+}
+
+void VoigtSubModel::surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
+{
+    if (part_ == GB_CONTACT_PART_NORMAL) return;
     // apart: the contact is over and its history forgotten
     if (scdata.contact_flags) *scdata.contact_flags &= ~contactFlag_;
     if (!scdata.contact_history) return;
@@ -329,66 +305,48 @@ void VoigtHistoryModel<EngineBase>::surfacesClose(SurfacesCloseData &scdata, For
     slots[0] = slots[1] = slots[2] = 0.0;
 }
 
-template class VoigtHistoryModel<TangentialModelBase>;
-template class VoigtHistoryModel<RollingModelBase>;
-
-// ------------------------------------------------------------ tangential voigt
-//
-// Cundall-Strack spring-dashpot with the Coulomb cap, after any normal model
-// (the cap uses the normal force it left in sidata.Fn). Properties: the
-// tangential part of the core's Voigt table. History: the spring
-// elongation.
-
-VoigtTangential::VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
-                                 ContactModelBase *cmb) :
-    VoigtHistoryModel<TangentialModelBase>(lmp, hsetup, cmb, GB_CONTACT_PART_TANGENTIAL, "tangential voigt",
-                                           slotNamed(GB_STATE_KIND_CONTACT, "tangential_spring_x", lmp->error),
-                                           "voigt_tangential_spring", CONTACT_TANGENTIAL_MODEL)
-{}
-
-void VoigtTangential::intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
-{
-    double scratch[3];
-    double *const spring = begin(sidata, false, scratch);
-    GbTangentialOutput out;
-    const GbVoigtModel *model = models_.at(sidata.itype, sidata.jtype);
-    // setup and output passes: the loads of the stored spring, not advanced
-    const GbStatus status =
-        !(sidata.computeflag && sidata.shearupdate)
-            ? granbond_voigt_tangential_evaluate(model, &share_->frame, sidata.Fn, spring, &out)
-            : granbond_voigt_tangential(model, &share_->frame, sidata.Fn, update->dt, spring, &out);
-    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "tangential voigt");
-    addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
-}
-
-// ------------------------------------------------------------ rolling_friction voigt
-//
+// The normal part: the normal force along the frame's normal, left in
+// sidata.Fn for the cap of the tangential and rolling parts, which follow
+// any normal model. The tangential part: Cundall-Strack spring-dashpot with
+// the Coulomb cap; its history the spring elongation. The rolling part:
 // Iwashita-Oda rolling resistance (spring, dashpot, cap mu_r |Fn| R*, plus
-// viscous rolling resistance), after any normal model. Properties: the
-// rolling part of the core's Voigt table. History: the rolling angle.
-
-VoigtRolling::VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
-                           ContactModelBase *cmb) :
-    VoigtHistoryModel<RollingModelBase>(lmp, hsetup, cmb, GB_CONTACT_PART_ROLLING, "rolling_friction voigt",
-                                        slotNamed(GB_STATE_KIND_CONTACT, "rolling_angle_x", lmp->error),
-                                        "voigt_rolling_angle", CONTACT_ROLLING_MODEL)
-{}
-
-void VoigtRolling::intersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+// viscous rolling resistance); its history the rolling angle. Setup and
+// output passes get the loads of the stored history, not advanced.
+void VoigtSubModel::partOnly(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
 {
+    const GbVoigtModel *model = models_.at(sidata.itype, sidata.jtype);
+    const double none[3] = {0.0, 0.0, 0.0};
+    if (part_ == GB_CONTACT_PART_NORMAL) {
+        handOn(sidata);
+        GbContactFrame &frame = share_->frame;
+        engineFrame(lmp, sidata, frame);
+        double fn = 0.0;
+        if (granbond_voigt_normal_force(model, &frame, &fn) != GB_STATUS_OK) voigtFailed(lmp, sidata, sub_.words);
+        sidata.Fn = fn;
+        const double force_i[3] = {fn * frame.n[0], fn * frame.n[1], fn * frame.n[2]};
+        addLoads(sidata, i_forces, j_forces, force_i, none, none);
+        return;
+    }
+    const bool advance = sidata.computeflag && sidata.shearupdate;
     double scratch[3];
+    if (part_ == GB_CONTACT_PART_TANGENTIAL) {
+        double *const spring = begin(sidata, false, scratch);
+        GbTangentialOutput out;
+        const GbStatus status =
+            !advance ? granbond_voigt_tangential_evaluate(model, &share_->frame, sidata.Fn, spring, &out)
+                     : granbond_voigt_tangential(model, &share_->frame, sidata.Fn, update->dt, spring, &out);
+        if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, sub_.words);
+        addLoads(sidata, i_forces, j_forces, out.force_i, out.torque_i, out.torque_j);
+        return;
+    }
     // the fused normal model leaves no frame behind
     double *const angle = begin(sidata, share_->fused(), scratch);
     double torque_i[3];
     int32_t slip = 0;
-    const GbVoigtModel *model = models_.at(sidata.itype, sidata.jtype);
-    // setup and output passes: the loads of the stored angle, not advanced
     const GbStatus status =
-        !(sidata.computeflag && sidata.shearupdate)
-            ? granbond_voigt_rolling_evaluate(model, &share_->frame, sidata.Fn, angle, torque_i, &slip)
-            : granbond_voigt_rolling(model, &share_->frame, sidata.Fn, update->dt, angle, torque_i, &slip);
-    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, "rolling_friction voigt");
-    const double none[3] = {0.0, 0.0, 0.0};
+        !advance ? granbond_voigt_rolling_evaluate(model, &share_->frame, sidata.Fn, angle, torque_i, &slip)
+                 : granbond_voigt_rolling(model, &share_->frame, sidata.Fn, update->dt, angle, torque_i, &slip);
+    if (status != GB_STATUS_OK) voigtFailed(lmp, sidata, sub_.words);
     const double torque_j[3] = {-torque_i[0], -torque_i[1], -torque_i[2]};
     addLoads(sidata, i_forces, j_forces, none, torque_i, torque_j);
 }

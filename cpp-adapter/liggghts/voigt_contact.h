@@ -3,30 +3,28 @@
 // `rolling_friction voigt`, each usable with stock models in the other
 // slots. No physics here: see rust-core (src/contact).
 //
-// Compiled once (voigt_contact.cpp; the deck's parameters and the share in
-// voigt_deck.h); the NormalModel<> / TangentialModel<> / RollingModel<>
-// specialisations in voigt_models.h only inherit from these.
+// One class, VoigtSubModel, is all three (voigt_contact.cpp, compiled
+// once); the NormalModel<> / TangentialModel<> / RollingModel<>
+// specialisations in voigt_models.h only name the part each one is.
 //
 // The sub-models of one ContactModel (one pair style or one wall fix) share a
-// VoigtContactShare: the contact frame of the contact at hand (computed by
-// the first voigt sub-model the engine calls, read by the later ones) and,
-// when normal and tangential are both voigt, one core model per type pair
-// with all their parameters, so `model voigt` advances the whole contact in
-// a single core call and the other two add nothing.
+// VoigtContactShare (voigt_deck.h): the deck's values, the contact frame of
+// the contact at hand (computed by the first voigt sub-model the engine
+// calls, read by the later ones) and, when normal and tangential are both
+// voigt, one core model per type pair with all their parameters, so `model
+// voigt` advances the whole contact in a single core call and the other two
+// add nothing.
 #ifndef GRANBOND_LIGGGHTS_VOIGT_CONTACT_H
 #define GRANBOND_LIGGGHTS_VOIGT_CONTACT_H
 
 #include "liggghts_engine.h"
-#include "normal_model_base.h"
-#include "tangential_model_base.h"
-#include "rolling_model_base.h"
+#include "contact_interface.h"
+#include "pointers.h"
 #include "granbond.h"
 #include "run_checks.h"
 #include "voigt_deck.h"
 
 #include <cstddef>
-#include <deque>
-#include <vector>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -105,34 +103,47 @@ inline void addPairLoads(ForceData &i_forces, ForceData &j_forces, const GbConta
 // Ends the run on this rank with the core's message.
 void voigtFailed(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const char *who);
 
-class VoigtNormal : public LIGGGHTS::ContactModels::NormalModelBase {
+// A voigt sub-model: the part of the Voigt contact it computes
+// (GB_CONTACT_PART_*), with what the engine asks of a normal, tangential
+// or rolling model. Tangential and rolling keep three slots of the core's
+// contact state each (forgotten when the contact ends).
+class VoigtSubModel : protected LAMMPS_NS::Pointers {
 public:
-    VoigtNormal(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
-                LIGGGHTS::ContactModels::ContactModelBase *cmb);
-    ~VoigtNormal();
+    VoigtSubModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
+                  LIGGGHTS::ContactModels::ContactModelBase *cmb, GbContactPart part);
+    ~VoigtSubModel();
 
-    void registerSettings(::Settings &settings);
+    void registerSettings(::Settings &settings) { share_->registerSettings(settings, partBit(part_)); }
     void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *cmb)
     {
         share_->findBond(cmb);
     }
     void connectToProperties(::PropertyRegistry &registry);
-    double stressStrainExponent() { return 1.0; }
-    // inline: voigt x voigt goes straight to the one core call
-    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+    // The engine's surfacesIntersect of part `Part`: its bit of the contact
+    // flag and the part, or in voigt x voigt the whole contact from the
+    // normal model and nothing from the others. Always inline, flag and
+    // part constants: the engine's wall loop would call it, and in voigt x
+    // voigt the tangential and rolling models then cost only the flag and
+    // the test.
+    template<GbContactPart Part>
+    inline __attribute__((always_inline)) void intersect(SurfacesIntersectData &sidata, ForceData &i_forces,
+                                                         ForceData &j_forces)
     {
-        if (sidata.contact_flags) *sidata.contact_flags |= LIGGGHTS::ContactModels::CONTACT_NORMAL_MODEL;
-        if (fused_)
+        if (sidata.contact_flags)
+            *sidata.contact_flags |= Part == GB_CONTACT_PART_NORMAL       ? LIGGGHTS::ContactModels::CONTACT_NORMAL_MODEL
+                                   : Part == GB_CONTACT_PART_TANGENTIAL ? LIGGGHTS::ContactModels::CONTACT_TANGENTIAL_MODEL
+                                                                          : LIGGGHTS::ContactModels::CONTACT_ROLLING_MODEL;
+        if (Part == GB_CONTACT_PART_NORMAL && whole_)
             wholeContact(sidata, i_forces, j_forces);
-        else
-            normalPart(sidata, i_forces, j_forces);
+        else if (!skip_)
+            partOnly(sidata, i_forces, j_forces);
     }
-    void surfacesClose(SurfacesCloseData &, ForceData &, ForceData &) {}
+    void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &);
     // Only the pair style calls it, once before each pass over its contacts,
     // with the pass's computeflag and shearupdate already set.
     void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
     {
-        if (wall_) return;
+        if (part_ != GB_CONTACT_PART_NORMAL || wall_) return;
         passInPlace_ = pairInPlace_ && sidata.computeflag && sidata.shearupdate;
         if (checkPending_ || atom->natoms != checkedNatoms_) checkTimestep();
         // later sub-models rebuild the fused table when they connect, and a
@@ -158,7 +169,7 @@ public:
                                                     sidata.r, sidata.radi, sidata.radj, sidata.v_i, sidata.v_j,
                                                     sidata.omega_i, sidata.omega_j, pairDt_,
                                                     &sidata.contact_history[pairState_], &out) != GB_STATUS_OK)
-            voigtFailed(lmp, sidata, "model voigt");
+            voigtFailed(lmp, sidata, sub_.words);
         sidata.Fn = fresh(out.normal_force);
         addPairLoads(i_forces, j_forces, out);
     }
@@ -171,25 +182,42 @@ private:
     // sub-models connect after this one. Pair contacts only (wall_: this
     // instance serves a wall).
     void checkTimestep();
+    // The part alone, on the frame: the normal force, or the tangential or
+    // rolling step on the contact's slots.
+    void partOnly(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
+    // The slots a step or an evaluation reads, of the `len` the core
+    // writes from `stored` on, `own` of them this model's: the stored ones
+    // in a real force step, else a copy in `scratch` (setup pass,
+    // per-contact output; the slots not ours zero), to be written back
+    // after a force step (`*writeBack`) when not all are ours; under a bond
+    // that holds the contact (heldByBond), zeroed stored slots and a zero
+    // `scratch`.
+    double *slots(const SurfacesIntersectData &sidata, double *stored, int own, int len, double *scratch,
+                  bool *writeBack);
+    // Fills share_->frame if this model computes it (`always`: also when
+    // another voigt model would have), and returns the part's three slots.
+    double *begin(const SurfacesIntersectData &sidata, bool always, double *scratch);
     // what the stock tangential, rolling and cohesion models read: kn, kt,
     // gamman, gammat of the type pair
     void handOn(SurfacesIntersectData &sidata);
-    void normalPart(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
     void stepFused(SurfacesIntersectData &sidata, double *state, GbContactOutput &out);
+    // normal + tangential (+ rolling) voigt in one core call
     void wholeContact(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
     // the cases wholeContact leaves aside: without rolling voigt, setup and
     // output passes, a contact held by a bond
     __attribute__((noinline)) void wholeContactAside(SurfacesIntersectData &sidata, ForceData &i_forces,
                                                      ForceData &j_forces);
 
+    const GbContactPart part_;
+    const GbSubModel sub_;        // what the deck calls it and the parts it reads (the core's)
+    const int contactFlag_;       // its bit of a pair's contact flag
     const void *owner_;
     VoigtContactShare *share_;
-    VoigtModelTable models_;
-    VoigtDeck deck_;
-    // per type pair, what handOn passes on: the normal and tangential parts
-    std::vector<GbVoigtParams> handed_;
-    int stride_;
-    bool fused_, fusedRolling_;   // share_->fused(), fusedRolling(), known once connected
+    VoigtModelTable models_;      // the part's own parameters, over the core's defaults
+    bool computesFrame_;          // the first voigt sub-model constructed
+    bool whole_, skip_;           // model voigt does the whole contact, and the others nothing
+    bool fusedRolling_;           // share_->fusedRolling(), known once connected
+    int offset_;                  // history offset of the part's slots (tangential, rolling)
     bool pairInPlace_;            // known once connected
     bool passInPlace_;            // pairInPlace_ in a force pass of the pair style
     int pairState_;               // history offset of the fused state
@@ -201,88 +229,6 @@ private:
     bool checkPending_;           // a run starts: check at its first pass
     LAMMPS_NS::bigint checkedNatoms_;
     TimestepWarning timestepWarning_;
-};
-
-// What tangential and rolling voigt have in common: three slots of the
-// core's contact state (forgotten when the contact ends), the contact frame
-// they compute or read, the deck's values of their part of the contact and
-// their own validated models. Instantiated (in voigt_contact.cpp) for
-// TangentialModelBase and RollingModelBase.
-template<class EngineBase>
-class VoigtHistoryModel : public EngineBase {
-public:
-    // `part`: the part of the Voigt contact, `caller` the sub-model as the
-    // deck names it, `firstSlot` its first slot of the contact state, kept
-    // in the history under `offsetName`; `contactFlag` its bit of a pair's
-    // contact flag
-    VoigtHistoryModel(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
-                      LIGGGHTS::ContactModels::ContactModelBase *cmb, GbContactPart part, const char *caller,
-                      size_t firstSlot, const char *offsetName, int contactFlag);
-    ~VoigtHistoryModel();
-
-    void registerSettings(::Settings &settings)
-    {
-        deck_.registerSettings(settings);
-        share_->registerSettings(settings);
-    }
-    void connectToProperties(::PropertyRegistry &registry);
-    void postSettings(LIGGGHTS::IContactHistorySetup *, LIGGGHTS::ContactModels::ContactModelBase *cmb)
-    {
-        share_->findBond(cmb);
-    }
-    void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &);
-    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
-    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
-
-protected:
-    // Fills share_->frame if this model computes it (`always`: also when
-    // another voigt model would have), and returns the three slots to
-    // advance: the stored ones in a real force step, else a copy in
-    // `scratch` (setup pass, per-contact output); under a bond that holds
-    // the contact (heldByBond), zeroed stored slots and a zero `scratch`.
-    double *begin(const SurfacesIntersectData &sidata, bool always, double *scratch);
-
-    const GbContactPart part_;
-    const char *const caller_;
-    const void *owner_;
-    VoigtContactShare *share_;
-    bool computesFrame_;
-    bool skip_;   // model voigt does the whole contact
-    int offset_;
-    const int contactFlag_;
-    VoigtDeck deck_;
-    VoigtModelTable models_;
-};
-
-class VoigtTangential : public VoigtHistoryModel<LIGGGHTS::ContactModels::TangentialModelBase> {
-public:
-    VoigtTangential(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
-                    LIGGGHTS::ContactModels::ContactModelBase *cmb);
-
-    // inline: in voigt x voigt the call costs only the flag and the test
-    void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
-    {
-        if (sidata.contact_flags) *sidata.contact_flags |= LIGGGHTS::ContactModels::CONTACT_TANGENTIAL_MODEL;
-        if (!skip_) intersect(sidata, i_forces, j_forces);
-    }
-
-private:
-    void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
-};
-
-class VoigtRolling : public VoigtHistoryModel<LIGGGHTS::ContactModels::RollingModelBase> {
-public:
-    VoigtRolling(LAMMPS_NS::LAMMPS *lmp, LIGGGHTS::IContactHistorySetup *hsetup,
-                 LIGGGHTS::ContactModels::ContactModelBase *cmb);
-
-    void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
-    {
-        if (sidata.contact_flags) *sidata.contact_flags |= LIGGGHTS::ContactModels::CONTACT_ROLLING_MODEL;
-        if (!skip_) intersect(sidata, i_forces, j_forces);
-    }
-
-private:
-    void intersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces);
 };
 
 }

@@ -95,22 +95,7 @@ void set(LAMMPS_NS::Error *error, const std::string &caller, GbVoigtParams &p, c
         endRun(error, FLERR, caller + ": " + coreReason());
 }
 
-std::map<const void *, VoigtContactShare *> &shares()
-{
-    static std::map<const void *, VoigtContactShare *> all;
-    return all;
-}
-
-
-}
-
-// ------------------------------------------------------------ deck
-
-VoigtDeck::VoigtDeck(unsigned owns, unsigned reads) :
-    owns_(owns), reads_(reads | owns), values_(voigtRows().size(), static_cast<double **>(0)),
-    switches_(voigtRows().size(), false)
-{}
-
+// Writes the switches that say a part is present into `p`.
 void setPresentParts(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, unsigned present)
 {
     for (const VoigtRow &r : voigtRows())
@@ -118,15 +103,48 @@ void setPresentParts(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams 
             set(error, caller, p, r.info, in(present, r.part) ? 1.0 : 0.0);
 }
 
-void VoigtDeck::registerSettings(::Settings &settings)
+std::map<const void *, VoigtContactShare *> &shares()
+{
+    static std::map<const void *, VoigtContactShare *> all;
+    return all;
+}
+
+}
+
+// ------------------------------------------------------------ deck
+
+VoigtContactShare::VoigtContactShare() :
+    frame(),
+    normal(false),
+    tangential_offset(-1),
+    rolling_offset(-1),
+    users_(0),
+    stride_(0),
+    settingRegistered_(false),
+    goesOnUnderBond_(false),
+    bondStatus_(-1),
+    bondedFlag_(-1),
+    values_(voigtRows().size(), static_cast<double **>(0))
+{
+    // a switch no sub-model registers keeps the core's default
+    for (const VoigtRow &r : voigtRows()) switches_.push_back(r.info.default_value != 0.0);
+}
+
+void VoigtContactShare::registerSettings(::Settings &settings, unsigned owns)
 {
     const std::vector<VoigtRow> &rows = voigtRows();
     for (size_t k = 0; k < rows.size(); k++)
-        if (in(owns_, rows[k].part) && rows[k].info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
+        if (in(owns, rows[k].part) && rows[k].info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
             settings.registerOnOff(rows[k].info.liggghts_name, switches_[k], rows[k].info.default_value != 0.0);
+    if (settingRegistered_) return;
+    settingRegistered_ = true;
+    GbParameterInfo info;
+    for (size_t k = 0; granbond_bond_parameter_info(k, &info) == GB_STATUS_OK; k++)
+        if (granbond_bond_parameter_sets_creation(k) == 2)
+            settings.registerOnOff(info.liggghts_name, goesOnUnderBond_, info.default_value != 0.0);
 }
 
-void VoigtDeck::connect(::PropertyRegistry &registry, const char *caller)
+void VoigtContactShare::connect(::PropertyRegistry &registry, const char *caller, unsigned reads)
 {
     // LIGGGHTS's own creators scale the stiffness and damping of a
     // coarse-grained deck; the core's table takes the values as written,
@@ -141,8 +159,7 @@ void VoigtDeck::connect(::PropertyRegistry &registry, const char *caller)
                std::string(caller) + ": the core's Voigt table has more rows than this adapter has property "
                                      "creators (raise kMaxRows)");
     for (size_t k = 0; k < rows.size(); k++) {
-        values_[k] = 0;
-        if (!in(reads_, rows[k].part) || rows[k].info.liggghts_source != GB_LIGGGHTS_SOURCE_PER_TYPE_PAIR) continue;
+        if (!in(reads, rows[k].part) || rows[k].info.liggghts_source != GB_LIGGGHTS_SOURCE_PER_TYPE_PAIR) continue;
         // registry keys of our own, so they cannot meet a stock model's
         // key of the same property with another creator
         const std::string key = std::string("voigt_") + rows[k].info.liggghts_name;
@@ -151,8 +168,8 @@ void VoigtDeck::connect(::PropertyRegistry &registry, const char *caller)
     }
 }
 
-void VoigtDeck::fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, int a, int b, unsigned parts,
-                     unsigned present) const
+void VoigtContactShare::fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, int a, int b,
+                             unsigned parts) const
 {
     const std::vector<VoigtRow> &rows = voigtRows();
     const std::string where = std::string(caller) + " (fix property/global, atom types " + std::to_string(a) +
@@ -160,52 +177,44 @@ void VoigtDeck::fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams 
     for (size_t k = 0; k < rows.size(); k++) {
         if (!in(parts, rows[k].part)) continue;
         if (values_[k]) set(error, where, p, rows[k].info, values_[k][a][b]);
-        if (in(owns_, rows[k].part) && rows[k].info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
+        if (rows[k].info.liggghts_source == GB_LIGGGHTS_SOURCE_SWITCH)
             set(error, caller, p, rows[k].info, switches_[k] ? 1.0 : 0.0);
     }
-    if (present) setPresentParts(error, caller, p, present);
 }
 
-std::vector<GbVoigtParams> VoigtDeck::all(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts,
-                                          unsigned present) const
+std::vector<GbVoigtParams> VoigtContactShare::params(LAMMPS_NS::Error *error, const char *caller, int ntypes,
+                                                     unsigned parts, unsigned present) const
 {
     const int stride = ntypes + 1;
     GbVoigtParams defaults;
     granbond_voigt_params_default(&defaults);
-    std::vector<GbVoigtParams> params(stride * stride, defaults);
+    std::vector<GbVoigtParams> all(stride * stride, defaults);
     for (int a = 1; a <= ntypes; a++)
-        for (int b = 1; b <= ntypes; b++) fill(error, caller, params[a * stride + b], a, b, parts, present);
-    return params;
+        for (int b = 1; b <= ntypes; b++) {
+            fill(error, caller, all[a * stride + b], a, b, parts);
+            setPresentParts(error, caller, all[a * stride + b], present);
+        }
+    return all;
+}
+
+void VoigtContactShare::contribute(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts)
+{
+    if (ntypes + 1 != stride_) {
+        stride_ = ntypes + 1;
+        GbVoigtParams defaults;
+        granbond_voigt_params_default(&defaults);
+        params_.assign(stride_ * stride_, defaults);
+    }
+    for (int a = 1; a <= ntypes; a++)
+        for (int b = 1; b <= ntypes; b++) fill(error, caller, params_[a * stride_ + b], a, b, parts);
+    if (!fused()) return;
+    const unsigned present = partBit(GB_CONTACT_PART_NORMAL) | partBit(GB_CONTACT_PART_TANGENTIAL) |
+                             (fusedRolling() ? partBit(GB_CONTACT_PART_ROLLING) : 0u);
+    for (size_t k = 0; k < params_.size(); k++) setPresentParts(error, "voigt contact", params_[k], present);
+    table_.build(error, "voigt contact", stride_ - 1, params_);
 }
 
 // ------------------------------------------------------------ shared state
-
-VoigtContactShare::VoigtContactShare() :
-    frame(),
-    normal(false),
-    tangential_offset(-1),
-    rolling_offset(-1),
-    users_(0),
-    stride_(0),
-    settingRegistered_(false),
-    goesOnUnderBond_(false),
-    bondStatus_(-1),
-    bondedFlag_(-1)
-{}
-
-void VoigtContactShare::registerSettings(::Settings &settings)
-{
-    if (settingRegistered_) return;
-    settingRegistered_ = true;
-    // the bond table's switch of what the contact does under a bond, under
-    // its LIGGGHTS name; a cohesion model of the style registers it too, the
-    // engine sets both from the one word, and that model has the last word
-    // once the deck is read (bondSays)
-    GbParameterInfo info;
-    for (size_t k = 0; granbond_bond_parameter_info(k, &info) == GB_STATUS_OK; k++)
-        if (granbond_bond_parameter_sets_creation(k) == 2)
-            settings.registerOnOff(info.liggghts_name, goesOnUnderBond_, info.default_value != 0.0);
-}
 
 void VoigtContactShare::findBond(LIGGGHTS::ContactModels::ContactModelBase *cmb)
 {
@@ -235,24 +244,6 @@ void VoigtContactShare::detach(const void *owner)
         delete it->second;
         shares().erase(it);
     }
-}
-
-void VoigtContactShare::resize(int ntypes)
-{
-    if (ntypes + 1 == stride_) return;
-    stride_ = ntypes + 1;
-    GbVoigtParams defaults;
-    granbond_voigt_params_default(&defaults);
-    params_.assign(stride_ * stride_, defaults);
-}
-
-void VoigtContactShare::rebuild(LAMMPS_NS::Error *error)
-{
-    if (!fused()) return;
-    const unsigned present = partBit(GB_CONTACT_PART_NORMAL) | partBit(GB_CONTACT_PART_TANGENTIAL) |
-                             (fusedRolling() ? partBit(GB_CONTACT_PART_ROLLING) : 0u);
-    for (size_t k = 0; k < params_.size(); k++) setPresentParts(error, "voigt contact", params_[k], present);
-    table_.build(error, "voigt contact", stride_ - 1, params_);
 }
 
 }

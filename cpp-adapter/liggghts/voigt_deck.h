@@ -1,8 +1,9 @@
-// The Voigt contact's parameters as LIGGGHTS decks give them (the
-// per-type-pair properties and switches of each part, by the rows of the
-// core's Voigt table), the core models built from them, and the state the
-// voigt sub-models of one pair style or wall fix share
-// (VoigtContactShare). Compiled in voigt_deck.cpp.
+// What the voigt sub-models of one pair style or wall fix share
+// (VoigtContactShare): the deck's values, row by row of the core's Voigt
+// table (the per-type-pair properties by each row's LIGGGHTS name, the
+// switches), the parameters of the whole contact built from them, the
+// contact frame and where the history and a bond are. Compiled in
+// voigt_deck.cpp.
 #ifndef GRANBOND_LIGGGHTS_VOIGT_DECK_H
 #define GRANBOND_LIGGGHTS_VOIGT_DECK_H
 
@@ -41,35 +42,6 @@ private:
 // The parts of the Voigt contact (granbond_voigt_parameter_part) as bits.
 inline unsigned partBit(GbContactPart part) { return 1u << static_cast<unsigned>(part); }
 
-// What a voigt sub-model reads from the deck, row by row of the core's
-// Voigt table: the per-type-pair properties of the parts it reads (by the
-// row's LIGGGHTS name) and the switches of the parts it owns (registered
-// with the engine's settings).
-class VoigtDeck {
-public:
-    VoigtDeck(unsigned owns, unsigned reads);
-
-    void registerSettings(::Settings &settings);
-    void connect(::PropertyRegistry &registry, const char *caller);
-    // The rows of the parts in `parts` for types a, b written into `p`; the
-    // switches that say a part is present (LiggghtsSource FIXED) on for
-    // the parts in `present`. The core refuses a value out of range.
-    void fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, int a, int b, unsigned parts,
-              unsigned present) const;
-    // `fill` for every pair of types 1..ntypes, over the core's defaults.
-    std::vector<GbVoigtParams> all(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts,
-                                   unsigned present) const;
-    unsigned owns() const { return owns_; }
-
-private:
-    unsigned owns_, reads_;
-    std::vector<double **> values_;   // per row: the connected property, or null
-    std::deque<bool> switches_;       // per row: the engine's Settings take a bool&
-};
-
-// Writes the switches that say a part is present into `p`.
-void setPresentParts(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, unsigned present);
-
 class VoigtContactShare {
 public:
     // Joins the share of ContactModel `owner`; `*first` tells whether the
@@ -77,17 +49,26 @@ public:
     static VoigtContactShare *attach(const void *owner, bool *first);
     static void detach(const void *owner);
 
-    // Writes each type pair's parameters owned by the caller into the
-    // combined set, and rebuilds the combined models when they are used.
-    // Every sub-model has validated its own parameters by then.
-    void contribute(LAMMPS_NS::Error *error, const char *caller, int ntypes, const VoigtDeck &deck)
-    {
-        resize(ntypes);
-        for (int a = 1; a <= ntypes; a++)
-            for (int b = 1; b <= ntypes; b++)
-                deck.fill(error, caller, params_[a * stride_ + b], a, b, deck.owns(), 0);
-        rebuild(error);
-    }
+    // The switches of the parts in `owns` under their LIGGGHTS names, and
+    // once the bond table's switch of what the contact does under a bond
+    // (granbond_bond_parameter_sets_creation 2): a cohesion model of the
+    // style registers it too, the engine sets both from the one word, and
+    // that model has the last word once the deck is read (bondSays).
+    void registerSettings(::Settings &settings, unsigned owns);
+    // Connects the per-type-pair properties of the parts in `reads`.
+    void connect(::PropertyRegistry &registry, const char *caller, unsigned reads);
+    // The deck's rows of the parts in `parts` for every pair of types
+    // 1..ntypes, over the core's defaults; the switches that say a part is
+    // present (LiggghtsSource FIXED) on for the parts in `present`. The core
+    // refuses a value out of range, the message naming `caller`.
+    std::vector<GbVoigtParams> params(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts,
+                                      unsigned present) const;
+    // Writes the rows of `parts` into the whole contact's parameters, and
+    // rebuilds its models when they are used.
+    void contribute(LAMMPS_NS::Error *error, const char *caller, int ntypes, unsigned parts);
+    // The whole contact's parameters of a type pair (what a voigt normal
+    // model hands on to stock models: it reads the tangential part too).
+    const GbVoigtParams &whole(int itype, int jtype) const { return params_[itype * stride_ + jtype]; }
 
     // The whole contact in one core call: normal and tangential voigt, with
     // the rolling history right after the tangential one when rolling is
@@ -98,10 +79,6 @@ public:
     const GbVoigtModel *fusedModel(int itype, int jtype) const { return table_.at(itype, jtype); }
     const VoigtModelTable &fusedTable() const { return table_; }
 
-    // The bond table's switch of what the contact does under a bond
-    // (granbond_bond_parameter_sets_creation 2), registered by whichever
-    // voigt sub-model the engine asks for its settings first.
-    void registerSettings(::Settings &settings);
     // What the contact does under a bond of the style of ContactModel
     // `owner`, as its bond model says once the deck is read: the switch, or
     // the law's where the deck does not give it. Nothing without a voigt
@@ -130,8 +107,7 @@ public:
 
 private:
     VoigtContactShare();
-    void resize(int ntypes);
-    void rebuild(LAMMPS_NS::Error *error);
+    void fill(LAMMPS_NS::Error *error, const char *caller, GbVoigtParams &p, int a, int b, unsigned parts) const;
 
     int users_;
     int stride_;
@@ -139,6 +115,8 @@ private:
     bool goesOnUnderBond_;
     int bondStatus_;   // history offset of a wall bond's status, -1 without one
     int bondedFlag_;   // the contact flag's bit of a pair bond, -1 without one
+    std::vector<double **> values_;   // per row: the connected property, or null
+    std::deque<bool> switches_;       // per row: the engine's Settings take a bool&
     std::vector<GbVoigtParams> params_;
     VoigtModelTable table_;
 };

@@ -1,12 +1,15 @@
 // `model voigt`, `tangential voigt` and `rolling_friction voigt` as LIGGGHTS
 // normal, tangential and rolling models: the template slots the engine's
-// GranStyle<> combinations instantiate. All behaviour lives in VoigtNormal,
-// VoigtTangential and VoigtRolling (voigt_contact.cpp, compiled once); this
-// gives them ids, and leaves out what the fused combinations do not read.
+// GranStyle<> combinations instantiate. Each is VoigtSubModel
+// (voigt_contact.h) with its part of the contact; normal models also say
+// how the force grows with the overlap.
 #ifndef GRANBOND_LIGGGHTS_VOIGT_MODELS_H
 #define GRANBOND_LIGGGHTS_VOIGT_MODELS_H
 
 #include "voigt_contact.h"
+#include "normal_model_base.h"
+#include "tangential_model_base.h"
+#include "rolling_model_base.h"
 #include "surface_model_default.h"
 
 namespace LIGGGHTS {
@@ -17,17 +20,24 @@ static const int NORMAL_VOIGT = 40;
 static const int TANGENTIAL_VOIGT = 40;
 static const int ROLLING_VOIGT = 40;
 
-#define GRANBOND_VOIGT_SLOT(Slot, id, Impl)                                                                    \
-    template<>                                                                                             \
-    class Slot<id> : public granbond::liggghts::Impl {                                                     \
-    public:                                                                                                \
-        Slot(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *cmb) : Impl(lmp, hsetup, cmb) \
-        {}                                                                                                 \
+#define GRANBOND_VOIGT_SLOT(Slot, id, part, extra)                                                             \
+    template<>                                                                                                 \
+    class Slot<id> : public granbond::liggghts::VoigtSubModel {                                                \
+    public:                                                                                                    \
+        Slot(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *cmb) :                         \
+            VoigtSubModel(lmp, hsetup, cmb, part)                                                              \
+        {}                                                                                                     \
+        __attribute__((always_inline)) void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, \
+                                                              ForceData &j_forces)                             \
+        {                                                                                                      \
+            intersect<part>(sidata, i_forces, j_forces);                                                       \
+        }                                                                                                      \
+        extra                                                                                                  \
     };
 
-GRANBOND_VOIGT_SLOT(NormalModel, NORMAL_VOIGT, VoigtNormal)
-GRANBOND_VOIGT_SLOT(TangentialModel, TANGENTIAL_VOIGT, VoigtTangential)
-GRANBOND_VOIGT_SLOT(RollingModel, ROLLING_VOIGT, VoigtRolling)
+GRANBOND_VOIGT_SLOT(NormalModel, NORMAL_VOIGT, GB_CONTACT_PART_NORMAL, double stressStrainExponent() { return 1.0; })
+GRANBOND_VOIGT_SLOT(TangentialModel, TANGENTIAL_VOIGT, GB_CONTACT_PART_TANGENTIAL, )
+GRANBOND_VOIGT_SLOT(RollingModel, ROLLING_VOIGT, GB_CONTACT_PART_ROLLING, )
 
 #undef GRANBOND_VOIGT_SLOT
 

@@ -120,7 +120,7 @@
 /**
  * Bumped whenever a struct, a function or a meaning changes.
  */
-#define GRANBOND_ABI_VERSION 23
+#define GRANBOND_ABI_VERSION 24
 
 /**
  * The meaning of the state slots (`granbond_state_slot`): bumped whenever a
@@ -1168,6 +1168,21 @@ typedef struct GbPhrase {
    */
   const char *sets;
 } GbPhrase;
+
+/**
+ * A voigt sub-model of LIGGGHTS (strings in static storage).
+ */
+typedef struct GbSubModel {
+  /**
+   * The words of `pair_style gran` and `fix wall/gran` that name it
+   * ("tangential voigt"), as messages name it.
+   */
+  const char *words;
+  /**
+   * The parts whose rows it reads from the deck, as bits `1 << part`.
+   */
+  uint32_t reads;
+} GbSubModel;
 
 /**
  * One row of a parameter table (strings in static storage).
@@ -2221,6 +2236,16 @@ enum GbStatus granbond_voigt_phrase_info(size_t id, struct GbPhrase *phrase);
  * `part` must be null or valid for writes.
  */
 enum GbStatus granbond_voigt_parameter_part(size_t id, enum GbContactPart *part);
+
+/**
+ * The voigt sub-model of LIGGGHTS that computes part `part` (a
+ * `GbContactPart`): what a deck calls it and which parts of the Voigt table
+ * it reads. `GB_STATUS_INVALID_ARGUMENT` past the last part.
+ *
+ * # Safety
+ * `row` must be null or valid for writes.
+ */
+enum GbStatus granbond_voigt_sub_model(size_t part, struct GbSubModel *row);
 
 /**
  * Reads the words of a `pair_coeff` line of `pair_style granbond` after

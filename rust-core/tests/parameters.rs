@@ -415,6 +415,46 @@ fn every_voigt_row_has_its_part() {
     assert_eq!(parts, rows);
 }
 
+/// LIGGGHTS's stock tangential and rolling models read the spring and
+/// dashpot from the engine's contact data, so `model voigt` must have read
+/// the rows it hands them.
+#[test]
+fn model_voigt_reads_the_tangential_rows_it_hands_to_stock_models() {
+    use granbond::contact::{ContactPart, VOIGT_SUB_MODELS};
+    let normal = &VOIGT_SUB_MODELS[ContactPart::Normal as usize];
+    assert_eq!(normal.words, "model voigt");
+    for handed in ["k_n", "gamma_n", "k_t", "gamma_t"] {
+        let (_, part) = granbond::contact::VOIGT_PARTS
+            .iter()
+            .find(|(n, _)| *n == handed)
+            .unwrap();
+        assert!(normal.reads.contains(part), "model voigt does not read {handed}");
+    }
+}
+
+/// Each sub-model reads its own part and is the one a deck names by the
+/// words of the switch that says its part is present.
+#[test]
+fn each_voigt_sub_model_reads_its_part_and_names_its_presence_switch() {
+    use granbond::contact::{ContactPart, VOIGT_SUB_MODELS};
+    use granbond::parameters::LiggghtsSource;
+    for (k, sub) in VOIGT_SUB_MODELS.iter().enumerate() {
+        assert_eq!(sub.part as usize, k, "{}", sub.words);
+        assert!(sub.reads.contains(&sub.part), "{}", sub.words);
+    }
+    for (row, (_, part)) in VOIGT_PARAMETERS.iter().zip(granbond::contact::VOIGT_PARTS) {
+        if row.source == LiggghtsSource::Fixed {
+            assert_eq!(
+                row.liggghts_name, VOIGT_SUB_MODELS[*part as usize].words,
+                "{}",
+                row.name
+            );
+        }
+    }
+    let rolling = &VOIGT_SUB_MODELS[ContactPart::Rolling as usize];
+    assert_eq!(rolling.reads, &[ContactPart::Rolling]);
+}
+
 /// Rolling resistance reads exactly the rolling part's values.
 #[test]
 fn the_rolling_part_is_what_rolling_resistance_reads() {

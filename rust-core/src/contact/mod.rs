@@ -17,5 +17,7 @@ pub(crate) mod wide;
 
 pub use frame::{sphere_plane, sphere_sphere, ContactFrame, FrameError, FrameIn, Motion, Plane};
 pub use model::{TangentialLoad, VoigtModel};
-pub use params::{ContactPart, VoigtParams, VOIGT_PARAMETERS, VOIGT_PARTS, VOIGT_PHRASES};
+pub use params::{
+    ContactPart, SubModel, VoigtParams, VOIGT_PARAMETERS, VOIGT_PARTS, VOIGT_PHRASES, VOIGT_SUB_MODELS,
+};
 pub use state::{ContactOutput, ContactState, CONTACT_SLOTS, CONTACT_STATE_LEN};

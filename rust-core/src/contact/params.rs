@@ -113,6 +113,41 @@ pub const VOIGT_PARTS: &[(&str, ContactPart)] = &[
     ("rolling", ContactPart::Rolling),
 ];
 
+/// A sub-model of an engine that composes the contact from one per part
+/// (LIGGGHTS): the words a deck names it by, and the parts whose rows it
+/// reads.
+pub struct SubModel {
+    /// The part it computes.
+    pub part: ContactPart,
+    /// The words of `pair_style gran` and `fix wall/gran` that name it.
+    pub words: &'static str,
+    /// The parts whose rows it reads from the deck.
+    pub reads: &'static [ContactPart],
+}
+
+/// LIGGGHTS's voigt sub-models, one per part in the order of
+/// [`ContactPart`]. `model voigt` reads the tangential part too: it hands
+/// `k_t` and `gamma_t` on (with `k_n` and `gamma_n`) to a stock tangential,
+/// rolling or cohesion model after it, which reads them from the engine's
+/// contact data rather than the deck.
+pub const VOIGT_SUB_MODELS: &[SubModel] = &[
+    SubModel {
+        part: ContactPart::Normal,
+        words: "model voigt",
+        reads: &[ContactPart::Normal, ContactPart::Tangential],
+    },
+    SubModel {
+        part: ContactPart::Tangential,
+        words: "tangential voigt",
+        reads: &[ContactPart::Tangential],
+    },
+    SubModel {
+        part: ContactPart::Rolling,
+        words: "rolling_friction voigt",
+        reads: &[ContactPart::Rolling],
+    },
+];
+
 /// The `voigt` phrases of `pair_coeff` (docs/reference/pair_granbond.md): the
 /// five values after the model's name, rolling resistance with its four, the
 /// attraction switch.

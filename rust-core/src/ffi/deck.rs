@@ -12,7 +12,7 @@ use super::error::{Failure, Status};
 use super::guard::{reference, reference_mut, slice, slice_mut};
 use crate::bond::{BondParams, PHRASES};
 use crate::coeff;
-use crate::contact::{ContactPart, VoigtParams, VOIGT_PARTS, VOIGT_PHRASES};
+use crate::contact::{ContactPart, VoigtParams, VOIGT_PARTS, VOIGT_PHRASES, VOIGT_SUB_MODELS};
 use crate::liggghts_words;
 use crate::parameters::Phrase;
 use std::ffi::{c_char, CStr, CString};
@@ -111,6 +111,47 @@ pub unsafe extern "C" fn granbond_voigt_parameter_part(id: usize, part: *mut Con
         .get(id)
         .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("parameter id {id} out of range")))?
         .1;
+    Ok(())
+}
+
+/// A voigt sub-model of LIGGGHTS (strings in static storage).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct SubModelRow {
+    /// The words of `pair_style gran` and `fix wall/gran` that name it
+    /// ("tangential voigt"), as messages name it.
+    pub words: *const c_char,
+    /// The parts whose rows it reads from the deck, as bits `1 << part`.
+    pub reads: u32,
+}
+
+// SAFETY: `words` points into `CString`s that live in a `static`.
+unsafe impl Send for SubModelRow {}
+unsafe impl Sync for SubModelRow {}
+
+/// The voigt sub-model of LIGGGHTS that computes part `part` (a
+/// `GbContactPart`): what a deck calls it and which parts of the Voigt table
+/// it reads. `GB_STATUS_INVALID_ARGUMENT` past the last part.
+///
+/// # Safety
+/// `row` must be null or valid for writes.
+#[entry(row: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_voigt_sub_model(part: usize, row: *mut SubModelRow) -> Status {
+    static WORDS: OnceLock<Vec<CString>> = OnceLock::new();
+    let words = WORDS.get_or_init(|| {
+        VOIGT_SUB_MODELS
+            .iter()
+            .map(|s| CString::new(s.words).expect("no NUL in a sub-model's words"))
+            .collect()
+    });
+    let sub = VOIGT_SUB_MODELS
+        .get(part)
+        .ok_or_else(|| Failure::new(Status::InvalidArgument, format!("part {part} out of range")))?;
+    *row = SubModelRow {
+        words: words[part].as_ptr(),
+        reads: sub.reads.iter().fold(0, |bits, p| bits | 1 << *p as u32),
+    };
     Ok(())
 }
 

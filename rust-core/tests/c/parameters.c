@@ -566,6 +566,18 @@ int test_deck_phrases(void)
     EXPECT_OK(granbond_voigt_parameter_part(5, &part), "part of k_r");
     CHECK(part == GB_CONTACT_PART_ROLLING, "k_r is the rolling part's");
     EXPECT(granbond_voigt_parameter_part(N_VOIGT_FIELDS, &part), GB_STATUS_INVALID_ARGUMENT, "part past the last row");
+    {
+        GbSubModel sub;
+        EXPECT_OK(granbond_voigt_sub_model(GB_CONTACT_PART_NORMAL, &sub), "sub-model of the normal part");
+        CHECK(strcmp(sub.words, "model voigt") == 0, "the normal part is model voigt");
+        CHECK(sub.reads == ((1u << GB_CONTACT_PART_NORMAL) | (1u << GB_CONTACT_PART_TANGENTIAL)),
+              "model voigt reads the normal and tangential parts");
+        EXPECT_OK(granbond_voigt_sub_model(GB_CONTACT_PART_ROLLING, &sub), "sub-model of the rolling part");
+        CHECK(strcmp(sub.words, "rolling_friction voigt") == 0 && sub.reads == 1u << GB_CONTACT_PART_ROLLING,
+              "rolling_friction voigt reads its own part");
+        EXPECT(granbond_voigt_sub_model(3, &sub), GB_STATUS_INVALID_ARGUMENT, "sub-model past the last part");
+        EXPECT(granbond_voigt_sub_model(0, NULL), GB_STATUS_NULL_POINTER, "sub-model into NULL");
+    }
     return 0;
 }
 

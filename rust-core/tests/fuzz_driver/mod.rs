@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 141] = [
+pub const ENTRY_POINTS: [&str; 142] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -125,6 +125,7 @@ pub const ENTRY_POINTS: [&str; 141] = [
     "granbond_bond_phrase_info",
     "granbond_voigt_phrase_info",
     "granbond_voigt_parameter_part",
+    "granbond_voigt_sub_model",
     "granbond_pair_coeff_read",
     "granbond_bond_coeff_read",
     "granbond_bond_params_rows",
@@ -1225,6 +1226,15 @@ impl<'t> Session<'t> {
             let status = unsafe { fd::granbond_voigt_parameter_part(id, part.ptr(h)) };
             if self.answer("granbond_voigt_parameter_part", status) {
                 assert!(id < VOIGT_PARAMETERS.len());
+            }
+            let mut sub = Place::new(fd::SubModelRow {
+                words: null(),
+                reads: 0,
+            });
+            // SAFETY: null, misaligned or valid pointer.
+            let status = unsafe { fd::granbond_voigt_sub_model(id, sub.ptr(h)) };
+            if self.answer("granbond_voigt_sub_model", status) {
+                assert!(id < 3 && !sub.get().words.is_null() && sub.get().reads & 1 << id != 0);
             }
         }
     }
