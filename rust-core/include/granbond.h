@@ -141,6 +141,12 @@
 #define GRANBOND_BREAK_LOG_LINE_LEN 256
 
 /**
+ * Bytes of the bond store's record in restart files
+ * (`granbond_store_record_write`).
+ */
+#define GRANBOND_STORE_RECORD_LEN 120
+
+/**
  * Values of `granbond_store_counts_row`.
  */
 #define GRANBOND_COUNTS_ROW_LEN 8
@@ -1336,6 +1342,45 @@ typedef struct GbBreakEvent {
 } GbBreakEvent;
 
 /**
+ * A rank's atom ids as the engine keeps them: exactly one of `narrow`
+ * (32-bit ids) and `wide` (64-bit) is set, for `count` atoms (local, then
+ * ghost).
+ */
+typedef struct GbAtomIds {
+  /**
+   * 32-bit ids, or null.
+   */
+  const int32_t *narrow;
+  /**
+   * 64-bit ids, or null.
+   */
+  const int64_t *wide;
+  /**
+   * The number of atoms.
+   */
+  size_t count;
+} GbAtomIds;
+
+/**
+ * The energy of a rank's bonds that left them (J), since the budget was
+ * first kept (or restored).
+ */
+typedef struct GbEnergySums {
+  /**
+   * Dissipated by the damping.
+   */
+  double damping;
+  /**
+   * Dissipated by the hysteresis (the history's moves).
+   */
+  double hysteresis;
+  /**
+   * Released by breaks: what the broken bonds stored.
+   */
+  double released;
+} GbEnergySums;
+
+/**
  * One row of a parameter table (strings in static storage).
  */
 typedef struct GbParameterInfo {
@@ -1372,26 +1417,6 @@ typedef struct GbParameterInfo {
    */
   double default_value;
 } GbParameterInfo;
-
-/**
- * A rank's atom ids as the engine keeps them: exactly one of `narrow`
- * (32-bit ids) and `wide` (64-bit) is set, for `count` atoms (local, then
- * ghost).
- */
-typedef struct GbAtomIds {
-  /**
-   * 32-bit ids, or null.
-   */
-  const int32_t *narrow;
-  /**
-   * 64-bit ids, or null.
-   */
-  const int64_t *wide;
-  /**
-   * The number of atoms.
-   */
-  size_t count;
-} GbAtomIds;
 
 /**
  * What the link reads of a rank's atoms.
@@ -1485,25 +1510,6 @@ typedef struct GbBrokenBond {
 } GbBrokenBond;
 
 /**
- * The energy of a rank's bonds that left them (J), since the budget was
- * first kept (or restored).
- */
-typedef struct GbEnergySums {
-  /**
-   * Dissipated by the damping.
-   */
-  double damping;
-  /**
-   * Dissipated by the hysteresis (the history's moves).
-   */
-  double hysteresis;
-  /**
-   * Released by breaks: what the broken bonds stored.
-   */
-  double released;
-} GbEnergySums;
-
-/**
  * One contact of a sphere with a wall, as the wall's loop reports it.
  */
 typedef struct GbWallContact {
@@ -1577,6 +1583,8 @@ typedef struct GbWallVisit {
    */
   struct GbBondOutput out;
 } GbWallVisit;
+
+
 
 #ifdef __cplusplus
 extern "C" {
@@ -2709,6 +2717,77 @@ enum GbStatus granbond_store_check_findings(double *keys,
                                             struct GbCheckReport *out);
 
 /**
+ * This rank's part of the store check of pair bonds (`GRANBOND_CHECK_STORE`):
+ * each bond of `store` joins one of the `nlocal` local atoms (its owner)
+ * and an atom (local or ghost, ids `ids`) of the id it names; its key (the
+ * lower and the higher id) written to `keys` (`capacity` doubles,
+ * `2 * granbond_bond_store_len(store)` suffice) and their number to
+ * `written`, for `granbond_store_check_findings` over all ranks. A bond
+ * that does not: level 1 in `out` and its words, no key written.
+ *
+ * # Safety
+ * `store` must be null or a store; `ids` null or a `GbAtomIds` whose
+ * arrays hold `ids->count` ids; `keys` null or `capacity` writable
+ * doubles; `written` and `out` null or valid for writes.
+ */
+enum GbStatus granbond_bond_store_check_keys(const struct GbBondStore *store,
+                                             const struct GbAtomIds *ids,
+                                             size_t nlocal,
+                                             double *keys,
+                                             size_t capacity,
+                                             size_t *written,
+                                             struct GbCheckReport *out);
+
+/**
+ * The same for the wall bonds of `store`: each held by the rank of its
+ * sphere, one of the local atoms `ids`; its key (the sphere's id and the
+ * wall) written to `keys` (`2 * granbond_wall_store_len(store)` doubles
+ * suffice).
+ *
+ * # Safety
+ * As `granbond_bond_store_check_keys`, `store` null or a wall store.
+ */
+enum GbStatus granbond_wall_store_check_keys(const struct GbWallStore *store,
+                                             const struct GbAtomIds *ids,
+                                             double *keys,
+                                             size_t capacity,
+                                             size_t *written,
+                                             struct GbCheckReport *out);
+
+/**
+ * The bond store's record in a restart file, written to `record`
+ * (`capacity` bytes, `GRANBOND_STORE_RECORD_LEN` of them written): the
+ * counts `counts` and energy sums `energy` summed over the ranks, and the
+ * layout of the bonds' state (`GRANBOND_STATE_LAYOUT_VERSION`), each
+ * number in the machine's byte order after the record's length.
+ *
+ * # Safety
+ * `counts` must be null or a `GbStoreCounts`; `energy` null or a
+ * `GbEnergySums`; `record` null or `capacity` writable bytes.
+ */
+enum GbStatus granbond_store_record_write(const struct GbStoreCounts *counts,
+                                          const struct GbEnergySums *energy,
+                                          uint8_t *record,
+                                          size_t capacity);
+
+/**
+ * Reads a bond store's record of a restart file (as
+ * `granbond_store_record_write` wrote it) into `counts` and `energy`. A
+ * record of another layout, or one whose bonds were written with another
+ * state layout, is `GB_STATUS_INVALID_ARGUMENT`, the message saying with
+ * which layout and what to do, before a bond is read.
+ *
+ * # Safety
+ * `record` must be null or point to 8 readable bytes, and to
+ * `GRANBOND_STORE_RECORD_LEN` where they hold this record's length (the
+ * engine hands what the file holds); `counts` and `energy` null or valid
+ * for writes.
+ */
+enum GbStatus granbond_store_record_read(const uint8_t *record,
+                                         struct GbStoreCounts *counts,
+                                         struct GbEnergySums *energy);
+
+/**
  * Row `id` of the bond parameter table (`id < granbond_bond_parameter_count()`).
  *
  * # Safety
@@ -3497,21 +3576,6 @@ enum GbStatus granbond_wall_store_unpack(struct GbWallStore *store,
 enum GbStatus granbond_wall_store_renumber(struct GbWallStore *store,
                                            const int64_t *map,
                                            size_t len);
-
-/**
- * Writes each bond held, its sphere's id to `ids` and its wall to `walls`
- * (`capacity` entries each; `granbond_wall_store_len` of them are held),
- * and the bonds written to `written`: the engines' recount of the store
- * (GRANBOND_CHECK_STORE).
- *
- * # Safety
- * Pointers must be null or valid; `ids` and `walls` for `capacity` entries.
- */
-enum GbStatus granbond_wall_store_keys(const struct GbWallStore *store,
-                                       int64_t *ids,
-                                       uint32_t *walls,
-                                       size_t capacity,
-                                       size_t *written);
 
 /**
  * The wall bonds held, intact or broken; 0 for a null store.

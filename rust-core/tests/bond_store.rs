@@ -11,6 +11,7 @@ use granbond::bond_store::{
     BOND_BUDGET_BYTES, BYTES_PER_BOND, CHUNK,
 };
 use granbond::kinematics::PairKinematics;
+use granbond::ledger::check::pair_keys;
 use granbond::pair_source::AtomArrays;
 
 const R: f64 = common::RADIUS;
@@ -1030,4 +1031,20 @@ fn a_setup_pass_of_inl_code_is_its_own_trial_step() {
             "bond {ids:?}: the trial step's history extremes are kept"
         );
     }
+}
+
+#[test]
+fn the_store_checks_keys_name_each_bond_by_its_atoms_and_refuse_a_partner_not_found() {
+    let model = bond_model(common::params());
+    let (store, atoms) = bonded_pair(&model);
+    let keys = pair_keys(&store, Ids::Wide(&atoms.ids), atoms.nlocal).unwrap();
+    assert_eq!(keys, [[1.0, 2.0]]);
+    // the partner's slot now holds another atom: the bond names no atom here
+    let other = [1, 9];
+    assert_eq!(
+        pair_keys(&store, Ids::Wide(&other), atoms.nlocal),
+        Err("bond 0 does not join its owner and its partner 2".into())
+    );
+    // the owner is not a local atom
+    assert!(pair_keys(&store, Ids::Wide(&atoms.ids), 0).is_err());
 }

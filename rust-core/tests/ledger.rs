@@ -7,13 +7,13 @@ use common::{model, params};
 use granbond::bond::fields::{BOND_ENERGY_FIELDS, BOND_FIELDS};
 use granbond::bond::output_slots::BOND_OUTPUT_LEN;
 use granbond::bond::{BondOutput, BondParams, BOND_STATE_LEN};
-use granbond::bond_store::StoreCounts;
+use granbond::bond_store::{EnergySums, StoreCounts};
 use granbond::ledger::break_log::{log_text, read_words, BreakEvent, HEADER, LINE_LEN};
 use granbond::ledger::c_format::c_g;
 use granbond::ledger::check::{findings, Keys};
 use granbond::ledger::columns::{known, BondColumns, Column};
 use granbond::ledger::run_checks::{thin_periodic_box, PeriodicBox};
-use granbond::ledger::{counts_row, notice, Notice};
+use granbond::ledger::{counts_row, notice, record, Notice};
 use proptest::prelude::*;
 use std::ffi::{c_char, c_int, CStr};
 
@@ -414,4 +414,36 @@ fn the_store_check_finds_a_bond_held_twice_before_counts_that_do_not_balance() {
         Some("5 wall bonds created or restored, 1 broken, 3 intact, 2 lost".into())
     );
     assert_eq!(findings(&mut once, &[5, 1, 3, 1], Keys::Pairs), None);
+}
+
+#[test]
+fn the_stores_record_brings_back_the_counts_and_energies_bit_for_bit() {
+    let c = StoreCounts {
+        created: 9,
+        broken_tension: 2,
+        lost_partner_unreached: 1,
+        intact: 6,
+        ..Default::default()
+    };
+    let e = EnergySums {
+        damping: 1.25e-9,
+        hysteresis: 3.0e-10,
+        released: 7.0e-11,
+    };
+    let r = record::write(&c, &e, 4);
+    assert_eq!(r.len(), record::RECORD_LEN);
+    assert!(record::is_current(record::body_len(r[..8].try_into().unwrap())));
+    assert_eq!(record::read(&r, 4), Ok((c, e)));
+    // the bonds' state of another layout is refused, naming both
+    assert_eq!(
+        record::read(&r, 5),
+        Err(
+            "the restart file's bonds were written with bond state layout 4, and this granbond reads layout 5 \
+             only: continue the run with the granbond that wrote the file, or start it again from its data file \
+             or deck"
+                .into()
+        )
+    );
+    // a record of another length is of an older layout
+    assert!(!record::is_current(record::body_len((96i64).to_ne_bytes())));
 }

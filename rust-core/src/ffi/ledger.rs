@@ -3,6 +3,7 @@
 //! over their ranks, gather the break events and the store check's keys,
 //! and print or write what these entries compose.
 
+use super::abi::GRANBOND_STATE_LAYOUT_VERSION;
 use super::checks::CheckReport;
 use super::deck::{text, word_list};
 use super::entry;
@@ -11,13 +12,15 @@ use super::fields::record_fields;
 use super::guard::{
     array, array_mut, finite_vector3, non_negative, positive, reference, reference_mut, slice, slice_mut,
 };
+use super::store::{ids as id_list, AtomIds};
 use crate::bond::fields::BOND_ENERGY_FIELD_COUNT;
 use crate::bond::output_slots::BOND_OUTPUT_LEN;
 use crate::bond::{BondModel, BondOutput, BOND_STATE_LEN};
-use crate::bond_store::StoreCounts;
+use crate::bond_store::{BondStore, EnergySums, StoreCounts, WallStore};
 use crate::ledger::break_log::{self, BreakEvent};
-use crate::ledger::check::{findings, Keys};
+use crate::ledger::check::{findings, pair_keys, wall_keys, Keys};
 use crate::ledger::columns::BondColumns;
+use crate::ledger::record::{self, RECORD_LEN};
 use crate::ledger::run_checks::{thin_periodic_box, PeriodicBox};
 use crate::ledger::{counts_row, notice, Notice, COUNTS_ROW_LEN};
 use std::ffi::c_char;
@@ -26,6 +29,11 @@ use std::ffi::c_char;
 /// (`granbond_break_log_text`).
 pub const GRANBOND_BREAK_LOG_LINE_LEN: usize = 256;
 const _: () = assert!(GRANBOND_BREAK_LOG_LINE_LEN == break_log::LINE_LEN);
+
+/// Bytes of the bond store's record in restart files
+/// (`granbond_store_record_write`).
+pub const GRANBOND_STORE_RECORD_LEN: usize = 120;
+const _: () = assert!(GRANBOND_STORE_RECORD_LEN == RECORD_LEN);
 
 /// Values of `granbond_store_counts_row`.
 pub const GRANBOND_COUNTS_ROW_LEN: usize = 8;
@@ -412,5 +420,155 @@ pub unsafe extern "C" fn granbond_store_check_findings(
         Some(message) => out.write(1, &message),
         None => out.write(0, ""),
     }
+    Ok(())
+}
+
+/// Writes the keys `keys` (two doubles each: the bonds' written to
+/// `written`) and the finding `out` (level 1 and its words, no key
+/// written) of one rank's part of the store check.
+fn write_keys(
+    found: Result<Vec<[f64; 2]>, String>,
+    keys: &mut [f64],
+    written: &mut usize,
+    out: &mut CheckReport,
+) -> Result<(), Failure> {
+    *written = 0;
+    match found {
+        Err(message) => out.write(1, &message),
+        Ok(found) => {
+            if 2 * found.len() > keys.len() {
+                return Err(Failure::new(
+                    Status::InvalidArgument,
+                    format!(
+                        "capacity {} is less than the {} doubles of the keys",
+                        keys.len(),
+                        2 * found.len()
+                    ),
+                ));
+            }
+            for (d, key) in keys.chunks_exact_mut(2).zip(&found) {
+                d.copy_from_slice(key);
+            }
+            *written = found.len();
+            out.write(0, "");
+        }
+    }
+    Ok(())
+}
+
+/// This rank's part of the store check of pair bonds (`GRANBOND_CHECK_STORE`):
+/// each bond of `store` joins one of the `nlocal` local atoms (its owner)
+/// and an atom (local or ghost, ids `ids`) of the id it names; its key (the
+/// lower and the higher id) written to `keys` (`capacity` doubles,
+/// `2 * granbond_bond_store_len(store)` suffice) and their number to
+/// `written`, for `granbond_store_check_findings` over all ranks. A bond
+/// that does not: level 1 in `out` and its words, no key written.
+///
+/// # Safety
+/// `store` must be null or a store; `ids` null or a `GbAtomIds` whose
+/// arrays hold `ids->count` ids; `keys` null or `capacity` writable
+/// doubles; `written` and `out` null or valid for writes.
+#[entry(store: reference, ids: reference, keys: slice_mut(capacity), written: reference_mut, out: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_check_keys(
+    store: *const BondStore,
+    ids: *const AtomIds,
+    nlocal: usize,
+    keys: *mut f64,
+    capacity: usize,
+    written: *mut usize,
+    out: *mut CheckReport,
+) -> Status {
+    let ids = id_list(ids)?;
+    if nlocal > ids.len() {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!("nlocal {nlocal} exceeds the {} atoms of ids", ids.len()),
+        ));
+    }
+    write_keys(pair_keys(store, ids, nlocal), keys, written, out)
+}
+
+/// The same for the wall bonds of `store`: each held by the rank of its
+/// sphere, one of the local atoms `ids`; its key (the sphere's id and the
+/// wall) written to `keys` (`2 * granbond_wall_store_len(store)` doubles
+/// suffice).
+///
+/// # Safety
+/// As `granbond_bond_store_check_keys`, `store` null or a wall store.
+#[entry(store: reference, ids: reference, keys: slice_mut(capacity), written: reference_mut, out: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_wall_store_check_keys(
+    store: *const WallStore,
+    ids: *const AtomIds,
+    keys: *mut f64,
+    capacity: usize,
+    written: *mut usize,
+    out: *mut CheckReport,
+) -> Status {
+    write_keys(wall_keys(store, id_list(ids)?), keys, written, out)
+}
+
+/// The bond store's record in a restart file, written to `record`
+/// (`capacity` bytes, `GRANBOND_STORE_RECORD_LEN` of them written): the
+/// counts `counts` and energy sums `energy` summed over the ranks, and the
+/// layout of the bonds' state (`GRANBOND_STATE_LAYOUT_VERSION`), each
+/// number in the machine's byte order after the record's length.
+///
+/// # Safety
+/// `counts` must be null or a `GbStoreCounts`; `energy` null or a
+/// `GbEnergySums`; `record` null or `capacity` writable bytes.
+#[entry(counts: reference, energy: reference, record: slice_mut(capacity))]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_store_record_write(
+    counts: *const StoreCounts,
+    energy: *const EnergySums,
+    record: *mut u8,
+    capacity: usize,
+) -> Status {
+    let written = record::write(counts, energy, GRANBOND_STATE_LAYOUT_VERSION);
+    record
+        .get_mut(..RECORD_LEN)
+        .ok_or_else(|| {
+            Failure::new(
+                Status::InvalidArgument,
+                format!("capacity {capacity} is less than the {RECORD_LEN} bytes of the record"),
+            )
+        })?
+        .copy_from_slice(&written);
+    Ok(())
+}
+
+/// Reads a bond store's record of a restart file (as
+/// `granbond_store_record_write` wrote it) into `counts` and `energy`. A
+/// record of another layout, or one whose bonds were written with another
+/// state layout, is `GB_STATUS_INVALID_ARGUMENT`, the message saying with
+/// which layout and what to do, before a bond is read.
+///
+/// # Safety
+/// `record` must be null or point to 8 readable bytes, and to
+/// `GRANBOND_STORE_RECORD_LEN` where they hold this record's length (the
+/// engine hands what the file holds); `counts` and `energy` null or valid
+/// for writes.
+#[entry(counts: reference_mut, energy: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_store_record_read(
+    record: *const u8,
+    counts: *mut StoreCounts,
+    energy: *mut EnergySums,
+) -> Status {
+    let head: [u8; 8] = slice(record, 8, "record")?.try_into().expect("8 bytes");
+    if !record::is_current(record::body_len(head)) {
+        // a record without the state layout holds bonds of layout 3 or earlier
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            record::refusal("an older bond state layout", GRANBOND_STATE_LAYOUT_VERSION),
+        ));
+    }
+    let whole: &[u8; RECORD_LEN] = slice(record, RECORD_LEN, "record")?
+        .try_into()
+        .expect("the record's bytes");
+    (*counts, *energy) = record::read(whole, GRANBOND_STATE_LAYOUT_VERSION)
+        .map_err(|m| Failure::new(Status::InvalidArgument, m))?;
     Ok(())
 }

@@ -1,8 +1,11 @@
 //! The findings of the store check both adapters run after every pass
 //! under `GRANBOND_CHECK_STORE` (docs/development.md, "Where a bond
-//! lives"): each bond held once over all ranks, and created = broken +
-//! intact + lost over all ranks. The adapters gather the keys and sum the
-//! counts over their ranks; the judgement and its words are here.
+//! lives"): each bond held by the rank of its owner (a pair bond's partner
+//! the atom it names), each bond held once over all ranks, and created =
+//! broken + intact + lost over all ranks. The adapters gather the keys and
+//! sum the counts over their ranks; the judgement and its words are here.
+
+use crate::bond_store::{BondStore, Ids, WallStore};
 
 /// What the keys of a check name: the atoms of pair bonds, or the sphere
 /// and wall of wall bonds.
@@ -48,4 +51,47 @@ pub fn unbalanced(sums: &[i64; 4], of: Keys) -> Option<String> {
 /// balance; `None` when all is well.
 pub fn findings(keys: &mut [[f64; 2]], sums: &[i64; 4], of: Keys) -> Option<String> {
     repeated_key(keys, of).or_else(|| unbalanced(sums, of))
+}
+
+/// The keys of the pair bonds of one rank's `store` (each the lower and
+/// the higher id of its atoms), or the first bond that does not join one
+/// of the `nlocal` local atoms (its owner) and an atom (local or ghost,
+/// ids `ids`) of the id it names as its partner.
+pub fn pair_keys(store: &BondStore, ids: Ids<'_>, nlocal: usize) -> Result<Vec<[f64; 2]>, String> {
+    (0..store.len())
+        .map(|k| {
+            let (bond, [owner, partner]) = store
+                .bond(k)
+                .ok_or_else(|| format!("bond {k}: the store is not linked"))?;
+            let local = usize::try_from(owner).ok().filter(|&o| o < nlocal.min(ids.len()));
+            let found = usize::try_from(partner).ok().filter(|&p| p < ids.len());
+            match (local, found) {
+                (Some(o), Some(p)) if ids.get(p) == bond.partner => {
+                    let (a, b) = (ids.get(o) as f64, bond.partner as f64);
+                    Ok([a.min(b), a.max(b)])
+                }
+                _ => Err(format!(
+                    "bond {k} does not join its owner and its partner {}",
+                    bond.partner
+                )),
+            }
+        })
+        .collect()
+}
+
+/// The keys of the wall bonds of one rank's `store` (each its sphere's id
+/// and its wall), or the first bond whose sphere is not among the rank's
+/// local atoms (ids `local`).
+pub fn wall_keys(store: &WallStore, local: Ids<'_>) -> Result<Vec<[f64; 2]>, String> {
+    let mut here: Vec<i64> = (0..local.len()).map(|a| local.get(a)).collect();
+    here.sort_unstable();
+    store
+        .keys()
+        .map(|(id, wall)| match here.binary_search(&id) {
+            Ok(_) => Ok([id as f64, f64::from(wall)]),
+            Err(_) => Err(format!(
+                "the bond of sphere {id} and wall {wall} is held by a rank without the sphere"
+            )),
+        })
+        .collect()
 }

@@ -3,13 +3,15 @@
 //! their causes), of bonds dropped with their model and of renumbered atom
 //! ids, the store check's findings (`check`), the break log (`break_log`),
 //! the per-bond output columns (`columns`) and the run check of a thin
-//! periodic box (`run_checks`). The adapters sum the numbers over their
-//! ranks and print what is composed here; the words are written once.
+//! periodic box (`run_checks`), and the bond store's counts in restart files
+//! (`record`). The adapters sum the numbers over their ranks and print what
+//! is composed here; the words are written once.
 
 pub mod break_log;
 pub mod c_format;
 pub mod check;
 pub mod columns;
+pub mod record;
 pub mod run_checks;
 
 use crate::bond_store::StoreCounts;

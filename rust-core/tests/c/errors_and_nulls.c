@@ -496,6 +496,56 @@ static GbStatus null_store_check_findings(struct world *c, int k)
     return granbond_store_check_findings(ARG(k, 0, keys), 1, ARG(k, 1, LEDGER_COUNTS), 0, ARG(k, 2, &c->report));
 }
 
+/* One atom of id 0, and room for a key: the store checks' arguments. */
+static const int64_t ONE_ID[1] = {0};
+static const GbAtomIds ONE_ATOM = {NULL, ONE_ID, 1};
+
+static GbStatus null_bond_store_check_keys(struct world *c, int k)
+{
+    GbBondStore *store = NULL;
+    double keys[2];
+    GbStatus s = granbond_bond_store_new(&store);
+    if (s == GB_STATUS_OK)
+        s = granbond_bond_store_check_keys(ARG(k, 0, store), ARG(k, 1, &ONE_ATOM), 1, ARG(k, 2, keys), 2,
+                                           ARG(k, 3, &c->index), ARG(k, 4, &c->report));
+    granbond_bond_store_free(store);
+    return s;
+}
+
+static GbStatus null_wall_store_check_keys(struct world *c, int k)
+{
+    GbWallStore *store = NULL;
+    double keys[2];
+    GbStatus s = granbond_wall_store_new(&store);
+    if (s == GB_STATUS_OK)
+        s = granbond_wall_store_check_keys(ARG(k, 0, store), ARG(k, 1, &ONE_ATOM), ARG(k, 2, keys), 2,
+                                           ARG(k, 3, &c->index), ARG(k, 4, &c->report));
+    granbond_wall_store_free(store);
+    return s;
+}
+
+/* A record of no bonds (zero counts and sums; never written). */
+static GbStoreCounts NO_COUNTS;
+static GbEnergySums NO_ENERGY;
+
+static GbStatus null_store_record_write(struct world *c, int k)
+{
+    uint8_t record[GRANBOND_STORE_RECORD_LEN];
+    (void)c;
+    return granbond_store_record_write(ARG(k, 0, &NO_COUNTS), ARG(k, 1, &NO_ENERGY), ARG(k, 2, record), sizeof record);
+}
+
+static GbStatus null_store_record_read(struct world *c, int k)
+{
+    GbStoreCounts counts;
+    GbEnergySums energy;
+    uint8_t record[GRANBOND_STORE_RECORD_LEN];
+    (void)c;
+    if (granbond_store_record_write(&NO_COUNTS, &NO_ENERGY, record, sizeof record) != GB_STATUS_OK)
+        return GB_STATUS_INVALID_ARGUMENT;
+    return granbond_store_record_read(ARG(k, 0, record), ARG(k, 1, &counts), ARG(k, 2, &energy));
+}
+
 static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_check_layout", null_check_layout, {"expected"}},
     {"granbond_state_slot", null_state_slot, {"name", "flips_on_swap"}},
@@ -538,6 +588,10 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_bond_columns_row", null_bond_columns_row, {"columns", "model", "record", "energy", "x_i", "x_j", "row"}},
     {"granbond_thin_periodic_box_check", null_thin_periodic_box_check, {"style", "periodic", "length", "out"}},
     {"granbond_store_check_findings", null_store_check_findings, {"keys", "sums", "out"}},
+    {"granbond_bond_store_check_keys", null_bond_store_check_keys, {"store", "ids", "keys", "written", "out"}},
+    {"granbond_wall_store_check_keys", null_wall_store_check_keys, {"store", "ids", "keys", "written", "out"}},
+    {"granbond_store_record_write", null_store_record_write, {"counts", "energy", "record"}},
+    {"granbond_store_record_read", null_store_record_read, {"record", "counts", "energy"}},
     {"granbond_bond_centre", null_bond_centre, {"x_i", "x_j", "centre"}},
     {"granbond_bond_max_distance", null_bond_max_distance, {"model", "out"}},
     {"granbond_bond_contact_distance_factor", null_bond_contact_distance_factor, {"model", "out"}},

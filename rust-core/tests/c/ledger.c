@@ -151,7 +151,39 @@ static int test_box_and_store_checks(void)
     return 0;
 }
 
+static int test_store_record(void)
+{
+    GbStoreCounts counts, back;
+    GbEnergySums energy, energy_back;
+    uint8_t record[GRANBOND_STORE_RECORD_LEN];
+    int64_t layout = 0;
+    memset(&counts, 0, sizeof counts);
+    counts.created = 7;
+    counts.lost_id_reused = 2;
+    counts.intact = 5;
+    energy.damping = 1.5e-9;
+    energy.hysteresis = 2.5e-10;
+    energy.released = 0.0;
+    EXPECT_OK(granbond_store_record_write(&counts, &energy, record, sizeof record), "granbond_store_record_write");
+    EXPECT_OK(granbond_store_record_read(record, &back, &energy_back), "granbond_store_record_read");
+    CHECK(memcmp(&counts, &back, sizeof counts) == 0 && memcmp(&energy, &energy_back, sizeof energy) == 0,
+          "the record brings back the counts and energies bit for bit");
+    memcpy(&layout, record, sizeof layout);
+    CHECK(layout == (int64_t)(GRANBOND_STORE_RECORD_LEN - sizeof layout), "the record leads with its length");
+    EXPECT(granbond_store_record_write(&counts, &energy, record, 8), GB_STATUS_INVALID_ARGUMENT, "no room");
+    layout = GRANBOND_STATE_LAYOUT_VERSION + 1;
+    memcpy(record + GRANBOND_STORE_RECORD_LEN - sizeof layout, &layout, sizeof layout);
+    EXPECT(granbond_store_record_read(record, &back, &energy_back), GB_STATUS_INVALID_ARGUMENT, "another layout");
+    EXPECT_MESSAGE("written with bond state layout");
+    layout = 96;
+    memcpy(record, &layout, sizeof layout);
+    EXPECT(granbond_store_record_read(record, &back, &energy_back), GB_STATUS_INVALID_ARGUMENT, "an older record");
+    EXPECT_MESSAGE("an older bond state layout");
+    return 0;
+}
+
 int test_ledger(void)
 {
-    return test_counts_and_notices() || test_break_log() || test_columns() || test_box_and_store_checks();
+    return test_counts_and_notices() || test_break_log() || test_columns() || test_box_and_store_checks() ||
+           test_store_record();
 }

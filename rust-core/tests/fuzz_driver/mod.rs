@@ -63,7 +63,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 152] = [
+pub const ENTRY_POINTS: [&str; 155] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -156,6 +156,10 @@ pub const ENTRY_POINTS: [&str; 152] = [
     "granbond_bond_columns_row",
     "granbond_thin_periodic_box_check",
     "granbond_store_check_findings",
+    "granbond_bond_store_check_keys",
+    "granbond_wall_store_check_keys",
+    "granbond_store_record_write",
+    "granbond_store_record_read",
     "granbond_bond_store_new",
     "granbond_bond_store_free",
     "granbond_bond_store_grow",
@@ -209,7 +213,6 @@ pub const ENTRY_POINTS: [&str; 152] = [
     "granbond_wall_store_unpack",
     "granbond_wall_store_link",
     "granbond_wall_store_renumber",
-    "granbond_wall_store_keys",
     "granbond_wall_store_len",
     "granbond_wall_store_visit",
     "granbond_wall_store_counts",
@@ -2100,6 +2103,28 @@ impl<'t> Session<'t> {
                 );
             }
             self.ledger_counts(&counts.get());
+            let mut keys = vec![f64::NAN; 2 * fs::granbond_bond_store_len(st)];
+            let (mut written, mut found) = (usize::MAX, std::mem::zeroed::<CheckReport>());
+            let status = fl::granbond_bond_store_check_keys(
+                st,
+                &wide_ids,
+                nlocal,
+                keys.as_mut_ptr(),
+                keys.len(),
+                &mut written,
+                &mut found,
+            );
+            if self.answer("granbond_bond_store_check_keys", status) && found.level == 0 {
+                assert_eq!(
+                    2 * written,
+                    keys.len(),
+                    "granbond_bond_store_check_keys: a key a bond"
+                );
+                assert!(
+                    keys.chunks(2).all(|k| k[0] <= k[1]),
+                    "granbond_bond_store_check_keys: the lower id first"
+                );
+            }
             let held = fs::granbond_bond_store_len(st);
             self.answer_value("granbond_bond_store_len");
             let mut energy = Place::new(f64::NAN);
@@ -2452,15 +2477,24 @@ impl<'t> Session<'t> {
                 self.answer("granbond_wall_store_renumber", renumbered);
                 let back = fw::granbond_wall_store_renumber(ot, map.as_ptr(), map.len());
                 self.answer("granbond_wall_store_renumber", back);
-                let (mut key_ids, mut key_walls, mut keys) = ([0i64; 4], [0u32; 4], 0usize);
-                let listed = fw::granbond_wall_store_keys(
+                let (mut keys, mut written) = ([0.0f64; 8], 0usize);
+                let mut found = std::mem::zeroed::<CheckReport>();
+                let listed = fl::granbond_wall_store_check_keys(
                     ot,
-                    key_ids.as_mut_ptr(),
-                    key_walls.as_mut_ptr(),
-                    4,
-                    &mut keys,
+                    &atoms,
+                    keys.as_mut_ptr(),
+                    8,
+                    &mut written,
+                    &mut found,
                 );
-                self.answer("granbond_wall_store_keys", listed);
+                if self.answer("granbond_wall_store_check_keys", listed) {
+                    assert!(
+                        (found.level == 0)
+                            == (written == granbond::ffi::wall_store::granbond_wall_store_len(ot)),
+                        "granbond_wall_store_check_keys: level {} with {written} keys",
+                        found.level
+                    );
+                }
                 let _ = fw::granbond_wall_store_len(ot);
                 self.answer_value("granbond_wall_store_len");
                 visit(self, ot, contact(2, 1));
@@ -2644,6 +2678,33 @@ impl<'t> Session<'t> {
                 row[0], c.created as f64,
                 "granbond_store_counts_row: created first"
             );
+        }
+        // the counts through a restart file's record (a short buffer where
+        // the counts say so, a damaged length where they say so), and back
+        let energy = granbond::bond_store::EnergySums {
+            damping: c.created as f64,
+            hysteresis: 0.5,
+            released: f64::NAN,
+        };
+        let mut record = [0u8; fl::GRANBOND_STORE_RECORD_LEN];
+        let capacity = if c.intact % 5 == 4 { 8 } else { record.len() };
+        // SAFETY: valid counts, energy and `capacity` bytes.
+        let status = unsafe { fl::granbond_store_record_write(c, &energy, record.as_mut_ptr(), capacity) };
+        if self.answer("granbond_store_record_write", status) {
+            if c.lost() % 4 == 3 {
+                record[0] ^= 1;
+            }
+            let (mut back, mut energy_back) = (
+                StoreCounts::default(),
+                granbond::bond_store::EnergySums::default(),
+            );
+            // SAFETY: a whole record; valid outputs.
+            let status =
+                unsafe { fl::granbond_store_record_read(record.as_ptr(), &mut back, &mut energy_back) };
+            if self.answer("granbond_store_record_read", status) {
+                assert_eq!(back, *c, "granbond_store_record_read: the counts bit for bit");
+                assert_eq!(energy_back.damping.to_bits(), energy.damping.to_bits());
+            }
         }
         let lost = [
             c.lost_owner_gone,
