@@ -4,9 +4,10 @@
 // with the id it names (granbond_bond_store_check_keys), that each bond is
 // stored once over all ranks and that created = broken + intact + lost
 // over all ranks (granbond_store_check_findings); this gathers the keys
-// and sums the counts. The adapters add what their lists say (every listed
-// pair flagged bonded exactly when the store or its view holds its bond).
-// checkWallBonds does the same for a wall fix's bonds.
+// and sums the counts. The adapters walk their lists for the core's check
+// of each pair's flag (flagFinding: flagged bonded exactly when the store
+// or its view holds its bond). checkWallBonds does the same for a wall
+// fix's bonds.
 #ifndef GRANBOND_STORE_CHECK_H
 #define GRANBOND_STORE_CHECK_H
 
@@ -46,6 +47,18 @@ inline std::string storeFindings(const std::vector<double> &mine, const GbStoreC
     if (granbond_store_check_findings(all.data(), all.size() / 2, sums, walls ? 1 : 0, &report) != GB_STATUS_OK)
         return "the store check's findings: " + coreReason();
     return report.level > 0 ? std::string(report.message) : std::string();
+}
+
+// What is wrong with the flag `flagged` of the listed pair of local atom i
+// and atom j in the engine's contact history against the store and its
+// view (the core's words), or "".
+inline std::string flagFinding(const GbBondStore *store, int i, int j, const GbAtomIds &ids, bool flagged)
+{
+    GbCheckReport found;
+    if (granbond_bond_store_check_flag(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids, flagged ? 1 : 0,
+                                       &found) != GB_STATUS_OK)
+        return coreReason();
+    return found.level > 0 ? std::string(found.message) : std::string();
 }
 
 // This rank's keys and finding as the core gives them (`check`: one of

@@ -207,14 +207,9 @@ void PairGranbond::checkStore()
     std::string wrong;
     for (int ii = 0; ii < list->inum && wrong.empty(); ii++) {
         const int i = list->ilist[ii];
-        for (int jj = 0; jj < list->numneigh[i] && wrong.empty(); jj++) {
-            const int j = list->firstneigh[i][jj] & NEIGHMASK;
-            const bool flagged = fixHistory_->firstflag[i][jj] == kBondedMark;
-            const bool bonded = granbond_bond_store_bonded(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids);
-            if (flagged != bonded)
-                wrong = "the pair of atoms " + std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
-                        std::to_string(static_cast<long long>(atom->tag[j])) + (flagged ? " is flagged bonded, but no bond" : " is bonded, but not flagged");
-        }
+        for (int jj = 0; jj < list->numneigh[i] && wrong.empty(); jj++)
+            wrong = flagFinding(store, i, list->firstneigh[i][jj] & NEIGHMASK, ids,
+                                fixHistory_->firstflag[i][jj] == kBondedMark);
     }
     const std::string rest = checkStoredBonds(store, ids, atom->nlocal, world);
     if (wrong.empty()) wrong = rest;

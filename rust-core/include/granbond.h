@@ -2739,6 +2739,24 @@ enum GbStatus granbond_bond_store_check_keys(const struct GbBondStore *store,
                                              struct GbCheckReport *out);
 
 /**
+ * This rank's part of the store check of a listed pair: whether the flag
+ * `flagged` (1 or 0) that local atom `i` and atom `j` (local or ghost, ids
+ * `ids`) carry in the engine's contact history, a cache of whether they
+ * are bonded, agrees with `store` and its view; level 1 in `out` and the
+ * words where it does not, else level 0.
+ *
+ * # Safety
+ * `store` must be null or a store; `ids` null or a `GbAtomIds` whose
+ * arrays hold `ids->count` ids; `out` null or valid for writes.
+ */
+enum GbStatus granbond_bond_store_check_flag(const struct GbBondStore *store,
+                                             size_t i,
+                                             size_t j,
+                                             const struct GbAtomIds *ids,
+                                             int32_t flagged,
+                                             struct GbCheckReport *out);
+
+/**
  * The same for the wall bonds of `store`: each held by the rank of its
  * sphere, one of the local atoms `ids`; its key (the sphere's id and the
  * wall) written to `keys` (`2 * granbond_wall_store_len(store)` doubles

@@ -18,7 +18,7 @@ use crate::bond::output_slots::BOND_OUTPUT_LEN;
 use crate::bond::{BondModel, BondOutput, BOND_STATE_LEN};
 use crate::bond_store::{BondStore, EnergySums, StoreCounts, WallStore};
 use crate::ledger::break_log::{self, BreakEvent};
-use crate::ledger::check::{findings, pair_keys, wall_keys, Keys};
+use crate::ledger::check::{findings, flag_finding, pair_keys, wall_keys, Keys};
 use crate::ledger::columns::BondColumns;
 use crate::ledger::record::{self, RECORD_LEN};
 use crate::ledger::run_checks::{thin_periodic_box, PeriodicBox};
@@ -487,6 +487,42 @@ pub unsafe extern "C" fn granbond_bond_store_check_keys(
         ));
     }
     write_keys(pair_keys(store, ids, nlocal), keys, written, out)
+}
+
+/// This rank's part of the store check of a listed pair: whether the flag
+/// `flagged` (1 or 0) that local atom `i` and atom `j` (local or ghost, ids
+/// `ids`) carry in the engine's contact history, a cache of whether they
+/// are bonded, agrees with `store` and its view; level 1 in `out` and the
+/// words where it does not, else level 0.
+///
+/// # Safety
+/// `store` must be null or a store; `ids` null or a `GbAtomIds` whose
+/// arrays hold `ids->count` ids; `out` null or valid for writes.
+#[entry(store: reference, ids: reference, out: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_check_flag(
+    store: *const BondStore,
+    i: usize,
+    j: usize,
+    ids: *const AtomIds,
+    flagged: i32,
+    out: *mut CheckReport,
+) -> Status {
+    let ids = id_list(ids)?;
+    if i >= ids.len() || j >= ids.len() || !(0..=1).contains(&flagged) {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!(
+                "i {i} and j {j} must be below the {} atoms of ids, flagged 0 or 1 (got {flagged})",
+                ids.len()
+            ),
+        ));
+    }
+    match flag_finding(store, i, j, ids, flagged == 1) {
+        Some(message) => out.write(1, &message),
+        None => out.write(0, ""),
+    }
+    Ok(())
 }
 
 /// The same for the wall bonds of `store`: each held by the rank of its

@@ -95,3 +95,23 @@ pub fn wall_keys(store: &WallStore, local: Ids<'_>) -> Result<Vec<[f64; 2]>, Str
         })
         .collect()
 }
+
+/// What is wrong with the flag a listed pair of local atom `i` and atom `j`
+/// (local or ghost, ids `ids`) carries in the engine's contact history (a
+/// cache of whether the pair is bonded), against what `store` and its view
+/// hold, in words; `None` when they agree.
+pub fn flag_finding(store: &BondStore, i: usize, j: usize, ids: Ids<'_>, flagged: bool) -> Option<String> {
+    if store.bonded(i, j, ids) == flagged {
+        return None;
+    }
+    let what = if flagged {
+        "is flagged bonded, but no bond"
+    } else {
+        "is bonded, but not flagged"
+    };
+    Some(format!(
+        "the pair of atoms {} and {} {what}",
+        ids.get(i),
+        ids.get(j)
+    ))
+}

@@ -512,6 +512,16 @@ static GbStatus null_bond_store_check_keys(struct world *c, int k)
     return s;
 }
 
+static GbStatus null_bond_store_check_flag(struct world *c, int k)
+{
+    GbBondStore *store = NULL;
+    GbStatus s = granbond_bond_store_new(&store);
+    if (s == GB_STATUS_OK)
+        s = granbond_bond_store_check_flag(ARG(k, 0, store), 0, 0, ARG(k, 1, &ONE_ATOM), 0, ARG(k, 2, &c->report));
+    granbond_bond_store_free(store);
+    return s;
+}
+
 static GbStatus null_wall_store_check_keys(struct world *c, int k)
 {
     GbWallStore *store = NULL;
@@ -589,6 +599,7 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_thin_periodic_box_check", null_thin_periodic_box_check, {"style", "periodic", "length", "out"}},
     {"granbond_store_check_findings", null_store_check_findings, {"keys", "sums", "out"}},
     {"granbond_bond_store_check_keys", null_bond_store_check_keys, {"store", "ids", "keys", "written", "out"}},
+    {"granbond_bond_store_check_flag", null_bond_store_check_flag, {"store", "ids", "out"}},
     {"granbond_wall_store_check_keys", null_wall_store_check_keys, {"store", "ids", "keys", "written", "out"}},
     {"granbond_store_record_write", null_store_record_write, {"counts", "energy", "record"}},
     {"granbond_store_record_read", null_store_record_read, {"record", "counts", "energy"}},

@@ -146,6 +146,14 @@ int test_bond_store(void)
                   "granbond_bond_store_check_keys, no local atom");
         CHECK(nkeys == 0 && found.level == 1 && strstr(found.message, "does not join its owner"),
               say("a bond whose owner is not local is found: %s", found.message));
+        EXPECT_OK(granbond_bond_store_check_flag(store, 1, 0, &ids, 1, &found), "granbond_bond_store_check_flag");
+        CHECK(found.level == 0, "the bonded pair flagged: nothing to say");
+        EXPECT_OK(granbond_bond_store_check_flag(store, 1, 0, &ids, 0, &found),
+                  "granbond_bond_store_check_flag, not flagged");
+        CHECK(found.level == 1 && strstr(found.message, "is bonded, but not flagged"),
+              say("a bonded pair without its flag is found: %s", found.message));
+        EXPECT(granbond_bond_store_check_flag(store, 1, 5, &ids, 1, &found), GB_STATUS_INVALID_ARGUMENT,
+               "granbond_bond_store_check_flag, j beyond the atoms");
     }
     {
         double energy = -1.0;

@@ -63,7 +63,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 155] = [
+pub const ENTRY_POINTS: [&str; 156] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -157,6 +157,7 @@ pub const ENTRY_POINTS: [&str; 155] = [
     "granbond_thin_periodic_box_check",
     "granbond_store_check_findings",
     "granbond_bond_store_check_keys",
+    "granbond_bond_store_check_flag",
     "granbond_wall_store_check_keys",
     "granbond_store_record_write",
     "granbond_store_record_read",
@@ -2123,6 +2124,17 @@ impl<'t> Session<'t> {
                 assert!(
                     keys.chunks(2).all(|k| k[0] <= k[1]),
                     "granbond_bond_store_check_keys: the lower id first"
+                );
+            }
+            // the flag of the pair of the first and the last atom, set as
+            // the keys' count says
+            let status =
+                fl::granbond_bond_store_check_flag(st, 0, n - 1, &wide_ids, (written % 2) as i32, &mut found);
+            if self.answer("granbond_bond_store_check_flag", status) {
+                assert!(
+                    found.level == 0 || found.level == 1,
+                    "granbond_bond_store_check_flag: level {}",
+                    found.level
                 );
             }
             let held = fs::granbond_bond_store_len(st);
