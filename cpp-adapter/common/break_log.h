@@ -1,89 +1,47 @@
-// The log of broken bonds, one line per bond, the same in both engines'
-// `fix bond/breaklog` (docs/reference/fix_bond_breaklog.md):
-//
-//     step id_i id_j x y z mode sigma tau sigma_max tau_max
-//
-// The adapters fill one BreakEvent per bond that broke on the rank that
-// counts it (each bond once over all ranks); rank 0 gathers, sorts by step
-// and ids, and writes, so the file does not depend on the number of ranks.
-// The centre and the limits are the core's (granbond_bond_centre,
-// granbond_bond_stress_limits).
+// The log of broken bonds, the same in both engines' `fix bond/breaklog`
+// (docs/reference/fix_bond_breaklog.md). The core makes each event, reads
+// the fix's words and writes the lines (granbond_break_event,
+// granbond_break_log_words, granbond_break_log_text); the adapters fill
+// one event per bond that broke on the rank that counts it (each bond
+// once over all ranks), and rank 0 gathers them and writes the file.
 #ifndef GRANBOND_BREAK_LOG_H
 #define GRANBOND_BREAK_LOG_H
 
+#include "core_message.h"
 #include "granbond.h"
 
 #include <mpi.h>
 
-#include <algorithm>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <string>
 #include <vector>
 
 namespace granbond {
 
-// Doubles only: the events travel to rank 0 as one MPI_DOUBLE array.
-struct BreakEvent {
-    double step;            // time step
-    double tag_i;           // lower atom id of a pair, the particle for a wall bond
-    double tag_j;           // other atom id; 0 for a wall
-    double x[3];            // bond centre (a wall bond: the wall point)
-    double mode;            // GbBreakMode
-    double sigma, tau;      // section stresses of the step that broke it
-    double sigmaMax, tauMax;   // their limits at that step (0 in distance mode)
-};
-
-inline const char *breakLogHeader()
-{
-    return "# step id_i id_j x y z mode sigma tau sigma_max tau_max   (id_j 0: a wall bond)\n";
-}
-
-inline const char *breakModeName(double mode)
-{
-    switch (static_cast<int>(mode)) {
-    case GB_BREAK_MODE_DISTANCE: return "distance";
-    case GB_BREAK_MODE_TENSION: return "tension";
-    case GB_BREAK_MODE_COMPRESSION: return "compression";
-    case GB_BREAK_MODE_SHEAR: return "shear";
-    default: return "unknown";
-    }
-}
-
-// The event of a bond of `model` that broke in step `step` with `out`;
-// sphere j of radius `radius_j` at `x_j` (a wall: radius 0 at the wall
-// point, `tag_j` 0). On failure the core's message says why.
-inline GbStatus makeBreakEvent(const GbBondModel *model, const GbBondOutput &out, const double *x_i,
-                               const double *x_j, double radius_i, double radius_j, double tag_i, double tag_j,
-                               double step, BreakEvent &e)
-{
-    GbStatus s = granbond_bond_centre(x_i, x_j, radius_i, radius_j, e.x);
-    if (s != GB_STATUS_OK) return s;
-    s = granbond_bond_stress_limits(model, out.delta, &e.sigmaMax, &e.tauMax);
-    if (s != GB_STATUS_OK) return s;
-    e.step = step;
-    e.tag_i = tag_j == 0.0 ? tag_i : std::min(tag_i, tag_j);
-    e.tag_j = tag_j == 0.0 ? 0.0 : std::max(tag_i, tag_j);
-    e.mode = out.break_mode;
-    e.sigma = out.sigma;
-    e.tau = out.tau;
-    return GB_STATUS_OK;
-}
+typedef GbBreakEvent BreakEvent;
 
 // The event of the bond between atoms i and j of an engine's `atom` that
-// broke with `out`, at `step`: the atom with the smaller id first.
+// broke with `out`, at `step`. On failure the core's message says why.
 template<class Atom>
 GbStatus makeBreakEvent(const GbBondModel *model, const GbBondOutput &out, const Atom *atom, int i, int j,
                         double step, BreakEvent &e)
 {
-    const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = lo == i ? j : i;
-    return makeBreakEvent(model, out, atom->x[lo], atom->x[hi], atom->radius[lo], atom->radius[hi],
-                          static_cast<double>(atom->tag[lo]), static_cast<double>(atom->tag[hi]), step, e);
+    return granbond_break_event(model, &out, atom->x[i], atom->x[j], atom->radius[i], atom->radius[j],
+                                static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]), step, &e);
+}
+
+// The core's lines for `events` (the header first where `header`).
+inline std::string breakLogText(std::vector<BreakEvent> &events, bool header)
+{
+    std::vector<char> text((events.size() + 1) * GRANBOND_BREAK_LOG_LINE_LEN);
+    if (granbond_break_log_text(events.data(), events.size(), header ? 1 : 0, text.data(), text.size()) !=
+        GB_STATUS_OK)
+        return "# the break log's lines: " + coreReason() + "\n";
+    return text.data();
 }
 
 // Gathers every rank's `mine` on rank 0 (and clears it), which writes them
-// to `file` sorted by step and ids. Collective.
+// to `file`. Collective.
 inline void writeBreakEvents(std::vector<BreakEvent> &mine, FILE *file, MPI_Comm world)
 {
     int me = 0, nprocs = 1;
@@ -104,15 +62,8 @@ inline void writeBreakEvents(std::vector<BreakEvent> &mine, FILE *file, MPI_Comm
                 counts.data(), offsets.data(), MPI_DOUBLE, 0, world);
     mine.clear();
     if (me != 0 || all.empty() || !file) return;
-    std::sort(all.begin(), all.end(), [](const BreakEvent &a, const BreakEvent &b) {
-        if (a.step != b.step) return a.step < b.step;
-        if (a.tag_i != b.tag_i) return a.tag_i < b.tag_i;
-        return a.tag_j < b.tag_j;
-    });
-    for (const BreakEvent &e : all)
-        fprintf(file, "%.0f %.0f %.0f %.10g %.10g %.10g %s %.6g %.6g %.6g %.6g\n", e.step, e.tag_i, e.tag_j, e.x[0],
-                e.x[1], e.x[2], breakModeName(e.mode), e.sigma, e.tau, e.sigmaMax, e.tauMax);
-    fflush(file);
+    std::fputs(breakLogText(all, false).c_str(), file);
+    std::fflush(file);
 }
 
 // The words of `fix ID group bond/breaklog FILE [every N]` and the file
@@ -128,22 +79,14 @@ public:
         if (file_) std::fclose(file_);
     }
 
-    // Reads the words after the style (arg[3] on); `every`: how many steps
-    // apart the log is written (100 unless given). Returns what is wrong,
-    // naming the word, or an empty string.
+    // Reads the fix's words (all of them, its id first); `every`: how many
+    // steps apart the log is written. Returns what is wrong, naming the
+    // word, or an empty string.
     static std::string words(int narg, char **arg, int &every)
     {
-        if (narg < 4) return "expected fix ID group bond/breaklog FILE [every N]";
-        every = 100;
-        for (int iarg = 4; iarg < narg; iarg += 2) {
-            if (std::strcmp(arg[iarg], "every") != 0 || iarg + 1 >= narg)
-                return std::string("unknown keyword '") + arg[iarg] + "' (the only one is: every N)";
-            char *end = nullptr;
-            const long n = std::strtol(arg[iarg + 1], &end, 10);
-            if (end == arg[iarg + 1] || *end != '\0' || n < 1 || n > 1000000000)
-                return std::string("every must be an integer >= 1, got '") + arg[iarg + 1] + "'";
-            every = static_cast<int>(n);
-        }
+        int32_t n = 0;
+        if (granbond_break_log_words(arg, static_cast<size_t>(narg), &n) != GB_STATUS_OK) return coreReason();
+        every = n;
         return std::string();
     }
 
@@ -154,7 +97,8 @@ public:
         if (me != 0) return std::string();
         file_ = std::fopen(path, "w");
         if (!file_) return std::string("cannot open ") + path;
-        std::fputs(breakLogHeader(), file_);
+        std::vector<BreakEvent> none;
+        std::fputs(breakLogText(none, true).c_str(), file_);
         std::fflush(file_);
         return std::string();
     }

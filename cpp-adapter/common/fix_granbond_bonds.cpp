@@ -327,10 +327,9 @@ GbStoreCounts BondStoreFix::counts() const
 }
 
 // The counts and the energy sums summed over the ranks, and the layout of
-// the bonds' state the per-atom part holds, after their own size: the
-// engines hand restart() what follows the payload's length, and read the
-// global part before the per-atom one, so a file whose bonds have another
-// layout is refused before a bond is read.
+// the bonds' state, in the core's record (granbond_store_record_write):
+// the engines read the global part before the per-atom one, so a file
+// whose bonds have another layout is refused before a bond is read.
 void BondStoreFix::write_restart(FILE *fp)
 {
     GbStoreCounts mine = counts(), all;
@@ -339,42 +338,23 @@ void BondStoreFix::write_restart(FILE *fp)
     std::memset(&myEnergy, 0, sizeof myEnergy);
     granbond_bond_store_energy_sums(store_, &myEnergy);
     MPI_Allreduce(&myEnergy, &allEnergy, sizeof(GbEnergySums) / sizeof(double), MPI_DOUBLE, MPI_SUM, world);
-    if (comm->me == 0) {
-        const int64_t layout = static_cast<int64_t>(sizeof(GbStoreCounts) + sizeof(GbEnergySums) + sizeof(int64_t));
-        const int64_t stateLayout = GRANBOND_STATE_LAYOUT_VERSION;
-        const int size = static_cast<int>(sizeof(int64_t) + layout);
-        fwrite(&size, sizeof(int), 1, fp);
-        fwrite(&layout, sizeof(int64_t), 1, fp);
-        fwrite(&all, sizeof(GbStoreCounts), 1, fp);
-        fwrite(&allEnergy, sizeof(GbEnergySums), 1, fp);
-        fwrite(&stateLayout, sizeof(int64_t), 1, fp);
-    }
+    uint8_t record[GRANBOND_STORE_RECORD_LEN];
+    if (granbond_store_record_write(&all, &allEnergy, record, sizeof record) != GB_STATUS_OK)
+        error->all(FLERR, ("fix granbond/bonds: " + coreReason()).c_str());
+    if (comm->me != 0) return;
+    const int size = static_cast<int>(sizeof record);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(record, 1, sizeof record, fp);
 }
 
 void BondStoreFix::restart(char *buf)
 {
-    int64_t layout = 0, stateLayout = 0;
-    std::memcpy(&layout, buf, sizeof layout);
-    const int64_t expected = static_cast<int64_t>(sizeof(GbStoreCounts) + sizeof(GbEnergySums) + sizeof(int64_t));
-    if (layout == expected)
-        std::memcpy(&stateLayout, buf + sizeof layout + expected - sizeof stateLayout, sizeof stateLayout);
-    if (stateLayout != GRANBOND_STATE_LAYOUT_VERSION) {
-        // a file without the state layout holds bonds of layout 3 or earlier
-        const std::string written = layout == expected ? "bond state layout " + std::to_string(stateLayout)
-                                                       : "an older bond state layout";
-        const std::string message = "fix granbond/bonds: the restart file's bonds were written with " + written +
-                                    ", and this granbond reads layout " +
-                                    std::to_string(GRANBOND_STATE_LAYOUT_VERSION) +
-                                    " only: continue the run with the granbond that wrote the file, or start "
-                                    "it again from its data file or deck";
-        error->all(FLERR, message.c_str());
-    }
-    if (comm->me != 0) return;
     GbStoreCounts c;
-    std::memcpy(&c, buf + sizeof layout, sizeof c);
-    granbond_bond_store_restore_counts(store_, &c);
     GbEnergySums e;
-    std::memcpy(&e, buf + sizeof layout + sizeof c, sizeof e);
+    if (granbond_store_record_read(reinterpret_cast<const uint8_t *>(buf), &c, &e) != GB_STATUS_OK)
+        error->all(FLERR, ("fix granbond/bonds: " + coreReason()).c_str());
+    if (comm->me != 0) return;
+    granbond_bond_store_restore_counts(store_, &c);
     granbond_bond_store_restore_energy_sums(store_, &e);
 }
 

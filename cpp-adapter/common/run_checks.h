@@ -1,17 +1,18 @@
 // The checks both adapters run at every `run` (and when the atom count
-// changes): the core judges the time step and the bond's creation rules;
-// this header only gathers what the core needs from the engine's atoms and
-// keeps each warning from being printed twice.
+// changes): the core judges the time step, the bond's creation rules, the
+// periodic box and renumbered ids, and words them; this header only
+// gathers what the core needs from the engine's atoms and keeps each
+// warning from being printed twice.
 #ifndef GRANBOND_RUN_CHECKS_H
 #define GRANBOND_RUN_CHECKS_H
 
+#include "core_message.h"
 #include "granbond.h"
 
 #include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <set>
 #include <string>
@@ -98,40 +99,30 @@ long long countRenumbered(int nlocal, const Tag *tag, const double *seen, MPI_Co
     return all;
 }
 
-// The error that ends a run after renumbering while bonds exist.
+// The error that ends a run after renumbering while bonds exist (the
+// core's words).
 inline std::string renumberedMessage(const char *style, long long renumbered)
 {
-    return std::string(style) + ": " + std::to_string(renumbered) +
-           " atoms changed their atom IDs since the previous run (delete_atoms with compress yes, its "
-           "default, or reset_atom_ids). Bonds are kept under the partner's atom ID, so a bond would act on "
-           "a pair that never bonded. Delete atoms with `delete_atoms ... compress no`";
+    const int64_t counts[4] = {renumbered, 0, 0, 0};
+    GbCheckReport report;
+    if (granbond_ledger_notice(GRANBOND_NOTICE_RENUMBERED, counts, 0, style, &report) != GB_STATUS_OK)
+        return std::string(style) + ": " + coreReason();
+    return report.message;
 }
 
-// The engines keep a pair's history under the partner's atom ID, so two
-// images of one atom in a neighbour list share one record. That happens in
-// a periodic direction shorter than twice the list's reach (the pair
-// reach plus the skin): a sphere meets its own image, or one partner
-// twice. A 2d run (`dimension` 2) has no images in z, whatever its extent.
-// `step` >= 0: the box changed during a run (fix deform) and is checked at
-// that step. Returns the error naming the first such direction, or "".
+// The core's check of a periodic direction too short for the engines'
+// per-pair history (granbond_thin_periodic_box_check). `step` >= 0: the
+// box changed during a run (fix deform) and is checked at that step.
+// Returns the error naming the first such direction, or "".
 inline std::string thinPeriodicBox(const char *style, int dimension, const int periodic[3], const double length[3],
                                    double listReach, double skin, long long step = -1)
 {
-    for (int d = 0; d < dimension; d++) {
-        if (!periodic[d] || length[d] >= 2.0 * listReach) continue;
-        char text[720];
-        const std::string when = step < 0 ? std::string() : " at step " + std::to_string(step) + ", as the box changed";
-        std::snprintf(text, sizeof text,
-                      "%s: the periodic box is %g long in %c%s, less than twice the neighbour reach %g (the pair "
-                      "reach %g plus the skin %g): a sphere can meet its own periodic image, or one partner "
-                      "twice, and the engine keeps a pair's contact and bond history under the partner's atom "
-                      "ID, so those pairs would share one record. %s %g long in %c%s",
-                      style, length[d], "xyz"[d], when.c_str(), listReach, listReach - skin, skin,
-                      step < 0 ? "Make the box at least" : "Keep the box (fix deform's final size) at least",
-                      2.0 * listReach, "xyz"[d], step < 0 ? " (replicate it), or use a fixed boundary there" : "");
-        return text;
-    }
-    return std::string();
+    const int32_t flags[3] = {periodic[0], periodic[1], periodic[2]};
+    GbCheckReport report;
+    if (granbond_thin_periodic_box_check(style, dimension, flags, length, listReach, skin, step, &report) !=
+        GB_STATUS_OK)
+        return std::string(style) + ": " + coreReason();
+    return report.message;
 }
 
 }

@@ -181,9 +181,9 @@ void BondGranbond::counts(double *values) const
     GbStoreCounts c;
     std::memset(&c, 0, sizeof c);
     if (bonds_) c = bonds_->counts();
-    double mine[8];
-    countsRow(c, mine);
-    MPI_Allreduce(mine, values, 8, MPI_DOUBLE, MPI_SUM, world);
+    double mine[GRANBOND_COUNTS_ROW_LEN];
+    granbond_store_counts_row(&c, mine);
+    MPI_Allreduce(mine, values, GRANBOND_COUNTS_ROW_LEN, MPI_DOUBLE, MPI_SUM, world);
 }
 
 bool BondGranbond::storeCurrent() const
@@ -233,17 +233,9 @@ void BondGranbond::linkTopology()
         error->one(FLERR, "bond_style granbond: the bonds of the topology: " + coreReason());
     // each atom's bonds to its ghost images, for the per-atom counts
     bonds_->sendView();
-    const long long mine[3] = {report.owner_gone, report.id_reused, report.no_model};
-    long long all[3];
-    MPI_Allreduce(mine, all, 3, MPI_LONG_LONG, MPI_SUM, world);
-    if (all[0] + all[1] + all[2] > 0 && comm->me == 0)
-        error->warning(FLERR, "bond_style granbond: " + std::to_string(all[0] + all[1] + all[2]) +
-                                  " bonds left the topology at step " +
-                                  std::to_string(static_cast<long long>(update->ntimestep)) +
-                                  " without breaking (" + std::to_string(all[0]) + " with their atom: delete_atoms "
-                                  "or lost through a boundary; " + std::to_string(all[1]) + " to a new atom under an "
-                                  "old id; " + std::to_string(all[2]) + " by delete_bonds); their state is dropped, "
-                                  "and a bond listed again starts at rest");
+    const int64_t mine[4] = {report.owner_gone, report.id_reused, report.no_model, 0};
+    const std::string left = ledgerNotice(GRANBOND_NOTICE_TOPOLOGY_LEFT_LAMMPS, mine, update->ntimestep, nullptr, world);
+    if (!left.empty() && comm->me == 0) error->warning(FLERR, left);
 }
 
 // Steps the bonds of the pass and adds their loads to the atoms: both

@@ -235,7 +235,7 @@ private:
 
     BondSource *pair_ = nullptr;
 
-    BondColumns columns_{true};
+    BondColumns columns_;
     LocalRows rows_;
 };
 

@@ -57,13 +57,8 @@ void PairGranbond::linkBonds()
     GbLinkReport report;
     if (linkStore(bonds_->store(), atom, kinds_, atom->ntypes, comm->cutghostuser, report) != GB_STATUS_OK)
         error->one(FLERR, "pair granbond: finding the bonds' atoms: " + coreReason());
-    std::string causes;
-    const long long lost = lostBonds(report, world, " (set type, or pair_coeff without bond/nonlinear)", causes);
-    if (lost > 0 && comm->me == 0)
-        error->warning(FLERR, "pair granbond (bond/nonlinear): " + std::to_string(lost) + " bonds lost at step " +
-                                  std::to_string(static_cast<long long>(update->ntimestep)) +
-                                  " without breaking: " + causes +
-                                  " (counted in compute pair granbond's 8th value)");
+    const std::string lost = linkLosses(GRANBOND_NOTICE_PAIRS_LOST_LAMMPS, report, update->ntimestep, world);
+    if (!lost.empty() && comm->me == 0) error->warning(FLERR, lost);
     bonds_->sendView();
     markBonded();
 }
@@ -190,7 +185,8 @@ bool PairGranbond::tryBond(size_t tp, int i, int j, int *touch, double *history)
 // them over the ranks).
 void PairGranbond::countBonds()
 {
-    countsRow(bonds_->counts(), pvector);
+    const GbStoreCounts c = bonds_->counts();
+    granbond_store_counts_row(&c, pvector);
     GbEnergySums e;
     if (granbond_bond_store_energy_sums(bonds_->store(), &e) != GB_STATUS_OK)
         error->one(FLERR, "pair granbond: " + coreReason());
@@ -211,16 +207,11 @@ void PairGranbond::checkStore()
     std::string wrong;
     for (int ii = 0; ii < list->inum && wrong.empty(); ii++) {
         const int i = list->ilist[ii];
-        for (int jj = 0; jj < list->numneigh[i] && wrong.empty(); jj++) {
-            const int j = list->firstneigh[i][jj] & NEIGHMASK;
-            const bool flagged = fixHistory_->firstflag[i][jj] == kBondedMark;
-            const bool bonded = granbond_bond_store_bonded(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids);
-            if (flagged != bonded)
-                wrong = "the pair of atoms " + std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
-                        std::to_string(static_cast<long long>(atom->tag[j])) + (flagged ? " is flagged bonded, but no bond" : " is bonded, but not flagged");
-        }
+        for (int jj = 0; jj < list->numneigh[i] && wrong.empty(); jj++)
+            wrong = flagFinding(store, i, list->firstneigh[i][jj] & NEIGHMASK, ids,
+                                fixHistory_->firstflag[i][jj] == kBondedMark);
     }
-    const std::string rest = checkStoredBonds(store, atom->tag, atom->nlocal, world);
+    const std::string rest = checkStoredBonds(store, ids, atom->nlocal, world);
     if (wrong.empty()) wrong = rest;
     int bad = !wrong.empty(), anyBad = 0;
     MPI_Allreduce(&bad, &anyBad, 1, MPI_INT, MPI_MAX, world);

@@ -64,9 +64,21 @@ long long BondBook::takeDropped(MPI_Comm world)
 
 std::string droppedMessage(long long dropped)
 {
-    return "cohesion bond/nonlinear: " + std::to_string(dropped) +
-           " intact bonds were dropped with the model that held them (unfix of a fix wall/gran, or a "
-           "replaced pair style), without breaking; compute bond/counter counts them as lost (columns 7-8)";
+    const int64_t counts[4] = {dropped, 0, 0, 0};
+    GbCheckReport report;
+    if (granbond_ledger_notice(GRANBOND_NOTICE_DROPPED_LIGGGHTS, counts, 0, nullptr, &report) != GB_STATUS_OK)
+        return "cohesion bond/nonlinear: " + coreReason();
+    return report.message;
+}
+
+void BondTally::take(const GbStoreCounts &c)
+{
+    double row[GRANBOND_COUNTS_ROW_LEN];
+    granbond_store_counts_row(&c, row);
+    created = c.created;
+    broken = static_cast<long long>(row[1]);
+    lost = static_cast<long long>(row[7]);
+    intact = c.intact;
 }
 
 void BondBook::refresh(bool collective)

@@ -36,6 +36,9 @@ struct BondTally {
     // losses are told.
     void (*refresh)(void *owner, bool collective) = nullptr;
     void *owner = nullptr;
+    // Takes a store's counts (the core's row: broken all modes, lost all
+    // causes).
+    void take(const GbStoreCounts &c);
 };
 
 class BondBook {

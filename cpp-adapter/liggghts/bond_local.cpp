@@ -29,9 +29,10 @@ public:
         Compute(lmp, iarg, narg, arg), inl_(narg == iarg)
     {
         // Without keywords, LIGGGHTS-INL's layout: both centres, both ids
-        // and the periodic flag, the loads (inlLayout), then the bond's
-        // state where INL has the pair's history (which held its bond).
-        const std::string wrong = inl_ ? columns_.parseInlLoads() : columns_.parse(narg - iarg, arg + iarg);
+        // and the periodic flag (inlHead), then the core's columns: the
+        // loads, then the bond's state where INL has the pair's history
+        // (which held its bond).
+        const std::string wrong = columns_.parse(narg - iarg, arg + iarg, inl_);
         if (!wrong.empty()) endRun(error, FLERR, "compute pair/gran/local/bond: " + wrong);
         iarg = narg;
         local_flag = 1;
@@ -63,8 +64,8 @@ public:
         rows_.values.clear();
         const size_t n = store ? granbond_bond_store_len(store) : 0;
         const int *mask = atom->mask;
-        const size_t head = inl_ ? kInlHead : 0, tail = inl_ ? static_cast<size_t>(GRANBOND_BOND_STATE_LEN) : 0;
-        std::vector<double> row(head + columns_.size() + tail);
+        const size_t head = inl_ ? kInlHead : 0;
+        std::vector<double> row(head + columns_.size());
         // the record the core's fields read: the state, then the loads of
         // the latest force pass
         double record[GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN];
@@ -83,7 +84,6 @@ public:
             const GbBondOutput &o = k < outs.size() ? outs[k] : none;
             const GbBondModel *m = model->model(atom->type[i], atom->type[j]);
             if (inl_) inlHead(i, j, row.data());
-            if (tail) std::copy(record, record + tail, row.data() + head + columns_.size());
             if (energies) model->bondEnergy(k, energy.data());
             if (!m || granbond_bond_output_store(&o, record + GRANBOND_BOND_STATE_LEN) != GB_STATUS_OK ||
                 columns_.row(m, record, static_cast<double>(atom->tag[i]), static_cast<double>(atom->tag[j]),
@@ -104,7 +104,7 @@ private:
     // LIGGGHTS-INL's first 9 columns: both centres (in the box), both ids,
     // 1 if either atom is a periodic image.
     static const size_t kInlHead = 9;
-    void inlWidth() { size_local_cols = static_cast<int>(kInlHead + columns_.size() + GRANBOND_BOND_STATE_LEN); }
+    void inlWidth() { size_local_cols = static_cast<int>(kInlHead + columns_.size()); }
     void inlHead(int i, int j, double *row)
     {
         double xi[3] = {atom->x[i][0], atom->x[i][1], atom->x[i][2]};
@@ -126,7 +126,7 @@ private:
     PairBondsUse use_{&BondNonlinearCohesion::bondOutputUsers};
     PairBondsUse energyUse_{&BondNonlinearCohesion::energyOutputUsers};
     const bool inl_;   // no keywords: LIGGGHTS-INL's layout
-    BondColumns columns_{true};
+    BondColumns columns_;
     LocalRows rows_;
 };
 

@@ -93,15 +93,10 @@ void BondNonlinearCohesion::linkBonds()
     if (linkStore(bonds_->store(), atom, kinds_, parameters_.ntypes(),
                   std::max(neighbor->cutneighmax, comm->cutghostuser), report) != GB_STATUS_OK)
         endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: finding the bonds' atoms: " + coreReason());
-    std::string causes;
-    const long long lost = lostBonds(report, world, "", causes);
-    if (lost > 0 && comm->me == 0 && !warnedLost_) {
+    const std::string lost = linkLosses(GRANBOND_NOTICE_PAIRS_LOST_LIGGGHTS, report, update->ntimestep, world);
+    if (!lost.empty() && comm->me == 0 && !warnedLost_) {
         warnedLost_ = true;
-        error->warning(FLERR, ("cohesion bond/nonlinear: " + std::to_string(lost) + " bonds vanished at step " +
-                               std::to_string(static_cast<long long>(update->ntimestep)) + " without breaking: " +
-                               causes + "; they are counted as lost in compute bond/counter (column 7), later "
-                               "ones without a warning")
-                                  .c_str());
+        error->warning(FLERR, lost.c_str());
     }
     bonds_->sendView();
     markBonded();
@@ -290,10 +285,7 @@ void BondNonlinearCohesion::countPairs()
 {
     const GbStoreCounts c = bonds_->counts();
     book_->beginPassIfNew(tally_, update);
-    tally_.created = c.created;
-    tally_.broken = brokenCount(c);
-    tally_.lost = lostCount(c);
-    tally_.intact = c.intact;
+    tally_.take(c);
 }
 
 // GRANBOND_CHECK_STORE: after a pass, the bonds recounted against the
@@ -309,17 +301,11 @@ void BondNonlinearCohesion::checkStore()
     std::string wrong;
     for (int ii = 0; list && history && ii < list->inum && wrong.empty(); ii++) {
         const int i = list->ilist[ii];
-        for (int jj = 0; jj < list->numneigh[i] && wrong.empty(); jj++) {
-            const int j = list->firstneigh[i][jj] & NEIGHMASK;
-            const bool flagged = (history->firstneigh[i][jj] & kBondedFlag) != 0;
-            const bool bonded = granbond_bond_store_bonded(store, static_cast<size_t>(i), static_cast<size_t>(j), &ids);
-            if (flagged != bonded)
-                wrong = "the pair of atoms " + std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
-                        std::to_string(static_cast<long long>(atom->tag[j])) +
-                        (flagged ? " is flagged bonded, but no bond" : " is bonded, but not flagged");
-        }
+        for (int jj = 0; jj < list->numneigh[i] && wrong.empty(); jj++)
+            wrong = flagFinding(store, i, list->firstneigh[i][jj] & NEIGHMASK, ids,
+                                (history->firstneigh[i][jj] & kBondedFlag) != 0);
     }
-    const std::string rest = checkStoredBonds(store, atom->tag, atom->nlocal, world);
+    const std::string rest = checkStoredBonds(store, ids, atom->nlocal, world);
     if (wrong.empty()) wrong = rest;
     int bad = !wrong.empty(), anyBad = 0;
     MPI_Allreduce(&bad, &anyBad, 1, MPI_INT, MPI_MAX, world);

@@ -96,22 +96,13 @@ void BondNonlinearCohesion::warnWallLosses()
     GbStoreCounts c;
     std::memset(&c, 0, sizeof c);
     granbond_wall_store_counts(wallBonds_->store(), &c);
-    const long long mine[4] = {c.lost_owner_gone - wallLostTold_.lost_owner_gone,
-                               c.lost_partner_unreached - wallLostTold_.lost_partner_unreached,
-                               c.lost_id_reused - wallLostTold_.lost_id_reused, 0};
-    long long all[4];
-    MPI_Allreduce(mine, all, 4, MPI_LONG_LONG, MPI_SUM, world);
+    const int64_t mine[4] = {c.lost_owner_gone - wallLostTold_.lost_owner_gone,
+                             c.lost_partner_unreached - wallLostTold_.lost_partner_unreached,
+                             c.lost_id_reused - wallLostTold_.lost_id_reused, 0};
     wallLostTold_ = c;
-    const long long lost = all[0] + all[1] + all[2];
-    if (lost == 0 || comm->me != 0) return;
-    const std::string why[4] = {"their sphere left the system (deleted, or lost through a boundary)",
-                                "their sphere left the wall's reach (no contact with the wall in a force pass)",
-                                "their sphere's id was taken over by a new atom", ""};
-    error->warning(FLERR, ("cohesion bond/nonlinear (wall " + std::string(wallFix_->id) + "): " +
-                           std::to_string(lost) + " wall bonds lost by step " +
-                           std::to_string(static_cast<long long>(update->ntimestep)) + " without breaking: " +
-                           lostCauses(all, why) + "; they are counted as lost in compute bond/counter (column 8)")
-                              .c_str());
+    const std::string lost =
+        ledgerNotice(GRANBOND_NOTICE_WALL_LOST_LIGGGHTS, mine, update->ntimestep, wallFix_->id, world);
+    if (!lost.empty() && comm->me == 0) error->warning(FLERR, lost.c_str());
 }
 
 // GRANBOND_CHECK_STORE, where the counts are read over all ranks (compute
@@ -119,7 +110,9 @@ void BondNonlinearCohesion::warnWallLosses()
 // (checkWallBonds). A mismatch ends the run.
 void BondNonlinearCohesion::checkWallStore()
 {
-    const std::string wrong = checkWallBonds(wallBonds_->store(), wallBonds_->restored(), atom->tag, atom->nlocal, world);
+    GbAtomIds ids = atomIdsOf(atom);
+    ids.count = static_cast<size_t>(atom->nlocal);
+    const std::string wrong = checkWallBonds(wallBonds_->store(), wallBonds_->restored(), ids, world);
     int bad = !wrong.empty(), anyBad = 0;
     MPI_Allreduce(&bad, &anyBad, 1, MPI_INT, MPI_MAX, world);
     if (bad)
@@ -154,10 +147,7 @@ void BondNonlinearCohesion::syncWallTally()
     GbStoreCounts c;
     std::memset(&c, 0, sizeof c);
     granbond_wall_store_counts(wallBonds_->store(), &c);
-    tally_.created = c.created;
-    tally_.broken = brokenCount(c);
-    tally_.lost = lostCount(c);
-    tally_.intact = c.intact;
+    tally_.take(c);
     tally_.passStep = update->ntimestep;
 }
 
@@ -241,8 +231,8 @@ void BondNonlinearCohesion::account(const GbBondModel *model, int i, const doubl
     double wall[3];
     for (int c = 0; c < 3; c++) wall[c] = atom->x[i][c] - wallDelta[c];
     BreakEvent e;
-    if (makeBreakEvent(model, out, atom->x[i], wall, atom->radius[i], 0.0, static_cast<double>(atom->tag[i]), 0.0,
-                       static_cast<double>(update->ntimestep), e) != GB_STATUS_OK)
+    if (granbond_break_event(model, &out, atom->x[i], wall, atom->radius[i], 0.0, static_cast<double>(atom->tag[i]),
+                             0.0, static_cast<double>(update->ntimestep), &e) != GB_STATUS_OK)
         failed(i, 0, "the break log's event");
     book.record(e);
 }

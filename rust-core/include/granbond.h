@@ -135,6 +135,58 @@
 #define GRANBOND_CHECK_MESSAGE_LEN 2048
 
 /**
+ * Bytes a line of the break log takes at most, newline included
+ * (`granbond_break_log_text`).
+ */
+#define GRANBOND_BREAK_LOG_LINE_LEN 256
+
+/**
+ * Bytes of the bond store's record in restart files
+ * (`granbond_store_record_write`).
+ */
+#define GRANBOND_STORE_RECORD_LEN 120
+
+/**
+ * Values of `granbond_store_counts_row`.
+ */
+#define GRANBOND_COUNTS_ROW_LEN 8
+
+/**
+ * `granbond_ledger_notice`: LIGGGHTS pair bonds lost by a link, counts
+ * by cause (owner gone, partner unreached, id reused, no model).
+ */
+#define GRANBOND_NOTICE_PAIRS_LOST_LIGGGHTS 0
+
+/**
+ * LAMMPS `pair_style granbond`'s bonds lost by a link, counts as above.
+ */
+#define GRANBOND_NOTICE_PAIRS_LOST_LAMMPS 1
+
+/**
+ * LIGGGHTS wall bonds lost (the sphere left the system, left the wall's
+ * reach, its id taken over); `name` the wall fix's id.
+ */
+#define GRANBOND_NOTICE_WALL_LOST_LIGGGHTS 2
+
+/**
+ * LAMMPS `bond_style granbond`'s bonds that left the topology (with their
+ * atom, to a new atom under an old id, by `delete_bonds`).
+ */
+#define GRANBOND_NOTICE_TOPOLOGY_LEFT_LAMMPS 3
+
+/**
+ * LIGGGHTS intact bonds dropped with the model that held them
+ * (`counts[0]`).
+ */
+#define GRANBOND_NOTICE_DROPPED_LIGGGHTS 4
+
+/**
+ * Atoms whose ids changed while bonds exist (`counts[0]`); `name` the
+ * style.
+ */
+#define GRANBOND_NOTICE_RENUMBERED 5
+
+/**
  * The most rows a restart file's table may hold; a reader stops there (the
  * file is damaged) rather than read on.
  */
@@ -150,6 +202,25 @@
  * its `ends` and `outs` arrays.
  */
 #define GRANBOND_BOND_STORE_CHUNK CHUNK
+
+/**
+ * Values of [`counts_row`]: created, broken, intact, broken by distance,
+ * tension, compression and shear, lost.
+ */
+#define COUNTS_ROW_LEN 8
+
+/**
+ * Bytes a line of the log takes at most, its newline included: the step
+ * and ids are integers below 2^53 (16 digits), the other numbers at most
+ * 17 characters.
+ */
+#define LINE_LEN 256
+
+/**
+ * The largest step or id a line writes (2^53: a double holds every
+ * integer up to it).
+ */
+#define LARGEST_ID 9007199254740992.0
 
 /**
  * A keyword longer than this marks a damaged file (the tables' longest is
@@ -432,6 +503,11 @@ typedef int32_t GbWallPass;
 #endif // __cplusplus
 
 /**
+ * The columns of one output, in the deck's order.
+ */
+typedef struct GbBondColumns GbBondColumns;
+
+/**
  * A bond type as engines use it (`GbBondModel` in the C ABI): its
  * [`BondLaws`], read through `Deref`, and the compiled steps chosen for
  * its switches on this CPU.
@@ -528,6 +604,10 @@ typedef struct GbLayout {
    * `sizeof(GbBrokenBond)`.
    */
   size_t broken_bond;
+  /**
+   * `sizeof(GbBreakEvent)`.
+   */
+  size_t break_event;
   /**
    * `GRANBOND_BOND_STATE_LEN`.
    */
@@ -1185,6 +1265,137 @@ typedef struct GbSubModel {
 } GbSubModel;
 
 /**
+ * Counts since the store was made (or restored), on this rank. Summed over
+ * ranks, `created = broken + intact + lost` holds after every pass.
+ */
+typedef struct GbStoreCounts {
+  /**
+   * Bonds created.
+   */
+  int64_t created;
+  /**
+   * Bonds broken by distance.
+   */
+  int64_t broken_distance;
+  /**
+   * Bonds broken by tension.
+   */
+  int64_t broken_tension;
+  /**
+   * Bonds broken by compression.
+   */
+  int64_t broken_compression;
+  /**
+   * Bonds broken by shear.
+   */
+  int64_t broken_shear;
+  /**
+   * Bonds lost because their owner atom left the system (deleted, or
+   * lost through a boundary).
+   */
+  int64_t lost_owner_gone;
+  /**
+   * Bonds lost because their partner was not among this rank's atoms
+   * (deleted, lost, or farther than the communication cutoff).
+   */
+  int64_t lost_partner_unreached;
+  /**
+   * Bonds lost because an atom's id was taken over by a new atom.
+   */
+  int64_t lost_id_reused;
+  /**
+   * Bonds lost because their atoms' types have no bond model any more.
+   */
+  int64_t lost_no_model;
+  /**
+   * Bonds held now.
+   */
+  int64_t intact;
+} GbStoreCounts;
+
+/**
+ * One broken bond, doubles only: the events travel to rank 0 as one
+ * array of doubles.
+ */
+typedef struct GbBreakEvent {
+  /**
+   * The time step.
+   */
+  double step;
+  /**
+   * The lower atom id of a pair; the sphere of a wall bond.
+   */
+  double tag_i;
+  /**
+   * The other atom id; 0 for a wall.
+   */
+  double tag_j;
+  /**
+   * The bond's centre (a wall bond: the wall point).
+   */
+  double x[3];
+  /**
+   * The [`crate::bond::BreakMode`] it broke by.
+   */
+  double mode;
+  /**
+   * The section's normal stress in the step that broke it.
+   */
+  double sigma;
+  /**
+   * The section's shear stress in that step.
+   */
+  double tau;
+  /**
+   * The limit of `sigma` at that step (0 in distance mode).
+   */
+  double sigma_max;
+  /**
+   * The limit of `tau` at that step (0 in distance mode).
+   */
+  double tau_max;
+} GbBreakEvent;
+
+/**
+ * A rank's atom ids as the engine keeps them: exactly one of `narrow`
+ * (32-bit ids) and `wide` (64-bit) is set, for `count` atoms (local, then
+ * ghost).
+ */
+typedef struct GbAtomIds {
+  /**
+   * 32-bit ids, or null.
+   */
+  const int32_t *narrow;
+  /**
+   * 64-bit ids, or null.
+   */
+  const int64_t *wide;
+  /**
+   * The number of atoms.
+   */
+  size_t count;
+} GbAtomIds;
+
+/**
+ * The energy of a rank's bonds that left them (J), since the budget was
+ * first kept (or restored).
+ */
+typedef struct GbEnergySums {
+  /**
+   * Dissipated by the damping.
+   */
+  double damping;
+  /**
+   * Dissipated by the hysteresis (the history's moves).
+   */
+  double hysteresis;
+  /**
+   * Released by breaks: what the broken bonds stored.
+   */
+  double released;
+} GbEnergySums;
+
+/**
  * One row of a parameter table (strings in static storage).
  */
 typedef struct GbParameterInfo {
@@ -1221,26 +1432,6 @@ typedef struct GbParameterInfo {
    */
   double default_value;
 } GbParameterInfo;
-
-/**
- * A rank's atom ids as the engine keeps them: exactly one of `narrow`
- * (32-bit ids) and `wide` (64-bit) is set, for `count` atoms (local, then
- * ghost).
- */
-typedef struct GbAtomIds {
-  /**
-   * 32-bit ids, or null.
-   */
-  const int32_t *narrow;
-  /**
-   * 64-bit ids, or null.
-   */
-  const int64_t *wide;
-  /**
-   * The number of atoms.
-   */
-  size_t count;
-} GbAtomIds;
 
 /**
  * What the link reads of a rank's atoms.
@@ -1334,74 +1525,6 @@ typedef struct GbBrokenBond {
 } GbBrokenBond;
 
 /**
- * Counts since the store was made (or restored), on this rank. Summed over
- * ranks, `created = broken + intact + lost` holds after every pass.
- */
-typedef struct GbStoreCounts {
-  /**
-   * Bonds created.
-   */
-  int64_t created;
-  /**
-   * Bonds broken by distance.
-   */
-  int64_t broken_distance;
-  /**
-   * Bonds broken by tension.
-   */
-  int64_t broken_tension;
-  /**
-   * Bonds broken by compression.
-   */
-  int64_t broken_compression;
-  /**
-   * Bonds broken by shear.
-   */
-  int64_t broken_shear;
-  /**
-   * Bonds lost because their owner atom left the system (deleted, or
-   * lost through a boundary).
-   */
-  int64_t lost_owner_gone;
-  /**
-   * Bonds lost because their partner was not among this rank's atoms
-   * (deleted, lost, or farther than the communication cutoff).
-   */
-  int64_t lost_partner_unreached;
-  /**
-   * Bonds lost because an atom's id was taken over by a new atom.
-   */
-  int64_t lost_id_reused;
-  /**
-   * Bonds lost because their atoms' types have no bond model any more.
-   */
-  int64_t lost_no_model;
-  /**
-   * Bonds held now.
-   */
-  int64_t intact;
-} GbStoreCounts;
-
-/**
- * The energy of a rank's bonds that left them (J), since the budget was
- * first kept (or restored).
- */
-typedef struct GbEnergySums {
-  /**
-   * Dissipated by the damping.
-   */
-  double damping;
-  /**
-   * Dissipated by the hysteresis (the history's moves).
-   */
-  double hysteresis;
-  /**
-   * Released by breaks: what the broken bonds stored.
-   */
-  double released;
-} GbEnergySums;
-
-/**
  * One contact of a sphere with a wall, as the wall's loop reports it.
  */
 typedef struct GbWallContact {
@@ -1475,6 +1598,8 @@ typedef struct GbWallVisit {
    */
   struct GbBondOutput out;
 } GbWallVisit;
+
+
 
 #ifdef __cplusplus
 extern "C" {
@@ -2430,6 +2555,282 @@ enum GbStatus granbond_state_slot(int32_t kind,
                                   int32_t *flips_on_swap);
 
 /**
+ * The store's counts as the engines' count computes give them, written to
+ * `row` (`GRANBOND_COUNTS_ROW_LEN` doubles): created, broken, intact,
+ * broken by distance, tension, compression and shear, lost.
+ *
+ * # Safety
+ * `counts` must be null or a `GbStoreCounts`; `row` null or valid for
+ * `GRANBOND_COUNTS_ROW_LEN` doubles.
+ */
+enum GbStatus granbond_store_counts_row(const struct GbStoreCounts *counts, double *row);
+
+/**
+ * The warning `notice` (a `GRANBOND_NOTICE_*`) for `counts` (4 numbers,
+ * summed over the ranks, none negative; the notice says which it reads) at
+ * time step `step`, written to `out`: level 1 and the message, or level 0
+ * and no message when no bond is concerned. `name` (the wall fix's id, or
+ * the style) is read by the notices that say so, and may be null for the
+ * others.
+ *
+ * # Safety
+ * `counts` must be null or 4 `int64_t`; `name` null or a NUL-terminated
+ * string; `out` null or valid for writes.
+ */
+enum GbStatus granbond_ledger_notice(int32_t notice_id,
+                                     const int64_t *counts,
+                                     int64_t step,
+                                     const char *name,
+                                     struct GbCheckReport *out);
+
+/**
+ * The break log's event of a bond of `model` that broke with `out` at
+ * time step `step`, written to `event`: sphere i (id `tag_i`, radius
+ * `radius_i`, centre `x_i`) and sphere j (id `tag_j`; a wall: id 0, radius
+ * 0 at the wall point `x_j`), the smaller id first; its centre, mode,
+ * stresses and their limits.
+ *
+ * # Safety
+ * `model` must be null or a model; `out` null or a `GbBondOutput`; `x_i`,
+ * `x_j` null or three doubles; `event` null or valid for writes.
+ */
+enum GbStatus granbond_break_event(const struct GbBondModel *model,
+                                   const struct GbBondOutput *out,
+                                   const double *x_i,
+                                   const double *x_j,
+                                   double radius_i,
+                                   double radius_j,
+                                   double tag_i,
+                                   double tag_j,
+                                   double step,
+                                   struct GbBreakEvent *event);
+
+/**
+ * The lines of the break log for `events` (`count` of them, sorted here
+ * by step and ids in place), the file's header first where `header` is 1,
+ * written to `text` as one NUL-terminated string. `capacity`
+ * `(count + 1) * GRANBOND_BREAK_LOG_LINE_LEN` always suffices; a smaller
+ * one that the text does not fit is refused, `text` left alone. An event
+ * whose step or ids are not integers in 0..=2^53 is refused.
+ *
+ * # Safety
+ * `events` must be null or `count` events; `text` null or `capacity`
+ * writable bytes.
+ */
+enum GbStatus granbond_break_log_text(struct GbBreakEvent *events,
+                                      size_t count,
+                                      int32_t header,
+                                      char *text,
+                                      size_t capacity);
+
+/**
+ * Reads the words of `fix ID group bond/breaklog FILE [every N]` (`count`
+ * words, the fix's id first): `every`, how many steps apart the log is
+ * written (100 unless given). Words that do not read are
+ * `GB_STATUS_INVALID_ARGUMENT`, the message naming the word.
+ *
+ * # Safety
+ * `words` must be null or `count` pointers, each null or a NUL-terminated
+ * string; `every` null or valid for writes.
+ */
+enum GbStatus granbond_break_log_words(const char *const *words, size_t count, int32_t *every);
+
+/**
+ * The columns of a per-bond output, written to `columns` (free them with
+ * `granbond_bond_columns_free`): those the keywords `words` name (`count`
+ * of them: `id`, `pos`, `state`, `output`, `all`, a field of
+ * `granbond_bond_field_info` or `granbond_bond_energy_field_info`), or,
+ * where `inl_layout` is 1 (no words), LIGGGHTS-INL's columns after its
+ * first nine: the loads on sphere i in their parts, then the bond's state.
+ * A keyword that is not is `GB_STATUS_INVALID_ARGUMENT`, the message
+ * naming it and every keyword.
+ *
+ * # Safety
+ * `words` as in `granbond_break_log_words`; `columns` null or valid for
+ * writes.
+ */
+enum GbStatus granbond_bond_columns_new(const char *const *words,
+                                        size_t count,
+                                        int32_t inl_layout,
+                                        struct GbBondColumns **columns);
+
+/**
+ * Frees columns from `granbond_bond_columns_new` (null is ignored).
+ *
+ * # Safety
+ * `columns` must come from `granbond_bond_columns_new` and not be used
+ * again.
+ */
+void granbond_bond_columns_free(struct GbBondColumns *columns);
+
+/**
+ * How many values a row of `columns` has, written to `count`, and 1 in
+ * `wants_energy` where a column is one of the bond store's energies (the
+ * row then reads them), else 0.
+ *
+ * # Safety
+ * `columns` must be null or from `granbond_bond_columns_new`; `count` and
+ * `wants_energy` null or valid for writes.
+ */
+enum GbStatus granbond_bond_columns_info(const struct GbBondColumns *columns,
+                                         size_t *count,
+                                         int32_t *wants_energy);
+
+/**
+ * The row of one bond of `model`, written to `row` (one value a column):
+ * its `record` as sphere i sees it (as `granbond_bond_fields` reads it),
+ * its `energy` (`granbond_bond_energy_field_count()` doubles, read where
+ * a column asks), the spheres' ids and centres. Refused as
+ * `granbond_bond_fields`, `row` left alone.
+ *
+ * # Safety
+ * `columns` must be null or from `granbond_bond_columns_new`; `model` null
+ * or a model; `record` null or `GRANBOND_BOND_STATE_LEN +
+ * GRANBOND_BOND_OUTPUT_LEN` doubles; `energy` null or the energy field
+ * count of doubles; `x_i`, `x_j` null or three doubles; `row` null or the
+ * column count of writable doubles.
+ */
+enum GbStatus granbond_bond_columns_row(const struct GbBondColumns *columns,
+                                        const struct GbBondModel *model,
+                                        const double *record,
+                                        const double *energy,
+                                        double tag_i,
+                                        double tag_j,
+                                        const double *x_i,
+                                        const double *x_j,
+                                        double *row);
+
+/**
+ * The check of a periodic box too short for the engines' per-pair
+ * history, written to `out` (level 1 and the error naming the first such
+ * direction, else level 0): `dimension` 2 or 3, `periodic` (3 `int32_t`,
+ * non-zero where periodic) and `length` (3 doubles) of the box, the
+ * neighbour list's reach `list_reach` (the pair reach plus the skin
+ * `skin`); `step` >= 0 where the box changed during a run, at that step,
+ * else -1. The message leads with `style`.
+ *
+ * # Safety
+ * `style` must be null or a NUL-terminated string; `periodic` null or 3
+ * `int32_t`; `length` null or 3 doubles; `out` null or valid for writes.
+ */
+enum GbStatus granbond_thin_periodic_box_check(const char *style,
+                                               int32_t dimension,
+                                               const int32_t *periodic,
+                                               const double *length,
+                                               double list_reach,
+                                               double skin,
+                                               int64_t step,
+                                               struct GbCheckReport *out);
+
+/**
+ * The findings of the store check over all ranks, written to `out` (level
+ * 1 and the first finding, else level 0): a key held twice among `keys`
+ * (`count` keys of two doubles each, all ranks' bonds: the atoms' ids of
+ * pair bonds, or sphere id and wall number where `walls` is 1; sorted
+ * here in place), else `sums` (4 `int64_t` summed over the ranks:
+ * created, broken, intact, lost; for walls created includes the bonds
+ * taken from a restart file) that do not balance.
+ *
+ * # Safety
+ * `keys` must be null or `2 * count` doubles; `sums` null or 4 `int64_t`;
+ * `out` null or valid for writes.
+ */
+enum GbStatus granbond_store_check_findings(double *keys,
+                                            size_t count,
+                                            const int64_t *sums,
+                                            int32_t walls,
+                                            struct GbCheckReport *out);
+
+/**
+ * This rank's part of the store check of pair bonds (`GRANBOND_CHECK_STORE`):
+ * each bond of `store` joins one of the `nlocal` local atoms (its owner)
+ * and an atom (local or ghost, ids `ids`) of the id it names; its key (the
+ * lower and the higher id) written to `keys` (`capacity` doubles,
+ * `2 * granbond_bond_store_len(store)` suffice) and their number to
+ * `written`, for `granbond_store_check_findings` over all ranks. A bond
+ * that does not: level 1 in `out` and its words, no key written.
+ *
+ * # Safety
+ * `store` must be null or a store; `ids` null or a `GbAtomIds` whose
+ * arrays hold `ids->count` ids; `keys` null or `capacity` writable
+ * doubles; `written` and `out` null or valid for writes.
+ */
+enum GbStatus granbond_bond_store_check_keys(const struct GbBondStore *store,
+                                             const struct GbAtomIds *ids,
+                                             size_t nlocal,
+                                             double *keys,
+                                             size_t capacity,
+                                             size_t *written,
+                                             struct GbCheckReport *out);
+
+/**
+ * This rank's part of the store check of a listed pair: whether the flag
+ * `flagged` (1 or 0) that local atom `i` and atom `j` (local or ghost, ids
+ * `ids`) carry in the engine's contact history, a cache of whether they
+ * are bonded, agrees with `store` and its view; level 1 in `out` and the
+ * words where it does not, else level 0.
+ *
+ * # Safety
+ * `store` must be null or a store; `ids` null or a `GbAtomIds` whose
+ * arrays hold `ids->count` ids; `out` null or valid for writes.
+ */
+enum GbStatus granbond_bond_store_check_flag(const struct GbBondStore *store,
+                                             size_t i,
+                                             size_t j,
+                                             const struct GbAtomIds *ids,
+                                             int32_t flagged,
+                                             struct GbCheckReport *out);
+
+/**
+ * The same for the wall bonds of `store`: each held by the rank of its
+ * sphere, one of the local atoms `ids`; its key (the sphere's id and the
+ * wall) written to `keys` (`2 * granbond_wall_store_len(store)` doubles
+ * suffice).
+ *
+ * # Safety
+ * As `granbond_bond_store_check_keys`, `store` null or a wall store.
+ */
+enum GbStatus granbond_wall_store_check_keys(const struct GbWallStore *store,
+                                             const struct GbAtomIds *ids,
+                                             double *keys,
+                                             size_t capacity,
+                                             size_t *written,
+                                             struct GbCheckReport *out);
+
+/**
+ * The bond store's record in a restart file, written to `record`
+ * (`capacity` bytes, `GRANBOND_STORE_RECORD_LEN` of them written): the
+ * counts `counts` and energy sums `energy` summed over the ranks, and the
+ * layout of the bonds' state (`GRANBOND_STATE_LAYOUT_VERSION`), each
+ * number in the machine's byte order after the record's length.
+ *
+ * # Safety
+ * `counts` must be null or a `GbStoreCounts`; `energy` null or a
+ * `GbEnergySums`; `record` null or `capacity` writable bytes.
+ */
+enum GbStatus granbond_store_record_write(const struct GbStoreCounts *counts,
+                                          const struct GbEnergySums *energy,
+                                          uint8_t *record,
+                                          size_t capacity);
+
+/**
+ * Reads a bond store's record of a restart file (as
+ * `granbond_store_record_write` wrote it) into `counts` and `energy`. A
+ * record of another layout, or one whose bonds were written with another
+ * state layout, is `GB_STATUS_INVALID_ARGUMENT`, the message saying with
+ * which layout and what to do, before a bond is read.
+ *
+ * # Safety
+ * `record` must be null or point to 8 readable bytes, and to
+ * `GRANBOND_STORE_RECORD_LEN` where they hold this record's length (the
+ * engine hands what the file holds); `counts` and `energy` null or valid
+ * for writes.
+ */
+enum GbStatus granbond_store_record_read(const uint8_t *record,
+                                         struct GbStoreCounts *counts,
+                                         struct GbEnergySums *energy);
+
+/**
  * Row `id` of the bond parameter table (`id < granbond_bond_parameter_count()`).
  *
  * # Safety
@@ -3220,21 +3621,6 @@ enum GbStatus granbond_wall_store_renumber(struct GbWallStore *store,
                                            size_t len);
 
 /**
- * Writes each bond held, its sphere's id to `ids` and its wall to `walls`
- * (`capacity` entries each; `granbond_wall_store_len` of them are held),
- * and the bonds written to `written`: the engines' recount of the store
- * (GRANBOND_CHECK_STORE).
- *
- * # Safety
- * Pointers must be null or valid; `ids` and `walls` for `capacity` entries.
- */
-enum GbStatus granbond_wall_store_keys(const struct GbWallStore *store,
-                                       int64_t *ids,
-                                       uint32_t *walls,
-                                       size_t capacity,
-                                       size_t *written);
-
-/**
  * The wall bonds held, intact or broken; 0 for a null store.
  *
  * # Safety
@@ -3338,6 +3724,7 @@ static inline GbLayout granbond_header_layout(void)
     l.link_report = sizeof(GbLinkReport);
     l.store_counts = sizeof(GbStoreCounts);
     l.broken_bond = sizeof(GbBrokenBond);
+    l.break_event = sizeof(GbBreakEvent);
     l.bond_state_len = GRANBOND_BOND_STATE_LEN;
     l.wall_bond_state_len = GRANBOND_WALL_BOND_STATE_LEN;
     l.contact_state_len = GRANBOND_CONTACT_STATE_LEN;

@@ -20,6 +20,7 @@ pub mod contact;
 pub mod ffi;
 pub mod integrate;
 pub mod kinematics;
+pub mod ledger;
 pub mod liggghts_words;
 pub mod pair_source;
 pub mod parameters;

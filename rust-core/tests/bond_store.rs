@@ -11,6 +11,7 @@ use granbond::bond_store::{
     BOND_BUDGET_BYTES, BYTES_PER_BOND, CHUNK,
 };
 use granbond::kinematics::PairKinematics;
+use granbond::ledger::check::{flag_finding, pair_keys};
 use granbond::pair_source::AtomArrays;
 
 const R: f64 = common::RADIUS;
@@ -1030,4 +1031,39 @@ fn a_setup_pass_of_inl_code_is_its_own_trial_step() {
             "bond {ids:?}: the trial step's history extremes are kept"
         );
     }
+}
+
+#[test]
+fn the_store_checks_keys_name_each_bond_by_its_atoms_and_refuse_a_partner_not_found() {
+    let model = bond_model(common::params());
+    let (store, atoms) = bonded_pair(&model);
+    let keys = pair_keys(&store, Ids::Wide(&atoms.ids), atoms.nlocal).unwrap();
+    assert_eq!(keys, [[1.0, 2.0]]);
+    // the partner's slot now holds another atom: the bond names no atom here
+    let other = [1, 9];
+    assert_eq!(
+        pair_keys(&store, Ids::Wide(&other), atoms.nlocal),
+        Err("bond 0 does not join its owner and its partner 2".into())
+    );
+    // the owner is not a local atom
+    assert!(pair_keys(&store, Ids::Wide(&atoms.ids), 0).is_err());
+}
+
+#[test]
+fn the_store_check_finds_a_pair_flag_that_disagrees_with_the_store() {
+    let model = bond_model(common::params());
+    let (store, atoms) = bonded_pair(&model);
+    let ids = Ids::Wide(&atoms.ids);
+    assert_eq!(flag_finding(&store, 0, 1, ids, true), None);
+    assert_eq!(flag_finding(&store, 1, 0, ids, true), None, "either atom's list");
+    assert_eq!(
+        flag_finding(&store, 0, 1, ids, false),
+        Some("the pair of atoms 1 and 2 is bonded, but not flagged".into())
+    );
+    let (unbonded, atoms) = touching_pair();
+    assert_eq!(
+        flag_finding(&unbonded, 0, 1, Ids::Wide(&atoms.ids), true),
+        Some("the pair of atoms 1 and 2 is flagged bonded, but no bond".into())
+    );
+    assert_eq!(flag_finding(&unbonded, 0, 1, Ids::Wide(&atoms.ids), false), None);
 }

@@ -10,6 +10,7 @@ use granbond::bond_store::{
     Ids, StoreCounts, WallAct, WallContact, WallPass, WallStore, WALL_PACKED_PER_BOND,
 };
 use granbond::kinematics::SphereKinematics;
+use granbond::ledger::check::wall_keys;
 
 const R: f64 = common::RADIUS;
 
@@ -348,4 +349,16 @@ fn a_renumbering_without_a_place_for_a_bonds_wall_is_refused_and_changes_nothing
     // a wall without bonds may be gone
     assert_eq!(s.renumber(&[-1, 0]), Ok(()));
     assert!(s.bonded(0, 7, 0));
+}
+
+#[test]
+fn the_store_checks_keys_name_each_wall_bond_and_refuse_one_whose_sphere_is_elsewhere() {
+    let m = model();
+    let mut s = store(1);
+    s.visit(&m, &contact(0, 3, 1, WallPass::Force)).unwrap();
+    assert_eq!(wall_keys(&s, Ids::Wide(&[7])), Ok(vec![[7.0, 0.0]]));
+    assert_eq!(
+        wall_keys(&s, Ids::Wide(&[8])),
+        Err("the bond of sphere 7 and wall 0 is held by a rank without the sphere".into())
+    );
 }

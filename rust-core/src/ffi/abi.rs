@@ -11,6 +11,7 @@ use crate::ffi::checks::CheckReport;
 use crate::ffi::contact::TangentialOutput;
 use crate::ffi::store::StoreAtoms;
 use crate::kinematics::PairKinematics;
+use crate::ledger::break_log::BreakEvent;
 use crate::timestep_check::TypeBodies;
 use std::mem::size_of;
 
@@ -62,6 +63,8 @@ pub struct Layout {
     pub store_counts: usize,
     /// `sizeof(GbBrokenBond)`.
     pub broken_bond: usize,
+    /// `sizeof(GbBreakEvent)`.
+    pub break_event: usize,
     /// `GRANBOND_BOND_STATE_LEN`.
     pub bond_state_len: usize,
     /// `GRANBOND_WALL_BOND_STATE_LEN`.
@@ -97,6 +100,7 @@ pub fn library_layout() -> Layout {
         link_report: size_of::<LinkReport>(),
         store_counts: size_of::<StoreCounts>(),
         broken_bond: size_of::<BrokenBond>(),
+        break_event: size_of::<BreakEvent>(),
         bond_state_len: BOND_STATE_LEN,
         wall_bond_state_len: WALL_BOND_STATE_LEN,
         contact_state_len: CONTACT_STATE_LEN,
@@ -130,7 +134,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
         ));
     }
     let e = reference(expected, "expected")?;
-    let items: [(&str, usize, usize); 18] = [
+    let items: [(&str, usize, usize); 19] = [
         ("sizeof(GbBondParams)", e.bond_params, l.bond_params),
         ("sizeof(GbVoigtParams)", e.voigt_params, l.voigt_params),
         ("sizeof(GbPairKinematics)", e.pair_kinematics, l.pair_kinematics),
@@ -154,6 +158,7 @@ pub unsafe extern "C" fn granbond_check_layout(expected: *const Layout) -> Statu
         ("sizeof(GbLinkReport)", e.link_report, l.link_report),
         ("sizeof(GbStoreCounts)", e.store_counts, l.store_counts),
         ("sizeof(GbBrokenBond)", e.broken_bond, l.broken_bond),
+        ("sizeof(GbBreakEvent)", e.break_event, l.break_event),
         ("bond state length", e.bond_state_len, l.bond_state_len),
         (
             "wall bond state length",

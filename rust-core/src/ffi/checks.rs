@@ -43,7 +43,7 @@ pub struct CheckReport {
 }
 
 impl CheckReport {
-    fn write(&mut self, level: i32, text: &str) {
+    pub(super) fn write(&mut self, level: i32, text: &str) {
         self.level = level;
         // cut at a character boundary so the message stays UTF-8
         let mut end = text.len().min(GRANBOND_CHECK_MESSAGE_LEN - 1);

@@ -159,7 +159,7 @@ pub unsafe extern "C" fn granbond_voigt_sub_model(part: usize, row: *mut SubMode
 ///
 /// # Safety
 /// `s` must point to a NUL-terminated string.
-unsafe fn text<'a>(s: *const c_char, what: &str) -> Result<&'a str, Failure> {
+pub(super) unsafe fn text<'a>(s: *const c_char, what: &str) -> Result<&'a str, Failure> {
     if s.is_null() {
         return Err(Failure::new(Status::NullPointer, format!("{what} is null")));
     }
@@ -172,7 +172,7 @@ unsafe fn text<'a>(s: *const c_char, what: &str) -> Result<&'a str, Failure> {
 ///
 /// # Safety
 /// Each pointer of `words` must be null or a NUL-terminated string.
-unsafe fn word_list<'a>(words: &[*const c_char]) -> Result<Vec<&'a str>, Failure> {
+pub(super) unsafe fn word_list<'a>(words: &[*const c_char]) -> Result<Vec<&'a str>, Failure> {
     words
         .iter()
         .enumerate()

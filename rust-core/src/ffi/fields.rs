@@ -104,6 +104,53 @@ pub unsafe extern "C" fn granbond_bond_field_info(
     write_info(c_strings(), "field", id, name, unit, description)
 }
 
+/// The fields of a bond of `model` from its `record` (the state, then the
+/// loads of its latest force pass) and the centres of its spheres, refused
+/// as `granbond_bond_fields` says.
+pub(super) fn record_fields(
+    model: &BondModel,
+    record: &[f64],
+    x_i: [f64; 3],
+    x_j: [f64; 3],
+) -> Result<[f64; BOND_FIELD_COUNT], Failure> {
+    if x_i == x_j {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!("x_i and x_j coincide ({x_i:?}): a bond's spheres are apart"),
+        ));
+    }
+    let state: &[f64; BOND_STATE_LEN] = record[..BOND_STATE_LEN]
+        .try_into()
+        .expect("the bond part has BOND_STATE_LEN slots");
+    // SAFETY: BondState is repr(C) of exactly BOND_STATE_LEN f64.
+    let state = unsafe { &*(state as *const [f64; BOND_STATE_LEN] as *const BondState) };
+    let loads: &[f64; BOND_OUTPUT_LEN] = record[BOND_STATE_LEN..]
+        .try_into()
+        .expect("the loads part has BOND_OUTPUT_LEN slots");
+    let read = state.as_slots().iter().chain(loads.iter());
+    if let Some(v) = read.copied().find(|v| !v.is_finite()) {
+        return Err(Failure::new(
+            Status::NonFiniteInput,
+            format!("`record` holds {v} in its bond state or loads"),
+        ));
+    }
+    let fields = bond_fields(model, state, loads, x_i, x_j);
+    // centres so close or so far apart that their distance under- or
+    // overflows; a strength of inf is the documented "never"
+    let never =
+        |k: usize| fields[k] == f64::INFINITY && matches!(BOND_FIELDS[k].name, "sigma_max" | "tau_max");
+    if let Some(k) = (0..fields.len()).find(|&k| !fields[k].is_finite() && !never(k)) {
+        return Err(Failure::new(
+            Status::NonFiniteResult,
+            format!(
+                "field {} is {} for centres x_i {x_i:?}, x_j {x_j:?}: their distance is out of range",
+                BOND_FIELDS[k].name, fields[k]
+            ),
+        ));
+    }
+    Ok(fields)
+}
+
 /// The fields of one bond of `model`, written to `values`
 /// (`double[granbond_bond_field_count()]`, in the table's order): its
 /// `record` as sphere `i` sees it (its state, `GRANBOND_BOND_STATE_LEN`
@@ -133,41 +180,7 @@ pub unsafe extern "C" fn granbond_bond_fields(
 ) -> Status {
     let record = slice(record, BOND_STATE_LEN + BOND_OUTPUT_LEN, "record")?;
     let values = slice_mut(values, BOND_FIELD_COUNT, "values")?;
-    if x_i == x_j {
-        return Err(Failure::new(
-            Status::InvalidArgument,
-            format!("x_i and x_j coincide ({x_i:?}): a bond's spheres are apart"),
-        ));
-    }
-    let state: &[f64; BOND_STATE_LEN] = record[..BOND_STATE_LEN]
-        .try_into()
-        .expect("the bond part has BOND_STATE_LEN slots");
-    // SAFETY: BondState is repr(C) of exactly BOND_STATE_LEN f64.
-    let state = &*(state as *const [f64; BOND_STATE_LEN] as *const BondState);
-    let loads: &[f64; BOND_OUTPUT_LEN] = record[BOND_STATE_LEN..]
-        .try_into()
-        .expect("the loads part has BOND_OUTPUT_LEN slots");
-    let read = state.as_slots().iter().chain(loads.iter());
-    if let Some(v) = read.copied().find(|v| !v.is_finite()) {
-        return Err(Failure::new(
-            Status::NonFiniteInput,
-            format!("`record` holds {v} in its bond state or loads"),
-        ));
-    }
-    let fields = bond_fields(model, state, loads, x_i, x_j);
-    // centres so close or so far apart that their distance under- or
-    // overflows; a strength of inf is the documented "never"
-    let never =
-        |k: usize| fields[k] == f64::INFINITY && matches!(BOND_FIELDS[k].name, "sigma_max" | "tau_max");
-    if let Some(k) = (0..fields.len()).find(|&k| !fields[k].is_finite() && !never(k)) {
-        return Err(Failure::new(
-            Status::NonFiniteResult,
-            format!(
-                "field {} is {} for centres x_i {x_i:?}, x_j {x_j:?}: their distance is out of range",
-                BOND_FIELDS[k].name, fields[k]
-            ),
-        ));
-    }
+    let fields = record_fields(model, record, x_i, x_j)?;
     values.copy_from_slice(&fields);
     Ok(())
 }

@@ -18,6 +18,7 @@ pub mod error;
 pub mod fields;
 pub mod guard;
 pub mod layout;
+pub mod ledger;
 pub mod parameters;
 pub mod results;
 pub mod store;

@@ -189,41 +189,6 @@ pub unsafe extern "C" fn granbond_wall_store_renumber(
     Ok(())
 }
 
-/// Writes each bond held, its sphere's id to `ids` and its wall to `walls`
-/// (`capacity` entries each; `granbond_wall_store_len` of them are held),
-/// and the bonds written to `written`: the engines' recount of the store
-/// (GRANBOND_CHECK_STORE).
-///
-/// # Safety
-/// Pointers must be null or valid; `ids` and `walls` for `capacity` entries.
-#[entry(store: reference, written: reference_mut)]
-#[no_mangle]
-pub unsafe extern "C" fn granbond_wall_store_keys(
-    store: *const WallStore,
-    ids: *mut i64,
-    walls: *mut u32,
-    capacity: usize,
-    written: *mut usize,
-) -> Status {
-    let ids = slice_mut(ids, capacity, "ids")?;
-    let walls = slice_mut(walls, capacity, "walls")?;
-    if store.len() > capacity {
-        return Err(Failure::new(
-            Status::InvalidArgument,
-            format!(
-                "capacity: the store holds {} bonds, capacity is {capacity}",
-                store.len()
-            ),
-        ));
-    }
-    for (k, (id, wall)) in store.keys().enumerate() {
-        ids[k] = id;
-        walls[k] = wall;
-    }
-    *written = store.len();
-    Ok(())
-}
-
 /// The wall bonds held, intact or broken; 0 for a null store.
 ///
 /// # Safety

@@ -410,6 +410,152 @@ struct null_entry {
     const char *arguments[MAX_NULLS + 1];
 };
 
+static const char *const BREAKLOG_WORDS[] = {"log", "all", "bond/breaklog", "breaks.txt"};
+static const char *const COLUMN_WORDS[] = {"id", "r0"};
+static const int64_t LEDGER_COUNTS[4] = {1, 0, 0, 0};
+static const int32_t PERIODIC[3] = {1, 1, 1};
+
+static GbStatus null_store_counts_row(struct world *c, int k)
+{
+    GbStoreCounts counts;
+    double row[GRANBOND_COUNTS_ROW_LEN];
+    (void)c;
+    memset(&counts, 0, sizeof counts);
+    return granbond_store_counts_row(ARG(k, 0, &counts), ARG(k, 1, row));
+}
+
+static GbStatus null_ledger_notice(struct world *c, int k)
+{
+    return granbond_ledger_notice(GRANBOND_NOTICE_WALL_LOST_LIGGGHTS, ARG(k, 0, LEDGER_COUNTS), 1, ARG(k, 1, "w"),
+                                  ARG(k, 2, &c->report));
+}
+
+static GbStatus null_break_event(struct world *c, int k)
+{
+    GbBreakEvent e;
+    return granbond_break_event(ARG(k, 0, c->bond), ARG(k, 1, &c->bond_out[0]), ARG(k, 2, c->pair[0].x_i),
+                                ARG(k, 3, c->pair[0].x_j), c->pair[0].radius_i, c->pair[0].radius_j, 1.0, 2.0, 3.0,
+                                ARG(k, 4, &e));
+}
+
+static GbStatus null_break_log_text(struct world *c, int k)
+{
+    GbBreakEvent e;
+    char text[2 * GRANBOND_BREAK_LOG_LINE_LEN];
+    (void)c;
+    memset(&e, 0, sizeof e);
+    return granbond_break_log_text(ARG(k, 0, &e), 1, 1, ARG(k, 1, text), sizeof text);
+}
+
+static GbStatus null_break_log_words(struct world *c, int k)
+{
+    return granbond_break_log_words(ARG(k, 0, BREAKLOG_WORDS), 4, ARG(k, 1, &c->flag));
+}
+
+static GbStatus null_bond_columns_new(struct world *c, int k)
+{
+    GbBondColumns *cols = NULL;
+    GbStatus s = granbond_bond_columns_new(ARG(k, 0, COLUMN_WORDS), 2, 0, ARG(k, 1, &cols));
+    (void)c;
+    granbond_bond_columns_free(cols);
+    return s;
+}
+
+static GbStatus null_bond_columns_info(struct world *c, int k)
+{
+    GbBondColumns *cols = NULL;
+    GbStatus s = granbond_bond_columns_new(COLUMN_WORDS, 2, 0, &cols);
+    if (s == GB_STATUS_OK)
+        s = granbond_bond_columns_info(ARG(k, 0, cols), ARG(k, 1, &c->index), ARG(k, 2, &c->flag));
+    granbond_bond_columns_free(cols);
+    return s;
+}
+
+static GbStatus null_bond_columns_row(struct world *c, int k)
+{
+    GbBondColumns *cols = NULL;
+    double record[GRANBOND_BOND_STATE_LEN + GRANBOND_BOND_OUTPUT_LEN] = {0}, energy[16] = {0}, row[3];
+    GbStatus s = granbond_bond_columns_new(COLUMN_WORDS, 2, 0, &cols);
+    memcpy(record, c->bond_states, GRANBOND_BOND_STATE_LEN * sizeof(double));
+    if (s == GB_STATUS_OK)
+        s = granbond_bond_columns_row(ARG(k, 0, cols), ARG(k, 1, c->bond), ARG(k, 2, record), ARG(k, 3, energy), 1.0,
+                                      2.0, ARG(k, 4, c->pair[0].x_i), ARG(k, 5, c->pair[0].x_j), ARG(k, 6, row));
+    granbond_bond_columns_free(cols);
+    return s;
+}
+
+static GbStatus null_thin_periodic_box_check(struct world *c, int k)
+{
+    return granbond_thin_periodic_box_check(ARG(k, 0, "s"), 3, ARG(k, 1, PERIODIC), ARG(k, 2, c->vector), 1.0, 0.1, -1,
+                                            ARG(k, 3, &c->report));
+}
+
+static GbStatus null_store_check_findings(struct world *c, int k)
+{
+    double keys[2] = {1.0, 2.0};
+    return granbond_store_check_findings(ARG(k, 0, keys), 1, ARG(k, 1, LEDGER_COUNTS), 0, ARG(k, 2, &c->report));
+}
+
+/* One atom of id 0, and room for a key: the store checks' arguments. */
+static const int64_t ONE_ID[1] = {0};
+static const GbAtomIds ONE_ATOM = {NULL, ONE_ID, 1};
+
+static GbStatus null_bond_store_check_keys(struct world *c, int k)
+{
+    GbBondStore *store = NULL;
+    double keys[2];
+    GbStatus s = granbond_bond_store_new(&store);
+    if (s == GB_STATUS_OK)
+        s = granbond_bond_store_check_keys(ARG(k, 0, store), ARG(k, 1, &ONE_ATOM), 1, ARG(k, 2, keys), 2,
+                                           ARG(k, 3, &c->index), ARG(k, 4, &c->report));
+    granbond_bond_store_free(store);
+    return s;
+}
+
+static GbStatus null_bond_store_check_flag(struct world *c, int k)
+{
+    GbBondStore *store = NULL;
+    GbStatus s = granbond_bond_store_new(&store);
+    if (s == GB_STATUS_OK)
+        s = granbond_bond_store_check_flag(ARG(k, 0, store), 0, 0, ARG(k, 1, &ONE_ATOM), 0, ARG(k, 2, &c->report));
+    granbond_bond_store_free(store);
+    return s;
+}
+
+static GbStatus null_wall_store_check_keys(struct world *c, int k)
+{
+    GbWallStore *store = NULL;
+    double keys[2];
+    GbStatus s = granbond_wall_store_new(&store);
+    if (s == GB_STATUS_OK)
+        s = granbond_wall_store_check_keys(ARG(k, 0, store), ARG(k, 1, &ONE_ATOM), ARG(k, 2, keys), 2,
+                                           ARG(k, 3, &c->index), ARG(k, 4, &c->report));
+    granbond_wall_store_free(store);
+    return s;
+}
+
+/* A record of no bonds (zero counts and sums; never written). */
+static GbStoreCounts NO_COUNTS;
+static GbEnergySums NO_ENERGY;
+
+static GbStatus null_store_record_write(struct world *c, int k)
+{
+    uint8_t record[GRANBOND_STORE_RECORD_LEN];
+    (void)c;
+    return granbond_store_record_write(ARG(k, 0, &NO_COUNTS), ARG(k, 1, &NO_ENERGY), ARG(k, 2, record), sizeof record);
+}
+
+static GbStatus null_store_record_read(struct world *c, int k)
+{
+    GbStoreCounts counts;
+    GbEnergySums energy;
+    uint8_t record[GRANBOND_STORE_RECORD_LEN];
+    (void)c;
+    if (granbond_store_record_write(&NO_COUNTS, &NO_ENERGY, record, sizeof record) != GB_STATUS_OK)
+        return GB_STATUS_INVALID_ARGUMENT;
+    return granbond_store_record_read(ARG(k, 0, record), ARG(k, 1, &counts), ARG(k, 2, &energy));
+}
+
 static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_check_layout", null_check_layout, {"expected"}},
     {"granbond_state_slot", null_state_slot, {"name", "flips_on_swap"}},
@@ -442,6 +588,21 @@ static const struct null_entry NULL_ENTRIES[] = {
     {"granbond_bond_contact_loads_under_bond", null_bond_contact_loads_under_bond, {"model", "del", "out"}},
     {"granbond_bond_output_store", null_bond_output_store, {"out", "slots"}},
     {"granbond_bond_output_load", null_bond_output_load, {"slots", "out"}},
+    {"granbond_store_counts_row", null_store_counts_row, {"counts", "row"}},
+    {"granbond_ledger_notice", null_ledger_notice, {"counts", "name", "out"}},
+    {"granbond_break_event", null_break_event, {"model", "out", "x_i", "x_j", "event"}},
+    {"granbond_break_log_text", null_break_log_text, {"events", "text"}},
+    {"granbond_break_log_words", null_break_log_words, {"words", "every"}},
+    {"granbond_bond_columns_new", null_bond_columns_new, {"words", "columns"}},
+    {"granbond_bond_columns_info", null_bond_columns_info, {"columns", "count", "wants_energy"}},
+    {"granbond_bond_columns_row", null_bond_columns_row, {"columns", "model", "record", "energy", "x_i", "x_j", "row"}},
+    {"granbond_thin_periodic_box_check", null_thin_periodic_box_check, {"style", "periodic", "length", "out"}},
+    {"granbond_store_check_findings", null_store_check_findings, {"keys", "sums", "out"}},
+    {"granbond_bond_store_check_keys", null_bond_store_check_keys, {"store", "ids", "keys", "written", "out"}},
+    {"granbond_bond_store_check_flag", null_bond_store_check_flag, {"store", "ids", "out"}},
+    {"granbond_wall_store_check_keys", null_wall_store_check_keys, {"store", "ids", "keys", "written", "out"}},
+    {"granbond_store_record_write", null_store_record_write, {"counts", "energy", "record"}},
+    {"granbond_store_record_read", null_store_record_read, {"record", "counts", "energy"}},
     {"granbond_bond_centre", null_bond_centre, {"x_i", "x_j", "centre"}},
     {"granbond_bond_max_distance", null_bond_max_distance, {"model", "out"}},
     {"granbond_bond_contact_distance_factor", null_bond_contact_distance_factor, {"model", "out"}},

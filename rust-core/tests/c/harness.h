@@ -170,6 +170,7 @@ int test_wall_bond(void);
 int test_wall_store(void);
 /* run_checks.c */
 int test_run_checks(void);
+int test_ledger(void);
 /* voigt.c */
 int test_voigt_contact(void);
 int test_voigt_wall(void);

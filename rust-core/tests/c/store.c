@@ -135,6 +135,27 @@ int test_bond_store(void)
     EXPECT_OK(granbond_bond_store_bond(store, 0, bond_ends, &partner, state), "granbond_bond_store_bond");
     CHECK(partner == 11 && bond_ends[0] == 1 && state[0] > 0.0, "the bond: partner id 11, intact (a positive rest length)");
     {
+        double keys[2] = {0.0, 0.0};
+        size_t nkeys = 0;
+        GbCheckReport found;
+        EXPECT_OK(granbond_bond_store_check_keys(store, &ids, sa.nlocal, keys, 2, &nkeys, &found),
+                  "granbond_bond_store_check_keys");
+        CHECK(nkeys == 1 && found.level == 0 && keys[0] < keys[1] && keys[1] == 11.0,
+              say("the bond's key: its atoms' ids, the lower first (%g %g)", keys[0], keys[1]));
+        EXPECT_OK(granbond_bond_store_check_keys(store, &ids, 0, keys, 2, &nkeys, &found),
+                  "granbond_bond_store_check_keys, no local atom");
+        CHECK(nkeys == 0 && found.level == 1 && strstr(found.message, "does not join its owner"),
+              say("a bond whose owner is not local is found: %s", found.message));
+        EXPECT_OK(granbond_bond_store_check_flag(store, 1, 0, &ids, 1, &found), "granbond_bond_store_check_flag");
+        CHECK(found.level == 0, "the bonded pair flagged: nothing to say");
+        EXPECT_OK(granbond_bond_store_check_flag(store, 1, 0, &ids, 0, &found),
+                  "granbond_bond_store_check_flag, not flagged");
+        CHECK(found.level == 1 && strstr(found.message, "is bonded, but not flagged"),
+              say("a bonded pair without its flag is found: %s", found.message));
+        EXPECT(granbond_bond_store_check_flag(store, 1, 5, &ids, 1, &found), GB_STATUS_INVALID_ARGUMENT,
+               "granbond_bond_store_check_flag, j beyond the atoms");
+    }
+    {
         double energy = -1.0;
         EXPECT_OK(granbond_bond_store_stored_energy(store, models, 1, &arrays, &energy),
                   "granbond_bond_store_stored_energy");

@@ -95,16 +95,28 @@ int test_wall_store(void)
         EXPECT(granbond_wall_store_renumber(other, gone, 1), GB_STATUS_INVALID_ARGUMENT,
                "granbond_wall_store_renumber, the bond's wall without a place");
         EXPECT_NULL_ARG(granbond_wall_store_renumber(other, NULL, 2), "granbond_wall_store_renumber", "map");
-        /* the recount's listing: the one bond, by sphere and wall */
-        int64_t key_ids[2] = {0, 0};
-        uint32_t key_walls[2] = {0, 0};
-        size_t keys = 0;
+        /* the recount's keys: the one bond, by sphere and wall, held by
+           the rank of its sphere */
+        int64_t here[1] = {42}, elsewhere[1] = {43};
+        GbAtomIds local;
+        double keys[2] = {0.0, 0.0};
+        size_t nkeys = 0;
+        GbCheckReport found;
+        local.narrow = NULL;
+        local.wide = here;
+        local.count = 1;
         CHECK(granbond_wall_store_len(other) == 1 && granbond_wall_store_len(NULL) == 0, "granbond_wall_store_len");
-        EXPECT_OK(granbond_wall_store_keys(other, key_ids, key_walls, 2, &keys), "granbond_wall_store_keys");
-        CHECK(keys == 1 && key_ids[0] == 42 && key_walls[0] == 1, "the bond listed as sphere 42 on wall 1");
-        EXPECT(granbond_wall_store_keys(other, key_ids, key_walls, 0, &keys), GB_STATUS_INVALID_ARGUMENT,
-               "granbond_wall_store_keys, no room");
-        EXPECT_NULL_ARG(granbond_wall_store_keys(other, NULL, key_walls, 2, &keys), "granbond_wall_store_keys", "ids");
+        EXPECT_OK(granbond_wall_store_check_keys(other, &local, keys, 2, &nkeys, &found),
+                  "granbond_wall_store_check_keys");
+        CHECK(nkeys == 1 && found.level == 0 && keys[0] == 42.0 && keys[1] == 1.0,
+              "the bond's key: sphere 42 on wall 1");
+        EXPECT(granbond_wall_store_check_keys(other, &local, keys, 0, &nkeys, &found), GB_STATUS_INVALID_ARGUMENT,
+               "granbond_wall_store_check_keys, no room");
+        local.wide = elsewhere;
+        EXPECT_OK(granbond_wall_store_check_keys(other, &local, keys, 2, &nkeys, &found),
+                  "granbond_wall_store_check_keys, the sphere elsewhere");
+        CHECK(nkeys == 0 && found.level == 1 && strstr(found.message, "held by a rank without the sphere"),
+              say("a bond held without its sphere is found: %s", found.message));
     }
     EXPECT_OK(granbond_wall_store_restore_counts(other, &counts), "granbond_wall_store_restore_counts");
 

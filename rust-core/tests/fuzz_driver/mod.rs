@@ -47,11 +47,13 @@ use granbond::ffi::fields::{
     granbond_bond_field_info, granbond_bond_fields, granbond_bond_stress_limits,
 };
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
+use granbond::ffi::ledger as fl;
 use granbond::ffi::parameters::{self as fp, ParameterRow};
 use granbond::ffi::store::{self as fs, AtomIds, StoreAtoms, GRANBOND_BOND_STORE_CHUNK};
 use granbond::ffi::wall_store as fw;
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
+use granbond::ledger::break_log::BreakEvent;
 use granbond::timestep_check::TypeBodies;
 use std::collections::BTreeMap;
 use std::ffi::{c_char, CStr};
@@ -61,7 +63,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 142] = [
+pub const ENTRY_POINTS: [&str; 157] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -144,6 +146,22 @@ pub const ENTRY_POINTS: [&str; 142] = [
     "granbond_bond_energy_field_info",
     "granbond_bond_fields",
     "granbond_bond_stress_limits",
+    "granbond_store_counts_row",
+    "granbond_ledger_notice",
+    "granbond_break_event",
+    "granbond_break_log_text",
+    "granbond_break_log_words",
+    "granbond_bond_columns_new",
+    "granbond_bond_columns_free",
+    "granbond_bond_columns_info",
+    "granbond_bond_columns_row",
+    "granbond_thin_periodic_box_check",
+    "granbond_store_check_findings",
+    "granbond_bond_store_check_keys",
+    "granbond_bond_store_check_flag",
+    "granbond_wall_store_check_keys",
+    "granbond_store_record_write",
+    "granbond_store_record_read",
     "granbond_bond_store_new",
     "granbond_bond_store_free",
     "granbond_bond_store_grow",
@@ -197,7 +215,6 @@ pub const ENTRY_POINTS: [&str; 142] = [
     "granbond_wall_store_unpack",
     "granbond_wall_store_link",
     "granbond_wall_store_renumber",
-    "granbond_wall_store_keys",
     "granbond_wall_store_len",
     "granbond_wall_store_visit",
     "granbond_wall_store_counts",
@@ -2096,6 +2113,40 @@ impl<'t> Session<'t> {
                     "the store's counts: {c:?}"
                 );
             }
+            self.ledger_counts(&counts.get());
+            let mut keys = vec![f64::NAN; 2 * fs::granbond_bond_store_len(st)];
+            let (mut written, mut found) = (usize::MAX, std::mem::zeroed::<CheckReport>());
+            let status = fl::granbond_bond_store_check_keys(
+                st,
+                &wide_ids,
+                nlocal,
+                keys.as_mut_ptr(),
+                keys.len(),
+                &mut written,
+                &mut found,
+            );
+            if self.answer("granbond_bond_store_check_keys", status) && found.level == 0 {
+                assert_eq!(
+                    2 * written,
+                    keys.len(),
+                    "granbond_bond_store_check_keys: a key a bond"
+                );
+                assert!(
+                    keys.chunks(2).all(|k| k[0] <= k[1]),
+                    "granbond_bond_store_check_keys: the lower id first"
+                );
+            }
+            // the flag of the pair of the first and the last atom, set as
+            // the keys' count says
+            let status =
+                fl::granbond_bond_store_check_flag(st, 0, n - 1, &wide_ids, (written % 2) as i32, &mut found);
+            if self.answer("granbond_bond_store_check_flag", status) {
+                assert!(
+                    found.level == 0 || found.level == 1,
+                    "granbond_bond_store_check_flag: level {}",
+                    found.level
+                );
+            }
             let held = fs::granbond_bond_store_len(st);
             self.answer_value("granbond_bond_store_len");
             let mut energy = Place::new(f64::NAN);
@@ -2448,15 +2499,24 @@ impl<'t> Session<'t> {
                 self.answer("granbond_wall_store_renumber", renumbered);
                 let back = fw::granbond_wall_store_renumber(ot, map.as_ptr(), map.len());
                 self.answer("granbond_wall_store_renumber", back);
-                let (mut key_ids, mut key_walls, mut keys) = ([0i64; 4], [0u32; 4], 0usize);
-                let listed = fw::granbond_wall_store_keys(
+                let (mut keys, mut written) = ([0.0f64; 8], 0usize);
+                let mut found = std::mem::zeroed::<CheckReport>();
+                let listed = fl::granbond_wall_store_check_keys(
                     ot,
-                    key_ids.as_mut_ptr(),
-                    key_walls.as_mut_ptr(),
-                    4,
-                    &mut keys,
+                    &atoms,
+                    keys.as_mut_ptr(),
+                    8,
+                    &mut written,
+                    &mut found,
                 );
-                self.answer("granbond_wall_store_keys", listed);
+                if self.answer("granbond_wall_store_check_keys", listed) {
+                    assert!(
+                        (found.level == 0)
+                            == (written == granbond::ffi::wall_store::granbond_wall_store_len(ot)),
+                        "granbond_wall_store_check_keys: level {} with {written} keys",
+                        found.level
+                    );
+                }
                 let _ = fw::granbond_wall_store_len(ot);
                 self.answer_value("granbond_wall_store_len");
                 visit(self, ot, contact(2, 1));
@@ -2556,6 +2616,166 @@ impl<'t> Session<'t> {
         // are `length` apart
         self.stress_limits(m, length);
         self.bond_fields(m, length);
+        self.break_log(m, length);
+    }
+
+    /// The break log's event of a bond of `m` that broke at compression
+    /// `delta` between spheres `delta` apart (no input read), its line, and
+    /// the words of the log's fix with `delta` as the interval.
+    fn break_log(&mut self, m: *const BondModel, delta: f64) {
+        let out = BondOutput {
+            delta,
+            sigma: 1e6,
+            tau: 2e5,
+            break_mode: 2,
+            ..Default::default()
+        };
+        let (x_i, x_j) = ([delta, 0.0, 0.0], [0.0; 3]);
+        let mut e = BreakEvent::default();
+        // SAFETY: the model pointer as the driver keeps it; valid others.
+        let status = unsafe {
+            fl::granbond_break_event(
+                m,
+                &out,
+                x_i.as_ptr(),
+                x_j.as_ptr(),
+                1e-3,
+                1e-3,
+                7.0,
+                3.0,
+                10.0,
+                &mut e,
+            )
+        };
+        if self.answer("granbond_break_event", status) {
+            assert!(
+                e.tag_i == 3.0 && e.tag_j == 7.0,
+                "granbond_break_event: the smaller id first"
+            );
+        }
+        // a step that is no integer is refused
+        e.step = if delta.is_finite() { delta.abs() } else { 10.0 };
+        let mut events = [e, e];
+        let mut text = vec![0 as c_char; 3 * fl::GRANBOND_BREAK_LOG_LINE_LEN];
+        // SAFETY: two events; a buffer of its length.
+        let status =
+            unsafe { fl::granbond_break_log_text(events.as_mut_ptr(), 2, 1, text.as_mut_ptr(), text.len()) };
+        if self.answer("granbond_break_log_text", status) {
+            let t = unsafe { CStr::from_ptr(text.as_ptr()) }
+                .to_string_lossy()
+                .into_owned();
+            assert_eq!(
+                t.lines().count(),
+                3,
+                "granbond_break_log_text: the header and two lines: {t}"
+            );
+        }
+        let every = std::ffi::CString::new(format!("{delta}")).unwrap();
+        let words = [
+            c"log".as_ptr(),
+            c"all".as_ptr(),
+            c"bond/breaklog".as_ptr(),
+            c"f".as_ptr(),
+            c"every".as_ptr(),
+            every.as_ptr(),
+        ];
+        let mut n = -1i32;
+        let count = if delta > 0.0 { 6 } else { 4 };
+        // SAFETY: `count` valid words; a valid output.
+        let status = unsafe { fl::granbond_break_log_words(words.as_ptr(), count, &mut n) };
+        if self.answer("granbond_break_log_words", status) {
+            assert!(n >= 1, "granbond_break_log_words: every {n}");
+        }
+    }
+
+    /// What the ledger makes of a store's counts (no input read): the row,
+    /// a notice (an id out of range where the counts say so) and the
+    /// store check's findings.
+    fn ledger_counts(&mut self, c: &StoreCounts) {
+        let mut row = [f64::NAN; fl::GRANBOND_COUNTS_ROW_LEN];
+        // SAFETY: valid counts and row.
+        let status = unsafe { fl::granbond_store_counts_row(c, row.as_mut_ptr()) };
+        if self.answer("granbond_store_counts_row", status) {
+            assert_eq!(
+                row[0], c.created as f64,
+                "granbond_store_counts_row: created first"
+            );
+        }
+        // the counts through a restart file's record (a short buffer where
+        // the counts say so, a damaged length where they say so), and back
+        let energy = granbond::bond_store::EnergySums {
+            damping: c.created as f64,
+            hysteresis: 0.5,
+            released: f64::NAN,
+        };
+        let mut record = [0u8; fl::GRANBOND_STORE_RECORD_LEN];
+        let capacity = if c.intact % 5 == 4 { 8 } else { record.len() };
+        // SAFETY: valid counts, energy and `capacity` bytes.
+        let status = unsafe { fl::granbond_store_record_write(c, &energy, record.as_mut_ptr(), capacity) };
+        if self.answer("granbond_store_record_write", status) {
+            if c.lost() % 4 == 3 {
+                record[0] ^= 1;
+            }
+            let (mut back, mut energy_back) = (
+                StoreCounts::default(),
+                granbond::bond_store::EnergySums::default(),
+            );
+            // SAFETY: a whole record; valid outputs.
+            let status =
+                unsafe { fl::granbond_store_record_read(record.as_ptr(), &mut back, &mut energy_back) };
+            if self.answer("granbond_store_record_read", status) {
+                assert_eq!(back, *c, "granbond_store_record_read: the counts bit for bit");
+                assert_eq!(energy_back.damping.to_bits(), energy.damping.to_bits());
+            }
+        }
+        let lost = [
+            c.lost_owner_gone,
+            c.lost_partner_unreached,
+            c.lost_id_reused,
+            c.lost_no_model,
+        ];
+        let mut report = unsafe { std::mem::zeroed::<CheckReport>() };
+        // SAFETY: four counts, a valid name and report.
+        let status = unsafe {
+            fl::granbond_ledger_notice(
+                (c.created % 7) as i32,
+                lost.as_ptr(),
+                c.intact,
+                c"wall".as_ptr(),
+                &mut report,
+            )
+        };
+        if self.answer("granbond_ledger_notice", status) {
+            assert!(
+                report.level == 0 || report.level == 1,
+                "granbond_ledger_notice: level {}",
+                report.level
+            );
+        }
+        let mut keys = [
+            c.created as f64,
+            c.intact as f64,
+            c.created as f64,
+            (c.intact % 2) as f64,
+        ];
+        let sums = [c.created, c.broken(), c.intact, c.lost()];
+        // SAFETY: two keys, four sums, a valid report.
+        let status = unsafe {
+            fl::granbond_store_check_findings(
+                keys.as_mut_ptr(),
+                2,
+                sums.as_ptr(),
+                (c.lost() % 3) as i32,
+                &mut report,
+            )
+        };
+        if self.answer("granbond_store_check_findings", status) {
+            assert!(
+                report.level == 0 || report.level == 1,
+                "granbond_store_check_findings: level {}",
+                report.level
+            );
+        }
     }
 
     fn stress_limits(&mut self, m: *const BondModel, delta: f64) {
@@ -2594,6 +2814,67 @@ impl<'t> Session<'t> {
                 "granbond_bond_fields: the status of an intact bond"
             );
         }
+        self.bond_columns(m, &record, x_i, x_j, distance);
+    }
+
+    /// The columns of a per-bond output of the same bond (no input read):
+    /// keywords, or LIGGGHTS-INL's layout where `distance` is negative.
+    fn bond_columns(
+        &mut self,
+        m: *const BondModel,
+        record: &[f64],
+        x_i: [f64; 3],
+        x_j: [f64; 3],
+        distance: f64,
+    ) {
+        let words = [
+            c"id".as_ptr(),
+            c"all".as_ptr(),
+            c"energy_stored".as_ptr(),
+            c"no_such_column".as_ptr(),
+        ];
+        let (count, inl) = match distance {
+            d if d < 0.0 => (0, 1),
+            d if d > 1.0 => (4, 0),
+            _ => (3, 0),
+        };
+        let mut columns: *mut granbond::ledger::columns::BondColumns = null_mut();
+        // SAFETY: `count` valid words; a valid output.
+        let status = unsafe { fl::granbond_bond_columns_new(words.as_ptr(), count, inl, &mut columns) };
+        if !self.answer("granbond_bond_columns_new", status) {
+            return;
+        }
+        let (mut n, mut energy) = (0usize, -1i32);
+        // SAFETY: columns from granbond_bond_columns_new; valid outputs.
+        let status = unsafe { fl::granbond_bond_columns_info(columns, &mut n, &mut energy) };
+        if self.answer("granbond_bond_columns_info", status) {
+            assert!(
+                n > 0 && (energy == 1) == (inl == 0),
+                "granbond_bond_columns_info: {n} columns, energy {energy}"
+            );
+        }
+        let energies = [0.5; BOND_ENERGY_FIELD_COUNT];
+        let mut row = vec![f64::NAN; n];
+        // SAFETY: as above; buffers of their documented lengths.
+        let status = unsafe {
+            fl::granbond_bond_columns_row(
+                columns,
+                m,
+                record.as_ptr(),
+                energies.as_ptr(),
+                1.0,
+                2.0,
+                x_i.as_ptr(),
+                x_j.as_ptr(),
+                row.as_mut_ptr(),
+            )
+        };
+        if self.answer("granbond_bond_columns_row", status) && inl == 0 {
+            assert_eq!(&row[..2], &[1.0, 2.0], "granbond_bond_columns_row: the ids first");
+        }
+        // SAFETY: from granbond_bond_columns_new, not used again.
+        unsafe { fl::granbond_bond_columns_free(columns) };
+        self.answer_value("granbond_bond_columns_free");
     }
 
     /// The three time-step estimates.
@@ -2726,6 +3007,32 @@ impl<'t> Session<'t> {
                     r.critical
                 );
             }
+        }
+        // a periodic box of the bodies' sizes against a reach of their
+        // radii (no input read)
+        let length = [bodies[0], bodies[1], bodies[3]];
+        let periodic = [1, 0, 1];
+        let dimension = 2 + which.min(1) as i32;
+        // SAFETY: valid style, three flags, three lengths; null, misaligned or valid report.
+        let status = unsafe {
+            fl::granbond_thin_periodic_box_check(
+                c"fuzz".as_ptr(),
+                dimension,
+                periodic.as_ptr(),
+                length.as_ptr(),
+                bodies[2],
+                bodies[2] * 0.1,
+                -1,
+                report.ptr(how),
+            )
+        };
+        if self.answer("granbond_thin_periodic_box_check", status) {
+            let r = report.get();
+            assert!(
+                r.level == 0 || r.level == 1,
+                "granbond_thin_periodic_box_check: level {}",
+                r.level
+            );
         }
     }
 
