@@ -105,6 +105,16 @@ impl<'a> IndexedPairs<'a> {
         Ok(Self { atoms, pairs })
     }
 
+    /// The bonds' atom indices, each checked below [`Self::atom_count`].
+    pub fn pairs(&self) -> &'a [[i32; 2]] {
+        self.pairs
+    }
+
+    /// The number of atoms the arrays hold.
+    pub fn atom_count(&self) -> usize {
+        self.atoms.count()
+    }
+
     /// The bonds `range` of this batch, whose indices were checked with it.
     pub fn sub(&self, range: std::ops::Range<usize>) -> Self {
         Self {

@@ -12,6 +12,7 @@
 //! feed it one bond at a time (`scalar`) or in lanes (`wide`); the compiled
 //! steps and the choice among them (`dispatch`); the model ([`model`]).
 
+pub mod atom_loads;
 pub mod breakage;
 pub mod creation;
 pub mod creation_check;
@@ -44,6 +45,7 @@ pub mod wall;
 mod wide;
 
 pub use crate::simd::Simd;
+pub use atom_loads::{AtomLoads, LoadsTooShort};
 pub use breakage::BreakMode;
 pub use energy::BondEnergy;
 pub use laws::BondLaws;

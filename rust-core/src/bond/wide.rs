@@ -18,6 +18,7 @@
 //! is left to the scalar kernel, which zeroes the first kind and reports
 //! the second with its index.
 
+use super::atom_loads::LoadSink;
 use super::features::{BEND, SHEAR, TWIST};
 use super::finite::{bond_finite, results_finite_summed, results_surely_finite, BatchResult};
 use super::laws::BondLaws;
@@ -33,7 +34,9 @@ use crate::vector::{Vector, V3};
 use std::borrow::{Borrow, BorrowMut};
 
 /// [`one_by_one`] in chunks of `P::WIDTH` lanes; the bonds after the last full
-/// chunk one by one.
+/// chunk one by one. Each chunk's loads go to `sink` as soon as it is
+/// stepped: from the lanes where it can take them so, else from the
+/// outputs.
 #[inline(always)]
 pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
     laws: &BondLaws,
@@ -41,6 +44,7 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
     dt: f64,
     states: &mut [T],
     outs: &mut [BondOutput],
+    sink: &LoadSink<'_>,
 ) -> BatchResult {
     let count = kin.len().min(states.len()).min(outs.len());
     let mut first = None;
@@ -48,23 +52,29 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
     while start + P::WIDTH <= count {
         let end = start + P::WIDTH;
         let chunk = &mut states[start..end];
+        let outs_of = &mut outs[start..end];
         let outcome = match P::WIDTH {
-            4 => step_chunk::<S, P, K, 4>(laws, kin, start, dt, &mut lanes(chunk), &mut outs[start..end]),
-            8 => step_chunk::<S, P, K, 8>(laws, kin, start, dt, &mut lanes(chunk), &mut outs[start..end]),
+            4 => step_chunk::<S, P, K, 4>(laws, kin, start, dt, &mut lanes(chunk), outs_of, sink),
+            8 => step_chunk::<S, P, K, 8>(laws, kin, start, dt, &mut lanes(chunk), outs_of, sink),
             _ => unreachable!("lanes of 4 or 8"),
         };
-        let found = match outcome {
+        let (found, added) = match outcome {
             // rare: which lane, from what was stored
-            Some(finite) if !P::all(finite) => {
-                (start..end).find(|&b| !bond_finite(states[b].borrow(), &outs[b]))
-            }
-            Some(_) => None,
-            None => one_by_one::<S, K, T>(laws, kin, start..end, dt, states, outs)?,
+            Some((finite, _)) if !P::all(finite) => (
+                (start..end).find(|&b| !bond_finite(states[b].borrow(), &outs[b])),
+                false,
+            ),
+            Some((_, added)) => (None, added),
+            None => (one_by_one::<S, K, T>(laws, kin, start..end, dt, states, outs)?, false),
         };
+        if !added {
+            sink.add_outputs(start..end, outs);
+        }
         first = first.or(found);
         start = end;
     }
     let found = one_by_one::<S, K, T>(laws, kin, start..count, dt, states, outs)?;
+    sink.add_outputs(start..count, outs);
     Ok(first.or(found))
 }
 
@@ -80,10 +90,12 @@ fn lanes<const N: usize, T: BorrowMut<BondState>>(chunk: &mut [T]) -> [&mut Bond
 
 /// Advances the `P::WIDTH` bonds of a chunk, from bond `first` of `kin` on,
 /// in lanes, and returns a mask whose lanes are all true only if every
-/// bond's results are finite (a false lane leaves the caller to find which
-/// bond, if any, is not); or returns `None` without touching anything when
-/// one of them is not intact or its kinematics are not surely usable (the
-/// scalar kernel then decides).
+/// bond's results are finite and none broke (a false lane leaves the caller
+/// to find which bond, if any, is not finite), and whether their loads went
+/// to `sink` from the lanes (only where every lane is true; else the caller
+/// adds them from the outputs); or returns `None` without touching anything
+/// when one of them is not intact or its kinematics are not surely usable
+/// (the scalar kernel then decides).
 #[inline(always)]
 fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     laws: &BondLaws,
@@ -92,7 +104,8 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     dt: f64,
     states: &mut [&mut BondState; N],
     outs: &mut [BondOutput],
-) -> Option<P::Mask> {
+    sink: &LoadSink<'_>,
+) -> Option<(P::Mask, bool)> {
     let (states, outs) = (&mut states[..], &mut outs[..N]);
     let kin = |lane: usize| kin.pair(first + lane);
     // A positive rest length: intact (`BondState::rest`).
@@ -135,42 +148,21 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     };
     let mut history = Lanes {
         states,
-        outs,
         live,
         sum: r0,
         loads_sum: P::splat(0.0),
+        force: V3::new(P::splat(0.0), P::splat(0.0), P::splat(0.0)),
     };
     let loads = advance::<S, P, V3<P>, _>(laws, &relative, P::splat(dt), &mut history);
-    let (states, outs, state_sum, mut loads_sum) =
-        (history.states, history.outs, history.sum, history.loads_sum);
-
-    // Back into the structs one quantity at a time: each register is
-    // stored once and its lanes copied out.
-    let broken = loads.mode.gt(P::splat(0.0));
-    let status = |s: BondStatus| P::splat(s as i32 as f64);
-    let status = P::select(broken, status(BondStatus::Broken), status(BondStatus::Intact));
-    scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
-    scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
-    scatter2(
-        outs,
-        loads.normal_force,
-        loads.sigma,
-        |o: &mut BondOutput, [f, s]| (o.normal_force, o.sigma) = (f, s),
-    );
-    scatter2(outs, loads.tau, loads.delta, |o: &mut BondOutput, [t, d]| {
-        (o.tau, o.delta) = (t, d)
-    });
-    P::for_each_lane_codes(status, loads.mode, |i, [status, mode]| {
-        (outs[i].status, outs[i].break_mode) = (status, mode)
-    });
+    let (states, state_sum, mut loads_sum, force) =
+        (history.states, history.sum, history.loads_sum, history.force);
 
     // A bond that broke exerts nothing, and its status says so. Rare: a
     // branch rather than a blend per number.
+    let broken = loads.mode.gt(P::splat(0.0));
     if P::any(broken) {
         loads.mode.for_each_lane(|i, mode| {
             if mode != 0.0 {
-                let o = &mut outs[i];
-                (o.force_i, o.torque_i, o.torque_j) = ([0.0; 3], [0.0; 3], [0.0; 3]);
                 states[i].mark_broken();
             }
         });
@@ -191,7 +183,84 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
             &states[lane].as_slots()[live..]
         })
     };
-    Some(finite & !broken)
+    let held = finite & !broken;
+
+    // Back into the structs one quantity at a time: each register is
+    // stored once and its lanes copied out. The loads go to the atoms
+    // from the registers where every lane holds (else the caller adds
+    // what was stored), and to the outputs only where they are asked for
+    // or the caller needs them.
+    let direct = sink.direct && P::all(held);
+    let status = |s: BondStatus| P::splat(s as i32 as f64);
+    let status = P::select(broken, status(BondStatus::Broken), status(BondStatus::Intact));
+    P::for_each_lane_codes(status, loads.mode, |i, [status, mode]| {
+        (outs[i].status, outs[i].break_mode) = (status, mode)
+    });
+    if !direct || sink.outputs {
+        scatter3(outs, force, |o: &mut BondOutput| &mut o.force_i);
+        scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
+        scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
+        scatter2(
+            outs,
+            loads.normal_force,
+            loads.sigma,
+            |o: &mut BondOutput, [f, s]| (o.normal_force, o.sigma) = (f, s),
+        );
+        scatter2(outs, loads.tau, loads.delta, |o: &mut BondOutput, [t, d]| {
+            (o.tau, o.delta) = (t, d)
+        });
+        if P::any(broken) {
+            loads.mode.for_each_lane(|i, mode| {
+                if mode != 0.0 {
+                    let o = &mut outs[i];
+                    (o.force_i, o.torque_i, o.torque_j) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+                }
+            });
+        }
+    }
+    if direct {
+        // the routing decided once for the kernel's chunk of bonds
+        if sink.route {
+            add_to_atoms::<P, true>(sink, first, force, loads.torque_i, loads.torque_j);
+        } else {
+            add_to_atoms::<P, false>(sink, first, force, loads.torque_i, loads.torque_j);
+        }
+    }
+    Some((held, direct))
+}
+
+/// The loads of the `P::WIDTH` bonds from bond `first` on added to their
+/// atoms from the lanes, in the order an engine adding the outputs bond by
+/// bond gives each atom's sums: the forces lane by lane (owner, then
+/// partner), then the torques likewise (forces and torques lie apart).
+/// `ROUTE`: a ghost partner may have its own rows.
+#[inline(always)]
+fn add_to_atoms<P: Pack, const ROUTE: bool>(
+    sink: &LoadSink<'_>,
+    first: usize,
+    force: V3<P>,
+    torque_i: V3<P>,
+    torque_j: V3<P>,
+) {
+    let rows = sink.rows();
+    // SAFETY: the sink was made with the kernel's kinematics, whose indices
+    // it checked against the rows, and these bonds are of them.
+    unsafe {
+        P::for_each_lane3(force.x, force.y, force.z, |lane, f| {
+            let [i, j] = sink.ends(first + lane);
+            f.add_to(rows.force_of(i));
+            f.subtract_from(rows.partner_of::<ROUTE>(j).0);
+        });
+        let mut owners = [None; 8];
+        P::for_each_lane3(torque_i.x, torque_i.y, torque_i.z, |lane, t| owners[lane] = Some(t));
+        P::for_each_lane3(torque_j.x, torque_j.y, torque_j.z, |lane, t| {
+            let [i, j] = sink.ends(first + lane);
+            if let Some(o) = owners[lane] {
+                o.add_to(rows.torque_of(i));
+            }
+            t.add_to(rows.partner_of::<ROUTE>(j).1);
+        });
+    }
 }
 
 /// The kinematics of a chunk's pairs, read as [`relative`] asks. Each
@@ -273,18 +342,19 @@ impl<P: Pack, F: Fn(usize) -> PairKinematics> MotionSource<P, V3<P>> for LaneMot
 }
 
 /// The history of a chunk's bonds, read from and written to their states
-/// as [`advance`] asks, one quantity a register; the force goes out as
-/// soon as it is known, so that it is not held through the torques' laws. It adds up the slots the
-/// step keeps in registers (below `live`) in their order, from the status
+/// as [`advance`] asks, one quantity a register; the force is held until
+/// the chunk's breaks are known (a bond that breaks adds nothing to its
+/// atoms). It adds up the slots the step keeps in registers (below `live`) in their order, from the status
 /// on, for the results check ([`results_finite_summed`]) as they pass; the
 /// slots of a law switched off are read for that alone.
 struct Lanes<'a, P, T> {
     states: &'a mut [T],
-    outs: &'a mut [BondOutput],
     live: usize,
     sum: P,
     /// The force's components added up, for the results check.
     loads_sum: P,
+    /// The force, held until the chunk's breaks are known.
+    force: V3<P>,
 }
 
 impl<P: Pack, T: BorrowMut<BondState>> Lanes<'_, P, T> {
@@ -409,7 +479,7 @@ impl<P: Pack, T: BorrowMut<BondState>> HistoryIo<P, V3<P>> for Lanes<'_, P, T> {
     }
     #[inline(always)]
     fn put_force(&mut self, f: V3<P>) {
-        scatter3(self.outs, f, |o: &mut BondOutput| &mut o.force_i);
+        self.force = f;
         self.loads_sum = (f.x + f.y) + f.z;
     }
 }

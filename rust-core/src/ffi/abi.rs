@@ -15,7 +15,7 @@ use crate::timestep_check::TypeBodies;
 use std::mem::size_of;
 
 /// Bumped whenever a struct, a function or a meaning changes.
-pub const GRANBOND_ABI_VERSION: u32 = 23;
+pub const GRANBOND_ABI_VERSION: u32 = 24;
 
 /// The meaning of the state slots (`granbond_state_slot`): bumped whenever a
 /// slot is added, removed or changes meaning, so that engines can refuse
