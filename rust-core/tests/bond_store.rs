@@ -1035,7 +1035,9 @@ fn a_setup_pass_of_inl_code_is_its_own_trial_step() {
 /// Start values of an engine's load sums: not zero, so that the order of
 /// the adds to each atom shows in the bits.
 fn start_sums(len: usize, seed: f64) -> Vec<f64> {
-    (0..len).map(|k| seed * ((k * 7919 % 101) as f64 - 50.0)).collect()
+    (0..len)
+        .map(|k| seed * ((k * 7919 % 101) as f64 - 50.0))
+        .collect()
 }
 
 /// The loads of a pass as an engine adds the outputs bond by bond (the
@@ -1077,7 +1079,11 @@ fn added_by_hand(
             for c in 0..3 {
                 fj[c] -= r(j) * o.force_i[c];
             }
-            let tj = if tj.1 { &mut g[tj.0..tj.0 + 3] } else { &mut t[tj.0..tj.0 + 3] };
+            let tj = if tj.1 {
+                &mut g[tj.0..tj.0 + 3]
+            } else {
+                &mut t[tj.0..tj.0 + 3]
+            };
             for c in 0..3 {
                 tj[c] += r(j) * o.torque_j[c];
             }
@@ -1138,7 +1144,12 @@ fn the_core_adds_the_loads_as_an_engine_adding_the_outputs_bond_by_bond() {
     let models = [
         ("AVX2 or scalar as chosen", bond_model(p)),
         ("switched", bond_model(p).switched()),
-        ("scalar", bond_model(p).with_simd(Simd::Scalar).expect("scalar runs anywhere")),
+        (
+            "scalar",
+            bond_model(p)
+                .with_simd(Simd::Scalar)
+                .expect("scalar runs anywhere"),
+        ),
     ];
     for (name, model) in &models {
         // a lattice whose top layer is ghosts: bonds to ghost partners
@@ -1167,7 +1178,10 @@ fn the_core_adds_the_loads_as_an_engine_adding_the_outputs_bond_by_bond() {
                     let want = added_by_hand(&mut by_hand, model, &atoms, relax, ghost_rows);
                     let got = added_by_core(&mut by_core, model, &atoms, relax, ghost_rows, chunk_by_chunk);
                     for k in 0..3 {
-                        let differs = got[k].iter().zip(&want[k]).position(|(a, b)| a.to_bits() != b.to_bits());
+                        let differs = got[k]
+                            .iter()
+                            .zip(&want[k])
+                            .position(|(a, b)| a.to_bits() != b.to_bits());
                         assert_eq!(
                             differs,
                             None,
@@ -1177,7 +1191,10 @@ fn the_core_adds_the_loads_as_an_engine_adding_the_outputs_bond_by_bond() {
                         );
                     }
                     assert_eq!(by_core.counts(), by_hand.counts(), "{name}: the same breaks");
-                    assert!(by_core.counts().broken() > 0, "{name}: the pulled atom's bonds broke");
+                    assert!(
+                        by_core.counts().broken() > 0,
+                        "{name}: the pulled atom's bonds broke"
+                    );
                 }
             }
         }

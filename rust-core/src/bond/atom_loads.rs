@@ -163,7 +163,19 @@ impl<'a> LoadSink<'a> {
         unsafe { (*self.pairs.add(b)).map(|a| a as usize) }
     }
 
-    /// The rows of the sums; only where [`Self::adds`].
+    /// Whether a partner of bonds `range` is a ghost (with rows, where
+    /// [`Self::route`]).
+    ///
+    /// # Safety
+    /// `range` must hold bonds of the kinematics the sink was made with.
+    #[inline(always)]
+    pub(crate) unsafe fn ghost_partner(&self, range: Range<usize>) -> bool {
+        let nlocal = self.rows().nlocal;
+        // SAFETY: the caller's.
+        range.fold(false, |any, b| any | (unsafe { self.ends(b)[1] } >= nlocal))
+    }
+
+    /// The rows of the sums; only for a sink made by [`Self::adding`].
     #[inline(always)]
     pub(crate) fn rows(&self) -> &Rows<'a> {
         self.rows.as_ref().expect("a sink that adds")
@@ -192,16 +204,16 @@ impl Rows<'_> {
     }
 
     /// Partner `j`'s force and torque rows: its ghost row where `ROUTE` and
-    /// it is a ghost with one, else its own.
+    /// it is a ghost, else its own.
     ///
     /// # Safety
-    /// As [`Self::force_of`].
+    /// As [`Self::force_of`]; `ROUTE` only where the rows have ghost rows.
     #[inline(always)]
     pub(crate) unsafe fn partner_of<const ROUTE: bool>(&self, j: usize) -> (*mut f64, *mut f64) {
         // SAFETY: the caller's; a ghost's row lies within the ghost rows,
         // checked for every ghost.
         unsafe {
-            if ROUTE && !self.ghosts.is_null() && j >= self.nlocal {
+            if ROUTE && j >= self.nlocal {
                 let g = self.ghosts.add(6 * (j - self.nlocal));
                 (g, g.add(3))
             } else {
@@ -219,10 +231,19 @@ impl Rows<'_> {
     unsafe fn add_scaled(&self, i: usize, j: usize, f: [f64; 3], ti: [f64; 3], tj: [f64; 3]) {
         // SAFETY: the caller's.
         unsafe {
-            let factor = |a: usize| if self.relax.is_null() { 1.0 } else { *self.relax.add(a) };
+            let factor = |a: usize| {
+                if self.relax.is_null() {
+                    1.0
+                } else {
+                    *self.relax.add(a)
+                }
+            };
             let (ri, rj) = (factor(i), factor(j));
             let (fi, ti_row) = (self.force_of(i), self.torque_of(i));
-            let (fj, tj_row) = self.partner_of::<true>(j);
+            let (fj, tj_row) = match self.ghosts.is_null() {
+                true => self.partner_of::<false>(j),
+                false => self.partner_of::<true>(j),
+            };
             for c in 0..3 {
                 *fi.add(c) += ri * f[c];
             }

@@ -65,7 +65,10 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
                 false,
             ),
             Some((_, added)) => (None, added),
-            None => (one_by_one::<S, K, T>(laws, kin, start..end, dt, states, outs)?, false),
+            None => (
+                one_by_one::<S, K, T>(laws, kin, start..end, dt, states, outs)?,
+                false,
+            ),
         };
         if !added {
             sink.add_outputs(start..end, outs);
@@ -219,8 +222,10 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
         }
     }
     if direct {
-        // the routing decided once for the kernel's chunk of bonds
-        if sink.route {
+        // ghost rows for a partner only where the kernel's chunk has a ghost
+        // partner with rows, and then only where these lanes do
+        // SAFETY: these lanes' bonds are of the sink's kinematics.
+        if sink.route && unsafe { sink.ghost_partner(first..first + N) } {
             add_to_atoms::<P, true>(sink, first, force, loads.torque_i, loads.torque_j);
         } else {
             add_to_atoms::<P, false>(sink, first, force, loads.torque_i, loads.torque_j);
@@ -244,21 +249,29 @@ fn add_to_atoms<P: Pack, const ROUTE: bool>(
 ) {
     let rows = sink.rows();
     // SAFETY: the sink was made with the kernel's kinematics, whose indices
-    // it checked against the rows, and these bonds are of them.
+    // it checked against the rows, and these bonds are of them; `ROUTE`
+    // only where the sink has ghost rows.
     unsafe {
-        P::for_each_lane3(force.x, force.y, force.z, |lane, f| {
+        // each lane's rows, its indices read once
+        let mut at = [[std::ptr::null_mut::<f64>(); 4]; 8];
+        for (lane, at) in at.iter_mut().enumerate().take(P::WIDTH) {
             let [i, j] = sink.ends(first + lane);
-            f.add_to(rows.force_of(i));
-            f.subtract_from(rows.partner_of::<ROUTE>(j).0);
+            let (fj, tj) = rows.partner_of::<ROUTE>(j);
+            *at = [rows.force_of(i), rows.torque_of(i), fj, tj];
+        }
+        P::for_each_lane3(force.x, force.y, force.z, |lane, f| {
+            f.add_to(at[lane][0]);
+            f.subtract_from(at[lane][2]);
         });
         let mut owners = [None; 8];
-        P::for_each_lane3(torque_i.x, torque_i.y, torque_i.z, |lane, t| owners[lane] = Some(t));
+        P::for_each_lane3(torque_i.x, torque_i.y, torque_i.z, |lane, t| {
+            owners[lane] = Some(t)
+        });
         P::for_each_lane3(torque_j.x, torque_j.y, torque_j.z, |lane, t| {
-            let [i, j] = sink.ends(first + lane);
             if let Some(o) = owners[lane] {
-                o.add_to(rows.torque_of(i));
+                o.add_to(at[lane][1]);
             }
-            t.add_to(rows.partner_of::<ROUTE>(j).1);
+            t.add_to(at[lane][3]);
         });
     }
 }

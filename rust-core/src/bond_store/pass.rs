@@ -196,12 +196,18 @@ impl BondStore {
     }
 
     /// `loads`' rows for the atoms of `atoms`, each array's length checked.
-    fn rows_of<'l>(&self, loads: &'l mut AtomLoads<'_>, atoms: &AtomArrays<'_>) -> Result<Rows<'l>, StepFailure> {
-        loads.rows(atoms.count()).map_err(|LoadsTooShort(what)| StepFailure {
-            bond: self.cursor.next,
-            ends: [-1, -1],
-            reason: StepFailureReason::LoadsTooShort(what),
-        })
+    fn rows_of<'l>(
+        &self,
+        loads: &'l mut AtomLoads<'_>,
+        atoms: &AtomArrays<'_>,
+    ) -> Result<Rows<'l>, StepFailure> {
+        loads
+            .rows(atoms.count())
+            .map_err(|LoadsTooShort(what)| StepFailure {
+                bond: self.cursor.next,
+                ends: [-1, -1],
+                reason: StepFailureReason::LoadsTooShort(what),
+            })
     }
 
     /// The next chunk stepped, its loads added to `rows` if given, every

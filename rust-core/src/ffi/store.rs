@@ -11,8 +11,8 @@ use crate::bond_store::{
     creates_here, packed_len_in, BondStore, BrokenBond, EnergySums, Ids, LinkAtoms, LinkReport, ListedAtoms,
     ListedBond, SharesError, StepFailure, StepFailureReason, StoreCounts, CHUNK,
 };
-use crate::pair_source::AtomArrays;
 use crate::kinematics::PairKinematics;
+use crate::pair_source::AtomArrays;
 
 /// Bonds one `granbond_bond_store_step_next` steps at most: the length of
 /// its `ends` and `outs` arrays.
@@ -404,7 +404,10 @@ unsafe fn atom_loads<'a>(loads: &AtomLoadPointers, atoms: &AtomArrays<'_>) -> Re
     let written = [
         ("loads->force", force.as_ptr_range()),
         ("loads->torque", torque.as_ptr_range()),
-        ("loads->ghost_rows", ghost_rows.as_deref().unwrap_or(&[]).as_ptr_range()),
+        (
+            "loads->ghost_rows",
+            ghost_rows.as_deref().unwrap_or(&[]).as_ptr_range(),
+        ),
     ];
     let read = [
         ("loads->relax", relax.unwrap_or(&[]).as_ptr_range()),
@@ -415,7 +418,10 @@ unsafe fn atom_loads<'a>(loads: &AtomLoadPointers, atoms: &AtomArrays<'_>) -> Re
     ];
     for (k, (name, range)) in written.iter().enumerate() {
         let others = written[k + 1..].iter().chain(&read);
-        if let Some((other, _)) = others.into_iter().find(|(_, o)| range.start < o.end && o.start < range.end) {
+        if let Some((other, _)) = others
+            .into_iter()
+            .find(|(_, o)| range.start < o.end && o.start < range.end)
+        {
             return Err(Failure::new(
                 Status::InvalidArgument,
                 format!("{name} overlaps {other}"),

@@ -341,7 +341,10 @@ impl Pack for F64x4 {
             f(0, lane(_mm256_castpd256_pd128(even), z01));
             f(1, lane(_mm256_castpd256_pd128(odd), _mm_unpackhi_pd(z01, z01)));
             f(2, lane(_mm256_extractf128_pd::<1>(even), z23));
-            f(3, lane(_mm256_extractf128_pd::<1>(odd), _mm_unpackhi_pd(z23, z23)));
+            f(
+                3,
+                lane(_mm256_extractf128_pd::<1>(odd), _mm_unpackhi_pd(z23, z23)),
+            );
         }
     }
     #[inline(always)]

@@ -61,7 +61,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 141] = [
+pub const ENTRY_POINTS: [&str; 142] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -2035,7 +2035,11 @@ impl<'t> Session<'t> {
                 torque: torque.as_mut_ptr(),
                 count: n,
                 nlocal,
-                ghost_rows: if n % 2 == 0 { ghost_rows.as_mut_ptr() } else { null_mut() },
+                ghost_rows: if n % 2 == 0 {
+                    ghost_rows.as_mut_ptr()
+                } else {
+                    null_mut()
+                },
                 relax: if n % 3 == 0 { radius.as_ptr() } else { null() },
             };
             // the pass that created the bonds, then one over the chain
@@ -2083,7 +2087,11 @@ impl<'t> Session<'t> {
                         1 + input.below(2),
                         &arrays,
                         &wide_ids,
-                        if round == 0 { &loads } else { null() },
+                        if round == 0 {
+                            &loads as *const AtomLoadPointers
+                        } else {
+                            null()
+                        },
                         Self::batch_ptr(&mut ends, he),
                         Self::batch_ptr(&mut outs, ho),
                         count.ptr(hc),
