@@ -252,26 +252,21 @@ fn add_to_atoms<P: Pack, const ROUTE: bool>(
     // it checked against the rows, and these bonds are of them; `ROUTE`
     // only where the sink has ghost rows.
     unsafe {
-        // each lane's rows, its indices read once
-        let mut at = [[std::ptr::null_mut::<f64>(); 4]; 8];
-        for (lane, at) in at.iter_mut().enumerate().take(P::WIDTH) {
-            let [i, j] = sink.ends(first + lane);
-            let (fj, tj) = rows.partner_of::<ROUTE>(j);
-            *at = [rows.force_of(i), rows.torque_of(i), fj, tj];
-        }
         P::for_each_lane3(force.x, force.y, force.z, |lane, f| {
-            f.add_to(at[lane][0]);
-            f.subtract_from(at[lane][2]);
+            let [i, j] = sink.ends(first + lane);
+            f.add_to(rows.force_of(i));
+            f.subtract_from(rows.partner_of::<ROUTE>(j).0);
         });
         let mut owners = [None; 8];
         P::for_each_lane3(torque_i.x, torque_i.y, torque_i.z, |lane, t| {
             owners[lane] = Some(t)
         });
         P::for_each_lane3(torque_j.x, torque_j.y, torque_j.z, |lane, t| {
+            let [i, j] = sink.ends(first + lane);
             if let Some(o) = owners[lane] {
-                o.add_to(at[lane][1]);
+                o.add_to(rows.torque_of(i));
             }
-            t.add_to(at[lane][3]);
+            t.add_to(rows.partner_of::<ROUTE>(j).1);
         });
     }
 }
