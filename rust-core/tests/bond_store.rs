@@ -1076,16 +1076,16 @@ fn added_by_hand(
             } else {
                 (&mut f[3 * j..3 * j + 3], (3 * j, false))
             };
-            for c in 0..3 {
-                fj[c] -= r(j) * o.force_i[c];
+            for (to, x) in fj.iter_mut().zip(o.force_i) {
+                *to -= r(j) * x;
             }
             let tj = if tj.1 {
                 &mut g[tj.0..tj.0 + 3]
             } else {
                 &mut t[tj.0..tj.0 + 3]
             };
-            for c in 0..3 {
-                tj[c] += r(j) * o.torque_j[c];
+            for (to, x) in tj.iter_mut().zip(o.torque_j) {
+                *to += r(j) * x;
             }
         }
     }

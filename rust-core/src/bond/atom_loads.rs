@@ -244,17 +244,17 @@ impl Rows<'_> {
                 true => self.partner_of::<false>(j),
                 false => self.partner_of::<true>(j),
             };
-            for c in 0..3 {
-                *fi.add(c) += ri * f[c];
+            for (c, x) in f.iter().enumerate() {
+                *fi.add(c) += ri * x;
             }
-            for c in 0..3 {
-                *ti_row.add(c) += ri * ti[c];
+            for (c, x) in ti.iter().enumerate() {
+                *ti_row.add(c) += ri * x;
             }
-            for c in 0..3 {
-                *fj.add(c) -= rj * f[c];
+            for (c, x) in f.iter().enumerate() {
+                *fj.add(c) -= rj * x;
             }
-            for c in 0..3 {
-                *tj_row.add(c) += rj * tj[c];
+            for (c, x) in tj.iter().enumerate() {
+                *tj_row.add(c) += rj * x;
             }
         }
     }

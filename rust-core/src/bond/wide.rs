@@ -29,6 +29,7 @@ use super::switches::Switches;
 use super::twist_bend::{BendHistory, TwistHistory};
 use crate::kinematics::{axis, separated, PairKinematics};
 use crate::pair_source::PairSource;
+use crate::real::packed::Lane3;
 use crate::real::packed::Pack;
 use crate::vector::{Vector, V3};
 use std::borrow::{Borrow, BorrowMut};
@@ -151,14 +152,14 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     };
     let mut history = Lanes {
         states,
+        outs,
         live,
         sum: r0,
         loads_sum: P::splat(0.0),
-        force: V3::new(P::splat(0.0), P::splat(0.0), P::splat(0.0)),
     };
     let loads = advance::<S, P, V3<P>, _>(laws, &relative, P::splat(dt), &mut history);
-    let (states, state_sum, mut loads_sum, force) =
-        (history.states, history.sum, history.loads_sum, history.force);
+    let (states, outs, state_sum, mut loads_sum) =
+        (history.states, history.outs, history.sum, history.loads_sum);
 
     // A bond that broke exerts nothing, and its status says so. Rare: a
     // branch rather than a blend per number.
@@ -200,7 +201,6 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
         (outs[i].status, outs[i].break_mode) = (status, mode)
     });
     if !direct || sink.outputs {
-        scatter3(outs, force, |o: &mut BondOutput| &mut o.force_i);
         scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
         scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
         scatter2(
@@ -226,24 +226,25 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
         // partner with rows, and then only where these lanes do
         // SAFETY: these lanes' bonds are of the sink's kinematics.
         if sink.route && unsafe { sink.ghost_partner(first..first + N) } {
-            add_to_atoms::<P, true>(sink, first, force, loads.torque_i, loads.torque_j);
+            add_to_atoms::<P, true>(sink, first, outs, loads.torque_i, loads.torque_j);
         } else {
-            add_to_atoms::<P, false>(sink, first, force, loads.torque_i, loads.torque_j);
+            add_to_atoms::<P, false>(sink, first, outs, loads.torque_i, loads.torque_j);
         }
     }
     Some((held, direct))
 }
 
 /// The loads of the `P::WIDTH` bonds from bond `first` on added to their
-/// atoms from the lanes, in the order an engine adding the outputs bond by
-/// bond gives each atom's sums: the forces lane by lane (owner, then
-/// partner), then the torques likewise (forces and torques lie apart).
+/// atoms, in the order an engine adding the outputs bond by bond gives each
+/// atom's sums: the forces lane by lane (owner, then partner; from the
+/// outputs, where the step put them as soon as it knew them), then the
+/// torques likewise from the lanes (forces and torques lie apart).
 /// `ROUTE`: a ghost partner may have its own rows.
 #[inline(always)]
 fn add_to_atoms<P: Pack, const ROUTE: bool>(
     sink: &LoadSink<'_>,
     first: usize,
-    force: V3<P>,
+    outs: &[BondOutput],
     torque_i: V3<P>,
     torque_j: V3<P>,
 ) {
@@ -252,11 +253,12 @@ fn add_to_atoms<P: Pack, const ROUTE: bool>(
     // it checked against the rows, and these bonds are of them; `ROUTE`
     // only where the sink has ghost rows.
     unsafe {
-        P::for_each_lane3(force.x, force.y, force.z, |lane, f| {
+        for (lane, out) in outs.iter().enumerate().take(P::WIDTH) {
             let [i, j] = sink.ends(first + lane);
+            let f = Lane3::load(&out.force_i);
             f.add_to(rows.force_of(i));
             f.subtract_from(rows.partner_of::<ROUTE>(j).0);
-        });
+        }
         let mut owners = [None; 8];
         P::for_each_lane3(torque_i.x, torque_i.y, torque_i.z, |lane, t| {
             owners[lane] = Some(t)
@@ -350,19 +352,18 @@ impl<P: Pack, F: Fn(usize) -> PairKinematics> MotionSource<P, V3<P>> for LaneMot
 }
 
 /// The history of a chunk's bonds, read from and written to their states
-/// as [`advance`] asks, one quantity a register; the force is held until
-/// the chunk's breaks are known (a bond that breaks adds nothing to its
-/// atoms). It adds up the slots the step keeps in registers (below `live`) in their order, from the status
+/// as [`advance`] asks, one quantity a register; the force goes out as
+/// soon as it is known, so that it is not held through the torques' laws
+/// (the atoms get it from there). It adds up the slots the step keeps in registers (below `live`) in their order, from the status
 /// on, for the results check ([`results_finite_summed`]) as they pass; the
 /// slots of a law switched off are read for that alone.
 struct Lanes<'a, P, T> {
     states: &'a mut [T],
+    outs: &'a mut [BondOutput],
     live: usize,
     sum: P,
     /// The force's components added up, for the results check.
     loads_sum: P,
-    /// The force, held until the chunk's breaks are known.
-    force: V3<P>,
 }
 
 impl<P: Pack, T: BorrowMut<BondState>> Lanes<'_, P, T> {
@@ -487,7 +488,7 @@ impl<P: Pack, T: BorrowMut<BondState>> HistoryIo<P, V3<P>> for Lanes<'_, P, T> {
     }
     #[inline(always)]
     fn put_force(&mut self, f: V3<P>) {
-        self.force = f;
+        scatter3(self.outs, f, |o: &mut BondOutput| &mut o.force_i);
         self.loads_sum = (f.x + f.y) + f.z;
     }
 }

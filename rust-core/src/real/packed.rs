@@ -89,6 +89,18 @@ pub(crate) struct Lane3 {
 }
 
 impl Lane3 {
+    /// The 3-vector `v`.
+    #[inline(always)]
+    pub(crate) fn load(v: &[f64; 3]) -> Self {
+        // SAFETY: `v` holds 3 numbers; SSE2, which every x86_64 CPU has.
+        unsafe {
+            Lane3 {
+                xy: _mm_loadu_pd(v.as_ptr()),
+                z: _mm_load_sd(v.as_ptr().add(2)),
+            }
+        }
+    }
+
     /// `to[c] += self[c]` for the 3 components.
     ///
     /// # Safety

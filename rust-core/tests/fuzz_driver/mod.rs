@@ -2035,12 +2035,16 @@ impl<'t> Session<'t> {
                 torque: torque.as_mut_ptr(),
                 count: n,
                 nlocal,
-                ghost_rows: if n % 2 == 0 {
+                ghost_rows: if n.is_multiple_of(2) {
                     ghost_rows.as_mut_ptr()
                 } else {
                     null_mut()
                 },
-                relax: if n % 3 == 0 { radius.as_ptr() } else { null() },
+                relax: if n.is_multiple_of(3) {
+                    radius.as_ptr()
+                } else {
+                    null()
+                },
             };
             // the pass that created the bonds, then one over the chain
             // stretched (bonds break past max_distance)
