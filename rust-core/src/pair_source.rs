@@ -85,10 +85,12 @@ impl<'a> IndexedPairs<'a> {
         // All in range, as a negative index read as unsigned is beyond any
         // count below 2^31: one pass without a branch, before the search
         // for the first out of range.
-        let largest = pairs
-            .iter()
-            .fold(0u32, |m, p| m.max(p[0] as u32).max(p[1] as u32));
-        if count <= i32::MAX as usize && (largest as usize) < count {
+        if count <= i32::MAX as usize
+            && !pairs
+                .as_flattened()
+                .iter()
+                .fold(false, |beyond, &a| beyond | (a as u32 >= count as u32))
+        {
             return Ok(Self { atoms, pairs });
         }
         for (bond, p) in pairs.iter().enumerate() {

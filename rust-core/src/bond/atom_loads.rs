@@ -126,9 +126,14 @@ impl<'a> LoadSink<'a> {
         }
         let pairs = kin.pairs();
         // partners that are ghosts with rows of their own: one pass without
-        // a branch says whether the chunk has any
+        // a branch over the indices side by side says whether the chunk has
+        // any (an owner is local, so only a partner reaches nlocal)
+        let nlocal = i32::try_from(rows.nlocal).unwrap_or(i32::MAX);
         let route = !rows.ghosts.is_null()
-            && pairs.iter().fold(0u32, |m, p| m.max(p[1] as u32)) as usize >= rows.nlocal;
+            && pairs
+                .as_flattened()
+                .iter()
+                .fold(false, |any, &a| any | (a >= nlocal));
         Some(Self {
             direct: rows.relax.is_null(),
             rows: Some(rows),

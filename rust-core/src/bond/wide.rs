@@ -253,8 +253,13 @@ fn add_to_atoms<P: Pack, const ROUTE: bool>(
     // it checked against the rows, and these bonds are of them; `ROUTE`
     // only where the sink has ghost rows.
     unsafe {
-        for (lane, out) in outs.iter().enumerate().take(P::WIDTH) {
-            let [i, j] = sink.ends(first + lane);
+        // the lanes' indices read before the first store, which the
+        // compiler cannot tell apart from them: they stay in registers
+        let mut ends = [[0; 2]; 8];
+        for (lane, e) in ends.iter_mut().enumerate().take(P::WIDTH) {
+            *e = sink.ends(first + lane);
+        }
+        for (out, &[i, j]) in outs.iter().zip(&ends).take(P::WIDTH) {
             let f = Lane3::load(&out.force_i);
             f.add_to(rows.force_of(i));
             f.subtract_from(rows.partner_of::<ROUTE>(j).0);
@@ -264,7 +269,7 @@ fn add_to_atoms<P: Pack, const ROUTE: bool>(
             owners[lane] = Some(t)
         });
         P::for_each_lane3(torque_j.x, torque_j.y, torque_j.z, |lane, t| {
-            let [i, j] = sink.ends(first + lane);
+            let [i, j] = ends[lane];
             if let Some(o) = owners[lane] {
                 o.add_to(rows.torque_of(i));
             }
