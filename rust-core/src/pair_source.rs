@@ -85,11 +85,15 @@ impl<'a> IndexedPairs<'a> {
         // All in range, as a negative index read as unsigned is beyond any
         // count below 2^31: one pass without a branch, before the search
         // for the first out of range.
+        // (an index is out of range where it or count - 1 - it is negative:
+        // the sign bits or'd)
+        let last = (count.min(i32::MAX as usize) as i32).wrapping_sub(1);
         if count <= i32::MAX as usize
-            && !pairs
+            && pairs
                 .as_flattened()
                 .iter()
-                .fold(false, |beyond, &a| beyond | (a as u32 >= count as u32))
+                .fold(0, |beyond, &a| beyond | a | last.wrapping_sub(a))
+                >= 0
         {
             return Ok(Self { atoms, pairs });
         }

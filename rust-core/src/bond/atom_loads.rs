@@ -14,6 +14,7 @@
 
 use super::state::BondOutput;
 use crate::pair_source::IndexedPairs;
+use std::cell::Cell;
 use std::marker::PhantomData;
 use std::ops::Range;
 
@@ -103,6 +104,9 @@ pub(crate) struct LoadSink<'a> {
     /// Whether a partner of the chunk is a ghost whose loads go to the ghost
     /// rows.
     pub(crate) route: bool,
+    /// Whether every bond stepped so far went to the atoms from the lanes:
+    /// then none broke, and their statuses need no look.
+    pub(crate) all_direct: Cell<bool>,
 }
 
 impl<'a> LoadSink<'a> {
@@ -114,6 +118,7 @@ impl<'a> LoadSink<'a> {
             outputs: true,
             direct: false,
             route: false,
+            all_direct: Cell::new(false),
         }
     }
 
@@ -128,24 +133,30 @@ impl<'a> LoadSink<'a> {
         // partners that are ghosts with rows of their own: one pass without
         // a branch over the indices side by side says whether the chunk has
         // any (an owner is local, so only a partner reaches nlocal)
-        let nlocal = i32::try_from(rows.nlocal).unwrap_or(i32::MAX);
+        // (a >= nlocal where nlocal - 1 - a is negative; the sign bits or'd)
+        let last = i32::try_from(rows.nlocal).unwrap_or(i32::MAX).wrapping_sub(1);
         let route = !rows.ghosts.is_null()
             && pairs
                 .as_flattened()
                 .iter()
-                .fold(false, |any, &a| any | (a >= nlocal));
+                .fold(0, |any, &a| any | last.wrapping_sub(a))
+                < 0;
         Some(Self {
             direct: rows.relax.is_null(),
             rows: Some(rows),
             pairs: pairs.as_ptr(),
             outputs,
             route,
+            all_direct: Cell::new(true),
         })
     }
 
     /// Adds the loads of bonds `range` from their outputs, bond by bond.
     #[inline(always)]
     pub(crate) fn add_outputs(&self, range: Range<usize>, outs: &[BondOutput]) {
+        if !range.is_empty() {
+            self.all_direct.set(false);
+        }
         let Some(r) = &self.rows else { return };
         for b in range {
             let o = &outs[b];

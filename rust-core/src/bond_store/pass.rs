@@ -297,6 +297,7 @@ impl BondStore {
                 unsafe { std::slice::from_raw_parts_mut(refs.as_mut_ptr() as *mut &mut BondState, n) };
             model.step_indexed_into(&kinematics, 0.0, states, outs, &sink)
         };
+        let all_direct = sink.all_direct.get();
         match stepped {
             Ok(None) => {}
             Ok(Some(k)) => {
@@ -334,10 +335,14 @@ impl BondStore {
             }
         }
         self.cursor.next = last;
-        // Breaks are rare: one pass over the statuses without a branch says
+        // Breaks are rare: none where every bond went to the atoms from the
+        // lanes, else one pass over the statuses without a branch says
         // whether the chunk has any.
         let intact = BondStatus::Intact as i32;
-        if !self.cursor.advance || outs.iter().fold(0, |any, o| any | (o.status ^ intact)) == 0 {
+        if !self.cursor.advance
+            || all_direct
+            || outs.iter().fold(0, |any, o| any | (o.status ^ intact)) == 0
+        {
             return Ok((first, n));
         }
         for (k, out) in outs.iter_mut().enumerate() {
