@@ -101,8 +101,7 @@ pub(crate) struct LoadSink<'a> {
     /// Whether the lanes add the loads from their registers (no factor per
     /// atom).
     pub(crate) direct: bool,
-    /// Whether a partner of the chunk is a ghost whose loads go to the ghost
-    /// rows.
+    /// Whether a ghost partner's loads go to the ghost rows.
     pub(crate) route: bool,
     /// Whether every bond stepped so far went to the atoms from the lanes:
     /// then none broke, and their statuses need no look.
@@ -130,17 +129,9 @@ impl<'a> LoadSink<'a> {
             return None;
         }
         let pairs = kin.pairs();
-        // partners that are ghosts with rows of their own: one pass without
-        // a branch over the indices side by side says whether the chunk has
-        // any (an owner is local, so only a partner reaches nlocal)
-        // (a >= nlocal where nlocal - 1 - a is negative; the sign bits or'd)
-        let last = i32::try_from(rows.nlocal).unwrap_or(i32::MAX).wrapping_sub(1);
-        let route = !rows.ghosts.is_null()
-            && pairs
-                .as_flattened()
-                .iter()
-                .fold(0, |any, &a| any | last.wrapping_sub(a))
-                < 0;
+        // a ghost partner's rows are looked for lanes by lane, where it has
+        // any
+        let route = !rows.ghosts.is_null();
         Some(Self {
             direct: rows.relax.is_null(),
             rows: Some(rows),
@@ -179,18 +170,6 @@ impl<'a> LoadSink<'a> {
         unsafe { (*self.pairs.add(b)).map(|a| a as usize) }
     }
 
-    /// Whether a partner of bonds `range` is a ghost (with rows, where
-    /// [`Self::route`]).
-    ///
-    /// # Safety
-    /// `range` must hold bonds of the kinematics the sink was made with.
-    #[inline(always)]
-    pub(crate) unsafe fn ghost_partner(&self, range: Range<usize>) -> bool {
-        let nlocal = self.rows().nlocal;
-        // SAFETY: the caller's.
-        range.fold(false, |any, b| any | (unsafe { self.ends(b)[1] } >= nlocal))
-    }
-
     /// The rows of the sums; only for a sink made by [`Self::adding`].
     #[inline(always)]
     pub(crate) fn rows(&self) -> &Rows<'a> {
@@ -199,6 +178,12 @@ impl<'a> LoadSink<'a> {
 }
 
 impl Rows<'_> {
+    /// The number of local atoms.
+    #[inline(always)]
+    pub(crate) fn nlocal(&self) -> usize {
+        self.nlocal
+    }
+
     /// Atom `i`'s force row.
     ///
     /// # Safety

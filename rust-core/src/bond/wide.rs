@@ -18,7 +18,7 @@
 //! is left to the scalar kernel, which zeroes the first kind and reports
 //! the second with its index.
 
-use super::atom_loads::LoadSink;
+use super::atom_loads::{LoadSink, Rows};
 use super::features::{BEND, SHEAR, TWIST};
 use super::finite::{bond_finite, results_finite_summed, results_surely_finite, BatchResult};
 use super::laws::BondLaws;
@@ -222,14 +222,7 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
         }
     }
     if direct {
-        // ghost rows for a partner only where the kernel's chunk has a ghost
-        // partner with rows, and then only where these lanes do
-        // SAFETY: these lanes' bonds are of the sink's kinematics.
-        if sink.route && unsafe { sink.ghost_partner(first..first + N) } {
-            add_to_atoms::<P, true>(sink, first, outs, loads.torque_i, loads.torque_j);
-        } else {
-            add_to_atoms::<P, false>(sink, first, outs, loads.torque_i, loads.torque_j);
-        }
+        add_to_atoms::<P>(sink, first, outs, loads.torque_i, loads.torque_j);
     }
     Some((held, direct))
 }
@@ -238,10 +231,10 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
 /// atoms, in the order an engine adding the outputs bond by bond gives each
 /// atom's sums: the forces lane by lane (owner, then partner; from the
 /// outputs, where the step put them as soon as it knew them), then the
-/// torques likewise from the lanes (forces and torques lie apart).
-/// `ROUTE`: a ghost partner may have its own rows.
+/// torques likewise from the lanes (forces and torques lie apart). A ghost
+/// partner's rows are looked for only where these lanes have one.
 #[inline(always)]
-fn add_to_atoms<P: Pack, const ROUTE: bool>(
+fn add_to_atoms<P: Pack>(
     sink: &LoadSink<'_>,
     first: usize,
     outs: &[BondOutput],
@@ -249,17 +242,40 @@ fn add_to_atoms<P: Pack, const ROUTE: bool>(
     torque_j: V3<P>,
 ) {
     let rows = sink.rows();
-    // SAFETY: the sink was made with the kernel's kinematics, whose indices
-    // it checked against the rows, and these bonds are of them; `ROUTE`
-    // only where the sink has ghost rows.
+    // the lanes' indices read before the first store, which the compiler
+    // cannot tell apart from them: they stay in registers
+    let mut ends = [[0; 2]; 8];
+    for (lane, e) in ends.iter_mut().enumerate().take(P::WIDTH) {
+        // SAFETY: the sink was made with the kernel's kinematics, and these
+        // bonds are of them.
+        *e = unsafe { sink.ends(first + lane) };
+    }
+    let nlocal = rows.nlocal();
+    if sink.route
+        && ends
+            .iter()
+            .take(P::WIDTH)
+            .fold(false, |any, e| any | (e[1] >= nlocal))
+    {
+        add_lanes::<P, true>(rows, &ends, outs, torque_i, torque_j);
+    } else {
+        add_lanes::<P, false>(rows, &ends, outs, torque_i, torque_j);
+    }
+}
+
+/// [`add_to_atoms`]'s adds; `ROUTE`: a ghost partner has rows of its own.
+#[inline(always)]
+fn add_lanes<P: Pack, const ROUTE: bool>(
+    rows: &Rows<'_>,
+    ends: &[[usize; 2]; 8],
+    outs: &[BondOutput],
+    torque_i: V3<P>,
+    torque_j: V3<P>,
+) {
+    // SAFETY: the sink checked the indices against the rows; `ROUTE` only
+    // where the sink has ghost rows.
     unsafe {
-        // the lanes' indices read before the first store, which the
-        // compiler cannot tell apart from them: they stay in registers
-        let mut ends = [[0; 2]; 8];
-        for (lane, e) in ends.iter_mut().enumerate().take(P::WIDTH) {
-            *e = sink.ends(first + lane);
-        }
-        for (out, &[i, j]) in outs.iter().zip(&ends).take(P::WIDTH) {
+        for (out, &[i, j]) in outs.iter().zip(ends).take(P::WIDTH) {
             let f = Lane3::load(&out.force_i);
             f.add_to(rows.force_of(i));
             f.subtract_from(rows.partner_of::<ROUTE>(j).0);

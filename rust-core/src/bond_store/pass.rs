@@ -339,9 +339,7 @@ impl BondStore {
         // lanes, else one pass over the statuses without a branch says
         // whether the chunk has any.
         let intact = BondStatus::Intact as i32;
-        if !self.cursor.advance
-            || all_direct
-            || outs.iter().fold(0, |any, o| any | (o.status ^ intact)) == 0
+        if !self.cursor.advance || all_direct || outs.iter().fold(0, |any, o| any | (o.status ^ intact)) == 0
         {
             return Ok((first, n));
         }
