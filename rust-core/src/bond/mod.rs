@@ -9,8 +9,10 @@
 //! only on the ones before: the laws of a bond type ([`laws`]) and the parts
 //! switched on ([`features`]) and how a step reads them (`switches`); the
 //! assembled step (`step`); the paths that
-//! feed it one bond at a time (`scalar`) or in lanes (`wide`); the compiled
-//! steps and the choice among them (`dispatch`); the model ([`model`]).
+//! feed it one bond at a time (`scalar`) or in lanes (`wide`), and where
+//! they put the loads besides the outputs: the engine's per-atom sums
+//! ([`atom_loads`]); the compiled steps and the choice among them
+//! (`dispatch`); the model ([`model`]).
 
 pub mod atom_loads;
 pub mod breakage;
