@@ -9,8 +9,8 @@
 //! bond after another.
 //!
 //! Every length is checked once, when the sums are taken for a pass
-//! ([`AtomLoads::rows`]), and every index once a chunk, with the chunk's
-//! kinematics ([`LoadSink::adding`]): the adds themselves check nothing.
+//! (`AtomLoads::rows`), and every index once a chunk, with the chunk's
+//! kinematics (`LoadSink::adding`): the adds themselves check nothing.
 
 use super::state::BondOutput;
 use crate::pair_source::IndexedPairs;
