@@ -1,8 +1,8 @@
 // What both adapters' passes over the bond store share: the engine's atoms
 // as the core reads them, the link after a list build, the chunks of a
-// pass stepped with their loads handed to the adapter. The adapters add
-// the loads to their atoms their own way (LIGGGHTS: its relaxation factor)
-// and find the pairs in their own lists.
+// pass stepped with their loads added to the atoms by the core (the
+// adapters say where: ghost rows, LIGGGHTS's relaxation factor). The
+// adapters find the pairs in their own lists.
 #ifndef GRANBOND_STORE_PASS_H
 #define GRANBOND_STORE_PASS_H
 
@@ -45,30 +45,59 @@ void pairKinematicsOf(const Atom *atom, int i, int j, GbPairKinematics &k)
     k.radius_j = atom->radius[j];
 }
 
-// Steps the chunks of the pass not stepped yet: add(i, j, out) for each
-// bond (its owner i, its partner j); each output kept in `kept` if it is
-// not null. On a core failure, failed(i, j, reason) with the bond's atoms
-// (-1 if unknown); it must not return.
-template <class Atom, class Add, class Failed>
+// The engine's per-atom load sums as the core adds to them: a ghost
+// partner's loads in `ghostRows` (6 doubles a ghost) unless it is null,
+// each atom's loads scaled by `relax[i]` unless it is null.
+template <class Atom>
+GbAtomLoads atomLoadsOf(Atom *atom, double *ghostRows, const double *relax)
+{
+    const bool any = atom->nmax > 0;
+    GbAtomLoads l;
+    l.force = any ? atom->f[0] : nullptr;
+    l.torque = any ? atom->torque[0] : nullptr;
+    l.count = static_cast<size_t>(atom->nlocal + atom->nghost);
+    l.nlocal = static_cast<size_t>(atom->nlocal);
+    l.ghost_rows = ghostRows;
+    l.relax = relax;
+    return l;
+}
+
+// Steps the chunks of the pass not stepped yet; the core adds their loads
+// to `loads`. Where `perBond` (the virial) or `kept` asks for the outputs,
+// they come back chunk by chunk: perBond(i, j, out) for each bond (its
+// owner i, its partner j), each output kept in `kept` if it is not null;
+// else the pass is one call. On a core failure, failed(i, j, reason) with
+// the bond's atoms (-1 if unknown); it must not return.
+template <class Atom, class PerBond, class Failed>
 void stepStoreChunks(GbBondStore *store, const GbBondModel *const *models, size_t nkinds, const Atom *atom,
-                     const GbAtomIds &ids, std::vector<GbBondOutput> *kept, Add add, Failed failed)
+                     const GbAtomIds &ids, const GbAtomLoads &loads, std::vector<GbBondOutput> *kept, bool wantPerBond,
+                     PerBond perBond, Failed failed)
 {
     const GbAtomArrays arrays = atomArraysOf(atom);
+    const auto fail = [&](size_t bad) {
+        int32_t e[2] = {-1, -1};
+        int64_t partner = 0;
+        double state[GRANBOND_BOND_STATE_LEN];
+        const std::string why = coreReason();
+        if (granbond_bond_store_bond(store, bad, e, &partner, state) != GB_STATUS_OK) e[0] = e[1] = -1;
+        failed(e[0], e[1], why);
+    };
+    if (!wantPerBond && !kept) {
+        size_t n = 0, bad = 0;
+        if (granbond_bond_store_step_rest(store, models, nkinds, &arrays, &ids, &loads, &n, &bad) != GB_STATUS_OK)
+            fail(bad);
+        return;
+    }
     int32_t ends[2 * GRANBOND_BOND_STORE_CHUNK];
     GbBondOutput outs[GRANBOND_BOND_STORE_CHUNK];
     for (;;) {
         size_t n = 0, bad = 0;
-        if (granbond_bond_store_step_next(store, models, nkinds, &arrays, &ids, ends, outs, &n, &bad) !=
-            GB_STATUS_OK) {
-            int32_t e[2] = {-1, -1};
-            int64_t partner = 0;
-            double state[GRANBOND_BOND_STATE_LEN];
-            const std::string why = coreReason();
-            if (granbond_bond_store_bond(store, bad, e, &partner, state) != GB_STATUS_OK) e[0] = e[1] = -1;
-            failed(e[0], e[1], why);
-        }
+        if (granbond_bond_store_step_next(store, models, nkinds, &arrays, &ids, &loads, ends, outs, &n, &bad) !=
+            GB_STATUS_OK)
+            fail(bad);
         if (n == 0) return;
-        for (size_t k = 0; k < n; k++) add(ends[2 * k], ends[2 * k + 1], outs[k]);
+        if (wantPerBond)
+            for (size_t k = 0; k < n; k++) perBond(ends[2 * k], ends[2 * k + 1], outs[k]);
         if (kept) kept->insert(kept->end(), outs, outs + n);
     }
 }

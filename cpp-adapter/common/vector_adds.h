@@ -35,31 +35,6 @@ inline void subtract3(double *to, const double *from)
     to[2] -= from[2];
 }
 
-// to += r from
-inline void addScaled3(double *to, double r, const double *from)
-{
-#if defined(__SSE2__)
-    _mm_storeu_pd(to, _mm_add_pd(_mm_loadu_pd(to), _mm_mul_pd(_mm_set1_pd(r), _mm_loadu_pd(from))));
-#else
-    to[0] += r * from[0];
-    to[1] += r * from[1];
-#endif
-    to[2] += r * from[2];
-}
-
-// to -= r from: the same bits as to += r (-from), as the sign of a product
-// and of a sum's operand round alike
-inline void subtractScaled3(double *to, double r, const double *from)
-{
-#if defined(__SSE2__)
-    _mm_storeu_pd(to, _mm_sub_pd(_mm_loadu_pd(to), _mm_mul_pd(_mm_set1_pd(r), _mm_loadu_pd(from))));
-#else
-    to[0] -= r * from[0];
-    to[1] -= r * from[1];
-#endif
-    to[2] -= r * from[2];
-}
-
 }
 
 #endif

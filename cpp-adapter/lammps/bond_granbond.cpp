@@ -247,9 +247,8 @@ void BondGranbond::stepBonds(bool advance)
     const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
     stepChunks(
         atom, bonds_->store(), models_, force->newton != 0, ghostLoads_,
-        bondOutputUsers > 0 && advance ? &outputs_ : nullptr,
+        bondOutputUsers > 0 && advance ? &outputs_ : nullptr, vflag_global != 0,
         [&](int i, int j, const double *f) {
-            if (!vflag_global) return;
             const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
             const double d[3] = {xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]};
             virial[0] += d[0] * f[0];

@@ -11,7 +11,6 @@
 #include "store_check.h"
 #include "atom_loads.h"
 #include "store_pass.h"
-#include "vector_adds.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -106,12 +105,10 @@ void PairGranbond::stepBonds(bool advance)
 {
     const double *const x0 = atom->nmax > 0 ? atom->x[0] : nullptr;
     const int nlocal = atom->nlocal;
-    const bool virial = evflag != 0;
     stepChunks(
         atom, bonds_->store(), bond_, force->newton_pair != 0, ghostLoads_,
-        bondOutputUsers > 0 && advance ? &outputs_ : nullptr,
-        [this, x0, nlocal, virial](int i, int j, const double *f) {
-            if (!virial) return;
+        bondOutputUsers > 0 && advance ? &outputs_ : nullptr, evflag != 0,
+        [this, x0, nlocal](int i, int j, const double *f) {
             const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
             // each bond is stepped on one rank: its whole virial here
             ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, f[0], f[1], f[2], xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);

@@ -280,6 +280,7 @@ private:
     bool warnedLost_;             // bonds lost without breaking were told (once)
     LAMMPS_NS::FixPropertyAtom *dissipated_ = nullptr;   // computeDissipatedEnergy's per-atom table, or null
     std::vector<double> shares_;  // this pass's shares, local then ghost atoms (6 doubles an atom)
+    std::vector<double> relax_;   // each atom's relaxation factor, where one differs from 1 (local then ghost)
 
     // walls (bond_nonlinear_walls.cpp)
     LAMMPS_NS::FixWallGran *wallFix_;   // the wall fix this model belongs to

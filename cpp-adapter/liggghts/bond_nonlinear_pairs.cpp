@@ -11,7 +11,6 @@
 #include "core_message.h"
 #include "store_check.h"
 #include "store_pass.h"
-#include "vector_adds.h"
 
 #include "fix_property_atom.h"
 #include "neigh_list.h"
@@ -128,85 +127,41 @@ void BondNonlinearCohesion::markBonded()
     }
 }
 
-namespace {
-
-// The loads of one bond added to its atoms as the engine's pair loop would
-// (relaxation factor). kGhostRows: a partner that is a ghost gets its loads
-// in the fix's rows (newton off, ghosts present); without, every partner's
-// go to the atom arrays (a ghost's for the engine's reverse communication
-// under newton on), and the bond pays no test for it.
-template <bool kGhostRows>
-struct AddBondLoads {
-    double *f0, *t0, *ghosts;
-    int nlocal;
-    LAMMPS_NS::PairGran *pair;
-
-    void operator()(int i, int j, const GbBondOutput &o) const
-    {
-        const double relaxI = pair->relax(i), relaxJ = pair->relax(j);
-        // read whole before the first store, which the compiler cannot
-        // tell apart from the output: it stays in registers
-        GbBondOutput out;
-        for (int c = 0; c < 3; c++) {
-            out.force_i[c] = o.force_i[c];
-            out.torque_i[c] = o.torque_i[c];
-            out.torque_j[c] = o.torque_j[c];
-        }
-        const size_t a = 3 * static_cast<size_t>(i);
-        addScaled3(f0 + a, relaxI, out.force_i);
-        addScaled3(t0 + a, relaxI, out.torque_i);
-        if (!kGhostRows || j < nlocal) {
-            const size_t b = 3 * static_cast<size_t>(j);
-            subtractScaled3(f0 + b, relaxJ, out.force_i);
-            addScaled3(t0 + b, relaxJ, out.torque_j);
-        } else {
-            double *g = ghosts + 6 * static_cast<size_t>(j - nlocal);
-            subtractScaled3(g, relaxJ, out.force_i);
-            addScaled3(g + 3, relaxJ, out.torque_j);
-        }
-    }
-};
-
-}
-
-// Steps the bonds of the pass not stepped yet and adds their loads to the
-// atoms, the virial of each bond once. Whether the virial is wanted and
-// whether a partner's loads can go to the fix's ghost rows are decided once
-// a pass, not once a bond.
+// Steps the bonds of the pass not stepped yet; the core adds their loads to
+// the atoms as the engine's pair loop would (each atom's relaxation factor;
+// a ghost partner's loads in the fix's rows under newton off), and the
+// virial of each bond is tallied once. Whether the virial is wanted, where
+// a ghost's loads go and whether any atom's factor differs from 1 are
+// decided once a pass, not once a bond.
 void BondNonlinearCohesion::stepBonds(bool advance)
 {
     const double *const x0 = atom->x[0];
-    const int nlocal = atom->nlocal;
-    const bool ghostRows = force->newton_pair == 0 && atom->nghost > 0;
+    const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
     LAMMPS_NS::PairGran *const pair = pair_;
-    const AddBondLoads<true> withRows{atom->f[0], atom->torque[0], ghostLoads_, nlocal, pair};
-    const AddBondLoads<false> withoutRows{atom->f[0], atom->torque[0], ghostLoads_, nlocal, pair};
+    // (Debian's LIGGGHTS: every factor is the constant 1, and this test
+    // compiles away)
+    bool unitRelax = true;
+    for (int i = 0; i < nall; i++) unitRelax &= pair->relax(i) == 1.0;
+    if (!unitRelax) {
+        relax_.resize(static_cast<size_t>(nall));
+        for (int i = 0; i < nall; i++) relax_[static_cast<size_t>(i)] = pair->relax(i);
+    }
+    const bool ghostRows = force->newton_pair == 0 && atom->nghost > 0;
+    const GbAtomLoads loads = atomLoadsOf(atom, ghostRows ? ghostLoads_ : nullptr, unitRelax ? nullptr : relax_.data());
     const auto failed = [&](int i, int j, const std::string &why) {
         if (i >= 0) failPair(i, j, "the bond");
         endRunOnThisRank(lmp, FLERR, "cohesion bond/nonlinear: the bonds: " + why);
     };
-    GbBondStore *const store = bonds_->store();
-    const GbBondModel *const *const models = parameters_.table();
-    const GbAtomIds ids = atomIdsOf(atom);
     std::vector<GbBondOutput> *const kept = bondOutputUsers > 0 && advance ? &outputs_ : nullptr;
-    if (pair_->evflag != 0) {
-        stepStoreChunks(store, models, kinds_.size(), atom, ids, kept,
-                        [=](int i, int j, const GbBondOutput &o) {
-                            if (ghostRows)
-                                withRows(i, j, o);
-                            else
-                                withoutRows(i, j, o);
-                            const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
-                            // each bond is stepped on one rank: its whole virial here
-                            pair->ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, o.force_i[0], o.force_i[1], o.force_i[2],
-                                               xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
-                        },
-                        failed);
-    } else if (ghostRows) {
-        stepStoreChunks(store, models, kinds_.size(), atom, ids, kept, withRows, failed);
-    } else {
-        stepStoreChunks(store, models, kinds_.size(), atom, ids, kept, withoutRows, failed);
-    }
+    stepStoreChunks(bonds_->store(), parameters_.table(), kinds_.size(), atom, atomIdsOf(atom), loads, kept,
+                    pair_->evflag != 0,
+                    [=](int i, int j, const GbBondOutput &o) {
+                        const double *xi = x0 + 3 * static_cast<size_t>(i), *xj = x0 + 3 * static_cast<size_t>(j);
+                        // each bond is stepped on one rank: its whole virial here
+                        pair->ev_tally_xyz(i, j, nlocal, 1, 0.0, 0.0, o.force_i[0], o.force_i[1], o.force_i[2],
+                                           xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
+                    },
+                    failed);
 }
 
 // The bonds that broke in the pass so far: their pairs leave the bonded

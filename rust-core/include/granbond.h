@@ -1506,6 +1506,44 @@ typedef struct GbListedBond {
 } GbListedBond;
 
 /**
+ * The engine's per-atom sums a pass adds the bonds' loads to
+ * (`granbond_bond_store_step_rest`, `granbond_bond_store_step_next`): for
+ * each bond in turn the owner's force and torque, then the partner's.
+ * No array may overlap another, nor the atoms' arrays.
+ */
+typedef struct GbAtomLoads {
+  /**
+   * Forces, 3 doubles per atom (local, then ghost).
+   */
+  double *force;
+  /**
+   * Torques, 3 doubles per atom.
+   */
+  double *torque;
+  /**
+   * The number of atoms both arrays hold at least (at least the atoms'
+   * arrays' count).
+   */
+  size_t count;
+  /**
+   * The number of local atoms: a partner at or beyond it is a ghost.
+   */
+  size_t nlocal;
+  /**
+   * Null, or 6 doubles per ghost atom (force, then torque; ghost `j` at
+   * row `j - nlocal`, `count - nlocal` rows): where a ghost partner's
+   * loads go instead of its own rows, for an engine that does not sum
+   * ghosts' loads to their owners (`newton off`).
+   */
+  double *ghost_rows;
+  /**
+   * Null (every factor 1), or each atom's factor on the loads it
+   * receives (LIGGGHTS's relaxation factor), `count` doubles.
+   */
+  const double *relax;
+} GbAtomLoads;
+
+/**
  * A bond that broke in the pass.
  */
 typedef struct GbBrokenBond {
@@ -3162,23 +3200,49 @@ enum GbStatus granbond_bond_store_begin_pass(struct GbBondStore *store,
  * Steps the next chunk of the pass: up to `GRANBOND_BOND_STORE_CHUNK`
  * bonds of one kind (`models[kind]`, null where a kind has no model), their
  * atoms' local indices written to `ends` (2 ints a bond) and outputs to
- * `outs`, the number to `count` (0: the pass has stepped every bond). A
- * bond that breaks carries no load; `granbond_bond_store_broken` reports
- * it. On failure nothing of the chunk is kept, and `failed_index` (if not
- * null) gets the bond's place in the store.
+ * `outs`, the number to `count` (0: the pass has stepped every bond), and
+ * their loads added to `loads` unless it is null (then the caller adds
+ * them from `outs`). A bond that breaks carries no load;
+ * `granbond_bond_store_broken` reports it. On failure nothing of the
+ * chunk is kept, and `failed_index` (if not null) gets the bond's place in
+ * the store.
  *
  * # Safety
  * Pointers must be null or valid: `models` for `nkinds` entries, `ends` for
  * `2 * GRANBOND_BOND_STORE_CHUNK` ints, `outs` for
- * `GRANBOND_BOND_STORE_CHUNK` outputs, the atoms' arrays as they say.
+ * `GRANBOND_BOND_STORE_CHUNK` outputs, the atoms' and loads' arrays as they
+ * say.
  */
 enum GbStatus granbond_bond_store_step_next(struct GbBondStore *store,
                                             const struct GbBondModel *const *models,
                                             size_t nkinds,
                                             const struct GbAtomArrays *atoms,
                                             const struct GbAtomIds *ids,
+                                            const struct GbAtomLoads *loads,
                                             int32_t *ends,
                                             struct GbBondOutput *outs,
+                                            size_t *count,
+                                            size_t *failed_index);
+
+/**
+ * Steps every bond of the pass not stepped yet (`models[kind]` for each,
+ * null where a kind has no model) and adds their loads to `loads`, as
+ * `granbond_bond_store_step_next` would chunk by chunk, but without
+ * handing back outputs: for a pass that wants none (no virial, no
+ * per-bond output). The number stepped goes to `count`. A bond that breaks
+ * carries no load; `granbond_bond_store_broken` reports it. On failure,
+ * `failed_index` (if not null) gets the bond's place in the store.
+ *
+ * # Safety
+ * Pointers must be null or valid: `models` for `nkinds` entries, the
+ * atoms' and loads' arrays as they say.
+ */
+enum GbStatus granbond_bond_store_step_rest(struct GbBondStore *store,
+                                            const struct GbBondModel *const *models,
+                                            size_t nkinds,
+                                            const struct GbAtomArrays *atoms,
+                                            const struct GbAtomIds *ids,
+                                            const struct GbAtomLoads *loads,
                                             size_t *count,
                                             size_t *failed_index);
 

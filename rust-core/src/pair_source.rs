@@ -85,10 +85,16 @@ impl<'a> IndexedPairs<'a> {
         // All in range, as a negative index read as unsigned is beyond any
         // count below 2^31: one pass without a branch, before the search
         // for the first out of range.
-        let largest = pairs
-            .iter()
-            .fold(0u32, |m, p| m.max(p[0] as u32).max(p[1] as u32));
-        if count <= i32::MAX as usize && (largest as usize) < count {
+        // (an index is out of range where it or count - 1 - it is negative:
+        // the sign bits or'd)
+        let last = (count.min(i32::MAX as usize) as i32).wrapping_sub(1);
+        if count <= i32::MAX as usize
+            && pairs
+                .as_flattened()
+                .iter()
+                .fold(0, |beyond, &a| beyond | a | last.wrapping_sub(a))
+                >= 0
+        {
             return Ok(Self { atoms, pairs });
         }
         for (bond, p) in pairs.iter().enumerate() {
@@ -103,6 +109,16 @@ impl<'a> IndexedPairs<'a> {
             }
         }
         Ok(Self { atoms, pairs })
+    }
+
+    /// The bonds' atom indices, each checked below [`Self::atom_count`].
+    pub fn pairs(&self) -> &'a [[i32; 2]] {
+        self.pairs
+    }
+
+    /// The number of atoms the arrays hold.
+    pub fn atom_count(&self) -> usize {
+        self.atoms.count()
     }
 
     /// The bonds `range` of this batch, whose indices were checked with it.

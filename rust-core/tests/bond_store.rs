@@ -5,7 +5,7 @@
 
 use granbond_test_support as common;
 
-use granbond::bond::{BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode};
+use granbond::bond::{AtomLoads, BondModel, BondOutput, BondParams, BondState, BondStatus, BreakMode, Simd};
 use granbond::bond_store::{
     creates_here, BondStore, Ids, LinkAtoms, LinkReport, StepFailureReason, StoreCounts, StoredBond,
     BOND_BUDGET_BYTES, BYTES_PER_BOND, CHUNK,
@@ -1066,4 +1066,171 @@ fn the_store_check_finds_a_pair_flag_that_disagrees_with_the_store() {
         Some("the pair of atoms 1 and 2 is flagged bonded, but no bond".into())
     );
     assert_eq!(flag_finding(&unbonded, 0, 1, Ids::Wide(&atoms.ids), false), None);
+/// Start values of an engine's load sums: not zero, so that the order of
+/// the adds to each atom shows in the bits.
+fn start_sums(len: usize, seed: f64) -> Vec<f64> {
+    (0..len)
+        .map(|k| seed * ((k * 7919 % 101) as f64 - 50.0))
+        .collect()
+}
+
+/// The loads of a pass as an engine adds the outputs bond by bond (the
+/// adapters' loop before the core added them): the owner's force and
+/// torque, then the partner's, each times its atom's factor; a ghost
+/// partner's in `ghost_rows` when given. Returns the sums (forces, torques,
+/// ghost rows).
+fn added_by_hand(
+    store: &mut BondStore,
+    model: &BondModel,
+    atoms: &Atoms,
+    relax: Option<&[f64]>,
+    ghost_rows: bool,
+) -> [Vec<f64>; 3] {
+    let n = atoms.len();
+    let (mut f, mut t) = (start_sums(3 * n, 1e-3), start_sums(3 * n, 1e-6));
+    let mut g = start_sums(6 * (n - atoms.nlocal), 1e-4);
+    store.begin_pass(1e-7, true, false);
+    loop {
+        let chunk = next_chunk(store, model, atoms);
+        if chunk.is_empty() {
+            break;
+        }
+        for (e, o) in chunk {
+            let (i, j) = (e[0] as usize, e[1] as usize);
+            let r = |a: usize| relax.map_or(1.0, |r| r[a]);
+            for c in 0..3 {
+                f[3 * i + c] += r(i) * o.force_i[c];
+            }
+            for c in 0..3 {
+                t[3 * i + c] += r(i) * o.torque_i[c];
+            }
+            let (fj, tj) = if ghost_rows && j >= atoms.nlocal {
+                let row = 6 * (j - atoms.nlocal);
+                (&mut g[row..row + 3], (row + 3, true))
+            } else {
+                (&mut f[3 * j..3 * j + 3], (3 * j, false))
+            };
+            for (to, x) in fj.iter_mut().zip(o.force_i) {
+                *to -= r(j) * x;
+            }
+            let tj = if tj.1 {
+                &mut g[tj.0..tj.0 + 3]
+            } else {
+                &mut t[tj.0..tj.0 + 3]
+            };
+            for (to, x) in tj.iter_mut().zip(o.torque_j) {
+                *to += r(j) * x;
+            }
+        }
+    }
+    store.finish_pass();
+    [f, t, g]
+}
+
+/// The same pass with the core adding the loads: in one call
+/// (`step_rest`), or chunk by chunk with the outputs handed back
+/// (`step_next_adding`).
+fn added_by_core(
+    store: &mut BondStore,
+    model: &BondModel,
+    atoms: &Atoms,
+    relax: Option<&[f64]>,
+    ghost_rows: bool,
+    chunk_by_chunk: bool,
+) -> [Vec<f64>; 3] {
+    let n = atoms.len();
+    let (mut f, mut t) = (start_sums(3 * n, 1e-3), start_sums(3 * n, 1e-6));
+    let mut g = start_sums(6 * (n - atoms.nlocal), 1e-4);
+    store.begin_pass(1e-7, true, false);
+    {
+        let mut loads = AtomLoads {
+            force: &mut f,
+            torque: &mut t,
+            nlocal: atoms.nlocal,
+            ghost_rows: ghost_rows.then_some(&mut g[..]),
+            relax,
+        };
+        let models = [Some(model)];
+        let ids = Ids::Wide(&atoms.ids);
+        if chunk_by_chunk {
+            let (mut ends, mut outs) = ([[0; 2]; CHUNK], [BondOutput::default(); CHUNK]);
+            while store
+                .step_next_adding(&models, atoms.arrays(), ids, &mut loads, &mut ends, &mut outs)
+                .expect("a usable pass")
+                > 0
+            {}
+        } else {
+            store
+                .step_rest(&models, atoms.arrays(), ids, &mut loads)
+                .expect("a usable pass");
+        }
+    }
+    store.finish_pass();
+    [f, t, g]
+}
+
+#[test]
+fn the_core_adds_the_loads_as_an_engine_adding_the_outputs_bond_by_bond() {
+    let p = BondParams {
+        max_distance: 2.3 * R,
+        ..common::params()
+    };
+    let models = [
+        ("AVX2 or scalar as chosen", bond_model(p)),
+        ("switched", bond_model(p).switched()),
+        (
+            "scalar",
+            bond_model(p)
+                .with_simd(Simd::Scalar)
+                .expect("scalar runs anywhere"),
+        ),
+    ];
+    for (name, model) in &models {
+        // a lattice whose top layer is ghosts: bonds to ghost partners
+        let n = 7;
+        let mut created = Atoms::lattice(n);
+        created.nlocal = created.len() - n * n;
+        // one atom pulled away: its bonds break by distance in the pass
+        let mut atoms = created.clone();
+        atoms.x[3 * 20] += 0.3 * R;
+        atoms.drift(1e-4);
+        let store = || {
+            let mut store = BondStore::new();
+            store.grow(created.len());
+            link(&mut store, &created);
+            store.begin_pass(1e-7, true, false);
+            assert!(create_all(&mut store, model, &created) > 2 * CHUNK);
+            store.finish_pass();
+            link(&mut store, &atoms);
+            store
+        };
+        let relax: Vec<f64> = (0..atoms.len()).map(|a| 0.5 + (a % 5) as f64 * 0.125).collect();
+        for relax in [None, Some(&relax[..])] {
+            for ghost_rows in [false, true] {
+                for chunk_by_chunk in [false, true] {
+                    let (mut by_hand, mut by_core) = (store(), store());
+                    let want = added_by_hand(&mut by_hand, model, &atoms, relax, ghost_rows);
+                    let got = added_by_core(&mut by_core, model, &atoms, relax, ghost_rows, chunk_by_chunk);
+                    for k in 0..3 {
+                        let differs = got[k]
+                            .iter()
+                            .zip(&want[k])
+                            .position(|(a, b)| a.to_bits() != b.to_bits());
+                        assert_eq!(
+                            differs,
+                            None,
+                            "{name}, factors {}, ghost rows {ghost_rows}, chunk by chunk {chunk_by_chunk}: \
+                             sums {k} differ first at {differs:?}",
+                            relax.is_some()
+                        );
+                    }
+                    assert_eq!(by_core.counts(), by_hand.counts(), "{name}: the same breaks");
+                    assert!(
+                        by_core.counts().broken() > 0,
+                        "{name}: the pulled atom's bonds broke"
+                    );
+                }
+            }
+        }
+    }
 }

@@ -11,6 +11,7 @@
 //! combinations compiled on every path would make the build slow and the
 //! library large, for combinations no deck uses (docs/development.md).
 
+use super::atom_loads::LoadSink;
 use super::features::COMPILED_ALONE;
 use super::finite::BatchResult;
 use super::laws::BondLaws;
@@ -18,7 +19,7 @@ use super::scalar::{all_one_by_one, bond_step};
 use super::state::{BondOutput, BondState};
 use super::switches::{Fixed, Inl, Linear, Switched, Switches};
 use crate::kinematics::{KinematicsError, PairKinematics};
-use crate::pair_source::IndexedPairs;
+use crate::pair_source::{IndexedPairs, PairSource};
 use crate::simd::Simd;
 use seq_macro::seq;
 
@@ -28,8 +29,14 @@ pub type BatchKernel =
     fn(&BondLaws, &[PairKinematics], f64, &mut [BondState], &mut [BondOutput]) -> BatchResult;
 pub type ScatteredKernel =
     fn(&BondLaws, &[PairKinematics], f64, &mut [&mut BondState], &mut [BondOutput]) -> BatchResult;
-pub type IndexedKernel =
-    fn(&BondLaws, &IndexedPairs<'_>, f64, &mut [&mut BondState], &mut [BondOutput]) -> BatchResult;
+pub type IndexedKernel = fn(
+    &BondLaws,
+    &IndexedPairs<'_>,
+    f64,
+    &mut [&mut BondState],
+    &mut [BondOutput],
+    &LoadSink<'_>,
+) -> BatchResult;
 
 /// The steps of one model: one bond, bonds whose states lie side by side
 /// (`batch`), apart (`scattered`), or apart with kinematics read from the
@@ -129,7 +136,21 @@ macro_rules! scalar {
 }
 scalar!(batch, [PairKinematics], BondState);
 scalar!(scattered, [PairKinematics], &mut BondState);
-scalar!(indexed, IndexedPairs<'_>, &mut BondState);
+
+/// The scalar indexed step: the bonds one by one, then their loads from
+/// the outputs to `sink`.
+fn indexed<S: Switches>(
+    laws: &BondLaws,
+    kin: &IndexedPairs<'_>,
+    dt: f64,
+    states: &mut [&mut BondState],
+    outs: &mut [BondOutput],
+    sink: &LoadSink<'_>,
+) -> BatchResult {
+    let found = all_one_by_one::<S, _, _>(laws, kin, dt, states, outs)?;
+    sink.add_outputs(0..kin.len().min(states.len()).min(outs.len()), outs);
+    Ok(found)
+}
 
 #[cfg(target_arch = "x86_64")]
 mod wide {
@@ -151,8 +172,9 @@ mod wide {
                 dt: f64,
                 states: &mut [T],
                 outs: &mut [BondOutput],
+                sink: &LoadSink<'_>,
             ) -> BatchResult {
-                in_chunks::<S, $pack, K, T>(laws, kin, dt, states, outs)
+                in_chunks::<S, $pack, K, T>(laws, kin, dt, states, outs, sink)
             }
         };
     }
@@ -160,7 +182,9 @@ mod wide {
     compiled!(avx512, "avx512f", F64x8);
 
     /// The wide entries of the tables: one per instruction set, state
-    /// layout and source of kinematics, the same safe shell around each.
+    /// layout and source of kinematics, the same safe shell around each
+    /// (the indexed ones with the sink of their loads, the others writing
+    /// every output).
     macro_rules! entry {
         ($name:ident, $kernel:ident, $source:ty, $state:ty) => {
             pub(super) fn $name<S: Switches>(
@@ -172,16 +196,29 @@ mod wide {
             ) -> BatchResult {
                 // SAFETY: only handed out by `kernels` for the instruction
                 // set it names, which `BondModel` checks the CPU runs.
-                unsafe { $kernel::<S, _, _>(laws, kin, dt, states, outs) }
+                unsafe { $kernel::<S, _, _>(laws, kin, dt, states, outs, &LoadSink::outputs()) }
+            }
+        };
+        ($name:ident, $kernel:ident, $source:ty, $state:ty, sink) => {
+            pub(super) fn $name<S: Switches>(
+                laws: &BondLaws,
+                kin: &$source,
+                dt: f64,
+                states: &mut [$state],
+                outs: &mut [BondOutput],
+                sink: &LoadSink<'_>,
+            ) -> BatchResult {
+                // SAFETY: as above.
+                unsafe { $kernel::<S, _, _>(laws, kin, dt, states, outs, sink) }
             }
         };
     }
     entry!(batch_avx2, avx2, [PairKinematics], BondState);
     entry!(scattered_avx2, avx2, [PairKinematics], &mut BondState);
-    entry!(indexed_avx2, avx2, IndexedPairs<'_>, &mut BondState);
+    entry!(indexed_avx2, avx2, IndexedPairs<'_>, &mut BondState, sink);
     entry!(batch_avx512, avx512, [PairKinematics], BondState);
     entry!(scattered_avx512, avx512, [PairKinematics], &mut BondState);
-    entry!(indexed_avx512, avx512, IndexedPairs<'_>, &mut BondState);
+    entry!(indexed_avx512, avx512, IndexedPairs<'_>, &mut BondState, sink);
 }
 
 /// The entries of the tables: one for each combination of

@@ -9,9 +9,12 @@
 //! only on the ones before: the laws of a bond type ([`laws`]) and the parts
 //! switched on ([`features`]) and how a step reads them (`switches`); the
 //! assembled step (`step`); the paths that
-//! feed it one bond at a time (`scalar`) or in lanes (`wide`); the compiled
-//! steps and the choice among them (`dispatch`); the model ([`model`]).
+//! feed it one bond at a time (`scalar`) or in lanes (`wide`), and where
+//! they put the loads besides the outputs: the engine's per-atom sums
+//! ([`atom_loads`]); the compiled steps and the choice among them
+//! (`dispatch`); the model ([`model`]).
 
+pub mod atom_loads;
 pub mod breakage;
 pub mod creation;
 pub mod creation_check;
@@ -44,6 +47,7 @@ pub mod wall;
 mod wide;
 
 pub use crate::simd::Simd;
+pub use atom_loads::{AtomLoads, LoadsTooShort};
 pub use breakage::BreakMode;
 pub use energy::BondEnergy;
 pub use laws::BondLaws;

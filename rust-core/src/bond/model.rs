@@ -1,6 +1,7 @@
 //! A bond type as engines use it: its laws ([`BondLaws`]) and the compiled
 //! steps chosen for their switches on this CPU.
 
+use super::atom_loads::LoadSink;
 use super::dispatch::{inl_kernels, kernels, linear_kernels, Kernels};
 use super::finite::BatchResult;
 use super::inl::inl_step;
@@ -196,6 +197,19 @@ impl BondModel {
         states: &mut [&mut BondState],
         outs: &mut [BondOutput],
     ) -> BatchResult {
-        (self.kernels.indexed)(&self.laws, kin, dt, states, outs)
+        (self.kernels.indexed)(&self.laws, kin, dt, states, outs, &LoadSink::outputs())
+    }
+
+    /// [`Self::step_indexed`] with the loads going to `sink` as each chunk
+    /// of lanes is stepped (the bits of adding the outputs bond by bond).
+    pub(crate) fn step_indexed_into(
+        &self,
+        kin: &IndexedPairs<'_>,
+        dt: f64,
+        states: &mut [&mut BondState],
+        outs: &mut [BondOutput],
+        sink: &LoadSink<'_>,
+    ) -> BatchResult {
+        (self.kernels.indexed)(&self.laws, kin, dt, states, outs, sink)
     }
 }

@@ -18,6 +18,7 @@
 //! is left to the scalar kernel, which zeroes the first kind and reports
 //! the second with its index.
 
+use super::atom_loads::{LoadSink, Rows};
 use super::features::{BEND, SHEAR, TWIST};
 use super::finite::{bond_finite, results_finite_summed, results_surely_finite, BatchResult};
 use super::laws::BondLaws;
@@ -28,12 +29,15 @@ use super::switches::Switches;
 use super::twist_bend::{BendHistory, TwistHistory};
 use crate::kinematics::{axis, separated, PairKinematics};
 use crate::pair_source::PairSource;
+use crate::real::packed::Lane3;
 use crate::real::packed::Pack;
 use crate::vector::{Vector, V3};
 use std::borrow::{Borrow, BorrowMut};
 
 /// [`one_by_one`] in chunks of `P::WIDTH` lanes; the bonds after the last full
-/// chunk one by one.
+/// chunk one by one. Each chunk's loads go to `sink` as soon as it is
+/// stepped: from the lanes where it can take them so, else from the
+/// outputs.
 #[inline(always)]
 pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowMut<BondState>>(
     laws: &BondLaws,
@@ -41,6 +45,7 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
     dt: f64,
     states: &mut [T],
     outs: &mut [BondOutput],
+    sink: &LoadSink<'_>,
 ) -> BatchResult {
     let count = kin.len().min(states.len()).min(outs.len());
     let mut first = None;
@@ -48,23 +53,32 @@ pub(crate) fn in_chunks<S: Switches, P: Pack, K: PairSource + ?Sized, T: BorrowM
     while start + P::WIDTH <= count {
         let end = start + P::WIDTH;
         let chunk = &mut states[start..end];
+        let outs_of = &mut outs[start..end];
         let outcome = match P::WIDTH {
-            4 => step_chunk::<S, P, K, 4>(laws, kin, start, dt, &mut lanes(chunk), &mut outs[start..end]),
-            8 => step_chunk::<S, P, K, 8>(laws, kin, start, dt, &mut lanes(chunk), &mut outs[start..end]),
+            4 => step_chunk::<S, P, K, 4>(laws, kin, start, dt, &mut lanes(chunk), outs_of, sink),
+            8 => step_chunk::<S, P, K, 8>(laws, kin, start, dt, &mut lanes(chunk), outs_of, sink),
             _ => unreachable!("lanes of 4 or 8"),
         };
-        let found = match outcome {
+        let (found, added) = match outcome {
             // rare: which lane, from what was stored
-            Some(finite) if !P::all(finite) => {
-                (start..end).find(|&b| !bond_finite(states[b].borrow(), &outs[b]))
-            }
-            Some(_) => None,
-            None => one_by_one::<S, K, T>(laws, kin, start..end, dt, states, outs)?,
+            Some((finite, _)) if !P::all(finite) => (
+                (start..end).find(|&b| !bond_finite(states[b].borrow(), &outs[b])),
+                false,
+            ),
+            Some((_, added)) => (None, added),
+            None => (
+                one_by_one::<S, K, T>(laws, kin, start..end, dt, states, outs)?,
+                false,
+            ),
         };
+        if !added {
+            sink.add_outputs(start..end, outs);
+        }
         first = first.or(found);
         start = end;
     }
     let found = one_by_one::<S, K, T>(laws, kin, start..count, dt, states, outs)?;
+    sink.add_outputs(start..count, outs);
     Ok(first.or(found))
 }
 
@@ -80,10 +94,12 @@ fn lanes<const N: usize, T: BorrowMut<BondState>>(chunk: &mut [T]) -> [&mut Bond
 
 /// Advances the `P::WIDTH` bonds of a chunk, from bond `first` of `kin` on,
 /// in lanes, and returns a mask whose lanes are all true only if every
-/// bond's results are finite (a false lane leaves the caller to find which
-/// bond, if any, is not); or returns `None` without touching anything when
-/// one of them is not intact or its kinematics are not surely usable (the
-/// scalar kernel then decides).
+/// bond's results are finite and none broke (a false lane leaves the caller
+/// to find which bond, if any, is not finite), and whether their loads went
+/// to `sink` from the lanes (only where every lane is true; else the caller
+/// adds them from the outputs); or returns `None` without touching anything
+/// when one of them is not intact or its kinematics are not surely usable
+/// (the scalar kernel then decides).
 #[inline(always)]
 fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     laws: &BondLaws,
@@ -92,7 +108,8 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     dt: f64,
     states: &mut [&mut BondState; N],
     outs: &mut [BondOutput],
-) -> Option<P::Mask> {
+    sink: &LoadSink<'_>,
+) -> Option<(P::Mask, bool)> {
     let (states, outs) = (&mut states[..], &mut outs[..N]);
     let kin = |lane: usize| kin.pair(first + lane);
     // A positive rest length: intact (`BondState::rest`).
@@ -144,33 +161,12 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
     let (states, outs, state_sum, mut loads_sum) =
         (history.states, history.outs, history.sum, history.loads_sum);
 
-    // Back into the structs one quantity at a time: each register is
-    // stored once and its lanes copied out.
-    let broken = loads.mode.gt(P::splat(0.0));
-    let status = |s: BondStatus| P::splat(s as i32 as f64);
-    let status = P::select(broken, status(BondStatus::Broken), status(BondStatus::Intact));
-    scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
-    scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
-    scatter2(
-        outs,
-        loads.normal_force,
-        loads.sigma,
-        |o: &mut BondOutput, [f, s]| (o.normal_force, o.sigma) = (f, s),
-    );
-    scatter2(outs, loads.tau, loads.delta, |o: &mut BondOutput, [t, d]| {
-        (o.tau, o.delta) = (t, d)
-    });
-    P::for_each_lane_codes(status, loads.mode, |i, [status, mode]| {
-        (outs[i].status, outs[i].break_mode) = (status, mode)
-    });
-
     // A bond that broke exerts nothing, and its status says so. Rare: a
     // branch rather than a blend per number.
+    let broken = loads.mode.gt(P::splat(0.0));
     if P::any(broken) {
         loads.mode.for_each_lane(|i, mode| {
             if mode != 0.0 {
-                let o = &mut outs[i];
-                (o.force_i, o.torque_i, o.torque_j) = ([0.0; 3], [0.0; 3], [0.0; 3]);
                 states[i].mark_broken();
             }
         });
@@ -191,7 +187,111 @@ fn step_chunk<S: Switches, P: Pack, K: PairSource + ?Sized, const N: usize>(
             &states[lane].as_slots()[live..]
         })
     };
-    Some(finite & !broken)
+    let held = finite & !broken;
+
+    // Back into the structs one quantity at a time: each register is
+    // stored once and its lanes copied out. The loads go to the atoms
+    // from the registers where every lane holds (else the caller adds
+    // what was stored), and to the outputs only where they are asked for
+    // or the caller needs them.
+    let direct = sink.direct && P::all(held);
+    let status = |s: BondStatus| P::splat(s as i32 as f64);
+    let status = P::select(broken, status(BondStatus::Broken), status(BondStatus::Intact));
+    P::for_each_lane_codes(status, loads.mode, |i, [status, mode]| {
+        (outs[i].status, outs[i].break_mode) = (status, mode)
+    });
+    if !direct || sink.outputs {
+        scatter3(outs, loads.torque_i, |o: &mut BondOutput| &mut o.torque_i);
+        scatter3(outs, loads.torque_j, |o: &mut BondOutput| &mut o.torque_j);
+        scatter2(
+            outs,
+            loads.normal_force,
+            loads.sigma,
+            |o: &mut BondOutput, [f, s]| (o.normal_force, o.sigma) = (f, s),
+        );
+        scatter2(outs, loads.tau, loads.delta, |o: &mut BondOutput, [t, d]| {
+            (o.tau, o.delta) = (t, d)
+        });
+        if P::any(broken) {
+            loads.mode.for_each_lane(|i, mode| {
+                if mode != 0.0 {
+                    let o = &mut outs[i];
+                    (o.force_i, o.torque_i, o.torque_j) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+                }
+            });
+        }
+    }
+    if direct {
+        add_to_atoms::<P>(sink, first, outs, loads.torque_i, loads.torque_j);
+    }
+    Some((held, direct))
+}
+
+/// The loads of the `P::WIDTH` bonds from bond `first` on added to their
+/// atoms, in the order an engine adding the outputs bond by bond gives each
+/// atom's sums: the forces lane by lane (owner, then partner; from the
+/// outputs, where the step put them as soon as it knew them), then the
+/// torques likewise from the lanes (forces and torques lie apart). A ghost
+/// partner's rows are looked for only where these lanes have one.
+#[inline(always)]
+fn add_to_atoms<P: Pack>(
+    sink: &LoadSink<'_>,
+    first: usize,
+    outs: &[BondOutput],
+    torque_i: V3<P>,
+    torque_j: V3<P>,
+) {
+    let rows = sink.rows();
+    // the lanes' indices read before the first store, which the compiler
+    // cannot tell apart from them: they stay in registers
+    let mut ends = [[0; 2]; 8];
+    for (lane, e) in ends.iter_mut().enumerate().take(P::WIDTH) {
+        // SAFETY: the sink was made with the kernel's kinematics, and these
+        // bonds are of them.
+        *e = unsafe { sink.ends(first + lane) };
+    }
+    let nlocal = rows.nlocal();
+    if sink.route
+        && ends
+            .iter()
+            .take(P::WIDTH)
+            .fold(false, |any, e| any | (e[1] >= nlocal))
+    {
+        add_lanes::<P, true>(rows, &ends, outs, torque_i, torque_j);
+    } else {
+        add_lanes::<P, false>(rows, &ends, outs, torque_i, torque_j);
+    }
+}
+
+/// [`add_to_atoms`]'s adds; `ROUTE`: a ghost partner has rows of its own.
+#[inline(always)]
+fn add_lanes<P: Pack, const ROUTE: bool>(
+    rows: &Rows<'_>,
+    ends: &[[usize; 2]; 8],
+    outs: &[BondOutput],
+    torque_i: V3<P>,
+    torque_j: V3<P>,
+) {
+    // SAFETY: the sink checked the indices against the rows; `ROUTE` only
+    // where the sink has ghost rows.
+    unsafe {
+        for (out, &[i, j]) in outs.iter().zip(ends).take(P::WIDTH) {
+            let f = Lane3::load(&out.force_i);
+            f.add_to(rows.force_of(i));
+            f.subtract_from(rows.partner_of::<ROUTE>(j).0);
+        }
+        let mut owners = [None; 8];
+        P::for_each_lane3(torque_i.x, torque_i.y, torque_i.z, |lane, t| {
+            owners[lane] = Some(t)
+        });
+        P::for_each_lane3(torque_j.x, torque_j.y, torque_j.z, |lane, t| {
+            let [i, j] = ends[lane];
+            if let Some(o) = owners[lane] {
+                o.add_to(rows.torque_of(i));
+            }
+            t.add_to(rows.partner_of::<ROUTE>(j).1);
+        });
+    }
 }
 
 /// The kinematics of a chunk's pairs, read as [`relative`] asks. Each
@@ -274,8 +374,8 @@ impl<P: Pack, F: Fn(usize) -> PairKinematics> MotionSource<P, V3<P>> for LaneMot
 
 /// The history of a chunk's bonds, read from and written to their states
 /// as [`advance`] asks, one quantity a register; the force goes out as
-/// soon as it is known, so that it is not held through the torques' laws. It adds up the slots the
-/// step keeps in registers (below `live`) in their order, from the status
+/// soon as it is known, so that it is not held through the torques' laws
+/// (the atoms get it from there). It adds up the slots the step keeps in registers (below `live`) in their order, from the status
 /// on, for the results check ([`results_finite_summed`]) as they pass; the
 /// slots of a law switched off are read for that alone.
 struct Lanes<'a, P, T> {

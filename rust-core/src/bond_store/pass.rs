@@ -14,7 +14,8 @@
 
 use super::id_map::Ids;
 use super::{BondStore, StoredBond, NONE};
-use crate::bond::{BondModel, BondOutput, BondState, BondStatus, BreakMode};
+use crate::bond::atom_loads::{LoadSink, Rows};
+use crate::bond::{AtomLoads, BondModel, BondOutput, BondState, BondStatus, BreakMode, LoadsTooShort};
 use crate::kinematics::{KinematicsError, PairKinematics};
 use crate::pair_source::{AtomArrays, IndexedPairs, PairSource};
 
@@ -77,6 +78,9 @@ pub enum StepFailureReason {
     Kinematics(KinematicsError),
     /// The results were not finite.
     NonFinite,
+    /// The named array of the atoms' load sums holds fewer atoms than the
+    /// atoms' arrays, or `nlocal` exceeds them.
+    LoadsTooShort(&'static str),
 }
 
 /// Counts a break of `mode` in `c` (any mode not named otherwise is shear).
@@ -144,9 +148,83 @@ impl BondStore {
         ends: &mut [[i32; 2]; CHUNK],
         outs: &mut [BondOutput; CHUNK],
     ) -> Result<usize, StepFailure> {
+        let (first, n) = self.step_chunk(models, atoms, ids, None, outs, true)?;
+        ends[..n].copy_from_slice(&self.ends[first..first + n]);
+        Ok(n)
+    }
+
+    /// [`Self::step_next`], the chunk's loads added to `loads` as well
+    /// ([`crate::bond::atom_loads`]): bond by bond, the owner's, then the
+    /// partner's.
+    pub fn step_next_adding(
+        &mut self,
+        models: &[Option<&BondModel>],
+        atoms: AtomArrays<'_>,
+        ids: Ids<'_>,
+        loads: &mut AtomLoads<'_>,
+        ends: &mut [[i32; 2]; CHUNK],
+        outs: &mut [BondOutput; CHUNK],
+    ) -> Result<usize, StepFailure> {
+        let rows = self.rows_of(loads, &atoms)?;
+        let (first, n) = self.step_chunk(models, atoms, ids, Some(rows), outs, true)?;
+        ends[..n].copy_from_slice(&self.ends[first..first + n]);
+        Ok(n)
+    }
+
+    /// Steps every bond the pass has not stepped, chunk after chunk, their
+    /// loads added to `loads` as [`Self::step_next_adding`] adds them, no
+    /// output handed back; returns how many. The loads of a chunk go to the
+    /// atoms from the lanes as it is stepped, without a pass over outputs:
+    /// where no output is wanted (no virial, no per-bond output), the pass
+    /// in one call.
+    pub fn step_rest(
+        &mut self,
+        models: &[Option<&BondModel>],
+        atoms: AtomArrays<'_>,
+        ids: Ids<'_>,
+        loads: &mut AtomLoads<'_>,
+    ) -> Result<usize, StepFailure> {
+        let rows = self.rows_of(loads, &atoms)?;
+        let mut outs = [BondOutput::default(); CHUNK];
+        let mut stepped = 0;
+        loop {
+            match self.step_chunk(models, atoms, ids, Some(rows), &mut outs, false)? {
+                (_, 0) => return Ok(stepped),
+                (_, n) => stepped += n,
+            }
+        }
+    }
+
+    /// `loads`' rows for the atoms of `atoms`, each array's length checked.
+    fn rows_of<'l>(
+        &self,
+        loads: &'l mut AtomLoads<'_>,
+        atoms: &AtomArrays<'_>,
+    ) -> Result<Rows<'l>, StepFailure> {
+        loads
+            .rows(atoms.count())
+            .map_err(|LoadsTooShort(what)| StepFailure {
+                bond: self.cursor.next,
+                ends: [-1, -1],
+                reason: StepFailureReason::LoadsTooShort(what),
+            })
+    }
+
+    /// The next chunk stepped, its loads added to `rows` if given, every
+    /// output written to `outs` if `outputs` (else the status and break
+    /// mode at least); returns its first bond and its length.
+    fn step_chunk(
+        &mut self,
+        models: &[Option<&BondModel>],
+        atoms: AtomArrays<'_>,
+        ids: Ids<'_>,
+        rows: Option<Rows<'_>>,
+        outs: &mut [BondOutput; CHUNK],
+        outputs: bool,
+    ) -> Result<(usize, usize), StepFailure> {
         let first = self.cursor.next;
         if !self.cursor.active || first >= self.bonds.len() {
-            return Ok(0);
+            return Ok((first, 0));
         }
         let fail = |bond: usize, ends: [i32; 2], reason| StepFailure { bond, ends, reason };
         if !self.linked {
@@ -168,7 +246,13 @@ impl BondStore {
                 StepFailureReason::IndexOutOfRange,
             )
         })?;
-        ends[..n].copy_from_slice(pairs);
+        // the energy budget reads every output
+        let outputs = outputs || self.budget.is_some();
+        let sink = match rows {
+            Some(rows) => LoadSink::adding(rows, &kinematics, outputs)
+                .ok_or_else(|| fail(first, [-1, -1], StepFailureReason::LoadsTooShort("force")))?,
+            None => LoadSink::outputs(),
+        };
         let outs = &mut outs[..n];
         // the energy budget reads the states before the step (in its own
         // buffers, which it keeps from chunk to chunk)
@@ -189,7 +273,7 @@ impl BondStore {
             // BondState` has the layout of `*mut BondState`.
             let states =
                 unsafe { std::slice::from_raw_parts_mut(states.as_mut_ptr() as *mut &mut BondState, n) };
-            model.step_indexed(&kinematics, self.cursor.dt, states, outs)
+            model.step_indexed_into(&kinematics, self.cursor.dt, states, outs, &sink)
         } else if let Some(stepped) = setup_afresh(
             model,
             &kinematics,
@@ -197,6 +281,7 @@ impl BondStore {
             &mut self.bonds[first..last],
             outs,
         ) {
+            sink.add_outputs(0..n, outs);
             stepped
         } else {
             let mut copies = [BondState::default(); CHUNK];
@@ -210,8 +295,9 @@ impl BondStore {
             // SAFETY: as above, over the copies.
             let states =
                 unsafe { std::slice::from_raw_parts_mut(refs.as_mut_ptr() as *mut &mut BondState, n) };
-            model.step_indexed(&kinematics, 0.0, states, outs)
+            model.step_indexed_into(&kinematics, 0.0, states, outs, &sink)
         };
+        let all_direct = sink.all_direct.get();
         match stepped {
             Ok(None) => {}
             Ok(Some(k)) => {
@@ -249,11 +335,13 @@ impl BondStore {
             }
         }
         self.cursor.next = last;
-        // Breaks are rare: one pass over the statuses without a branch says
+        // Breaks are rare: none where every bond went to the atoms from the
+        // lanes, else one pass over the statuses without a branch says
         // whether the chunk has any.
         let intact = BondStatus::Intact as i32;
-        if !self.cursor.advance || outs.iter().fold(0, |any, o| any | (o.status ^ intact)) == 0 {
-            return Ok(n);
+        if !self.cursor.advance || all_direct || outs.iter().fold(0, |any, o| any | (o.status ^ intact)) == 0
+        {
+            return Ok((first, n));
         }
         for (k, out) in outs.iter_mut().enumerate() {
             // a bond that is not intact carries no load (the step's rule);
@@ -274,7 +362,7 @@ impl BondStore {
                 self.broken_now.push(broken);
             }
         }
-        Ok(n)
+        Ok((first, n))
     }
 
     fn count_break(&mut self, mode: i32) {

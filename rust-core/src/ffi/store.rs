@@ -6,12 +6,13 @@ use super::entry;
 use super::error::{Failure, Status};
 use super::guard::{reference, reference_mut, slice, slice_mut, time_step, FailedIndex};
 use super::results::refused;
-use crate::bond::{BondModel, BondOutput, BOND_STATE_LEN};
+use crate::bond::{AtomLoads, BondModel, BondOutput, BOND_STATE_LEN};
 use crate::bond_store::{
     creates_here, packed_len_in, BondStore, BrokenBond, EnergySums, Ids, LinkAtoms, LinkReport, ListedAtoms,
-    ListedBond, SharesError, StepFailureReason, StoreCounts, CHUNK,
+    ListedBond, SharesError, StepFailure, StepFailureReason, StoreCounts, CHUNK,
 };
 use crate::kinematics::PairKinematics;
+use crate::pair_source::AtomArrays;
 
 /// Bonds one `granbond_bond_store_step_next` steps at most: the length of
 /// its `ends` and `outs` arrays.
@@ -345,18 +346,144 @@ pub unsafe extern "C" fn granbond_bond_store_begin_pass(
     Ok(())
 }
 
+/// The engine's per-atom sums a pass adds the bonds' loads to
+/// (`granbond_bond_store_step_rest`, `granbond_bond_store_step_next`): for
+/// each bond in turn the owner's force and torque, then the partner's.
+/// No array may overlap another, nor the atoms' arrays.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct AtomLoadPointers {
+    /// Forces, 3 doubles per atom (local, then ghost).
+    pub force: *mut f64,
+    /// Torques, 3 doubles per atom.
+    pub torque: *mut f64,
+    /// The number of atoms both arrays hold at least (at least the atoms'
+    /// arrays' count).
+    pub count: usize,
+    /// The number of local atoms: a partner at or beyond it is a ghost.
+    pub nlocal: usize,
+    /// Null, or 6 doubles per ghost atom (force, then torque; ghost `j` at
+    /// row `j - nlocal`, `count - nlocal` rows): where a ghost partner's
+    /// loads go instead of its own rows, for an engine that does not sum
+    /// ghosts' loads to their owners (`newton off`).
+    pub ghost_rows: *mut f64,
+    /// Null (every factor 1), or each atom's factor on the loads it
+    /// receives (LIGGGHTS's relaxation factor), `count` doubles.
+    pub relax: *const f64,
+}
+
+/// The sums of `loads` as slices, none overlapping another or the atoms'
+/// arrays `atoms`.
+///
+/// # Safety
+/// The pointers of `loads` must be null or valid for the lengths it gives.
+unsafe fn atom_loads<'a>(loads: &AtomLoadPointers, atoms: &AtomArrays<'_>) -> Result<AtomLoads<'a>, Failure> {
+    let n = loads.count;
+    let too_large = || Failure::new(Status::InvalidArgument, format!("loads->count {n} is too large"));
+    let n3 = n
+        .checked_mul(3)
+        .filter(|&m| m <= isize::MAX as usize / (2 * std::mem::size_of::<f64>()))
+        .ok_or_else(too_large)?;
+    if loads.nlocal > n {
+        return Err(Failure::new(
+            Status::InvalidArgument,
+            format!("loads->nlocal {} exceeds loads->count {n}", loads.nlocal),
+        ));
+    }
+    let ghosts = 6 * (n - loads.nlocal);
+    let force = slice_mut(loads.force, n3, "loads->force")?;
+    let torque = slice_mut(loads.torque, n3, "loads->torque")?;
+    let ghost_rows = match loads.ghost_rows.is_null() {
+        true => None,
+        false => Some(slice_mut(loads.ghost_rows, ghosts, "loads->ghost_rows")?),
+    };
+    let relax = match loads.relax.is_null() {
+        true => None,
+        false => Some(slice(loads.relax, n, "loads->relax")?),
+    };
+    let written = [
+        ("loads->force", force.as_ptr_range()),
+        ("loads->torque", torque.as_ptr_range()),
+        (
+            "loads->ghost_rows",
+            ghost_rows.as_deref().unwrap_or(&[]).as_ptr_range(),
+        ),
+    ];
+    let read = [
+        ("loads->relax", relax.unwrap_or(&[]).as_ptr_range()),
+        ("atoms->x", atoms.x.as_ptr_range()),
+        ("atoms->v", atoms.v.as_ptr_range()),
+        ("atoms->omega", atoms.omega.as_ptr_range()),
+        ("atoms->radius", atoms.radius.as_ptr_range()),
+    ];
+    for (k, (name, range)) in written.iter().enumerate() {
+        let others = written[k + 1..].iter().chain(&read);
+        if let Some((other, _)) = others
+            .into_iter()
+            .find(|(_, o)| range.start < o.end && o.start < range.end)
+        {
+            return Err(Failure::new(
+                Status::InvalidArgument,
+                format!("{name} overlaps {other}"),
+            ));
+        }
+    }
+    Ok(AtomLoads {
+        force,
+        torque,
+        nlocal: loads.nlocal,
+        ghost_rows,
+        relax,
+    })
+}
+
+/// A failure of a step of the store's bonds as a message naming the bond's
+/// atoms and the parameter at fault.
+fn step_failure(f: StepFailure, failed_index: FailedIndex) -> Failure {
+    let [i, j] = f.ends;
+    let failure = match f.reason {
+        StepFailureReason::NotLinked => Failure::new(
+            Status::InvalidArgument,
+            "the store was not linked since atoms moved (granbond_bond_store_link)",
+        ),
+        StepFailureReason::NoModel(kind) => Failure::new(
+            Status::InvalidArgument,
+            format!("models: no model for bond kind {kind}"),
+        ),
+        StepFailureReason::IndexOutOfRange => {
+            Failure::new(Status::InvalidArgument, "an atom index beyond the atoms' arrays")
+        }
+        StepFailureReason::Kinematics(e) => e.into(),
+        StepFailureReason::NonFinite => refused("force, torque, stress or bond state"),
+        StepFailureReason::LoadsTooShort(what) => {
+            return Failure::new(
+                Status::InvalidArgument,
+                format!("loads->{what}: holds fewer atoms than atoms->count"),
+            )
+        }
+    };
+    let failure = Failure {
+        message: format!("the bond of local atoms {i} and {j}: {}", failure.message),
+        ..failure
+    };
+    failed_index.fail("bond", f.bond, failure)
+}
+
 /// Steps the next chunk of the pass: up to `GRANBOND_BOND_STORE_CHUNK`
 /// bonds of one kind (`models[kind]`, null where a kind has no model), their
 /// atoms' local indices written to `ends` (2 ints a bond) and outputs to
-/// `outs`, the number to `count` (0: the pass has stepped every bond). A
-/// bond that breaks carries no load; `granbond_bond_store_broken` reports
-/// it. On failure nothing of the chunk is kept, and `failed_index` (if not
-/// null) gets the bond's place in the store.
+/// `outs`, the number to `count` (0: the pass has stepped every bond), and
+/// their loads added to `loads` unless it is null (then the caller adds
+/// them from `outs`). A bond that breaks carries no load;
+/// `granbond_bond_store_broken` reports it. On failure nothing of the
+/// chunk is kept, and `failed_index` (if not null) gets the bond's place in
+/// the store.
 ///
 /// # Safety
 /// Pointers must be null or valid: `models` for `nkinds` entries, `ends` for
 /// `2 * GRANBOND_BOND_STORE_CHUNK` ints, `outs` for
-/// `GRANBOND_BOND_STORE_CHUNK` outputs, the atoms' arrays as they say.
+/// `GRANBOND_BOND_STORE_CHUNK` outputs, the atoms' and loads' arrays as they
+/// say.
 #[allow(clippy::too_many_arguments)]
 #[entry(failed_index: FailedIndex::new, store: reference_mut, atoms: reference, ids: reference, count: reference_mut)]
 #[no_mangle]
@@ -366,6 +493,7 @@ pub unsafe extern "C" fn granbond_bond_store_step_next(
     nkinds: usize,
     atoms: *const AtomArrayPointers,
     ids: *const AtomIds,
+    loads: *const AtomLoadPointers,
     ends: *mut i32,
     outs: *mut BondOutput,
     count: *mut usize,
@@ -375,31 +503,52 @@ pub unsafe extern "C" fn granbond_bond_store_step_next(
     let models = model_table(models, nkinds)?;
     let arrays = atom_arrays(atoms)?;
     let ids = self::ids(ids)?;
+    let mut loads = match loads.is_null() {
+        true => None,
+        false => Some(atom_loads(reference(loads, "loads")?, &arrays)?),
+    };
     let ends = &mut *(slice_mut(ends, 2 * CHUNK, "ends")?.as_mut_ptr() as *mut [[i32; 2]; CHUNK]);
     let outs = &mut *(slice_mut(outs, CHUNK, "outs")?.as_mut_ptr() as *mut [BondOutput; CHUNK]);
-    *count = store.step_next(models, arrays, ids, ends, outs).map_err(|f| {
-        let [i, j] = f.ends;
-        let failure = match f.reason {
-            StepFailureReason::NotLinked => Failure::new(
-                Status::InvalidArgument,
-                "the store was not linked since atoms moved (granbond_bond_store_link)",
-            ),
-            StepFailureReason::NoModel(kind) => Failure::new(
-                Status::InvalidArgument,
-                format!("models: no model for bond kind {kind}"),
-            ),
-            StepFailureReason::IndexOutOfRange => {
-                Failure::new(Status::InvalidArgument, "an atom index beyond the atoms' arrays")
-            }
-            StepFailureReason::Kinematics(e) => e.into(),
-            StepFailureReason::NonFinite => refused("force, torque, stress or bond state"),
-        };
-        let failure = Failure {
-            message: format!("the bond of local atoms {i} and {j}: {}", failure.message),
-            ..failure
-        };
-        failed_index.fail("bond", f.bond, failure)
-    })?;
+    *count = match &mut loads {
+        Some(loads) => store.step_next_adding(models, arrays, ids, loads, ends, outs),
+        None => store.step_next(models, arrays, ids, ends, outs),
+    }
+    .map_err(|f| step_failure(f, failed_index))?;
+    Ok(())
+}
+
+/// Steps every bond of the pass not stepped yet (`models[kind]` for each,
+/// null where a kind has no model) and adds their loads to `loads`, as
+/// `granbond_bond_store_step_next` would chunk by chunk, but without
+/// handing back outputs: for a pass that wants none (no virial, no
+/// per-bond output). The number stepped goes to `count`. A bond that breaks
+/// carries no load; `granbond_bond_store_broken` reports it. On failure,
+/// `failed_index` (if not null) gets the bond's place in the store.
+///
+/// # Safety
+/// Pointers must be null or valid: `models` for `nkinds` entries, the
+/// atoms' and loads' arrays as they say.
+#[allow(clippy::too_many_arguments)]
+#[entry(failed_index: FailedIndex::new, store: reference_mut, atoms: reference, ids: reference, loads: reference, count: reference_mut)]
+#[no_mangle]
+pub unsafe extern "C" fn granbond_bond_store_step_rest(
+    store: *mut BondStore,
+    models: *const *const BondModel,
+    nkinds: usize,
+    atoms: *const AtomArrayPointers,
+    ids: *const AtomIds,
+    loads: *const AtomLoadPointers,
+    count: *mut usize,
+    failed_index: *mut usize,
+) -> Status {
+    *count = 0;
+    let models = model_table(models, nkinds)?;
+    let arrays = atom_arrays(atoms)?;
+    let ids = self::ids(ids)?;
+    let mut loads = atom_loads(loads, &arrays)?;
+    *count = store
+        .step_rest(models, arrays, ids, &mut loads)
+        .map_err(|f| step_failure(f, failed_index))?;
     Ok(())
 }
 

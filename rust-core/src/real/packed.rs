@@ -57,6 +57,75 @@ pub(crate) trait Pack: Real {
     }
     /// The first `WIDTH` numbers of `values`, one a lane.
     fn load(values: &[f64]) -> Self;
+    /// `f(i, lane i of (x, y, z))` for every lane, in order: each lane's
+    /// 3-vector ready to be added to 3 numbers in memory ([`Lane3`]).
+    #[inline(always)]
+    fn for_each_lane3(x: Self, y: Self, z: Self, mut f: impl FnMut(usize, Lane3)) {
+        let (mut first, mut second) = ([0.0; 8], [0.0; 8]);
+        x.for_each_lane(|i, v| first[i] = v);
+        y.for_each_lane(|i, v| second[i] = v);
+        // SAFETY: SSE2, which every x86_64 CPU has.
+        z.for_each_lane(|i, v| unsafe {
+            f(
+                i,
+                Lane3 {
+                    xy: _mm_set_pd(second[i], first[i]),
+                    z: _mm_set_sd(v),
+                },
+            )
+        });
+    }
+}
+
+/// One lane's 3-vector taken out of three registers: x and y side by side,
+/// z alone, so that adding it to 3 numbers in memory takes one 16-byte and
+/// one 8-byte operation. Each component is the `f64` operation, so the sums
+/// are the bits of one component at a time.
+#[derive(Clone, Copy)]
+pub(crate) struct Lane3 {
+    xy: __m128d,
+    // in the low half
+    z: __m128d,
+}
+
+impl Lane3 {
+    /// The 3-vector `v`.
+    #[inline(always)]
+    pub(crate) fn load(v: &[f64; 3]) -> Self {
+        // SAFETY: `v` holds 3 numbers; SSE2, which every x86_64 CPU has.
+        unsafe {
+            Lane3 {
+                xy: _mm_loadu_pd(v.as_ptr()),
+                z: _mm_load_sd(v.as_ptr().add(2)),
+            }
+        }
+    }
+
+    /// `to[c] += self[c]` for the 3 components.
+    ///
+    /// # Safety
+    /// `to` must be valid for reads and writes of 3 `f64`.
+    #[inline(always)]
+    pub(crate) unsafe fn add_to(self, to: *mut f64) {
+        // SAFETY: the caller's; SSE2, which every x86_64 CPU has.
+        unsafe {
+            _mm_storeu_pd(to, _mm_add_pd(_mm_loadu_pd(to), self.xy));
+            _mm_store_sd(to.add(2), _mm_add_sd(_mm_load_sd(to.add(2)), self.z));
+        }
+    }
+
+    /// `to[c] -= self[c]` for the 3 components.
+    ///
+    /// # Safety
+    /// As [`Self::add_to`].
+    #[inline(always)]
+    pub(crate) unsafe fn subtract_from(self, to: *mut f64) {
+        // SAFETY: as in `add_to`.
+        unsafe {
+            _mm_storeu_pd(to, _mm_sub_pd(_mm_loadu_pd(to), self.xy));
+            _mm_store_sd(to.add(2), _mm_sub_sd(_mm_load_sd(to.add(2)), self.z));
+        }
+    }
 }
 
 /// 4 `f64` (AVX).
@@ -270,6 +339,24 @@ impl Pack for F64x4 {
             f(1, pair(_mm_extract_epi64::<1>(low)));
             f(2, pair(_mm_cvtsi128_si64(high)));
             f(3, pair(_mm_extract_epi64::<1>(high)));
+        }
+    }
+    /// The pairs of (x, y) interleaved as [`Pack::for_each_lane2`] does,
+    /// the halves of z split: no copy on the stack.
+    #[inline(always)]
+    fn for_each_lane3(x: Self, y: Self, z: Self, mut f: impl FnMut(usize, Lane3)) {
+        // SAFETY: see the module documentation.
+        unsafe {
+            let (even, odd) = (_mm256_unpacklo_pd(x.0, y.0), _mm256_unpackhi_pd(x.0, y.0));
+            let (z01, z23) = (_mm256_castpd256_pd128(z.0), _mm256_extractf128_pd::<1>(z.0));
+            let lane = |xy, z| Lane3 { xy, z };
+            f(0, lane(_mm256_castpd256_pd128(even), z01));
+            f(1, lane(_mm256_castpd256_pd128(odd), _mm_unpackhi_pd(z01, z01)));
+            f(2, lane(_mm256_extractf128_pd::<1>(even), z23));
+            f(
+                3,
+                lane(_mm256_extractf128_pd::<1>(odd), _mm_unpackhi_pd(z23, z23)),
+            );
         }
     }
     #[inline(always)]

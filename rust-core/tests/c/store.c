@@ -89,7 +89,8 @@ int test_bond_store(void)
     GbPairKinematics k;
     GbBondOutput outs[GRANBOND_BOND_STORE_CHUNK], want;
     int32_t ends[2 * GRANBOND_BOND_STORE_CHUNK], owner = -2, created = 0, bond_ends[2];
-    double state[GRANBOND_BOND_STATE_LEN], buf[64];
+    double state[GRANBOND_BOND_STATE_LEN], buf[64], force[6] = {0}, torque[6] = {0};
+    GbAtomLoads loads;
     size_t count = 99, written = 0, read = 0;
     int64_t partner = 0;
 
@@ -116,9 +117,18 @@ int test_bond_store(void)
     EXPECT_OK(granbond_bond_store_try_create(store, m, 0, 1, 0, 4, 11, &k, CREATE_STEP, &created),
               "granbond_bond_store_try_create");
     CHECK(created == 1, "created at the creation step");
-    EXPECT_OK(granbond_bond_store_step_next(store, models, 1, &arrays, &ids, ends, outs, &count, NULL),
+    loads.force = force;
+    loads.torque = torque;
+    loads.count = 2;
+    loads.nlocal = 2;
+    loads.ghost_rows = NULL;
+    loads.relax = NULL;
+    EXPECT_OK(granbond_bond_store_step_next(store, models, 1, &arrays, &ids, &loads, ends, outs, &count, NULL),
               "granbond_bond_store_step_next");
     CHECK(count == 1 && ends[0] == 1 && ends[1] == 0, "the new bond stepped in its pass, owner first");
+    CHECK(vec_equal(force + 3, outs[0].force_i) && vec_equal(torque + 3, outs[0].torque_i) &&
+              vec_equal(torque, outs[0].torque_j) && force[0] == -outs[0].force_i[0],
+          "the loads added to the atoms: the owner's, the partner's (minus the force)");
     /* the same step from C on a copy of a fresh bond */
     if (create_bond(m, state))
         return 1;
@@ -126,8 +136,20 @@ int test_bond_store(void)
     EXPECT_OK(granbond_bond_compute(m, &k, DT, state, &want), "granbond_bond_compute");
     CHECK(vec_equal(outs[0].force_i, want.force_i) && vec_equal(outs[0].torque_j, want.torque_j),
           "the store's step is the bond's step");
-    EXPECT_OK(granbond_bond_store_step_next(store, models, 1, &arrays, &ids, ends, outs, &count, NULL),
-              "granbond_bond_store_step_next, nothing left");
+    EXPECT(granbond_bond_store_step_rest(store, models, 1, &arrays, &ids, NULL, &count, NULL), GB_STATUS_NULL_POINTER,
+           "granbond_bond_store_step_rest, no loads");
+    loads.torque = force + 3;
+    EXPECT(granbond_bond_store_step_rest(store, models, 1, &arrays, &ids, &loads, &count, NULL),
+           GB_STATUS_INVALID_ARGUMENT, "granbond_bond_store_step_rest, torques over the forces");
+    loads.torque = torque;
+    loads.count = 1;
+    loads.nlocal = 1;
+    EXPECT(granbond_bond_store_step_rest(store, models, 1, &arrays, &ids, &loads, &count, NULL),
+           GB_STATUS_INVALID_ARGUMENT, "granbond_bond_store_step_rest, sums for fewer atoms than the arrays");
+    loads.count = 2;
+    loads.nlocal = 2;
+    EXPECT_OK(granbond_bond_store_step_rest(store, models, 1, &arrays, &ids, &loads, &count, NULL),
+              "granbond_bond_store_step_rest, nothing left");
     CHECK(count == 0, "every bond stepped once");
     CHECK(granbond_bond_store_broken_count(store) == 0, "nothing broke");
     EXPECT_OK(granbond_bond_store_finish_pass(store), "granbond_bond_store_finish_pass");
@@ -245,7 +267,7 @@ int test_bond_store(void)
     a.x[2] += (MAX_DISTANCE - R0_NOMINAL) * 2.0 * AXIS[2] * 10.0;
     EXPECT_OK(granbond_bond_store_keep_energy_budget(other, 1, 0), "granbond_bond_store_keep_energy_budget");
     EXPECT_OK(granbond_bond_store_begin_pass(other, DT, 1, 0), "granbond_bond_store_begin_pass");
-    EXPECT_OK(granbond_bond_store_step_next(other, models, 1, &arrays, &ids, ends, outs, &count, NULL),
+    EXPECT_OK(granbond_bond_store_step_next(other, models, 1, &arrays, &ids, NULL, ends, outs, &count, NULL),
               "granbond_bond_store_step_next, stretched");
     CHECK(count == 1 && vec_zero(outs[0].force_i), "a broken bond carries no load");
     CHECK(granbond_bond_store_broken_count(other) == 1, "one bond broke");

@@ -49,7 +49,7 @@ use granbond::ffi::fields::{
 use granbond::ffi::layout::{granbond_state_len, granbond_state_slot};
 use granbond::ffi::ledger as fl;
 use granbond::ffi::parameters::{self as fp, ParameterRow};
-use granbond::ffi::store::{self as fs, AtomIds, StoreAtoms, GRANBOND_BOND_STORE_CHUNK};
+use granbond::ffi::store::{self as fs, AtomIds, AtomLoadPointers, StoreAtoms, GRANBOND_BOND_STORE_CHUNK};
 use granbond::ffi::wall_store as fw;
 use granbond::ffi::Status;
 use granbond::kinematics::{PairKinematics, SphereKinematics};
@@ -63,7 +63,7 @@ use std::ptr::{null, null_mut};
 
 /// Every `extern "C"` function of `include/granbond.h` (the header's
 /// `static inline` helper is compiled into the caller, not the library).
-pub const ENTRY_POINTS: [&str; 157] = [
+pub const ENTRY_POINTS: [&str; 158] = [
     "granbond_abi_version",
     "granbond_check_layout",
     "granbond_bond_params_default",
@@ -177,6 +177,7 @@ pub const ENTRY_POINTS: [&str; 157] = [
     "granbond_bond_store_link_listed",
     "granbond_bond_store_begin_pass",
     "granbond_bond_store_step_next",
+    "granbond_bond_store_step_rest",
     "granbond_bond_store_broken_count",
     "granbond_bond_store_broken",
     "granbond_bond_store_try_create",
@@ -2052,6 +2053,26 @@ impl<'t> Session<'t> {
             let mut ends = vec![0i32; 2 * GRANBOND_BOND_STORE_CHUNK + 1];
             let mut outs = vec![BondOutput::default(); GRANBOND_BOND_STORE_CHUNK + 1];
             let mut failed = Place::new(usize::MAX);
+            // the atoms' load sums, with ghost rows or not by the atom
+            // count (no input read: the corpus reads on as before)
+            let (mut force, mut torque) = (vec![0.0; 3 * n], vec![0.0; 3 * n]);
+            let mut ghost_rows = vec![0.0; 6 * (n - nlocal)];
+            let loads = AtomLoadPointers {
+                force: force.as_mut_ptr(),
+                torque: torque.as_mut_ptr(),
+                count: n,
+                nlocal,
+                ghost_rows: if n.is_multiple_of(2) {
+                    ghost_rows.as_mut_ptr()
+                } else {
+                    null_mut()
+                },
+                relax: if n.is_multiple_of(3) {
+                    radius.as_ptr()
+                } else {
+                    null()
+                },
+            };
             // the pass that created the bonds, then one over the chain
             // stretched (bonds break past max_distance)
             for round in 0..2 {
@@ -2071,6 +2092,23 @@ impl<'t> Session<'t> {
                     let status = fs::granbond_bond_store_begin_pass(st, 1e-7, 1, 0);
                     ok(self, "granbond_bond_store_begin_pass", status);
                 }
+                // the stretched chain's pass in one call where the atom
+                // count says so, else chunk by chunk, adding the loads in
+                // the first pass and not in the second
+                if round == 1 && n % 4 == 1 {
+                    let mut count = Place::new(usize::MAX);
+                    let status = fs::granbond_bond_store_step_rest(
+                        st,
+                        models.as_ptr(),
+                        1,
+                        &arrays,
+                        &wide_ids,
+                        &loads,
+                        count.ptr(Pointer::Valid),
+                        failed.ptr(Pointer::Valid),
+                    );
+                    ok(self, "granbond_bond_store_step_rest", status);
+                }
                 for _ in 0..4 {
                     let mut count = Place::new(usize::MAX);
                     let (he, ho, hc) = (input.late_pointer(), input.late_pointer(), input.late_pointer());
@@ -2080,6 +2118,11 @@ impl<'t> Session<'t> {
                         1 + input.below(2),
                         &arrays,
                         &wide_ids,
+                        if round == 0 {
+                            &loads as *const AtomLoadPointers
+                        } else {
+                            null()
+                        },
                         Self::batch_ptr(&mut ends, he),
                         Self::batch_ptr(&mut outs, ho),
                         count.ptr(hc),
