@@ -163,7 +163,10 @@ void VoigtSubModel::connectToProperties(::PropertyRegistry &registry)
     const unsigned own = partBit(part_);
     share_->connect(registry, sub_.words, sub_.reads);
     const int ntypes = registry.max_type();
-    models_.build(error, sub_.words, ntypes, share_->params(error, sub_.words, ntypes, own, own));
+    // every row the part reads: model voigt's tangential rows are the
+    // spring a stock tangential model integrates, which its time-step
+    // check counts
+    models_.build(error, sub_.words, ntypes, share_->params(error, sub_.words, ntypes, sub_.reads, own));
     share_->contribute(error, sub_.words, ntypes, sub_.reads);
     // every sub-model exists by now
     whole_ = part_ == GB_CONTACT_PART_NORMAL && share_->fused();

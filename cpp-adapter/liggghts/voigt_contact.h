@@ -176,7 +176,8 @@ public:
 
 private:
     // The core's time-step check of the whole contact (the combined model
-    // when tangential, and rolling, are voigt too; else the normal part):
+    // when tangential, and rolling, are voigt too; else the normal part
+    // with the tangential spring it hands on):
     // warned at a run's first pass, and when the atom count changes if the
     // limit moved. At the first pass, not when connected: the other voigt
     // sub-models connect after this one. Pair contacts only (wall_: this
@@ -213,7 +214,7 @@ private:
     const int contactFlag_;       // its bit of a pair's contact flag
     const void *owner_;
     VoigtContactShare *share_;
-    VoigtModelTable models_;      // the part's own parameters, over the core's defaults
+    VoigtModelTable models_;      // the rows the part reads, over the core's defaults
     bool computesFrame_;          // the first voigt sub-model constructed
     bool whole_, skip_;           // model voigt does the whole contact, and the others nothing
     bool fusedRolling_;           // share_->fusedRolling(), known once connected

@@ -22,6 +22,13 @@
               and for a contact (both), at every `run`, and again in a run
               whose atom count changes to a new, shorter limit (LIGGGHTS
               insertion); at a safe step nothing is said.
+  timestep-kt the LIGGGHTS time-step check of model voigt followed by the
+              stock `tangential history` counts the tangential spring that
+              model hands it, the deck's kt: with kt 1e6 N/m (critical step
+              2.4e-6 s) a step of 5e-6 s EXCEEDS the critical step at every
+              run, with kt 1e2 N/m (the normal spring limits: recommended
+              step 9.2e-6 s) a step of 8e-6 s is not warned until the
+              inserted spheres bring a shorter limit.
   creation    the bond's creation and break rules checked against each
               other at a run's start, in both engines: createDistance >
               maxDistance (bonds created and broken, every step under
@@ -183,18 +190,28 @@ LIGGGHTS_TIMESTEP = [
     (1e-3, [("EXCEEDS the critical step", "1 and 1")] * 2 + [("EXCEEDS the critical step", "2 and 2")]),
     (2e-6, []),
 ]
+# LIGGGHTS model voigt + tangential history (kt, dt, expected warnings as
+# above); spheres of 2 mm: normal critical step 4.6e-5 s, tangential
+# 2 sqrt(m / 7 kt); the inserted spheres of 1 mm: normal 1.6e-5 s
+LIGGGHTS_HANDED_ON_KT = [
+    (1e6, 5e-6, [("EXCEEDS the critical step", "1 and 1")] * 2 + [("EXCEEDS the critical step", "2 and 2")]),
+    (1e2, 8e-6, [("exceeds the recommended step", "2 and 2")]),
+]
 
 
-def check_timestep(a, workdir):
+def check_timestep(a, workdir, handed_on=False):
     if a.kind == "lammps":
-        cases = [(m, dt, want, f"pair granbond ({'bond/nonlinear' if m == 'bond' else 'voigt'}): time step")
+        cases = [(m, dt, want, f"pair granbond ({'bond/nonlinear' if m == 'bond' else 'voigt'}): time step", {})
                  for m, dt, want in LAMMPS_TIMESTEP]
+    elif handed_on:
+        cases = [(f"history-kt{kt:g}", dt, want, "model voigt: time step",
+                  {"tan": "history", "roll": "off", "kt": kt}) for kt, dt, want in LIGGGHTS_HANDED_ON_KT]
     else:
-        cases = [("voigt", dt, want, "model voigt: time step") for dt, want in LIGGGHTS_TIMESTEP]
+        cases = [("voigt", dt, want, "model voigt: time step", {}) for dt, want in LIGGGHTS_TIMESTEP]
     failed = []
-    for model, dt, want, prefix in cases:
+    for model, dt, want, prefix, extra in cases:
         deck = "timestep_lammps.in" if a.kind == "lammps" else "timestep_liggghts.in"
-        v = {"dt": dt, "nrun": 20}
+        v = dict(extra, dt=dt, nrun=20)
         if a.kind == "lammps":
             v["model"] = model
         run_ok([a.engine], deck, os.path.join(workdir, f"{model}-{dt:g}"), v)
@@ -318,6 +335,8 @@ def run(a):
         check_continuity(a, workdir)
     elif a.mode == "timestep":
         check_timestep(a, workdir)
+    elif a.mode == "timestep-kt":
+        check_timestep(a, workdir, handed_on=True)
     elif a.mode == "creation":
         check_creation(a, workdir)
     elif a.mode == "renumber":
