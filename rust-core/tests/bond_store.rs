@@ -1066,6 +1066,8 @@ fn the_store_check_finds_a_pair_flag_that_disagrees_with_the_store() {
         Some("the pair of atoms 1 and 2 is flagged bonded, but no bond".into())
     );
     assert_eq!(flag_finding(&unbonded, 0, 1, Ids::Wide(&atoms.ids), false), None);
+}
+
 /// Start values of an engine's load sums: not zero, so that the order of
 /// the adds to each atom shows in the bits.
 fn start_sums(len: usize, seed: f64) -> Vec<f64> {
