@@ -85,6 +85,25 @@ def read_table(path):
     return rows
 
 
+def read_dump(path):
+    """{step: rows of numbers} of a LAMMPS or LIGGGHTS dump, `custom` (the
+    atoms) or `local` (the entries)."""
+    frames = {}
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().splitlines()
+    k = 0
+    while k < len(lines):
+        if lines[k].startswith("ITEM: TIMESTEP"):
+            step = int(lines[k + 1])
+            count = int(lines[k + 3])
+            start = next(n for n in range(k + 4, len(lines)) if lines[n].startswith(("ITEM: ATOMS", "ITEM: ENTRIES")))
+            frames[step] = [[float(v) for v in line.split()] for line in lines[start + 1:start + 1 + count]]
+            k = start + 1 + count
+        else:
+            k += 1
+    return frames
+
+
 def thermo_blocks(text):
     """The thermo blocks of an engine's output, in order, as (header, rows):
     the words of the block's `Step ...` line, and each row of the block as

@@ -19,7 +19,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
-from deck_runner import Failure, main, run_deck  # noqa: E402
+from deck_runner import Failure, main, read_dump, run_deck  # noqa: E402
 import deck_runner  # noqa: E402
 
 DECK = os.path.join(HERE, "..", "validation", "inl", "spin_twist_bend", "in.spin")
@@ -40,28 +40,6 @@ def deck_text():
             continue
         out.append(line)
     return "\n".join(out) + "\n"
-
-
-def read_dump(path):
-    """{step: rows} of a `dump local` file."""
-    steps, step, rows = {}, None, None
-    with open(path, encoding="utf-8") as f:
-        lines = f.read().splitlines()
-    k = 0
-    while k < len(lines):
-        if lines[k].startswith("ITEM: TIMESTEP"):
-            step = int(lines[k + 1])
-            k += 2
-        elif lines[k].startswith("ITEM: NUMBER"):
-            n = int(lines[k + 1])
-            k += 2
-        elif lines[k].startswith("ITEM: ENTRIES"):
-            rows = [[float(v) for v in lines[k + 1 + r].split()] for r in range(n)]
-            steps[step] = rows
-            k += 1 + n
-        else:
-            k += 1
-    return steps
 
 
 def close(a, b, scale):
