@@ -280,7 +280,10 @@ void PairGranbond::compute(int eflag, int vflag)
     for (size_t tp = 0; tp < pairs_.size(); tp++)
         underBond = underBond || (advance && pairs[tp].bond.contact_under_bond) || keeps[tp];
     const double *const specialLj = force->special_lj;
-    const int *const live = anyBond_ && !underBond && livePairs_.size() == static_cast<size_t>(inum) ? livePairs_.data() : nullptr;
+    // the count of each atom's listed pairs that are no bond, kept up to
+    // date as bonds form here (the list's builds and the breaks count anew)
+    int *const liveCount = livePairs_.size() == static_cast<size_t>(inum) ? livePairs_.data() : nullptr;
+    const int *const live = anyBond_ && !underBond ? liveCount : nullptr;
     for (int ii = 0; ii < inum; ii++) {
         // an atom whose listed pairs are all bonds: nothing to do
         if (live && live[ii] == 0) continue;
@@ -346,6 +349,7 @@ void PairGranbond::compute(int eflag, int vflag)
                 continue;
             }
             if (bondModel && createsNow[tp] && tryBond(tp, i, j, &touch[jj], history)) {
+                if (liveCount) liveCount[ii]--;
                 // formed on touching spheres: what its law keeps of the
                 // contact acts from this step on
                 if (touching && keeps[tp]) stepContactOfBond(tp, i, j, history, advance, del, rsq);

@@ -46,6 +46,11 @@ LIGGGHTS (liggghts-granbond). One claim per mode:
               is stepped in its pair's turn (deck reform_<kind>.in: two
               spheres pushed together break their bond in compression every
               other step).
+  beside      LAMMPS: a sphere bonded in a pass still feels the contact of
+              a listed neighbour it is not bonded to, before the list is
+              built again (deck beside_lammps.in: sphere 1 bonds with
+              sphere 2 at step 1, sphere 3 runs into sphere 1 and bounces
+              back).
 
 usage: check_bond_index.py --mode MODE --engine BIN --kind lammps|liggghts
                            [--mpiexec MPIEXEC] --workdir DIR
@@ -222,6 +227,18 @@ def check_reform(a, workdir):
     print(f"{len(breaks)} breaks, each followed by a new bond one step later")
 
 
+def check_beside(a, workdir):
+    deck_runner.run_ok([a.engine], f"beside_{a.kind}.in", workdir, {})
+    rows = thermo_rows(workdir)
+    created, vx = rows[-1][1], rows[-1][2]
+    if created != 1:
+        raise Failure(f"{created:.0f} bonds created; the deck bonds spheres 1 and 2 only")
+    if not vx < 0.0:
+        raise Failure(f"sphere 3 ends at vx {vx} m/s (started at 1): it did not bounce off sphere 1, "
+                      "whose contact with it was not computed")
+    print(f"sphere 3 bounced off the bonded sphere 1: vx 1 -> {vx} m/s")
+
+
 def check_observe(a, workdir):
     """The flagship deck (bonds breaking under impact, contacts between the
     fragments), its first 1000 steps with and without its dumps, among them
@@ -288,7 +305,7 @@ def check_callbacks(a, workdir):
 
 def parse():
     p = argparse.ArgumentParser()
-    p.add_argument("--mode", required=True, choices=["index", "under", "reform", "observe", "callbacks"])
+    p.add_argument("--mode", required=True, choices=["index", "under", "reform", "beside", "observe", "callbacks"])
     p.add_argument("--engine", required=True)
     p.add_argument("--kind", required=True, choices=["lammps", "liggghts"])
     p.add_argument("--mpiexec")
@@ -298,6 +315,6 @@ def parse():
 
 if __name__ == "__main__":
     args = parse()
-    checks = {"index": check_index, "under": check_under, "reform": check_reform, "observe": check_observe,
+    checks = {"index": check_index, "under": check_under, "reform": check_reform, "beside": check_beside, "observe": check_observe,
               "callbacks": check_callbacks}
     main(lambda: checks[args.mode](args, args.workdir))
