@@ -31,7 +31,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
 import deck_runner  # noqa: E402
-from deck_runner import Failure, main, read_dump, read_table, run_ok  # noqa: E402
+from deck_runner import Failure, main, mpi_launcher, read_dump, read_table, run_ok  # noqa: E402
 
 DECKS = os.path.join(HERE, "decks")
 BOX_VOLUME = 0.02 ** 3   # virial.in
@@ -54,8 +54,7 @@ def launcher(a, wheel, ranks):
         return env + [lmp]
     if wheel:
         return env + [a.mpiexec_mpich, "-np", str(ranks), lmp]
-    root = ["--allow-run-as-root"] if os.geteuid() == 0 else []
-    return [a.mpiexec, "-np", str(ranks)] + root + ["--oversubscribe", lmp]
+    return mpi_launcher(lmp, a.mpiexec, ranks)
 
 
 def check_case(a, wheel, newton, ranks, workdir):

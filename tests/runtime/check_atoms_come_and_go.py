@@ -36,19 +36,14 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 from check_runtime import last_snapshot, run_ok, thermo_column, warnings_in_log  # noqa: E402
-from deck_runner import Failure, main, run_deck  # noqa: E402
+from deck_runner import Failure, main, mpi_launcher, run_deck  # noqa: E402
 
 N1, N2 = 20, 40
 VACANCIES = {1: "the highest ID", 2: "an inner atom", 3: "the top layer"}
 
 
 def launcher(a, n):
-    if n == 1:
-        return [a.engine]
-    prefix = [a.mpiexec, "-np", str(n)]
-    if os.geteuid() == 0:
-        prefix += ["--allow-run-as-root"]
-    return prefix + ["--oversubscribe", a.engine]
+    return mpi_launcher(a.engine, a.mpiexec, n)
 
 
 def come_go_run(a, n, case, vac, workdir):

@@ -66,7 +66,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "support"))
 sys.path.insert(0, HERE)
 
 import deck_runner  # noqa: E402
-from deck_runner import Failure, main, read_table, run_deck  # noqa: E402
+from deck_runner import Failure, main, mpi_launcher, read_table, run_deck  # noqa: E402
 
 deck_runner.DECKS = os.path.join(HERE, "decks")
 # both engines recount their bond store
@@ -76,14 +76,7 @@ ANNOUNCED = {"lammps": "recounting the bonds after every pass",
 
 
 def launcher(a, n):
-    if n == 1:
-        return [a.engine]
-    if not a.mpiexec:
-        raise Failure("--mpiexec is needed for several ranks")
-    prefix = [a.mpiexec, "-np", str(n)]
-    if os.geteuid() == 0:
-        prefix += ["--allow-run-as-root"]
-    return prefix + ["--oversubscribe", a.engine]
+    return mpi_launcher(a.engine, a.mpiexec, n)
 
 
 def thermo_rows(workdir):

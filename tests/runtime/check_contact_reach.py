@@ -24,28 +24,20 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 
 import deck_runner  # noqa: E402
-from deck_runner import Failure, main, run_deck  # noqa: E402
+from deck_runner import Failure, main, mpi_launcher, run_deck  # noqa: E402
 
 deck_runner.DECKS = os.path.join(HERE, "decks")
 PAIRS = 4
 
 
 def launcher(a, n):
-    if n == 1:
-        return [a.engine]
-    if not a.mpiexec:
-        raise Failure("--mpiexec is needed for several ranks")
-    prefix = [a.mpiexec, "-np", str(n)]
-    if os.geteuid() == 0:
-        prefix += ["--allow-run-as-root"]
-    return prefix + ["--oversubscribe", a.engine]
+    return mpi_launcher(a.engine, a.mpiexec, n)
 
 
 def rows(workdir):
     """step, atoms, created, broken, intact, lost of every thermo row."""
     with open(os.path.join(workdir, "log.lammps"), encoding="utf-8", errors="replace") as f:
-        text = f.read()
-    return [tuple(int(v) for v in row) for _, block in deck_runner.thermo_blocks(text) for _, row in block]
+        return [tuple(int(v) for v in row) for row in deck_runner.thermo_rows(f.read())]
 
 
 def check_reach(a, workdir):

@@ -43,6 +43,17 @@ def run_deck(command, deck, workdir, variables=None, env=None, log="log.lammps")
     return proc.returncode, screen + "\n" + log_text
 
 
+def mpi_launcher(engine, mpiexec, ranks):
+    """The command that runs `engine` on `ranks` ranks through Open MPI's
+    `mpiexec` (as root, with its permission), or alone on 1 rank."""
+    if ranks == 1:
+        return [engine]
+    if not mpiexec:
+        raise Failure("--mpiexec is needed for several ranks")
+    root = ["--allow-run-as-root"] if os.geteuid() == 0 else []
+    return [mpiexec, "-np", str(ranks)] + root + ["--oversubscribe", engine]
+
+
 def run_ok(command, deck, workdir, variables=None, env=None):
     rc, text = run_deck(command, deck, workdir, variables, env)
     if rc != 0:
